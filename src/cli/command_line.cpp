@@ -1,0 +1,44 @@
+#include "cli/command_line.h"
+
+#include <iostream>
+
+#include "core/default_character.h"
+#include "io/json_number.h"
+
+namespace kinema::cli {
+
+int badInput(const std::string& message) {
+  std::cerr << "kinema: " << message << "\n";
+  return kExitBadInput;
+}
+
+Result<Scene> loadSceneOrDefault(const std::string& path) {
+  if (!path.empty()) return loadScene(path);
+  Scene scene;
+  scene.source = "default character";
+  scene.skeleton = makeDefaultCharacter();
+  return scene;
+}
+
+double frameTimeOf(const Scene& scene, int clip) {
+  if (clip >= 0 && clip < static_cast<int>(scene.clips.size()) && scene.clips[clip].frameTime > 0)
+    return scene.clips[clip].frameTime;
+  return 1.0 / 30.0;
+}
+
+nlohmann::ordered_json jointsJson(const Skeleton& skeleton, const std::vector<glm::mat4>& world) {
+  nlohmann::ordered_json joints = nlohmann::ordered_json::array();
+  for (int i = 0; i < skeleton.size(); ++i) {
+    nlohmann::ordered_json j;
+    j["name"] = skeleton.names[i];
+    j["parent"] = skeleton.parents[i];
+    nlohmann::ordered_json m = nlohmann::ordered_json::array();
+    const float* p = glm::value_ptr(world[i]);  // column-major, as glTF
+    for (int k = 0; k < 16; ++k) m.push_back(jsonFloat(p[k]));
+    j["world"] = std::move(m);
+    joints.push_back(std::move(j));
+  }
+  return joints;
+}
+
+}  // namespace kinema::cli

@@ -1,0 +1,30 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/result.h"
+#include "io/scene.h"
+
+namespace kinema::cli {
+
+// Exit codes of the command-line contract (docs/cli.md).
+constexpr int kExitOk = 0;
+constexpr int kExitBadInput = 1;  // missing or unreadable file, parse error, unknown joint, non-finite number
+constexpr int kExitUsage = 2;     // unknown flag or subcommand, malformed argument syntax
+
+// Prints "kinema: MESSAGE" on stderr as one line and returns kExitBadInput.
+int badInput(const std::string& message);
+
+// A file, or the default character when `path` is empty.
+Result<Scene> loadSceneOrDefault(const std::string& path);
+
+// The time to evaluate: --time as given, or --frame N converted with the clip's frame
+// time (1/30 s for clips without a frame grid).
+double frameTimeOf(const Scene& scene, int clip);
+
+// The "joints" array of the contract: name, parent, world (16 numbers, column-major).
+nlohmann::ordered_json jointsJson(const Skeleton& skeleton, const std::vector<glm::mat4>& world);
+
+}  // namespace kinema::cli

@@ -1,0 +1,20 @@
+#pragma once
+#include <CLI/CLI.hpp>
+
+namespace kinema::cli {
+
+// `kinema pose FILE [--clip I] (--time T | --frame N) [--json]`
+struct PoseOptions {
+  std::string file;
+  int clip = 0;
+  double time = 0.0;
+  long long frame = 0;
+  bool json = false;
+  CLI::Option* timeOption = nullptr;
+  CLI::Option* frameOption = nullptr;
+};
+
+CLI::App* addPoseCommand(CLI::App& app, PoseOptions& options);
+int runPose(const PoseOptions& options);
+
+}  // namespace kinema::cli

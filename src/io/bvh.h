@@ -1,0 +1,50 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "anim/clip.h"
+#include "core/result.h"
+#include "core/rotation.h"
+#include "core/skeleton.h"
+
+namespace kinema {
+
+enum class BvhChannel { Xposition, Yposition, Zposition, Xrotation, Yrotation, Zrotation };
+const char* toString(BvhChannel channel);
+
+// A BVH file as written: joints in file order (End Sites included, named after their
+// parent with an "_End" suffix), their channel lists, and the raw motion numbers.
+struct BvhJoint {
+  std::string name;
+  int parent = -1;
+  glm::vec3 offset{0.0f};
+  std::vector<BvhChannel> channels;
+  int firstChannel = 0;  // column of channels[0] in each motion line
+  bool endSite = false;
+  int line = 0;          // where the joint was declared, for messages
+};
+
+struct BvhData {
+  std::vector<BvhJoint> joints;
+  int channelCount = 0;
+  int frameCount = 0;
+  double frameTime = 0.0;
+  std::vector<float> motion;  // frameCount rows of channelCount values
+
+  // Skeleton in file order: rest translation = OFFSET, rest rotation = identity.
+  Skeleton skeleton() const;
+  // One clip, key k at time k * frameTime. Each joint's rotation is the product of its
+  // rotation channels in file order (degrees); its translation is the OFFSET with each
+  // position channel replacing its component (as Blender does).
+  Clip clip() const;
+  // The local pose of one frame, computed straight from the motion numbers.
+  Pose framePose(int frame) const;
+};
+
+// Parses BVH text. `source` names the file in error messages ("walk.bvh:12: ...").
+// Accepts CRLF and tabs, any channel order on any joint, several ROOTs, and frame times
+// written like ".0083333". Errors are one line naming the file and line.
+Result<BvhData> parseBvh(const std::string& text, const std::string& source);
+Result<BvhData> loadBvh(const std::string& path);
+
+}  // namespace kinema

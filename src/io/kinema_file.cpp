@@ -1,0 +1,305 @@
+#include "io/kinema_file.h"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "io/atomic_write.h"
+#include "io/json_number.h"
+#include "io/text_file.h"
+
+namespace kinema {
+
+using Json = nlohmann::ordered_json;
+
+namespace {
+
+Json vec(const float* v, int n) {
+  Json a = Json::array();
+  for (int i = 0; i < n; ++i) a.push_back(jsonFloat(v[i]));
+  return a;
+}
+
+int valueSize(ChannelTarget t) { return t == ChannelTarget::Rotation ? 4 : 3; }
+
+// Reads with the JSON path of every value at hand, so errors can point at it.
+class Reader {
+ public:
+  explicit Reader(std::string source) : source_(std::move(source)) {}
+  const std::string& error() const { return error_; }
+
+  bool fail(const std::string& path, const std::string& what) {
+    error_ = source_ + ": " + (path.empty() ? "" : path + ": ") + what;
+    return false;
+  }
+
+  const Json* member(const Json& obj, const std::string& path, const char* key, bool required) {
+    const std::string p = path.empty() ? key : path + "." + key;
+    auto it = obj.find(key);
+    if (it == obj.end()) {
+      if (required) fail(p, "missing");
+      return nullptr;
+    }
+    return &*it;
+  }
+
+  bool number(const Json& j, const std::string& path, double& out) {
+    if (!j.is_number()) return fail(path, "expected a number, found " + std::string(j.type_name()));
+    out = j.get<double>();
+    if (!std::isfinite(out)) return fail(path, "not a finite number");
+    return true;
+  }
+
+  bool floats(const Json& j, const std::string& path, int n, float* out) {
+    if (!j.is_array() || static_cast<int>(j.size()) != n)
+      return fail(path, "expected an array of " + std::to_string(n) + " numbers");
+    for (int i = 0; i < n; ++i) {
+      double v = 0.0;
+      if (!number(j[i], path + "[" + std::to_string(i) + "]", v)) return false;
+      if (std::abs(v) > 3.0e38) return fail(path + "[" + std::to_string(i) + "]", "number out of float range");
+      out[i] = static_cast<float>(v);
+    }
+    return true;
+  }
+
+  bool string(const Json& j, const std::string& path, std::string& out) {
+    if (!j.is_string()) return fail(path, "expected a string, found " + std::string(j.type_name()));
+    out = j.get<std::string>();
+    return true;
+  }
+
+  bool integer(const Json& j, const std::string& path, long long& out) {
+    if (!j.is_number_integer()) return fail(path, "expected an integer, found " + std::string(j.type_name()));
+    out = j.get<long long>();
+    return true;
+  }
+
+ private:
+  std::string source_;
+  std::string error_;
+};
+
+// Normalise only quaternions that are visibly off unit length, so a saved unit
+// quaternion reads back bit for bit.
+glm::quat normalizeIfNeeded(const glm::quat& q) {
+  const float len2 = glm::dot(q, q);
+  if (std::abs(len2 - 1.0f) < 1e-6f) return q;
+  return glm::normalize(q);
+}
+
+bool readSkeleton(Reader& r, const Json& root, Skeleton& s) {
+  const Json* sk = r.member(root, "", "skeleton", true);
+  if (!sk) return false;
+  if (!sk->is_object()) return r.fail("skeleton", "expected an object");
+  const Json* joints = r.member(*sk, "skeleton", "joints", true);
+  if (!joints) return false;
+  if (!joints->is_array()) return r.fail("skeleton.joints", "expected an array");
+  for (size_t i = 0; i < joints->size(); ++i) {
+    const std::string p = "skeleton.joints[" + std::to_string(i) + "]";
+    const Json& j = (*joints)[i];
+    if (!j.is_object()) return r.fail(p, "expected an object");
+    std::string name;
+    long long parent = -1;
+    Transform t;
+    const Json* v;
+    if (!(v = r.member(j, p, "name", true)) || !r.string(*v, p + ".name", name)) return false;
+    if (name.empty()) return r.fail(p + ".name", "empty joint name");
+    if (!(v = r.member(j, p, "parent", true)) || !r.integer(*v, p + ".parent", parent)) return false;
+    if (parent < -1 || parent >= static_cast<long long>(i))
+      return r.fail(p + ".parent", "parent " + std::to_string(parent) + " must be -1 or an earlier joint (0.." +
+                                       std::to_string(static_cast<long long>(i) - 1) + ")");
+    if ((v = r.member(j, p, "translation", false)) && !r.floats(*v, p + ".translation", 3, &t.translation.x))
+      return false;
+    if ((v = r.member(j, p, "rotation", false))) {
+      float q[4];
+      if (!r.floats(*v, p + ".rotation", 4, q)) return false;
+      if (q[0] == 0 && q[1] == 0 && q[2] == 0 && q[3] == 0) return r.fail(p + ".rotation", "zero quaternion");
+      t.rotation = normalizeIfNeeded(glm::quat(q[3], q[0], q[1], q[2]));
+    }
+    if ((v = r.member(j, p, "scale", false)) && !r.floats(*v, p + ".scale", 3, &t.scale.x)) return false;
+    if (s.find(name) >= 0) return r.fail(p + ".name", "joint name '" + name + "' is used twice");
+    s.addJoint(name, static_cast<int>(parent), t);
+  }
+  return true;
+}
+
+bool parseTarget(const std::string& s, ChannelTarget& t) {
+  for (ChannelTarget c : {ChannelTarget::Translation, ChannelTarget::Rotation, ChannelTarget::Scale})
+    if (s == toString(c)) {
+      t = c;
+      return true;
+    }
+  return false;
+}
+
+bool parseInterpolation(const std::string& s, Interpolation& t) {
+  for (Interpolation c : {Interpolation::Step, Interpolation::Linear})
+    if (s == toString(c)) {
+      t = c;
+      return true;
+    }
+  return false;
+}
+
+bool readChannel(Reader& r, const Json& j, const std::string& p, const Skeleton& s, Channel& ch) {
+  if (!j.is_object()) return r.fail(p, "expected an object");
+  const Json* v;
+  std::string text;
+  if (!(v = r.member(j, p, "joint", true)) || !r.string(*v, p + ".joint", text)) return false;
+  ch.joint = s.find(text);
+  if (ch.joint < 0) return r.fail(p + ".joint", "no joint named '" + text + "'");
+  if (!(v = r.member(j, p, "target", true)) || !r.string(*v, p + ".target", text)) return false;
+  if (!parseTarget(text, ch.target))
+    return r.fail(p + ".target", "'" + text + "' is not one of translation, rotation, scale");
+  if ((v = r.member(j, p, "interpolation", false))) {
+    if (!r.string(*v, p + ".interpolation", text)) return false;
+    if (!parseInterpolation(text, ch.interpolation))
+      return r.fail(p + ".interpolation", "'" + text + "' is not one of step, linear");
+  }
+  const Json* times = r.member(j, p, "times", true);
+  const Json* values = times ? r.member(j, p, "values", true) : nullptr;
+  if (!values) return false;
+  if (!times->is_array() || times->empty()) return r.fail(p + ".times", "expected a non-empty array of numbers");
+  if (!values->is_array() || values->size() != times->size())
+    return r.fail(p + ".values", "expected an array with one value per key time (" + std::to_string(times->size()) + ")");
+  const int n = valueSize(ch.target);
+  for (size_t k = 0; k < times->size(); ++k) {
+    const std::string tp = p + ".times[" + std::to_string(k) + "]";
+    double t = 0.0;
+    if (!r.number((*times)[k], tp, t)) return false;
+    if (k > 0 && !(static_cast<float>(t) > ch.times.back())) return r.fail(tp, "key times must increase");
+    ch.times.push_back(static_cast<float>(t));
+    glm::vec4 value(0.0f);
+    if (!r.floats((*values)[k], p + ".values[" + std::to_string(k) + "]", n, &value.x)) return false;
+    if (ch.target == ChannelTarget::Rotation) {
+      const glm::quat q = normalizeIfNeeded(glm::quat(value.w, value.x, value.y, value.z));
+      if (!(glm::dot(q, q) > 0.0f)) return r.fail(p + ".values[" + std::to_string(k) + "]", "zero quaternion");
+      value = glm::vec4(q.x, q.y, q.z, q.w);
+    }
+    ch.values.push_back(value);
+  }
+  return true;
+}
+
+bool readClips(Reader& r, const Json& root, Scene& scene) {
+  const Json* clips = r.member(root, "", "clips", false);
+  if (!clips) return true;
+  if (!clips->is_array()) return r.fail("clips", "expected an array");
+  for (size_t c = 0; c < clips->size(); ++c) {
+    const std::string p = "clips[" + std::to_string(c) + "]";
+    const Json& j = (*clips)[c];
+    if (!j.is_object()) return r.fail(p, "expected an object");
+    Clip clip;
+    const Json* v;
+    if ((v = r.member(j, p, "name", false)) && !r.string(*v, p + ".name", clip.name)) return false;
+    if ((v = r.member(j, p, "frame_time", false))) {
+      if (!r.number(*v, p + ".frame_time", clip.frameTime)) return false;
+      if (clip.frameTime < 0) return r.fail(p + ".frame_time", "must not be negative");
+    }
+    const Json* channels = r.member(j, p, "channels", true);
+    if (!channels) return false;
+    if (!channels->is_array()) return r.fail(p + ".channels", "expected an array");
+    for (size_t k = 0; k < channels->size(); ++k) {
+      Channel ch;
+      if (!readChannel(r, (*channels)[k], p + ".channels[" + std::to_string(k) + "]", scene.skeleton, ch))
+        return false;
+      clip.channels.push_back(std::move(ch));
+    }
+    scene.clips.push_back(std::move(clip));
+  }
+  return true;
+}
+
+}  // namespace
+
+std::string toKinemaJson(const Scene& scene) {
+  Json root;
+  root["format"] = "kinema";
+  root["version"] = kKinemaFormatVersion;
+  Json joints = Json::array();
+  const Skeleton& s = scene.skeleton;
+  for (int i = 0; i < s.size(); ++i) {
+    const Transform& t = s.rest[i];
+    Json j;
+    j["name"] = s.names[i];
+    j["parent"] = s.parents[i];
+    j["translation"] = vec(&t.translation.x, 3);
+    const float q[4] = {t.rotation.x, t.rotation.y, t.rotation.z, t.rotation.w};
+    j["rotation"] = vec(q, 4);
+    j["scale"] = vec(&t.scale.x, 3);
+    joints.push_back(std::move(j));
+  }
+  root["skeleton"]["joints"] = std::move(joints);
+  Json clips = Json::array();
+  for (const Clip& clip : scene.clips) {
+    Json c;
+    c["name"] = clip.name;
+    if (clip.frameTime > 0) c["frame_time"] = clip.frameTime;
+    Json channels = Json::array();
+    for (const Channel& ch : clip.channels) {
+      Json k;
+      k["joint"] = s.names[ch.joint];
+      k["target"] = toString(ch.target);
+      k["interpolation"] = toString(ch.interpolation);
+      Json times = Json::array(), values = Json::array();
+      for (float t : ch.times) times.push_back(jsonFloat(t));
+      for (const glm::vec4& v : ch.values) values.push_back(vec(&v.x, valueSize(ch.target)));
+      k["times"] = std::move(times);
+      k["values"] = std::move(values);
+      channels.push_back(std::move(k));
+    }
+    c["channels"] = std::move(channels);
+    clips.push_back(std::move(c));
+  }
+  root["clips"] = std::move(clips);
+  return root.dump(1, '\t') + "\n";
+}
+
+Result<Scene> parseKinemaJson(const std::string& text, const std::string& source) {
+  Json root;
+  try {
+    root = Json::parse(text);
+  } catch (const Json::exception& e) {
+    return Result<Scene>::failure(source + ": not valid JSON: " + e.what());
+  }
+  Reader r(source);
+  if (!root.is_object()) return Result<Scene>::failure(source + ": expected a JSON object at the top");
+  std::string format;
+  const Json* v;
+  if (!(v = r.member(root, "", "format", true)) || !r.string(*v, "format", format))
+    return Result<Scene>::failure(r.error());
+  if (format != "kinema") return Result<Scene>::failure(source + ": format: expected \"kinema\", found \"" + format + "\"");
+  long long version = 0;
+  if (!(v = r.member(root, "", "version", true)) || !r.integer(*v, "version", version))
+    return Result<Scene>::failure(r.error());
+  if (version < 1 || version > kKinemaFormatVersion)
+    return Result<Scene>::failure(source + ": version: this Kinema reads versions 1.." +
+                                  std::to_string(kKinemaFormatVersion) + ", the file is version " +
+                                  std::to_string(version));
+  Scene scene;
+  scene.source = source;
+  if (!readSkeleton(r, root, scene.skeleton) || !readClips(r, root, scene))
+    return Result<Scene>::failure(r.error());
+  const std::string bad = scene.skeleton.validate();
+  if (!bad.empty()) return Result<Scene>::failure(source + ": skeleton: " + bad);
+  return scene;
+}
+
+Result<Scene> loadKinemaFile(const std::string& path) {
+  std::string text;
+  const std::string error = readTextFile(path, text);
+  if (!error.empty()) return Result<Scene>::failure(error);
+  return parseKinemaJson(text, path);
+}
+
+std::string saveKinemaFile(const std::string& path, const Scene& scene) {
+  std::string bad = scene.skeleton.validate();
+  if (bad.empty())
+    for (size_t c = 0; c < scene.clips.size() && bad.empty(); ++c) {
+      bad = scene.clips[c].validate(scene.skeleton);
+      if (!bad.empty()) bad = "clip " + std::to_string(c) + ": " + bad;
+    }
+  if (!bad.empty()) return path + ": not saved: " + bad;
+  return writeFileAtomically(path, toKinemaJson(scene));
+}
+
+}  // namespace kinema

@@ -1,0 +1,21 @@
+#pragma once
+#include <string>
+
+#include "io/scene.h"
+
+namespace kinema {
+
+// The native project format (docs/kinema-format.md): versioned JSON.
+constexpr int kKinemaFormatVersion = 1;
+
+std::string toKinemaJson(const Scene& scene);
+// `source` names the file in error messages, which also give the JSON path
+// ("walk.kinema: skeleton.joints[3].parent: ...").
+Result<Scene> parseKinemaJson(const std::string& text, const std::string& source);
+
+Result<Scene> loadKinemaFile(const std::string& path);
+// Validates first, then writes a temporary file and renames it over `path`, so a failed
+// save leaves the previous file intact. Returns an empty string or the error.
+std::string saveKinemaFile(const std::string& path, const Scene& scene);
+
+}  // namespace kinema

@@ -1,0 +1,38 @@
+#include "io/scene.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "io/bvh.h"
+#include "io/kinema_file.h"
+
+namespace kinema {
+
+namespace {
+std::string lowerExtension(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  const size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return {};
+  std::string ext = path.substr(dot);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+}  // namespace
+
+Result<Scene> loadScene(const std::string& path) {
+  const std::string ext = lowerExtension(path);
+  if (ext == ".bvh") {
+    Result<BvhData> bvh = loadBvh(path);
+    if (!bvh) return Result<Scene>::failure(bvh.error());
+    Scene scene;
+    scene.source = path;
+    scene.skeleton = bvh->skeleton();
+    scene.clips.push_back(bvh->clip());
+    return scene;
+  }
+  if (ext == ".kinema") return loadKinemaFile(path);
+  return Result<Scene>::failure(path + ": unsupported file type '" + ext +
+                                "' (Kinema reads .bvh and .kinema)");
+}
+
+}  // namespace kinema
