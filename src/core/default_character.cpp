@@ -12,44 +12,44 @@ namespace {
 struct JointSpec {
   std::string name;
   std::string parent;  // empty for the root
-  glm::vec3 world;
+  glm::dvec3 world;  // double, so rest offsets like 1.05 - 0.95 come out as 0.1f
 };
 
 }  // namespace
 
 Skeleton makeDefaultCharacter() {
   std::vector<JointSpec> specs = {
-      {"Hips", "", {0.0f, 0.95f, 0.0f}},
-      {"Spine", "Hips", {0.0f, 1.05f, 0.0f}},
-      {"Chest", "Spine", {0.0f, 1.20f, 0.0f}},
-      {"UpperChest", "Chest", {0.0f, 1.33f, 0.0f}},
-      {"Neck", "UpperChest", {0.0f, 1.50f, 0.0f}},
-      {"Head", "Neck", {0.0f, 1.60f, 0.01f}},
-      {"HeadTop", "Head", {0.0f, 1.80f, 0.01f}},
+      {"Hips", "", {0.0, 0.95, 0.0}},
+      {"Spine", "Hips", {0.0, 1.05, 0.0}},
+      {"Chest", "Spine", {0.0, 1.20, 0.0}},
+      {"UpperChest", "Chest", {0.0, 1.33, 0.0}},
+      {"Neck", "UpperChest", {0.0, 1.50, 0.0}},
+      {"Head", "Neck", {0.0, 1.60, 0.01}},
+      {"HeadTop", "Head", {0.0, 1.80, 0.01}},
   };
   for (const char* side : {".L", ".R"}) {
-    const float x = side[1] == 'L' ? 1.0f : -1.0f;  // the character's left is +X
+    const double x = side[1] == 'L' ? 1.0 : -1.0;  // the character's left is +X
     const std::string s = side;
     const std::vector<JointSpec> limbs = {
-        {"Shoulder" + s, "UpperChest", {x * 0.03f, 1.45f, 0.0f}},
-        {"UpperArm" + s, "Shoulder" + s, {x * 0.17f, 1.45f, 0.0f}},
-        {"LowerArm" + s, "UpperArm" + s, {x * 0.45f, 1.45f, 0.0f}},
-        {"Hand" + s, "LowerArm" + s, {x * 0.71f, 1.45f, 0.0f}},
-        {"Fingertip" + s, "Hand" + s, {x * 0.89f, 1.45f, 0.0f}},
-        {"UpperLeg" + s, "Hips", {x * 0.09f, 0.92f, 0.0f}},
-        {"LowerLeg" + s, "UpperLeg" + s, {x * 0.09f, 0.50f, 0.01f}},
-        {"Foot" + s, "LowerLeg" + s, {x * 0.09f, 0.08f, -0.02f}},
-        {"Toe" + s, "Foot" + s, {x * 0.09f, 0.02f, 0.11f}},
-        {"ToeTip" + s, "Toe" + s, {x * 0.09f, 0.02f, 0.19f}},
+        {"Shoulder" + s, "UpperChest", {x * 0.03, 1.45, 0.0}},
+        {"UpperArm" + s, "Shoulder" + s, {x * 0.17, 1.45, 0.0}},
+        {"LowerArm" + s, "UpperArm" + s, {x * 0.45, 1.45, 0.0}},
+        {"Hand" + s, "LowerArm" + s, {x * 0.71, 1.45, 0.0}},
+        {"Fingertip" + s, "Hand" + s, {x * 0.89, 1.45, 0.0}},
+        {"UpperLeg" + s, "Hips", {x * 0.09, 0.92, 0.0}},
+        {"LowerLeg" + s, "UpperLeg" + s, {x * 0.09, 0.50, 0.01}},
+        {"Foot" + s, "LowerLeg" + s, {x * 0.09, 0.08, -0.02}},
+        {"Toe" + s, "Foot" + s, {x * 0.09, 0.02, 0.11}},
+        {"ToeTip" + s, "Toe" + s, {x * 0.09, 0.02, 0.19}},
     };
     specs.insert(specs.end(), limbs.begin(), limbs.end());
   }
   Skeleton skeleton;
-  std::vector<glm::vec3> world;
+  std::vector<glm::dvec3> world;
   for (const JointSpec& j : specs) {
     const int parent = j.parent.empty() ? -1 : skeleton.find(j.parent);
-    const glm::vec3 origin = parent < 0 ? glm::vec3(0.0f) : world[parent];
-    skeleton.addJoint(j.name, parent, Transform::fromTranslation(j.world - origin));
+    const glm::dvec3 origin = parent < 0 ? glm::dvec3(0.0) : world[parent];
+    skeleton.addJoint(j.name, parent, Transform::fromTranslation(glm::vec3(j.world - origin)));
     world.push_back(j.world);
   }
   return skeleton;

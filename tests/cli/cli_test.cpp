@@ -1,1 +1,154 @@
+// The command-line contract (docs/cli.md), driven through the built binary.
+#include <nlohmann/json.hpp>
+
 #include "test_support.h"
+
+namespace kinema::test {
+namespace {
+
+// Root at (1,2,3); frame 1 turns the root 90 degrees about Z. Arm is 2 up, its End Site 1 up.
+const char* kTwoFrames =
+    "HIERARCHY\n"
+    "ROOT Root\n{\n  OFFSET 0 0 0\n"
+    "  CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation\n"
+    "  JOINT Arm\n  {\n    OFFSET 0 2 0\n    CHANNELS 3 Zrotation Xrotation Yrotation\n"
+    "    End Site\n    {\n      OFFSET 0 1 0\n    }\n  }\n}\n"
+    "MOTION\nFrames: 2\nFrame Time: 0.5\n"
+    "1 2 3 0 0 0 0 0 0\n"
+    "1 2 3 90 0 0 0 0 0\n";
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = makeTempDir();
+    ASSERT_FALSE(dir_.empty());
+    bvh_ = dir_ + "/two.bvh";
+    writeFile(bvh_, kTwoFrames);
+  }
+  void TearDown() override { std::system(("rm -rf '" + dir_ + "'").c_str()); }
+
+  int kinema(const std::string& args) { return runCommand(std::string(KINEMA_BINARY) + " " + args, &out_, &err_); }
+  nlohmann::json json() { return nlohmann::json::parse(out_); }
+  static int lines(const std::string& s) {
+    int n = 0;
+    for (char c : s) n += c == '\n';
+    return n;
+  }
+
+  std::string dir_, bvh_, out_, err_;
+};
+
+glm::vec3 position(const nlohmann::json& joint) {
+  const auto& w = joint["world"];
+  return {w[12].get<float>(), w[13].get<float>(), w[14].get<float>()};
+}
+
+TEST_F(Cli, HelpListsSubcommandsAndExitsZero) {
+  EXPECT_EQ(kinema("--help"), 0);
+  EXPECT_NE(out_.find("pose"), std::string::npos) << out_;
+}
+
+TEST_F(Cli, PoseFrameGivesHandDerivedWorldTransforms) {
+  ASSERT_EQ(kinema("pose '" + bvh_ + "' --frame 1 --json"), 0) << err_;
+  const nlohmann::json j = json();
+  EXPECT_DOUBLE_EQ(j["time"].get<double>(), 0.5);
+  ASSERT_EQ(j["joints"].size(), 3u);
+  EXPECT_EQ(j["joints"][0]["name"], "Root");
+  EXPECT_EQ(j["joints"][0]["parent"], -1);
+  EXPECT_EQ(j["joints"][1]["name"], "Arm");
+  EXPECT_EQ(j["joints"][1]["parent"], 0);
+  EXPECT_EQ(j["joints"][2]["name"], "Arm_End");
+  EXPECT_EQ(j["joints"][2]["parent"], 1);
+  // Root: Rz(90) then moved to (1,2,3); column-major.
+  const float expected[16] = {0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 1, 0, 1, 2, 3, 1};
+  for (int k = 0; k < 16; ++k) EXPECT_NEAR(j["joints"][0]["world"][k].get<float>(), expected[k], 1e-6f) << k;
+  // Rz(90) takes the arm's (0,2,0) to (-2,0,0) and the End Site's (0,1,0) to (-1,0,0).
+  EXPECT_VEC3_NEAR(position(j["joints"][1]), glm::vec3(-1, 2, 3), 1e-6f);
+  EXPECT_VEC3_NEAR(position(j["joints"][2]), glm::vec3(-2, 2, 3), 1e-6f);
+}
+
+TEST_F(Cli, PoseTimeInterpolatesAndClamps) {
+  // Half-way: 45 degrees about Z takes (0,2,0) to (-sqrt2, sqrt2, 0).
+  ASSERT_EQ(kinema("pose '" + bvh_ + "' --time 0.25 --json"), 0) << err_;
+  const float r = std::sqrt(2.0f);
+  EXPECT_VEC3_NEAR(position(json()["joints"][1]), glm::vec3(1 - r, 2 + r, 3), 1e-5f);
+  // After the end: holds the last frame; before the start: holds the first.
+  ASSERT_EQ(kinema("pose '" + bvh_ + "' --time 100 --json"), 0);
+  EXPECT_DOUBLE_EQ(json()["time"].get<double>(), 100.0);
+  EXPECT_VEC3_NEAR(position(json()["joints"][1]), glm::vec3(-1, 2, 3), 1e-6f);
+  ASSERT_EQ(kinema("pose '" + bvh_ + "' --time -3 --json"), 0);
+  EXPECT_VEC3_NEAR(position(json()["joints"][1]), glm::vec3(1, 4, 3), 1e-6f);
+  ASSERT_EQ(kinema("pose '" + bvh_ + "' --frame 7 --json"), 0);
+  EXPECT_DOUBLE_EQ(json()["time"].get<double>(), 3.5);
+  EXPECT_VEC3_NEAR(position(json()["joints"][2]), glm::vec3(-2, 2, 3), 1e-6f);
+}
+
+TEST_F(Cli, PoseWithoutJsonPrintsATable) {
+  ASSERT_EQ(kinema("pose '" + bvh_ + "' --frame 0"), 0);
+  EXPECT_NE(out_.find("Arm_End"), std::string::npos);
+  EXPECT_THROW(nlohmann::json::parse(out_), nlohmann::json::parse_error);
+}
+
+TEST_F(Cli, UsageErrorsExitTwoWithOneLine) {
+  for (const std::string& args : std::vector<std::string>{"pose --no-such-flag", "no-such-command", "pose '" + bvh_ + "' --json",
+                                 "pose '" + bvh_ + "' --time abc --json",
+                                 "pose '" + bvh_ + "' --time 1 --frame 2 --json", "pose"}) {
+    EXPECT_EQ(kinema(args), 2) << args;
+    EXPECT_EQ(lines(err_), 1) << args << ": " << err_;
+    EXPECT_NE(err_.find("--help"), std::string::npos) << args << ": " << err_;
+    EXPECT_TRUE(out_.empty()) << args;
+  }
+}
+
+TEST_F(Cli, BadInputExitsOneWithOneLine) {
+  const std::string notBvh = dir_ + "/garbage.bvh";
+  writeFile(notBvh, "HIERARCHY\nROOT A\n{\n  OFFSET 0 zero 0\n");
+  const std::string unknownType = dir_ + "/thing.xyz";
+  writeFile(unknownType, "x");
+  const struct {
+    std::string args, mentions;
+  } cases[] = {
+      {"pose '" + dir_ + "/missing.bvh' --frame 0 --json", "missing.bvh"},
+      {"pose '" + notBvh + "' --frame 0 --json", "garbage.bvh:4"},
+      {"pose '" + unknownType + "' --frame 0 --json", "thing.xyz"},
+      {"pose '" + dir_ + "' --frame 0 --json", dir_},
+      {"pose '" + bvh_ + "' --time nan --json", "finite"},
+      {"pose '" + bvh_ + "' --time inf --json", "finite"},
+      {"pose '" + bvh_ + "' --clip 3 --frame 0 --json", "clip"},
+      {"pose '" + bvh_ + "' --clip -1 --frame 0 --json", "clip"},
+  };
+  for (const auto& c : cases) {
+    EXPECT_EQ(kinema(c.args), 1) << c.args;
+    EXPECT_EQ(lines(err_), 1) << c.args << ": " << err_;
+    EXPECT_NE(err_.find(c.mentions), std::string::npos) << c.args << ": " << err_;
+    EXPECT_TRUE(out_.empty()) << c.args;
+  }
+}
+
+TEST_F(Cli, NoSubcommandDescribesTheDefaultCharacter) {
+  ASSERT_EQ(kinema(""), 0) << err_;
+  EXPECT_NE(out_.find("27 joints"), std::string::npos) << out_;
+  EXPECT_NE(out_.find("UpperArm.L"), std::string::npos);
+  EXPECT_NE(out_.find("1.80 units tall"), std::string::npos);
+}
+
+TEST_F(Cli, KinemaFileEvaluatesLikeTheBvhItCameFrom) {
+  // The same motion saved as .kinema (written by hand here, not by Kinema) poses the same.
+  const std::string path = dir_ + "/two.kinema";
+  writeFile(path, R"({"format":"kinema","version":1,
+    "skeleton":{"joints":[
+      {"name":"Root","parent":-1,"translation":[0,0,0]},
+      {"name":"Arm","parent":0,"translation":[0,2,0]}]},
+    "clips":[{"name":"turn","channels":[
+      {"joint":"Root","target":"translation","times":[0],"values":[[1,2,3]]},
+      {"joint":"Root","target":"rotation","times":[0,0.5],
+       "values":[[0,0,0,1],[0,0,0.70710678,0.70710678]]}]}]})");
+  ASSERT_EQ(kinema("pose '" + path + "' --time 0.5 --json"), 0) << err_;
+  EXPECT_VEC3_NEAR(position(json()["joints"][1]), glm::vec3(-1, 2, 3), 1e-6f);
+  // No frame grid in this clip: --frame counts at 30 frames per second.
+  ASSERT_EQ(kinema("pose '" + path + "' --frame 15 --json"), 0) << err_;
+  EXPECT_NEAR(json()["time"].get<double>(), 0.5, 1e-12);
+}
+
+}  // namespace
+}  // namespace kinema::test

@@ -1,0 +1,25 @@
+// assets/ is made by the project's own code (target update-assets); it must stay in sync.
+#include "core/default_character.h"
+#include "io/kinema_file.h"
+#include "test_support.h"
+
+namespace kinema::test {
+namespace {
+
+TEST(Assets, DefaultCharacterFileIsWhatTheCodeMakes) {
+  const std::string path = std::string(KINEMA_SOURCE_DIR) + "/assets/default_character.kinema";
+  Result<Scene> loaded = loadKinemaFile(path);
+  ASSERT_TRUE(loaded.ok()) << loaded.error();
+  const Skeleton made = makeDefaultCharacter();
+  EXPECT_EQ(loaded->skeleton.names, made.names);
+  EXPECT_EQ(loaded->skeleton.parents, made.parents);
+  EXPECT_EQ(loaded->skeleton.rest, made.rest);
+  EXPECT_TRUE(loaded->clips.empty());
+  Scene scene;
+  scene.skeleton = made;
+  EXPECT_EQ(readFile(path), toKinemaJson(scene))
+      << "assets/default_character.kinema is stale: run `cmake --build build --target update-assets`";
+}
+
+}  // namespace
+}  // namespace kinema::test
