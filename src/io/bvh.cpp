@@ -59,7 +59,10 @@ bool parseChannel(const std::string& s, BvhChannel& out) {
 // Parses one number the way BVH writers print them: optional sign, digits, optional
 // fraction (".5" included), optional exponent. Rejects anything else and non-finite values.
 bool parseNumber(const char* begin, const char* end, double& out) {
-  if (begin < end && *begin == '+') ++begin;
+  if (begin < end && *begin == '+') {
+    ++begin;
+    if (begin < end && *begin == '-') return false;  // "+-5" is not a number
+  }
   if (begin == end) return false;
   auto [ptr, ec] = std::from_chars(begin, end, out);
   return ec == std::errc() && ptr == end && std::isfinite(out);
@@ -71,6 +74,7 @@ class BvhParser {
  public:
   BvhParser(const std::string& text, const std::string& source) : source_(source) {
     splitLines(text, lines_);
+    endsWithNewline_ = !text.empty() && (text.back() == '\n' || text.back() == '\r');
   }
 
   Result<BvhData> parse() {
@@ -102,7 +106,11 @@ class BvhParser {
     }
   }
 
-  int eofLine() const { return static_cast<int>(lines_.size()) + 1; }
+  // Where the text ends: the line after the last newline, or the last line when the file
+  // does not end with a newline.
+  int eofLine() const {
+    return std::max(1, static_cast<int>(lines_.size()) + (endsWithNewline_ ? 1 : 0));
+  }
 
   const Token* next() { return pos_ < tokens_.size() ? &tokens_[pos_++] : nullptr; }
 
@@ -117,12 +125,14 @@ class BvhParser {
 
   bool readOffset(glm::vec3& offset, const std::string& joint) {
     if (!expectWord("OFFSET", ("in joint '" + joint + "'").c_str())) return false;
+    const int keywordLine = tokens_[pos_ - 1].line;
     for (int a = 0; a < 3; ++a) {
       const Token* t = next();
       if (!t) return fail(endLine(), "unexpected end of hierarchy in the OFFSET of '" + joint + "'");
       double v;
+      // Reported on the OFFSET line: a short OFFSET runs into the next line's keyword.
       if (!parseNumber(t->text, v))
-        return fail(t->line, "OFFSET of '" + joint + "': '" + t->text + "' is not a finite number");
+        return fail(keywordLine, "OFFSET of '" + joint + "': '" + t->text + "' is not a finite number");
       offset[a] = static_cast<float>(v);
     }
     return true;
@@ -210,12 +220,13 @@ class BvhParser {
     const Token* n = next();
     double count;
     if (!n || !parseNumber(n->text, count) || count < 0 || count > 64 || count != std::floor(count))
-      return fail(n ? n->line : t->line, "CHANNELS of '" + j.name + "' needs a channel count");
+      return fail(t->line, "CHANNELS of '" + j.name + "' needs a channel count");
     for (int c = 0; c < static_cast<int>(count); ++c) {
       const Token* ct = next();
       BvhChannel ch;
+      // Reported on the CHANNELS line: a short list runs into the next line's keyword.
       if (!ct || !parseChannel(ct->text, ch))
-        return fail(ct ? ct->line : endLine(),
+        return fail(ct ? t->line : endLine(),
                     "CHANNELS of '" + j.name + "' says " + n->text + " channels but lists " + std::to_string(c) +
                         (ct ? " (found '" + ct->text + "')" : ""));
       j.channels.push_back(ch);
@@ -290,6 +301,7 @@ class BvhParser {
   std::vector<Token> tokens_;
   size_t pos_ = 0;
   int motionLine_ = -1;  // 0-based
+  bool endsWithNewline_ = false;
   std::unordered_set<std::string> names_;
   std::string error_;
   BvhData data_;
