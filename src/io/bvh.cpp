@@ -149,11 +149,23 @@ class BvhParser {
     return true;
   }
 
-  std::string uniqueName(const std::string& wanted) {
+  // End Site names avoid every ROOT/JOINT name in the file, including later ones.
+  std::string endSiteName(const std::string& parent) {
+    const std::string wanted = parent + "_End";
     std::string name = wanted;
-    for (int k = 2; names_.count(name); ++k) name = wanted + "." + std::to_string(k);
+    for (int k = 2; names_.count(name) || jointNames_.count(name); ++k) name = wanted + "." + std::to_string(k);
     names_.insert(name);
     return name;
+  }
+
+  void collectJointNames() {
+    for (size_t i = 0; i + 1 < tokens_.size(); ++i) {
+      if (tokens_[i].text != "ROOT" && tokens_[i].text != "JOINT") continue;
+      std::string name;
+      for (size_t k = i + 1; k < tokens_.size() && tokens_[k].line == tokens_[i].line && tokens_[k].text != "{"; ++k)
+        name += (name.empty() ? "" : " ") + tokens_[k].text;
+      jointNames_.insert(name);
+    }
   }
 
   bool parseHierarchy() {
@@ -162,6 +174,7 @@ class BvhParser {
     if (tokens_.empty() || tokens_[0].text != "HIERARCHY")
       return fail(tokens_.empty() ? 1 : tokens_[0].line, "expected HIERARCHY at the start of the file");
     pos_ = 1;
+    collectJointNames();
     // An explicit stack instead of recursion: hostile files cannot overflow the C++ stack.
     std::vector<int> open;  // joints whose '}' is still due
     while (pos_ < tokens_.size()) {
@@ -191,14 +204,15 @@ class BvhParser {
         const Token* site = next();
         if (!site || !iequals(site->text, "Site")) return fail(t.line, "expected 'End Site'");
         j.endSite = true;
-        j.name = uniqueName(data_.joints[j.parent].name + "_End");
+        j.name = endSiteName(data_.joints[j.parent].name);
         if (!expectWord("{", "after End Site")) return false;
         if (!readOffset(j.offset, j.name)) return false;
       } else {
         std::string name;
         if (!readName(t.line, name)) return false;
         if (names_.count(name)) return fail(t.line, "joint name '" + name + "' is used twice");
-        j.name = uniqueName(name);
+        names_.insert(name);
+        j.name = name;
         if (!expectWord("{", ("after " + t.text + " " + name).c_str())) return false;
         if (!readOffset(j.offset, j.name)) return false;
         if (!readChannels(j)) return false;
@@ -302,7 +316,8 @@ class BvhParser {
   size_t pos_ = 0;
   int motionLine_ = -1;  // 0-based
   bool endsWithNewline_ = false;
-  std::unordered_set<std::string> names_;
+  std::unordered_set<std::string> names_;       // names given so far
+  std::unordered_set<std::string> jointNames_;  // every ROOT/JOINT name in the file
   std::string error_;
   BvhData data_;
 };

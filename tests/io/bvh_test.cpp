@@ -343,6 +343,26 @@ TEST(BvhStructure, EndSitesFileOrderAndSeveralRoots) {
     }
 }
 
+TEST(BvhStructure, EndSiteNamesNeverTakeARealJointName) {
+  // A real joint literally called "A_End" comes after A's End Site: the End Site yields.
+  const char* text =
+      "HIERARCHY\nROOT A\n{\n OFFSET 0 0 0\n CHANNELS 3 Zrotation Xrotation Yrotation\n"
+      " End Site\n {\n  OFFSET 0 1 0\n }\n"
+      " JOINT A_End\n {\n  OFFSET 1 0 0\n  CHANNELS 3 Zrotation Xrotation Yrotation\n"
+      "  End Site\n  {\n   OFFSET 0 0 1\n  }\n }\n}\n"
+      "MOTION\nFrames: 1\nFrame Time: 0.1\n0 0 0 0 0 0\n";
+  Result<BvhData> r = parseBvh(text, "names.bvh");
+  ASSERT_TRUE(r.ok()) << r.error();
+  ASSERT_EQ(r->joints.size(), 4u);
+  EXPECT_EQ(r->joints[0].name, "A");
+  EXPECT_EQ(r->joints[1].name, "A_End.2");
+  EXPECT_TRUE(r->joints[1].endSite);
+  EXPECT_EQ(r->joints[2].name, "A_End");
+  EXPECT_FALSE(r->joints[2].endSite);
+  EXPECT_EQ(r->joints[3].name, "A_End_End");
+  EXPECT_TRUE(r->skeleton().validate().empty());
+}
+
 TEST(BvhStructure, FrameNIsAtNTimesFrameTime) {
   const std::string text = joinLines({"HIERARCHY", "ROOT R", "{", "OFFSET 0 0 0", "CHANNELS 2 Xposition Zrotation",
                                       "}", "MOTION", "Frames: 3", "Frame Time: 0.25", "0 0", "2 10", "6 30"});
