@@ -72,15 +72,25 @@ glm::quat eulerToQuat(const glm::vec3& angles, EulerOrder order) {
 glm::vec3 quatToEuler(const glm::quat& q, EulerOrder order) {
   // Work on the rotation matrix, indexed m(row, col). For R = Ri(a) Rj(b) Rk(c):
   // m(i,k) = s*sin(b), with s = +1 for cyclic orders (XYZ, YZX, ZXY) and -1 otherwise.
-  const glm::mat3 r = glm::mat3_cast(safeNormalize(q));
-  auto m = [&](int row, int col) { return static_cast<double>(r[col][row]); };
+  // In double, normalised in double: near gimbal lock a and c come from matrix entries of
+  // size |cos b|, so a float-normalised quaternion (|q| off by 1e-7, a matrix off
+  // orthogonal by as much) moved a + c by 1e-7 / |cos b| -- 0.4 rad at 1e-6 from the lock.
+  const glm::quat u = safeNormalize(q);
+  const glm::dmat3 r = glm::mat3_cast(glm::normalize(glm::dquat(u.w, u.x, u.y, u.z)));
+  auto m = [&](int row, int col) { return r[col][row]; };
   const Axes x = axesOf(order);
   const int i = x.i, j = x.j, k = x.k;
   const double s = ((j - i + 3) % 3 == 1) ? 1.0 : -1.0;
-  const double sb = std::clamp(s * m(i, k), -1.0, 1.0);
+  // Row i is (cos b cos c, -+cos b sin c, +-sin b) up to the order's permutation, so
+  // atan2(sin b, |cos b|) gives b accurately even where asin(sin b) would not (near +-pi/2
+  // asin loses half the digits: a float sin b one ulp below 1 gave b off by 3e-4 rad).
+  const double sb = s * m(i, k);
+  const double cb = std::sqrt(m(i, i) * m(i, i) + m(i, j) * m(i, j));
   double a, b, c;
-  b = std::asin(sb);
-  if (std::abs(sb) < 0.9999999) {
+  b = std::atan2(sb, cb);
+  // Below this |cos b| the split between a and c is float noise (and forcing c = 0 moves
+  // the rotation by at most about pi * 1e-6 rad).
+  if (cb > 1e-6) {
     a = std::atan2(-s * m(j, k), m(k, k));
     c = std::atan2(-s * m(i, j), m(i, i));
   } else {
