@@ -40,12 +40,14 @@ bool LocalToWorldJob::run() const {
 }
 
 void computeWorld(const Skeleton& skeleton, const Pose& pose, std::vector<glm::mat4>& world) {
-  world.resize(skeleton.parents.size());
+  // A pose that does not fit the skeleton yields transforms only for the joints it covers.
+  const int count = std::min(skeleton.size(), pose.size());
+  world.resize(static_cast<size_t>(count));
   LocalToWorldJob job;
   job.parents = skeleton.parents.data();
   job.local = pose.local.data();
   job.world = world.data();
-  job.count = std::min(skeleton.size(), pose.size());
+  job.count = count;
   job.run();
 }
 
