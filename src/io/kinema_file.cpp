@@ -1,5 +1,6 @@
 #include "io/kinema_file.h"
 
+#include <climits>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -66,6 +67,27 @@ std::string collapseNumberArrays(const std::string& in) {
 
 int valueSize(ChannelTarget t) { return t == ChannelTarget::Rotation ? 4 : 3; }
 
+// Doubles at or beyond 2^128 - 2^103 (halfway between FLT_MAX and the next power of two)
+// round to infinity as floats; everything below rounds to a finite float.
+const double kFloatOverflow = std::ldexp(1.0, 128) - std::ldexp(1.0, 103);
+
+// Messages are one line: control characters from the file (a joint name with a newline)
+// are shown escaped.
+std::string oneLine(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
+      static const char hex[] = "0123456789abcdef";
+      out += "\\x";
+      out += hex[(c >> 4) & 0xf];
+      out += hex[c & 0xf];
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
 // Reads with the JSON path of every value at hand, so errors can point at it.
 class Reader {
  public:
@@ -73,7 +95,7 @@ class Reader {
   const std::string& error() const { return error_; }
 
   bool fail(const std::string& path, const std::string& what) {
-    error_ = source_ + ": " + (path.empty() ? "" : path + ": ") + what;
+    error_ = oneLine(source_ + ": " + (path.empty() ? "" : path + ": ") + what);
     return false;
   }
 
@@ -100,7 +122,7 @@ class Reader {
     for (int i = 0; i < n; ++i) {
       double v = 0.0;
       if (!number(j[i], path + "[" + std::to_string(i) + "]", v)) return false;
-      if (std::abs(v) > 3.0e38) return fail(path + "[" + std::to_string(i) + "]", "number out of float range");
+      if (std::abs(v) >= kFloatOverflow) return fail(path + "[" + std::to_string(i) + "]", "number out of float range");
       out[i] = static_cast<float>(v);
     }
     return true;
@@ -114,6 +136,9 @@ class Reader {
 
   bool integer(const Json& j, const std::string& path, long long& out) {
     if (!j.is_number_integer()) return fail(path, "expected an integer, found " + std::string(j.type_name()));
+    // Unsigned values above LLONG_MAX would wrap (2^64 - 1 would read as -1).
+    if (j.is_number_unsigned() && j.get<unsigned long long>() > static_cast<unsigned long long>(LLONG_MAX))
+      return fail(path, "integer " + std::to_string(j.get<unsigned long long>()) + " is out of range");
     out = j.get<long long>();
     return true;
   }
@@ -211,13 +236,15 @@ bool readChannel(Reader& r, const Json& j, const std::string& p, const Skeleton&
     const std::string tp = p + ".times[" + std::to_string(k) + "]";
     double t = 0.0;
     if (!r.number((*times)[k], tp, t)) return false;
+    if (std::abs(t) >= kFloatOverflow) return r.fail(tp, "number out of float range");
     if (k > 0 && !(static_cast<float>(t) > ch.times.back())) return r.fail(tp, "key times must increase");
     ch.times.push_back(static_cast<float>(t));
     glm::vec4 value(0.0f);
     if (!r.floats((*values)[k], p + ".values[" + std::to_string(k) + "]", n, &value.x)) return false;
     if (ch.target == ChannelTarget::Rotation) {
+      // Checked before normalising: glm::normalize turns a zero quaternion into identity.
+      if (value == glm::vec4(0.0f)) return r.fail(p + ".values[" + std::to_string(k) + "]", "zero quaternion");
       const glm::quat q = normalizeIfNeeded(glm::quat(value.w, value.x, value.y, value.z));
-      if (!(glm::dot(q, q) > 0.0f)) return r.fail(p + ".values[" + std::to_string(k) + "]", "zero quaternion");
       value = glm::vec4(q.x, q.y, q.z, q.w);
     }
     ch.values.push_back(value);
@@ -304,7 +331,7 @@ Result<Scene> parseKinemaJson(const std::string& text, const std::string& source
   try {
     root = Json::parse(text);
   } catch (const Json::exception& e) {
-    return Result<Scene>::failure(source + ": not valid JSON: " + e.what());
+    return Result<Scene>::failure(oneLine(source + ": not valid JSON: " + e.what()));
   }
   Reader r(source);
   if (!root.is_object()) return Result<Scene>::failure(source + ": expected a JSON object at the top");
@@ -312,20 +339,24 @@ Result<Scene> parseKinemaJson(const std::string& text, const std::string& source
   const Json* v;
   if (!(v = r.member(root, "", "format", true)) || !r.string(*v, "format", format))
     return Result<Scene>::failure(r.error());
-  if (format != "kinema") return Result<Scene>::failure(source + ": format: expected \"kinema\", found \"" + format + "\"");
+  if (format != "kinema")
+    return Result<Scene>::failure(oneLine(source + ": format: expected \"kinema\", found \"" + format + "\""));
   long long version = 0;
   if (!(v = r.member(root, "", "version", true)) || !r.integer(*v, "version", version))
     return Result<Scene>::failure(r.error());
-  if (version < 1 || version > kKinemaFormatVersion)
-    return Result<Scene>::failure(source + ": version: this Kinema reads versions 1.." +
-                                  std::to_string(kKinemaFormatVersion) + ", the file is version " +
-                                  std::to_string(version));
+  if (version > kKinemaFormatVersion)
+    return Result<Scene>::failure(oneLine(source + ": version: the file is version " + std::to_string(version) +
+                                          ", newer than this Kinema reads (up to version " +
+                                          std::to_string(kKinemaFormatVersion) + "); update Kinema to open it"));
+  if (version < 1)
+    return Result<Scene>::failure(oneLine(source + ": version: " + std::to_string(version) +
+                                          " is not a Kinema format version (they start at 1)"));
   Scene scene;
   scene.source = source;
   if (!readSkeleton(r, root, scene.skeleton) || !readClips(r, root, scene))
     return Result<Scene>::failure(r.error());
   const std::string bad = scene.skeleton.validate();
-  if (!bad.empty()) return Result<Scene>::failure(source + ": skeleton: " + bad);
+  if (!bad.empty()) return Result<Scene>::failure(oneLine(source + ": skeleton: " + bad));
   return scene;
 }
 
@@ -343,8 +374,27 @@ std::string saveKinemaFile(const std::string& path, const Scene& scene) {
       bad = scene.clips[c].validate(scene.skeleton);
       if (!bad.empty()) bad = "clip " + std::to_string(c) + ": " + bad;
     }
-  if (!bad.empty()) return path + ": not saved: " + bad;
-  return writeFileAtomically(path, toKinemaJson(scene));
+  // JSON text is UTF-8; a name in another encoding (Latin-1 BVH files) cannot be written.
+  auto utf8 = [](const std::string& name) {
+    try {
+      (void)Json(name).dump();
+      return true;
+    } catch (const Json::exception&) {
+      return false;
+    }
+  };
+  for (int i = 0; i < scene.skeleton.size() && bad.empty(); ++i)
+    if (!utf8(scene.skeleton.names[i])) bad = "joint " + std::to_string(i) + " name is not valid UTF-8";
+  for (size_t c = 0; c < scene.clips.size() && bad.empty(); ++c)
+    if (!utf8(scene.clips[c].name)) bad = "clip " + std::to_string(c) + " name is not valid UTF-8";
+  if (!bad.empty()) return oneLine(path + ": not saved: " + bad);
+  std::string text;
+  try {
+    text = toKinemaJson(scene);
+  } catch (const Json::exception& e) {
+    return oneLine(path + ": not saved: " + e.what());
+  }
+  return writeFileAtomically(path, text);
 }
 
 }  // namespace kinema
