@@ -44,7 +44,7 @@ int runPose(const PoseOptions& o) {
     nlohmann::ordered_json out;
     out["time"] = time;
     out["joints"] = jointsJson(scene.skeleton, world);
-    std::cout << out.dump() << "\n";
+    std::cout << out.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
     return kExitOk;
   }
   std::printf("%s at t = %g s: %d joints\n", scene.source.c_str(), time, scene.skeleton.size());

@@ -146,6 +146,7 @@ class BvhParser {
       name += tokens_[pos_++].text;
     }
     if (name.empty()) return fail(keywordLine, "joint without a name");
+    name = toUtf8(name);  // names from older exporters are often Latin-1
     return true;
   }
 
@@ -164,7 +165,7 @@ class BvhParser {
       std::string name;
       for (size_t k = i + 1; k < tokens_.size() && tokens_[k].line == tokens_[i].line && tokens_[k].text != "{"; ++k)
         name += (name.empty() ? "" : " ") + tokens_[k].text;
-      jointNames_.insert(name);
+      jointNames_.insert(toUtf8(name));
     }
   }
 

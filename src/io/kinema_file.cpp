@@ -374,19 +374,11 @@ std::string saveKinemaFile(const std::string& path, const Scene& scene) {
       bad = scene.clips[c].validate(scene.skeleton);
       if (!bad.empty()) bad = "clip " + std::to_string(c) + ": " + bad;
     }
-  // JSON text is UTF-8; a name in another encoding (Latin-1 BVH files) cannot be written.
-  auto utf8 = [](const std::string& name) {
-    try {
-      (void)Json(name).dump();
-      return true;
-    } catch (const Json::exception&) {
-      return false;
-    }
-  };
+  // JSON text is UTF-8 (our readers convert Latin-1 names; a caller may not have).
   for (int i = 0; i < scene.skeleton.size() && bad.empty(); ++i)
-    if (!utf8(scene.skeleton.names[i])) bad = "joint " + std::to_string(i) + " name is not valid UTF-8";
+    if (!isValidUtf8(scene.skeleton.names[i])) bad = "joint " + std::to_string(i) + " name is not valid UTF-8";
   for (size_t c = 0; c < scene.clips.size() && bad.empty(); ++c)
-    if (!utf8(scene.clips[c].name)) bad = "clip " + std::to_string(c) + " name is not valid UTF-8";
+    if (!isValidUtf8(scene.clips[c].name)) bad = "clip " + std::to_string(c) + " name is not valid UTF-8";
   if (!bad.empty()) return oneLine(path + ": not saved: " + bad);
   std::string text;
   try {

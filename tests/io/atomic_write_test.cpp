@@ -170,6 +170,31 @@ TEST(AtomicWrite, NewFileGetsReadablePermissions) {
   EXPECT_EQ(st.st_mode & 0777, 0644u);
 }
 
+TEST(AtomicWrite, ReplacedFileKeepsItsPermissions) {
+  TempDir dir;
+  const std::string path = dir / "private.kinema";
+  writeFile(path, "old");
+  ASSERT_EQ(::chmod(path.c_str(), 0600), 0);
+  EXPECT_EQ(writeFileAtomically(path, "new"), "");
+  struct stat st {};
+  ASSERT_EQ(::stat(path.c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 0777, 0600u);
+  EXPECT_EQ(readFile(path), "new");
+}
+
+TEST(AtomicWrite, SavingThroughASymlinkReplacesTheTargetAndKeepsTheLink) {
+  TempDir dir;
+  const std::string target = dir / "real.kinema", link = dir / "link.kinema";
+  writeFile(target, "old");
+  ASSERT_EQ(::symlink(target.c_str(), link.c_str()), 0);
+  EXPECT_EQ(writeFileAtomically(link, "new"), "");
+  struct stat st {};
+  ASSERT_EQ(::lstat(link.c_str(), &st), 0);
+  EXPECT_TRUE(S_ISLNK(st.st_mode)) << "the link was replaced by a regular file";
+  EXPECT_EQ(readFile(target), "new");
+  EXPECT_TRUE(tempFiles(dir.path).empty());
+}
+
 TEST(AtomicWrite, MissingFolderFailsNamingThePath) {
   TempDir dir;
   const std::string path = dir / "no/such/folder/scene.kinema";

@@ -1,6 +1,7 @@
 // BVH reader tests on small files written inline. Expected numbers are derived by hand
 // (in the comments) or printed by the independent numpy script named next to them.
 #include "io/bvh.h"
+#include "io/text_file.h"
 
 #include <algorithm>
 #include <cmath>
@@ -363,6 +364,19 @@ TEST(BvhStructure, EndSiteNamesNeverTakeARealJointName) {
   EXPECT_TRUE(r->skeleton().validate().empty());
 }
 
+TEST(BvhStructure, Latin1NamesBecomeUtf8) {
+  // "\xC9paule" is "Épaule" in Latin-1 (an older exporter); UTF-8 names pass unchanged.
+  const std::string text =
+      "HIERARCHY\nROOT \xC9paule\n{\n OFFSET 0 0 0\n CHANNELS 3 Zrotation Xrotation Yrotation\n"
+      " JOINT Gen\xC3\xBBt\n {\n  OFFSET 0 1 0\n  CHANNELS 0\n }\n}\n"
+      "MOTION\nFrames: 1\nFrame Time: 0.1\n0 0 0\n";
+  Result<BvhData> r = parseBvh(text, "latin1.bvh");
+  ASSERT_TRUE(r.ok()) << r.error();
+  EXPECT_EQ(r->joints[0].name, "\xC3\x89paule");
+  EXPECT_EQ(r->joints[1].name, "Gen\xC3\xBBt");
+  EXPECT_TRUE(isValidUtf8(r->joints[0].name));
+}
+
 TEST(BvhStructure, FrameNIsAtNTimesFrameTime) {
   const std::string text = joinLines({"HIERARCHY", "ROOT R", "{", "OFFSET 0 0 0", "CHANNELS 2 Xposition Zrotation",
                                       "}", "MOTION", "Frames: 3", "Frame Time: 0.25", "0 0", "2 10", "6 30"});
@@ -665,6 +679,25 @@ TEST(BvhCli, MalformedFileGivesExitOneAndOneLine) {
     EXPECT_NE(err.find(path), std::string::npos) << err;
   }
   runCommand("rm -rf '" + dir + "'");
+}
+
+}  // namespace
+}  // namespace kinema
+
+namespace kinema {
+namespace {
+
+TEST(TextEncoding, Utf8ValidationMatchesTheStandard) {
+  EXPECT_TRUE(isValidUtf8(""));
+  EXPECT_TRUE(isValidUtf8("plain ascii"));
+  EXPECT_TRUE(isValidUtf8("\xC3\x89paule \xE2\x82\xAC \xF0\x9F\x98\x80"));  // É, €, 😀
+  EXPECT_FALSE(isValidUtf8("\xC9paule"));                                 // Latin-1 byte
+  EXPECT_FALSE(isValidUtf8("\xC0\xAF"));                                  // overlong '/'
+  EXPECT_FALSE(isValidUtf8("\xED\xA0\x80"));                              // surrogate U+D800
+  EXPECT_FALSE(isValidUtf8("\xF4\x90\x80\x80"));                          // past U+10FFFF
+  EXPECT_FALSE(isValidUtf8("\xE2\x82"));                                  // truncated
+  EXPECT_EQ(toUtf8("abc"), "abc");
+  EXPECT_EQ(toUtf8("\xFF"), "\xC3\xBF");  // U+00FF
 }
 
 }  // namespace
