@@ -1,0 +1,41 @@
+#include "io/image.h"
+
+#include <stb_image.h>
+#include <stb_image_write.h>
+
+#include <algorithm>
+#include <cstdlib>
+
+#include "io/atomic_write.h"
+
+namespace kinema {
+
+void Image::flipVertically() {
+  const size_t row = static_cast<size_t>(width) * 4;
+  for (int y = 0; y < height / 2; ++y)
+    std::swap_ranges(rgba.begin() + y * row, rgba.begin() + (y + 1) * row, rgba.begin() + (height - 1 - y) * row);
+}
+
+std::string savePng(const std::string& path, const Image& image) {
+  if (image.width <= 0 || image.height <= 0 || image.rgba.size() != static_cast<size_t>(image.width) * image.height * 4)
+    return path + ": not saved: the image is empty or its size is inconsistent";
+  std::string bytes;
+  auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<size_t>(size));
+  };
+  if (!stbi_write_png_to_func(append, &bytes, image.width, image.height, 4, image.rgba.data(), image.width * 4))
+    return path + ": PNG encoding failed";
+  return writeFileAtomically(path, bytes);
+}
+
+Result<Image> loadPng(const std::string& path) {
+  int w = 0, h = 0, channels = 0;
+  unsigned char* data = stbi_load(path.c_str(), &w, &h, &channels, 4);
+  if (!data) return Result<Image>::failure(path + ": cannot read PNG: " + stbi_failure_reason());
+  Image image(w, h);
+  std::copy(data, data + static_cast<size_t>(w) * h * 4, image.rgba.begin());
+  stbi_image_free(data);
+  return image;
+}
+
+}  // namespace kinema

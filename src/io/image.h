@@ -1,0 +1,28 @@
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/result.h"
+
+namespace kinema {
+
+// An 8-bit RGBA image, rows top to bottom.
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgba;  // width * height * 4
+
+  Image() = default;
+  Image(int w, int h) : width(w), height(h), rgba(static_cast<size_t>(w) * h * 4, 0) {}
+  std::uint8_t* pixel(int x, int y) { return &rgba[(static_cast<size_t>(y) * width + x) * 4]; }
+  const std::uint8_t* pixel(int x, int y) const { return &rgba[(static_cast<size_t>(y) * width + x) * 4]; }
+  // Reverses the row order (OpenGL reads pixels bottom row first).
+  void flipVertically();
+};
+
+// PNG through Debian's stb. Saving goes through writeFileAtomically.
+std::string savePng(const std::string& path, const Image& image);
+Result<Image> loadPng(const std::string& path);
+
+}  // namespace kinema
