@@ -168,9 +168,13 @@ glm::quat slerpShortest(const glm::quat& a, const glm::quat& bIn, float t) {
 }
 
 glm::quat safeNormalize(const glm::quat& q) {
-  const float len2 = glm::dot(q, q);
-  if (!(len2 > 0.0f) || !std::isfinite(len2)) return glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
-  return q * (1.0f / std::sqrt(len2));
+  // Divide by the largest component first, so tiny (denormal) and huge quaternions
+  // normalise as accurately as ordinary ones instead of underflowing or overflowing.
+  const float m = std::max(std::max(std::abs(q.x), std::abs(q.y)), std::max(std::abs(q.z), std::abs(q.w)));
+  if (!(m > 0.0f) || !std::isfinite(m)) return glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
+  const glm::quat s(q.w / m, q.x / m, q.y / m, q.z / m);  // divide: 1/m overflows for denormal m
+  if (!isFinite(s)) return glm::quat(1.0f, 0.0f, 0.0f, 0.0f);  // a NaN component
+  return s * (1.0f / std::sqrt(glm::dot(s, s)));
 }
 
 }  // namespace kinema

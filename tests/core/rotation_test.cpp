@@ -622,3 +622,27 @@ TEST(SafeNormalize, ZeroNaNAndInfinityGiveIdentity) {
 
 }  // namespace
 }  // namespace kinema
+
+namespace kinema {
+namespace {
+
+// Found by fuzz_clip_sampling: a key quaternion with denormal-sized components normalised
+// to length 0.8 because its squared length underflowed.
+TEST(SafeNormalizeRegression, TinyAndHugeQuaternionsBecomeUnit) {
+  const glm::quat tiny(1.2830024e-22f, 0.0f, 0.0f, 9.183409e-41f);  // (w, x, y, z)
+  const glm::quat n = safeNormalize(tiny);
+  EXPECT_NEAR(glm::length(n), 1.0f, 1e-6f);
+  EXPECT_NEAR(n.w, 1.0f, 1e-6f);
+  const glm::quat denormal(0.0f, 1e-45f, 0.0f, 1e-45f);  // x and z equal, both denormal
+  const glm::quat d = safeNormalize(denormal);
+  EXPECT_NEAR(d.x, std::sqrt(0.5f), 1e-6f);
+  EXPECT_NEAR(d.z, std::sqrt(0.5f), 1e-6f);
+  const glm::quat huge(3e38f, 3e38f, 0.0f, 0.0f);  // squared length overflows float
+  const glm::quat h = safeNormalize(huge);
+  EXPECT_NEAR(h.w, std::sqrt(0.5f), 1e-6f);
+  EXPECT_NEAR(h.x, std::sqrt(0.5f), 1e-6f);
+  EXPECT_EQ(safeNormalize(glm::quat(NAN, 1.0f, 0.0f, 0.0f)), glm::quat(1.0f, 0.0f, 0.0f, 0.0f));
+}
+
+}  // namespace
+}  // namespace kinema

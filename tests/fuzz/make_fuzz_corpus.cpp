@@ -1,0 +1,113 @@
+// Writes the fuzz seed corpus from the project's own code: small valid BVH files of every
+// shape the reader supports, .kinema files made by the writer, and binary clip inputs.
+//   make_fuzz_corpus OUT_DIR   (creates OUT_DIR/bvh, OUT_DIR/kinema, OUT_DIR/sampling)
+#include <sys/stat.h>
+
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "core/default_character.h"
+#include "io/bvh.h"
+#include "io/kinema_file.h"
+
+namespace {
+
+void write(const std::string& path, const std::string& bytes) {
+  std::ofstream f(path, std::ios::binary);
+  f << bytes;
+}
+
+std::string bvhWithOrder(const char* order, bool crlf, bool tabs) {
+  std::string r;
+  auto line = [&](std::string s) {
+    if (tabs)
+      for (char& c : s)
+        if (c == ' ') c = '\t';
+    r += s + (crlf ? "\r\n" : "\n");
+  };
+  const std::string rot = std::string(1, order[0]) + "rotation " + order[1] + "rotation " + order[2] + "rotation";
+  line("HIERARCHY");
+  line("ROOT Hips");
+  line("{");
+  line("OFFSET 0 0 0");
+  line("CHANNELS 6 Xposition Yposition Zposition " + rot);
+  line("JOINT Spine");
+  line("{");
+  line("OFFSET 0 1.5 0");
+  line("CHANNELS 3 " + rot);
+  line("End Site");
+  line("{");
+  line("OFFSET 0 .5 0");
+  line("}");
+  line("}");
+  line("JOINT Leg");
+  line("{");
+  line("OFFSET 0.2 -1 0");
+  line("CHANNELS 6 Xposition Yposition Zposition " + rot);
+  line("End Site");
+  line("{");
+  line("OFFSET 0 -1 0");
+  line("}");
+  line("}");
+  line("}");
+  line("MOTION");
+  line("Frames: 3");
+  line("Frame Time: .0333333");
+  line("0 1 0 10 20 30 5 -5 15 0.2 -1 0 1 2 3");
+  line("0.1 1 0 -10 45 90 0 0 0 0.2 -1.1 0 -90 0 90");
+  line("0.2 1.1 -0.1 180 -45 0.5 1e-3 2.5E1 -0 0.2 -1 0 0 0 0");
+  return r;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: make_fuzz_corpus OUT_DIR\n");
+    return 2;
+  }
+  const std::string out = argv[1];
+  for (const char* sub : {"", "/bvh", "/kinema", "/sampling"}) ::mkdir((out + sub).c_str(), 0755);
+
+  const char* orders[] = {"XYZ", "XZY", "YXZ", "YZX", "ZXY", "ZYX"};
+  int n = 0;
+  for (const char* o : orders) {
+    write(out + "/bvh/order_" + o + ".bvh", bvhWithOrder(o, n % 2 == 1, n % 3 == 2));
+    ++n;
+  }
+  write(out + "/bvh/two_roots.bvh",
+        "HIERARCHY\nROOT A\n{\nOFFSET 0 0 0\nCHANNELS 3 Zrotation Xrotation Yrotation\n}\n"
+        "ROOT B\n{\nOFFSET 1 0 0\nCHANNELS 1 Yrotation\nEnd Site\n{\nOFFSET 0 1 0\n}\n}\n"
+        "MOTION\nFrames: 2\nFrame Time: 0.5\n0 0 0 0\n90 0 0 45\n");
+  write(out + "/bvh/no_frames.bvh",
+        "HIERARCHY\nROOT A {\nOFFSET 0 0 0\nCHANNELS 0\n}\nMOTION\nFrames: 0\nFrame Time: 1\n");
+
+  // .kinema files written by the project's writer.
+  kinema::Scene character;
+  character.skeleton = kinema::makeDefaultCharacter();
+  write(out + "/kinema/default_character.kinema", kinema::toKinemaJson(character));
+  kinema::Result<kinema::BvhData> bvh = kinema::parseBvh(bvhWithOrder("ZXY", false, false), "seed.bvh");
+  if (bvh.ok()) {
+    kinema::Scene scene;
+    scene.skeleton = bvh->skeleton();
+    scene.clips.push_back(bvh->clip());
+    scene.clips.back().channels.front().interpolation = kinema::Interpolation::Step;
+    write(out + "/kinema/from_bvh.kinema", kinema::toKinemaJson(scene));
+  }
+
+  // Clip-sampling inputs: [target][interpolation] then (time, x, y, z, w) per key, then a time.
+  auto clipInput = [&](const std::string& name, std::uint8_t target, std::uint8_t interp,
+                       const std::vector<float>& floats) {
+    std::string bytes{static_cast<char>(target), static_cast<char>(interp)};
+    bytes.append(reinterpret_cast<const char*>(floats.data()), floats.size() * sizeof(float));
+    write(out + "/sampling/" + name, bytes);
+  };
+  clipInput("rotation_linear", 1, 1, {0, 0, 0, 0, 1, 1, 0, 0.7071f, 0, 0.7071f, 0.5f});
+  clipInput("translation_step", 0, 0, {0, 1, 2, 3, 0, 2, -1, 0, 5, 0, 1.5f});
+  clipInput("scale_linear_three_keys", 2, 1, {0, 1, 1, 1, 0, 1, 2, 2, 2, 0, 3, 1, 1, 1, 0, 2.9f});
+  std::printf("wrote the fuzz corpus under %s\n", out.c_str());
+  return 0;
+}
