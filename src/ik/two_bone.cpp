@@ -1,6 +1,6 @@
-// Analytic two-bone IK (seed 002's law-of-cosines triangle): bend the middle joint so
-// that root-to-effector distance equals root-to-target distance, aim the root at the
-// target, then turn about the root-target line so the middle joint lies towards the pole.
+// Analytic two-bone IK (seed 002's law-of-cosines triangle): the triangle root-middle-
+// target fixes where the middle joint goes, on the pole's side of the root-target line;
+// the root and then the middle joint turn their bones there by minimal rotations.
 // Joints between root, middle and effector stay rigid. No allocation on the way.
 #include <algorithm>
 #include <cmath>
@@ -118,35 +118,34 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
     }
     const float d = std::clamp(dist, std::abs(l1 - l2), l1 + l2);
 
-    // 1. Bend the middle joint: interior angle at b from the law of cosines.
-    glm::quat deltaB(1.0f, 0.0f, 0.0f, 0.0f);
-    if (l1 > 1e-12f && l2 > 1e-12f) {
-      const glm::vec3 ba = pa - pb, bc = pc - pb;
-      glm::vec3 n = glm::cross(ba, bc);
-      const float current = std::atan2(glm::length(n), glm::dot(ba, bc));
-      if (glm::dot(n, n) < 1e-12f * l1 * l1 * l2 * l2) {
-        // Straight (or folded) chain: any plane through it; the pole step turns it later.
-        n = target.hasPole ? glm::cross(ba, glm::cross(target.pole - pa, ba)) : glm::vec3(0.0f);
-        if (glm::dot(n, n) < 1e-20f) n = anyPerpendicular(ba);
-        n = glm::cross(ba, n);  // perpendicular to the bone either way
-      }
-      const float cosWanted = std::clamp((l1 * l1 + l2 * l2 - d * d) / (2.0f * l1 * l2), -1.0f, 1.0f);
-      deltaB = glm::angleAxis(std::acos(cosWanted) - current, glm::normalize(n));
+    // Where the middle joint must go: on the circle the law of cosines allows, on the
+    // pole's side of the root-target line (without a pole: the side it is on now).
+    glm::vec3 u = dist > 1e-12f ? toTarget / dist : pc - pa;
+    if (glm::dot(u, u) < 1e-20f) u = pb - pa;
+    if (glm::dot(u, u) < 1e-20f) u = glm::vec3(0.0f, 1.0f, 0.0f);
+    u = glm::normalize(u);
+    glm::vec3 side = target.hasPole ? target.pole - pa : pb - pa;
+    side -= glm::dot(side, u) * u;
+    if (glm::dot(side, side) < 1e-20f) {
+      side = pb - pa - glm::dot(pb - pa, u) * u;
+      if (glm::dot(side, side) < 1e-20f) side = anyPerpendicular(u);
     }
-    const glm::vec3 pc1 = pb + deltaB * (pc - pb);
-    // 2. Aim: the root turns the bent chain's effector onto the target line.
-    glm::quat deltaA = fromToRotation(pc1 - pa, toTarget);
-    // 3. Pole: turn about the root-target line until the middle joint faces the pole.
-    if (target.hasPole && dist > 1e-12f) {
-      const glm::vec3 u = toTarget / dist;
-      glm::vec3 vb = deltaA * (pb - pa), vp = target.pole - pa;
-      vb -= glm::dot(vb, u) * u;
-      vp -= glm::dot(vp, u) * u;
-      if (glm::dot(vb, vb) > 1e-20f && glm::dot(vp, vp) > 1e-20f)
-        deltaA = glm::angleAxis(std::atan2(glm::dot(u, glm::cross(vb, vp)), glm::dot(vb, vp)), u) * deltaA;
+    const glm::vec3 w = glm::normalize(side);
+    glm::quat deltaA(1.0f, 0.0f, 0.0f, 0.0f), deltaB(1.0f, 0.0f, 0.0f, 0.0f);
+    if (l1 > 1e-12f && l2 > 1e-12f && d > 1e-12f) {
+      const float cosA = std::clamp((l1 * l1 + d * d - l2 * l2) / (2.0f * l1 * d), -1.0f, 1.0f);
+      const float sinA = std::sqrt(std::max(0.0f, 1.0f - cosA * cosA));
+      const glm::vec3 elbow = pa + l1 * (cosA * u + sinA * w), hand = pa + d * u;
+      // Minimal rotations (no spurious roll): the root turns its bone onto the elbow,
+      // then the middle joint turns its bone onto the hand.
+      deltaA = fromToRotation(pb - pa, elbow - pa);
+      const glm::vec3 pc1 = pa + deltaA * (pc - pa);
+      deltaB = fromToRotation(pc1 - elbow, hand - elbow);
+    } else {
+      deltaA = fromToRotation(pc - pa, u);  // a zero-length bone: only aiming is possible
     }
-    applyWorldDelta(pose.local[b].rotation, rbp, deltaB);
     applyWorldDelta(pose.local[a].rotation, rap, deltaA);
+    applyWorldDelta(pose.local[b].rotation, safeNormalize(deltaA * rbp), deltaB);
     glm::quat effectorParentRot(1.0f, 0.0f, 0.0f, 0.0f);
     bool limited = false;
     if (problem.rig) {
@@ -159,14 +158,16 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
     }
     if (target.hasOrientation) {
       const glm::quat rcp = rotationOf(path.world[ic - 1]);
-      // The effector's parent turned with the root and middle joint: deltaA * deltaB.
-      effectorParentRot = safeNormalize(deltaA * deltaB * rcp);
+      // The effector's parent turned with the root, then with the middle joint.
+      effectorParentRot = safeNormalize(deltaB * deltaA * rcp);
       pose.local[c].rotation = safeNormalize(glm::conjugate(effectorParentRot) * safeNormalize(target.orientation));
       if (problem.rig)
         if (const JointLimit* l = problem.rig->limitOf(c))
           pose.local[c].rotation = applyJointLimit(*l, s.rest[c].rotation, pose.local[c].rotation);
     }
-    glm::vec3 finalC = pa + deltaA * (pc1 - pa);
+    // Where the effector ended: pb moved by deltaA, then pc about the new pb by deltaB.
+    const glm::vec3 pb1 = pa + deltaA * (pb - pa);
+    glm::vec3 finalC = pb1 + deltaB * (pa + deltaA * (pc - pa) - pb1);
     if (limited || settings.trace) {
       path.compute(s, pose, problem.rootTransform, a, c);
       finalC = glm::vec3(path.world[ic][3]);
