@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli/command_line.h"
+#include "cli/ik_command.h"
 #include "cli/pose_command.h"
 #include "core/default_character.h"
 #include "core/forward_kinematics.h"
@@ -35,6 +36,8 @@ int main(int argc, char** argv) {
 
   kinema::cli::PoseOptions pose;
   CLI::App* poseCmd = kinema::cli::addPoseCommand(app, pose);
+  kinema::cli::IkOptions ik;
+  CLI::App* ikCmd = kinema::cli::addIkCommand(app, ik);
 
   try {
     app.parse(argc, argv);
@@ -50,5 +53,6 @@ int main(int argc, char** argv) {
   }
 
   if (poseCmd->parsed()) return kinema::cli::runPose(pose);
+  if (ikCmd->parsed()) return kinema::cli::runIk(ik);
   return describeDefaultCharacter();
 }

@@ -14,6 +14,9 @@ std::string toKinemaJson(const Scene& scene);
 Result<Scene> parseKinemaJson(const std::string& text, const std::string& source);
 
 Result<Scene> loadKinemaFile(const std::string& path);
+// An IK rig file: {"limits": [...], "targets": [...]}, the schema of a .kinema file's
+// "ik" key, with joints named in `skeleton`.
+Result<IkRig> parseIkRigJson(const std::string& text, const std::string& source, const Skeleton& skeleton);
 // Validates first, then writes a temporary file and renames it over `path`, so a failed
 // save leaves the previous file intact. Returns an empty string or the error.
 std::string saveKinemaFile(const std::string& path, const Scene& scene);

@@ -5,6 +5,7 @@
 #include "anim/clip.h"
 #include "core/result.h"
 #include "core/skeleton.h"
+#include "ik/ik_rig.h"
 
 namespace kinema {
 
@@ -13,6 +14,7 @@ struct Scene {
   std::string source;  // the path it came from, for messages and titles
   Skeleton skeleton;
   std::vector<Clip> clips;
+  IkRig ik;  // joint limits and saved IK targets (optional in files)
 };
 
 // Loads .bvh or .kinema, chosen by the file's extension.

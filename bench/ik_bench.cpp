@@ -1,0 +1,136 @@
+// IK solvers on the FABRIK paper's test (Aristidou & Lasenby 2011): a 10-joint chain,
+// random reachable targets, tolerance 1e-3 x chain length; also unreachable targets.
+// Each benchmark iteration solves one case from a fixed list (the pose is reset first).
+// Counters: iters_mean / iters_median = solver iterations per solve, us_per_iter.
+//   ./build/bench/ik_bench --benchmark_min_time=1
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include "core/forward_kinematics.h"
+#include "ik/ik_solver.h"
+
+namespace kinema {
+namespace {
+
+constexpr int kCases = 1000;
+
+Skeleton chain(int joints) {
+  Skeleton s;
+  for (int i = 0; i < joints; ++i)
+    s.addJoint("j" + std::to_string(i), i - 1, Transform::fromTranslation(glm::vec3(0.0f, i == 0 ? 0.0f : 1.0f, 0.0f)));
+  return s;
+}
+
+Pose randomPose(const Skeleton& s, std::mt19937& rng, float maxAngle) {
+  std::normal_distribution<float> g(0.0f, 1.0f);
+  std::uniform_real_distribution<float> a(0.0f, maxAngle);
+  Pose p = Pose::rest(s);
+  for (Transform& t : p.local) {
+    const glm::vec3 axis(g(rng), g(rng), g(rng));
+    t.rotation = glm::angleAxis(a(rng), glm::normalize(axis));
+  }
+  return p;
+}
+
+struct Cases {
+  Skeleton skeleton;
+  std::vector<Pose> starts;
+  std::vector<glm::vec3> targets;
+  float length = 0.0f;
+};
+
+// Start poses and targets: FK of random poses (each joint turned up to 0.6 rad about a
+// random axis), or points 1.5 chain lengths away in a random direction (unreachable).
+Cases makeCases(int joints, bool reachable) {
+  Cases c;
+  c.skeleton = chain(joints);
+  c.length = static_cast<float>(joints - 1);
+  std::mt19937 rng(2011);
+  for (int k = 0; k < kCases; ++k) {
+    c.starts.push_back(randomPose(c.skeleton, rng, 0.6f));
+    if (reachable) {
+      c.targets.push_back(glm::vec3(computeWorld(c.skeleton, randomPose(c.skeleton, rng, 0.6f))[joints - 1][3]));
+    } else {
+      std::normal_distribution<float> g(0.0f, 1.0f);
+      c.targets.push_back(glm::normalize(glm::vec3(g(rng), g(rng), g(rng))) * 1.5f * c.length);
+    }
+  }
+  return c;
+}
+
+void run(benchmark::State& state, IkSolver solver, int joints, bool reachable) {
+  const Cases cases = makeCases(joints, reachable);
+  IkSettings settings;
+  settings.tolerance = 1e-3f * cases.length;
+  settings.maxIterations = solver == IkSolver::JacobianTranspose ? 20000 : 1000;
+  settings.stallFraction = reachable ? 0.0f : settings.stallFraction;  // reachable: run to tolerance
+  IkProblem problem;
+  problem.skeleton = &cases.skeleton;
+  problem.targets.push_back({});
+  problem.targets[0].effector = joints - 1;
+  problem.targets[0].root = 0;
+  // One untimed pass over every case for the iteration statistics.
+  std::vector<int> iterations;
+  int converged = 0;
+  for (int k = 0; k < kCases; ++k) {
+    Pose pose = cases.starts[k];
+    problem.pose = &pose;
+    problem.targets[0].position = cases.targets[k];
+    const IkResult r = solveIk(solver, problem, settings);
+    iterations.push_back(r.iterations);
+    converged += r.converged;
+  }
+  double sum = 0.0;
+  for (int i : iterations) sum += i;
+  std::vector<int> sorted = iterations;
+  std::sort(sorted.begin(), sorted.end());
+  Pose pose;
+  long long solves = 0, iters = 0;
+  int k = 0;
+  for (auto _ : state) {
+    pose = cases.starts[k];
+    problem.pose = &pose;
+    problem.targets[0].position = cases.targets[k];
+    const IkResult r = solveIk(solver, problem, settings);
+    benchmark::DoNotOptimize(r);
+    iters += r.iterations;
+    ++solves;
+    k = (k + 1) % kCases;
+  }
+  state.counters["iters_mean"] = sum / kCases;
+  state.counters["iters_median"] = sorted[kCases / 2];
+  state.counters["converged_pct"] = 100.0 * converged / kCases;
+  state.counters["us_per_iter"] =
+      benchmark::Counter(static_cast<double>(iters) * 1e-6, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.SetItemsProcessed(solves);
+}
+
+void registerAll() {
+  const IkSolver iterative[] = {IkSolver::Ccd, IkSolver::Fabrik, IkSolver::JacobianTranspose, IkSolver::JacobianPinv,
+                                IkSolver::JacobianDls};
+  for (bool reachable : {true, false}) {
+    const std::string kind = reachable ? "reachable" : "unreachable";
+    for (IkSolver s : iterative)
+      benchmark::RegisterBenchmark(("ik10/" + kind + "/" + toString(s)).c_str(),
+                                   [=](benchmark::State& st) { run(st, s, 10, reachable); })
+          ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("ik3/" + kind + "/two-bone").c_str(),
+                                 [=](benchmark::State& st) { run(st, IkSolver::TwoBone, 3, reachable); })
+        ->Unit(benchmark::kNanosecond);
+  }
+}
+
+}  // namespace
+}  // namespace kinema
+
+int main(int argc, char** argv) {
+  kinema::registerAll();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,192 @@
+#include "cli/ik_command.h"
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "cli/command_line.h"
+#include "core/forward_kinematics.h"
+#include "ik/ik_solver.h"
+#include "io/json_number.h"
+#include "io/kinema_file.h"
+#include "io/text_file.h"
+
+namespace kinema::cli {
+
+namespace {
+
+enum class Parsed { Ok, Malformed, NotFinite };
+
+// "X,Y,Z": three numbers separated by commas.
+Parsed parseVec3(const std::string& text, glm::vec3& out) {
+  std::stringstream ss(text);
+  std::string part;
+  int n = 0;
+  bool finite = true;
+  while (std::getline(ss, part, ',')) {
+    if (n == 3) return Parsed::Malformed;
+    try {
+      size_t used = 0;
+      const double v = std::stod(part, &used);
+      if (used != part.size() && part.find_first_not_of(" \t", used) != std::string::npos) return Parsed::Malformed;
+      if (!std::isfinite(v) || std::abs(v) > 3.0e38) finite = false;
+      out[n++] = static_cast<float>(v);
+    } catch (const std::exception&) {
+      return Parsed::Malformed;
+    }
+  }
+  if (n != 3 || (!text.empty() && text.back() == ',')) return Parsed::Malformed;
+  return finite ? Parsed::Ok : Parsed::NotFinite;
+}
+
+int usage(const std::string& message) {
+  std::cerr << "kinema ik: " << message << "; see --help\n";
+  return kExitUsage;
+}
+
+}  // namespace
+
+CLI::App* addIkCommand(CLI::App& app, IkOptions& o) {
+  CLI::App* cmd = app.add_subcommand("ik", "Move joints so effectors reach targets (inverse kinematics)");
+  cmd->add_option("file", o.file, "A .bvh or .kinema file")->required();
+  cmd->add_option("--effector", o.effectors, "Effector joint name (repeat for several targets)");
+  cmd->add_option("--target", o.targets, "Target position X,Y,Z (one per --effector)");
+  cmd->add_option("--root", o.roots,
+                  "IK root joint per effector (default: its topmost ancestor; for two-bone its grandparent)");
+  cmd->add_option("--rig", o.rig, "JSON rig file: {\"limits\": [...], \"targets\": [...]} as in .kinema files");
+  cmd->add_option("--solver", o.solver, "ccd, fabrik, jacobian-transpose, jacobian-pinv, jacobian-dls or two-bone");
+  cmd->add_option("--tolerance", o.tolerance, "Converged when every effector is this close (file units; default 0.001)");
+  cmd->add_option("--max-iterations", o.maxIterations, "Iteration cap (default 100; 2000 for jacobian-transpose)");
+  cmd->add_option("--lambda", o.lambda, "jacobian-dls damping, as a fraction of the chain's reach (default 0.1)");
+  cmd->add_option("--pole", o.pole, "two-bone: X,Y,Z point the middle joint bends towards");
+  cmd->add_option("--soften", o.soften, "two-bone: soften distance near full extension (default 0)");
+  cmd->add_option("--clip", o.clip, "Clip index (default 0)");
+  o.timeOption = cmd->add_option("--time", o.time, "Start from the pose at this time (seconds)");
+  o.frameOption = cmd->add_option("--frame", o.frame, "Start from the pose at this frame");
+  o.timeOption->excludes(o.frameOption);
+  cmd->add_flag("--trace", o.trace, "Include every solver step (joint positions and error) in the JSON");
+  cmd->add_flag("--json", o.json, "Print JSON (the stable contract) instead of a summary");
+  return cmd;
+}
+
+int runIk(const IkOptions& o) {
+  const std::optional<IkSolver> solver = ikSolverFromString(o.solver);
+  if (!solver) return usage("--solver '" + o.solver + "' is not one of ccd, fabrik, jacobian-transpose, jacobian-pinv, jacobian-dls, two-bone");
+  if (o.effectors.size() != o.targets.size())
+    return usage("give one --target per --effector (" + std::to_string(o.effectors.size()) + " effectors, " +
+                 std::to_string(o.targets.size()) + " targets)");
+  if (!o.roots.empty() && o.roots.size() != o.effectors.size())
+    return usage("give --root once per --effector, or not at all");
+  std::vector<glm::vec3> positions(o.targets.size());
+  for (size_t i = 0; i < o.targets.size(); ++i) {
+    const Parsed p = parseVec3(o.targets[i], positions[i]);
+    if (p == Parsed::Malformed) return usage("--target '" + o.targets[i] + "' is not X,Y,Z");
+    if (p == Parsed::NotFinite) return badInput("--target '" + o.targets[i] + "' is not a finite position");
+  }
+  glm::vec3 pole(0.0f);
+  if (!o.pole.empty()) {
+    const Parsed p = parseVec3(o.pole, pole);
+    if (p == Parsed::Malformed) return usage("--pole '" + o.pole + "' is not X,Y,Z");
+    if (p == Parsed::NotFinite) return badInput("--pole '" + o.pole + "' is not a finite position");
+  }
+  if (!std::isfinite(o.time)) return badInput("--time must be a finite number");
+  if (!std::isfinite(o.tolerance) || o.tolerance < 0) return badInput("--tolerance must be a finite number >= 0");
+  if (!std::isfinite(o.lambda) || o.lambda < 0) return badInput("--lambda must be a finite number >= 0");
+  if (!std::isfinite(o.soften) || o.soften < 0) return badInput("--soften must be a finite number >= 0");
+  if (o.maxIterations == 0 || o.maxIterations < -1) return badInput("--max-iterations must be at least 1");
+
+  Result<Scene> loaded = loadSceneOrDefault(o.file);
+  if (!loaded) return badInput(loaded.error());
+  const Scene& scene = loaded.value();
+  const Skeleton& skeleton = scene.skeleton;
+  const int clips = static_cast<int>(scene.clips.size());
+  if (o.clip < 0 || (o.clip >= clips && !(clips == 0 && o.clip == 0)))
+    return badInput(scene.source + ": --clip " + std::to_string(o.clip) + " does not exist");
+  const double time = o.frameOption->count() ? static_cast<double>(o.frame) * frameTimeOf(scene, o.clip) : o.time;
+  Pose pose = Pose::rest(skeleton);
+  if (o.clip < clips) sampleClip(scene.clips[o.clip], static_cast<float>(time), pose);
+
+  IkRig rig = scene.ik;
+  std::vector<IkTarget> targets;
+  if (!o.rig.empty()) {
+    std::string text;
+    const std::string err = readTextFile(o.rig, text);
+    if (!err.empty()) return badInput(err);
+    Result<IkRig> extra = parseIkRigJson(text, o.rig, skeleton);
+    if (!extra) return badInput(extra.error());
+    for (int j = 0; j < static_cast<int>(extra->limits.size()); ++j)
+      if (extra->limits[j].active()) rig.setLimit(skeleton.size(), j, extra->limits[j]);
+    targets = extra->targets;
+  }
+  for (size_t i = 0; i < o.effectors.size(); ++i) {
+    IkTarget t;
+    t.effector = skeleton.find(o.effectors[i]);
+    if (t.effector < 0) return badInput(scene.source + ": --effector: no joint named '" + o.effectors[i] + "'");
+    if (!o.roots.empty()) {
+      t.root = skeleton.find(o.roots[i]);
+      if (t.root < 0) return badInput(scene.source + ": --root: no joint named '" + o.roots[i] + "'");
+    }
+    t.position = positions[i];
+    t.hasPole = !o.pole.empty();
+    t.pole = pole;
+    targets.push_back(t);
+  }
+  if (targets.empty()) targets = scene.ik.targets;  // the file's saved targets
+  if (targets.empty()) return usage("give --effector NAME --target X,Y,Z (or --rig FILE)");
+
+  IkProblem problem;
+  problem.skeleton = &skeleton;
+  problem.pose = &pose;
+  problem.rig = rig.empty() ? nullptr : &rig;
+  problem.targets = targets;
+  IkSettings settings;
+  settings.tolerance = static_cast<float>(o.tolerance);
+  settings.maxIterations = o.maxIterations > 0 ? o.maxIterations : (*solver == IkSolver::JacobianTranspose ? 2000 : 100);
+  settings.dlsLambda = static_cast<float>(o.lambda);
+  settings.twoBoneSoften = static_cast<float>(o.soften);
+  IkTrace trace;
+  if (o.trace) settings.trace = &trace;
+  const IkResult r = solveIk(*solver, problem, settings);
+  if (!r.message.empty()) return badInput(scene.source + ": " + r.message);
+  const std::vector<glm::mat4> world = computeWorld(skeleton, pose);
+
+  if (o.json) {
+    nlohmann::ordered_json out;
+    out["solver"] = toString(*solver);
+    out["converged"] = r.converged;
+    out["iterations"] = r.iterations;
+    out["error"] = jsonFloat(r.error);
+    if (o.trace) {
+      nlohmann::ordered_json names = nlohmann::ordered_json::array();
+      for (int j : trace.joints) names.push_back(j);
+      out["trace_joints"] = std::move(names);  // indices into "joints" of each trace position
+      nlohmann::ordered_json steps = nlohmann::ordered_json::array();
+      for (const IkTraceEntry& e : trace.entries) {
+        nlohmann::ordered_json s;
+        s["iteration"] = e.iteration;
+        s["step"] = toString(e.step);
+        if (e.joint >= 0) s["joint"] = e.joint;
+        s["error"] = jsonFloat(e.error);
+        nlohmann::ordered_json ps = nlohmann::ordered_json::array();
+        for (const glm::vec3& p : e.positions) ps.push_back({jsonFloat(p.x), jsonFloat(p.y), jsonFloat(p.z)});
+        s["positions"] = std::move(ps);
+        steps.push_back(std::move(s));
+      }
+      out["trace"] = std::move(steps);
+    }
+    out["joints"] = jointsJson(skeleton, world);
+    std::cout << out.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
+    return kExitOk;
+  }
+  std::printf("%s: %s %s after %d iteration%s, error %g\n", scene.source.c_str(), toString(*solver),
+              r.converged ? "converged" : "did not converge", r.iterations, r.iterations == 1 ? "" : "s", r.error);
+  for (const IkTarget& t : targets) {
+    const glm::vec3 p(world[t.effector][3]);
+    std::printf("  %-20s at %12.6g %12.6g %12.6g  (target %g %g %g)\n", skeleton.names[t.effector].c_str(), p.x, p.y,
+                p.z, t.position.x, t.position.y, t.position.z);
+  }
+  return kExitOk;
+}
+
+}  // namespace kinema::cli

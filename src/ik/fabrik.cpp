@@ -1,0 +1,128 @@
+// FABRIK (Aristidou & Lasenby 2011; seed 002): a backward pass from the targets to the
+// root and a forward pass from the fixed root. Several effectors: each sub-chain pulls
+// its sub-base, which takes the centroid of the proposals (the paper's multi-end rule).
+// The forward pass turns positions into local rotations as it goes (the minimal rotation
+// of each bone, so no spurious twist), clamping each joint to its limit before its
+// children are placed: bones keep their length exactly and limits always hold.
+#include <Eigen/Dense>
+#include <algorithm>
+
+#include "ik/ik_chain.h"
+
+namespace kinema {
+
+using ik_detail::Goal;
+using ik_detail::IkChain;
+
+namespace {
+
+// The rotation taking the unit directions from[i] closest onto to[i] (Kabsch), for a
+// sub-base with several children.
+glm::quat bestRotation(const std::vector<glm::vec3>& from, const std::vector<glm::vec3>& to) {
+  Eigen::Matrix3f h = Eigen::Matrix3f::Zero();
+  for (size_t i = 0; i < from.size(); ++i)
+    h += Eigen::Vector3f(from[i].x, from[i].y, from[i].z) * Eigen::Vector3f(to[i].x, to[i].y, to[i].z).transpose();
+  Eigen::JacobiSVD<Eigen::Matrix3f> svd(h, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3f d = Eigen::Matrix3f::Identity();
+  d(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0.0f ? -1.0f : 1.0f;
+  const Eigen::Matrix3f r = svd.matrixV() * d * svd.matrixU().transpose();
+  glm::mat3 m;
+  for (int c = 0; c < 3; ++c)
+    for (int rr = 0; rr < 3; ++rr) m[c][rr] = r(rr, c);
+  return safeNormalize(glm::quat_cast(m));
+}
+
+glm::vec3 childPosition(const IkChain& c, int child) {
+  const int s = c.parentSlot[child];
+  return glm::vec3(c.world[s] * glm::vec4(c.pose->local[c.joints[child]].translation, 1.0f));
+}
+
+}  // namespace
+
+IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
+  IkResult bad;
+  bad.message = problem.validate();
+  if (!bad.message.empty()) return bad;
+  IkChain c;
+  c.build(problem);
+  IkTrace* trace = settings.trace;
+  c.record(trace, 0, IkStep::Start);
+  const int m = static_cast<int>(c.joints.size());
+  // The paper's first test: a single target out of reach straightens the chain at once.
+  if (c.straightenIfUnreachable()) {
+    c.record(trace, 1, IkStep::Straighten);
+    return c.result(1, settings);
+  }
+  std::vector<float> boneLength(m, 0.0f);
+  for (int s = 0; s < m; ++s)
+    if (c.parentSlot[s] >= 0) boneLength[s] = glm::length(c.position(s) - c.position(c.parentSlot[s]));
+  std::vector<int> goalOf(m, -1);
+  for (int g = 0; g < static_cast<int>(c.goals.size()); ++g) goalOf[c.goals[g].slot] = g;
+  std::vector<glm::vec3> reached(m), sum(m);
+  std::vector<float> count(m);
+  std::vector<glm::vec3> from, to;
+  int it = 0;
+  while (!c.converged(settings) && it < settings.maxIterations) {
+    ++it;
+    // Backward: children before parents (reverse preorder); each proposes where its
+    // parent should be, at bone length from itself towards the parent's current place.
+    std::fill(sum.begin(), sum.end(), glm::vec3(0.0f));
+    std::fill(count.begin(), count.end(), 0.0f);
+    for (int s = m - 1; s >= 0; --s) {
+      if (goalOf[s] >= 0) {
+        const Goal& g = c.goals[goalOf[s]];
+        sum[s] += g.weight * g.position;
+        count[s] += g.weight;
+      }
+      reached[s] = count[s] > 0.0f ? sum[s] / count[s] : c.position(s);
+      const int p = c.parentSlot[s];
+      if (p < 0) continue;
+      glm::vec3 dir = c.position(p) - reached[s];
+      float len = glm::length(dir);
+      if (!(len > 1e-12f)) {  // on top of the parent: keep the bone's current direction
+        dir = c.position(p) - c.position(s);
+        len = glm::length(dir);
+      }
+      const glm::vec3 proposal = len > 1e-12f ? reached[s] + dir * (boneLength[s] / len) : c.position(p);
+      sum[p] += proposal;
+      count[p] += 1.0f;
+    }
+    if (trace) c.recordPositions(trace, it, IkStep::FabrikBackward, reached, c.maxError());
+    // Forward: from the fixed roots outwards; each joint turns its bone(s) towards the
+    // backward positions of its children, within its limit.
+    for (int s = 0; s < m; ++s) {
+      if (c.parentSlot[s] >= 0) c.forwardSlot(s);
+      const glm::vec3 p = c.position(s);
+      from.clear();
+      to.clear();
+      for (int k = s + 1; k < s + c.subtreeSize[s]; k += c.subtreeSize[k]) {
+        const glm::vec3 a = childPosition(c, k) - p, b = reached[k] - p;
+        const float la = glm::length(a), lb = glm::length(b);
+        if (la > 1e-12f && lb > 1e-12f) {
+          from.push_back(a / la);
+          to.push_back(b / lb);
+        }
+      }
+      glm::quat local = c.pose->local[c.joints[s]].rotation;
+      const glm::quat parentRot = c.parentRotation(s);
+      if (goalOf[s] >= 0 && c.goals[goalOf[s]].hasOrientation && from.empty()) {
+        local = glm::conjugate(parentRot) * c.goals[goalOf[s]].orientation;
+      } else if (from.size() == 1) {
+        local = glm::conjugate(parentRot) * fromToRotation(from[0], to[0]) * c.rotation[s];
+      } else if (from.size() > 1) {
+        local = glm::conjugate(parentRot) * bestRotation(from, to) * c.rotation[s];
+      } else {
+        continue;
+      }
+      local = safeNormalize(local);
+      if (c.limit[s]) local = applyJointLimit(*c.limit[s], c.skeleton->rest[c.joints[s]].rotation, local);
+      c.pose->local[c.joints[s]].rotation = local;
+      c.forwardSlot(s);
+    }
+    c.record(trace, it, IkStep::FabrikForward);
+    if (c.stalled(c.maxError(), settings)) break;
+  }
+  return c.result(it, settings);
+}
+
+}  // namespace kinema

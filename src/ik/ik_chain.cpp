@@ -1,0 +1,219 @@
+#include "ik/ik_chain.h"
+
+#include <algorithm>
+
+#include "core/forward_kinematics.h"
+
+namespace kinema::ik_detail {
+
+namespace {
+glm::quat rotationOf(const glm::mat4& m) {
+  const glm::mat3 r(glm::normalize(glm::vec3(m[0])), glm::normalize(glm::vec3(m[1])), glm::normalize(glm::vec3(m[2])));
+  return safeNormalize(glm::quat_cast(r));
+}
+}  // namespace
+
+std::string IkChain::build(const IkProblem& problem, bool twoBone) {
+  skeleton = problem.skeleton;
+  pose = problem.pose;
+  rig = problem.rig;
+  const Skeleton& s = *skeleton;
+  const int n = s.size();
+  // Mark the union of root..effector paths.
+  std::vector<int> slotOf(n, -1);
+  std::vector<char> in(n, 0);
+  for (const IkTarget& t : problem.targets) {
+    const int root = ikRootOf(s, t, twoBone);
+    for (int j = t.effector; j >= 0; j = s.parents[j]) {
+      in[j] = 1;
+      if (j == root) break;
+    }
+  }
+  // Depth-first preorder over the marked joints (parents come before children in the
+  // skeleton, so an ascending scan finds children in order).
+  std::vector<int> order;
+  std::vector<int> stack;
+  for (int j = n - 1; j >= 0; --j)
+    if (in[j] && (s.parents[j] < 0 || !in[s.parents[j]])) stack.push_back(j);
+  while (!stack.empty()) {
+    const int j = stack.back();
+    stack.pop_back();
+    order.push_back(j);
+    for (int c = n - 1; c > j; --c)
+      if (in[c] && s.parents[c] == j) stack.push_back(c);
+  }
+  const int m = static_cast<int>(order.size());
+  joints = order;
+  parentSlot.assign(m, -1);
+  subtreeSize.assign(m, 1);
+  fixedParent.assign(m, problem.rootTransform);
+  world.assign(m, glm::mat4(1.0f));
+  rotation.assign(m, glm::quat(1.0f, 0.0f, 0.0f, 0.0f));
+  limit.assign(m, nullptr);
+  for (int i = 0; i < m; ++i) slotOf[joints[i]] = i;
+  bool needWorld = false;
+  for (int i = 0; i < m; ++i) {
+    const int p = s.parents[joints[i]];
+    parentSlot[i] = p >= 0 ? slotOf[p] : -1;
+    if (parentSlot[i] < 0 && p >= 0) needWorld = true;
+    if (rig) limit[i] = rig->limitOf(joints[i]);
+  }
+  for (int i = m - 1; i >= 0; --i)
+    if (parentSlot[i] >= 0) subtreeSize[parentSlot[i]] += subtreeSize[i];
+  if (needWorld) {
+    const std::vector<glm::mat4> all = computeWorld(s, *pose);
+    for (int i = 0; i < m; ++i) {
+      const int p = s.parents[joints[i]];
+      if (parentSlot[i] < 0 && p >= 0) fixedParent[i] = problem.rootTransform * all[p];
+    }
+  }
+  goals.clear();
+  for (const IkTarget& t : problem.targets) {
+    Goal g;
+    g.slot = slotOf[t.effector];
+    g.rootSlot = slotOf[ikRootOf(s, t, twoBone)];
+    g.position = t.position;
+    g.hasOrientation = t.hasOrientation;
+    g.orientation = safeNormalize(t.orientation);
+    g.weight = t.weight;
+    goals.push_back(g);
+  }
+  history.clear();
+  forwardKinematics();
+  return {};
+}
+
+glm::quat IkChain::parentRotation(int s) const {
+  return parentSlot[s] >= 0 ? rotation[parentSlot[s]] : rotationOf(fixedParent[s]);
+}
+
+void IkChain::forwardSlot(int s) {
+  const Transform& t = pose->local[joints[s]];
+  const glm::mat4& parent = parentSlot[s] >= 0 ? world[parentSlot[s]] : fixedParent[s];
+  world[s] = multiplyAffine(parent, t.toMatrix());
+  rotation[s] = safeNormalize(parentRotation(s) * t.rotation);
+}
+
+void IkChain::forwardKinematics() {
+  for (int s = 0; s < static_cast<int>(joints.size()); ++s) forwardSlot(s);
+}
+
+glm::quat IkChain::rotateJoint(int s, const glm::quat& delta) {
+  Transform& t = pose->local[joints[s]];
+  const glm::quat parentRot = parentRotation(s);
+  glm::quat local = safeNormalize(glm::conjugate(parentRot) * delta * rotation[s]);
+  if (limit[s]) local = applyJointLimit(*limit[s], skeleton->rest[joints[s]].rotation, local);
+  t.rotation = local;
+  const glm::quat newWorld = safeNormalize(parentRot * local);
+  const glm::quat applied = safeNormalize(newWorld * glm::conjugate(rotation[s]));
+  // Carry the slot and its sub-tree along rigidly about the slot's position.
+  const glm::mat3 r = glm::mat3_cast(applied);
+  const glm::vec3 pivot = position(s);
+  for (int k = s; k < s + subtreeSize[s]; ++k) {
+    glm::mat4& w = world[k];
+    for (int c = 0; c < 3; ++c) w[c] = glm::vec4(r * glm::vec3(w[c]), 0.0f);
+    w[3] = glm::vec4(pivot + r * (glm::vec3(w[3]) - pivot), 1.0f);
+    rotation[k] = safeNormalize(applied * rotation[k]);
+  }
+  rotation[s] = newWorld;
+  return applied;
+}
+
+void IkChain::setLocalRotation(int s, const glm::quat& localIn) {
+  glm::quat local = safeNormalize(localIn);
+  if (limit[s]) local = applyJointLimit(*limit[s], skeleton->rest[joints[s]].rotation, local);
+  pose->local[joints[s]].rotation = local;
+  for (int k = s; k < s + subtreeSize[s]; ++k) forwardSlot(k);
+}
+
+float IkChain::maxError() const {
+  float e = 0.0f;
+  for (const Goal& g : goals) e = std::max(e, goalError(g));
+  return e;
+}
+
+float IkChain::orientationError() const {
+  float e = 0.0f;
+  for (const Goal& g : goals) {
+    if (!g.hasOrientation) continue;
+    const glm::quat d = g.orientation * glm::conjugate(rotation[g.slot]);
+    e = std::max(e, 2.0f * std::atan2(glm::length(glm::vec3(d.x, d.y, d.z)), std::abs(d.w)));
+  }
+  return e;
+}
+
+bool IkChain::converged(const IkSettings& settings) const {
+  // Orientation targets share the tolerance, read as radians.
+  return maxError() <= settings.tolerance && orientationError() <= std::max(settings.tolerance, 1e-3f);
+}
+
+bool IkChain::stalled(float error, const IkSettings& settings) {
+  history.push_back(error);
+  const int w = settings.stallWindow;
+  if (settings.stallFraction <= 0.0f || w <= 0 || static_cast<int>(history.size()) <= w) return false;
+  const float before = history[history.size() - 1 - w];
+  return before - error <= settings.stallFraction * before;
+}
+
+bool IkChain::hasLimits() const {
+  for (const JointLimit* l : limit)
+    if (l) return true;
+  return false;
+}
+
+float IkChain::reach(const Goal& g) const {
+  float r = 0.0f;
+  for (int s = g.slot; s != g.rootSlot && parentSlot[s] >= 0; s = parentSlot[s])
+    r += glm::length(position(s) - position(parentSlot[s]));
+  return r;
+}
+
+bool IkChain::straightenIfUnreachable() {
+  if (goals.size() != 1 || hasLimits()) return false;
+  const Goal& g = goals[0];
+  const glm::vec3 toTarget = g.position - position(g.rootSlot);
+  const float d = glm::length(toTarget);
+  if (!(d > reach(g)) || !(d > 0.0f)) return false;
+  const glm::vec3 u = toTarget / d;
+  // Slots of a single chain are consecutive, root first.
+  for (int s = g.rootSlot; s < g.slot; ++s) {
+    const glm::vec3 bone = position(s + 1) - position(s);
+    if (glm::dot(bone, bone) > 0.0f) rotateJoint(s, fromToRotation(bone, u));
+  }
+  return true;
+}
+
+void IkChain::record(IkTrace* trace, int iteration, IkStep step, int joint) const {
+  if (!trace) return;
+  if (trace->joints.empty()) trace->joints = joints;
+  IkTraceEntry e;
+  e.iteration = iteration;
+  e.step = step;
+  e.joint = joint;
+  e.error = maxError();
+  e.positions.reserve(joints.size());
+  for (int s = 0; s < static_cast<int>(joints.size()); ++s) e.positions.push_back(position(s));
+  trace->entries.push_back(std::move(e));
+}
+
+void IkChain::recordPositions(IkTrace* trace, int iteration, IkStep step, const std::vector<glm::vec3>& positions,
+                              float error) const {
+  if (!trace) return;
+  if (trace->joints.empty()) trace->joints = joints;
+  IkTraceEntry e;
+  e.iteration = iteration;
+  e.step = step;
+  e.error = error;
+  e.positions = positions;
+  trace->entries.push_back(std::move(e));
+}
+
+IkResult IkChain::result(int iterations, const IkSettings& settings) const {
+  IkResult r;
+  r.iterations = iterations;
+  r.error = maxError();
+  r.converged = converged(settings);
+  return r;
+}
+
+}  // namespace kinema::ik_detail

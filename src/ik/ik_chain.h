@@ -1,0 +1,67 @@
+#pragma once
+// The working state every solver shares: the joints a set of targets moves ("slots"),
+// their world transforms, and the goals. Internal to src/ik.
+#include <string>
+#include <vector>
+
+#include "ik/ik_solver.h"
+
+namespace kinema::ik_detail {
+
+struct Goal {
+  int slot = -1;      // the effector's slot
+  int rootSlot = -1;  // the IK root's slot
+  glm::vec3 position{0.0f};
+  bool hasOrientation = false;
+  glm::quat orientation{1.0f, 0.0f, 0.0f, 0.0f};
+  float weight = 1.0f;
+};
+
+struct IkChain {
+  const Skeleton* skeleton = nullptr;
+  Pose* pose = nullptr;
+  const IkRig* rig = nullptr;
+  // Slots in depth-first preorder, so a slot's descendants are [s + 1, s + subtreeSize[s]).
+  std::vector<int> joints;          // skeleton joint of each slot
+  std::vector<int> parentSlot;      // -1: the parent lies outside and never moves
+  std::vector<int> subtreeSize;     // this slot and the slots below it
+  std::vector<glm::mat4> fixedParent;  // world of the parent, for slots with parentSlot -1
+  std::vector<glm::mat4> world;     // current world transform of each slot
+  std::vector<glm::quat> rotation;  // its world rotation (scale removed)
+  std::vector<const JointLimit*> limit;
+  std::vector<Goal> goals;
+  std::vector<float> history;       // error after each iteration, for stall detection
+
+  // Fills the slots from the problem; returns an error message or "".
+  std::string build(const IkProblem& problem, bool twoBone = false);
+  // Recomputes world transforms of every slot from the pose.
+  void forwardKinematics();
+  // Recomputes slot s only (its parent must be up to date).
+  void forwardSlot(int s);
+  glm::vec3 position(int s) const { return glm::vec3(world[s][3]); }
+  glm::quat parentRotation(int s) const;
+  // Turns slot s by `delta` (a world rotation about its own position), clamps the result
+  // to the joint's limit, and carries its sub-tree along rigidly. Returns the rotation
+  // actually applied.
+  glm::quat rotateJoint(int s, const glm::quat& delta);
+  // Sets slot s's local rotation (limited), then refreshes its sub-tree by FK.
+  void setLocalRotation(int s, const glm::quat& local);
+  float goalError(const Goal& g) const { return glm::length(position(g.slot) - g.position); }
+  float maxError() const;
+  float orientationError() const;  // largest angle (radians) to an orientation target
+  bool converged(const IkSettings& settings) const;
+  // True when the last stallWindow iterations improved the error by less than
+  // stallFraction; records `error` first.
+  bool stalled(float error, const IkSettings& settings);
+  bool hasLimits() const;
+  // The sum of bone lengths from the goal's root to its effector.
+  float reach(const Goal& g) const;
+  // Single goal beyond reach and no limits: point every bone straight at the target.
+  bool straightenIfUnreachable();
+  void record(IkTrace* trace, int iteration, IkStep step, int joint = -1) const;
+  void recordPositions(IkTrace* trace, int iteration, IkStep step, const std::vector<glm::vec3>& positions,
+                       float error) const;
+  IkResult result(int iterations, const IkSettings& settings) const;
+};
+
+}  // namespace kinema::ik_detail
