@@ -344,6 +344,10 @@ bool readClips(Reader& r, const Json& root, Scene& scene) {
       if (!r.number(*v, p + ".frame_time", clip.frameTime)) return false;
       if (clip.frameTime < 0) return r.fail(p + ".frame_time", "must not be negative");
     }
+    if ((v = r.member(j, p, "loop", false))) {
+      if (!v->is_boolean()) return r.fail(p + ".loop", "expected true or false, found " + std::string(v->type_name()));
+      clip.loop = v->get<bool>();
+    }
     const Json* channels = r.member(j, p, "channels", true);
     if (!channels) return false;
     if (!channels->is_array()) return r.fail(p + ".channels", "expected an array");
@@ -425,6 +429,7 @@ std::string toKinemaJson(const Scene& scene) {
     Json c;
     c["name"] = clip.name;
     if (clip.frameTime > 0) c["frame_time"] = clip.frameTime;
+    if (clip.loop) c["loop"] = true;
     Json channels = Json::array();
     for (const Channel& ch : clip.channels) channels.push_back(channelJson(ch, s));
     c["channels"] = std::move(channels);
