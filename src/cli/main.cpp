@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli/command_line.h"
+#include "cli/plot_curves_command.h"
 #include "cli/pose_command.h"
 #include "core/default_character.h"
 #include "core/forward_kinematics.h"
@@ -35,6 +36,8 @@ int main(int argc, char** argv) {
 
   kinema::cli::PoseOptions pose;
   CLI::App* poseCmd = kinema::cli::addPoseCommand(app, pose);
+  kinema::cli::PlotCurvesOptions plotCurves;
+  CLI::App* plotCurvesCmd = kinema::cli::addPlotCurvesCommand(app, plotCurves);
 
   try {
     app.parse(argc, argv);
@@ -50,5 +53,6 @@ int main(int argc, char** argv) {
   }
 
   if (poseCmd->parsed()) return kinema::cli::runPose(pose);
+  if (plotCurvesCmd->parsed()) return kinema::cli::runPlotCurves(plotCurves);
   return describeDefaultCharacter();
 }
