@@ -198,17 +198,21 @@ int insertKey(Channel& ch, float time, const glm::vec4& value, const KeySettings
   const auto it = std::lower_bound(ch.times.begin(), ch.times.end(), time);
   const int k = static_cast<int>(it - ch.times.begin());
   // Materialise per-key settings once any key differs from the channel-wide default.
-  if (ch.keys.empty() && settings != ch.settings(0)) {
-    ch.keys.assign(ch.times.size(), ch.settings(0));
+  KeySettings channelDefault;
+  channelDefault.interpolation = ch.interpolation;
+  if (ch.keys.empty() && settings != channelDefault) {
+    ch.keys.assign(ch.times.size(), channelDefault);
+    if (ch.times.empty()) ch.interpolation = settings.interpolation;
   }
+  const bool perKey = !ch.keys.empty() || settings != channelDefault;
   if (it != ch.times.end() && *it == time) {
     ch.values[k] = value;
-    if (!ch.keys.empty()) ch.keys[k] = settings;
+    if (perKey) ch.keys[k] = settings;
     return k;
   }
   ch.times.insert(ch.times.begin() + k, time);
   ch.values.insert(ch.values.begin() + k, value);
-  if (!ch.keys.empty()) ch.keys.insert(ch.keys.begin() + k, settings);
+  if (perKey) ch.keys.insert(ch.keys.begin() + k, settings);
   return k;
 }
 

@@ -150,6 +150,17 @@ TEST(KeyEditing, InsertMoveDeleteKeepTheChannelSorted) {
   Clip clip;
   clip.channels.push_back(c);
   EXPECT_EQ(clip.validate(chain(1)), "");
+  // The first key of an empty channel keeps its own settings.
+  Channel empty;
+  empty.target = ChannelTarget::Scalar;
+  KeySettings tcb;
+  tcb.interpolation = Interpolation::TCB;
+  tcb.bias = 0.5f;
+  insertKey(empty, 1.0f, glm::vec4(1.0f), tcb);
+  insertKey(empty, 0.5f, glm::vec4(2.0f));  // takes the settings of the key after it
+  ASSERT_EQ(empty.keys.size(), 2u);
+  EXPECT_EQ(empty.keys[1].bias, 0.5f);
+  EXPECT_EQ(empty.keys[0].interpolation, Interpolation::TCB);
 }
 
 TEST(ClipValidate, RejectsModesThatDoNotFitTheTarget) {
