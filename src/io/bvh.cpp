@@ -396,13 +396,8 @@ Clip BvhData::clip() const {
   for (int f = 0; f < frameCount; ++f) times[f] = clip.frameToTime(f);
   for (size_t i = 0; i < joints.size(); ++i) {
     const BvhJoint& j = joints[i];
-    // BVH motion is sampled: linear positions, shortest-arc slerp rotations.
-    Channel translation, rotation;
-    translation.joint = rotation.joint = static_cast<int>(i);
-    translation.target = ChannelTarget::Translation;
-    rotation.target = ChannelTarget::Rotation;
-    translation.interpolation = rotation.interpolation = Interpolation::Linear;
-    translation.times = rotation.times = times;
+    Channel translation{static_cast<int>(i), ChannelTarget::Translation, Interpolation::Linear, times, {}};
+    Channel rotation{static_cast<int>(i), ChannelTarget::Rotation, Interpolation::Linear, times, {}};
     const bool pos = hasPosition(j), rot = hasRotation(j);
     glm::quat previous(1.0f, 0.0f, 0.0f, 0.0f);
     for (int f = 0; f < frameCount; ++f) {

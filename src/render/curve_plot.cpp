@@ -38,8 +38,6 @@ void line(Image& img, glm::vec2 a, glm::vec2 b, float width, const Rgb& color, c
       const glm::vec2 p(x + 0.5f, y + 0.5f);
       const float t = len2 > 0 ? std::clamp(glm::dot(p - a, d) / len2, 0.0f, 1.0f) : 0.0f;
       const float dist = glm::length(p - (a + t * d));
-      // Overlapping segments of one polyline would darken joints; max-style coverage via
-      // blending only the excess is not needed at these widths.
       blend(img, x, y, color, r + 0.5f - dist);
     }
 }
