@@ -3,15 +3,55 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/rotation.h"
-
 namespace kinema {
+
+namespace {
+
+template <typename E, size_t N>
+bool lookUp(const std::string& s, E& out, const E (&all)[N]) {
+  for (E e : all)
+    if (s == toString(e)) {
+      out = e;
+      return true;
+    }
+  return false;
+}
+
+const ChannelTarget kTargets[] = {ChannelTarget::Translation, ChannelTarget::Rotation, ChannelTarget::Scale,
+                                  ChannelTarget::Euler, ChannelTarget::Scalar};
+const Interpolation kInterpolations[] = {Interpolation::Step,   Interpolation::Linear,     Interpolation::Hermite,
+                                         Interpolation::CatmullRom, Interpolation::TCB, Interpolation::Bezier,
+                                         Interpolation::Ease,   Interpolation::Nlerp,      Interpolation::Squad};
+const EasingFunction kEasings[] = {EasingFunction::Sine,  EasingFunction::Quad, EasingFunction::Cubic,
+                                   EasingFunction::Quart, EasingFunction::Quint, EasingFunction::Expo,
+                                   EasingFunction::Circ,  EasingFunction::Back, EasingFunction::Bounce,
+                                   EasingFunction::Elastic};
+const EasingMode kModes[] = {EasingMode::In, EasingMode::Out, EasingMode::InOut};
+const HandleType kHandles[] = {HandleType::Free, HandleType::Aligned, HandleType::Vector, HandleType::Auto,
+                               HandleType::AutoClamped};
+
+bool finite(const glm::vec4& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
+}
+
+bool suits(Interpolation i, ChannelTarget target) {
+  if (target == ChannelTarget::Rotation)
+    return i == Interpolation::Step || i == Interpolation::Linear || i == Interpolation::Nlerp ||
+           i == Interpolation::Squad || i == Interpolation::Hermite || i == Interpolation::Ease;
+  return i != Interpolation::Nlerp && i != Interpolation::Squad;
+}
+
+constexpr float kTwoPi = 6.28318530717958647692f;
+
+}  // namespace
 
 const char* toString(ChannelTarget target) {
   switch (target) {
     case ChannelTarget::Translation: return "translation";
     case ChannelTarget::Rotation: return "rotation";
     case ChannelTarget::Scale: return "scale";
+    case ChannelTarget::Euler: return "euler";
+    case ChannelTarget::Scalar: return "scalar";
   }
   return "rotation";
 }
@@ -20,8 +60,80 @@ const char* toString(Interpolation interpolation) {
   switch (interpolation) {
     case Interpolation::Step: return "step";
     case Interpolation::Linear: return "linear";
+    case Interpolation::Hermite: return "hermite";
+    case Interpolation::CatmullRom: return "catmull-rom";
+    case Interpolation::TCB: return "tcb";
+    case Interpolation::Bezier: return "bezier";
+    case Interpolation::Ease: return "ease";
+    case Interpolation::Nlerp: return "nlerp";
+    case Interpolation::Squad: return "squad";
   }
   return "linear";
+}
+
+const char* toString(EasingFunction easing) {
+  switch (easing) {
+    case EasingFunction::Sine: return "sine";
+    case EasingFunction::Quad: return "quad";
+    case EasingFunction::Cubic: return "cubic";
+    case EasingFunction::Quart: return "quart";
+    case EasingFunction::Quint: return "quint";
+    case EasingFunction::Expo: return "expo";
+    case EasingFunction::Circ: return "circ";
+    case EasingFunction::Back: return "back";
+    case EasingFunction::Bounce: return "bounce";
+    case EasingFunction::Elastic: return "elastic";
+  }
+  return "sine";
+}
+
+const char* toString(EasingMode mode) {
+  switch (mode) {
+    case EasingMode::In: return "in";
+    case EasingMode::Out: return "out";
+    case EasingMode::InOut: return "in-out";
+  }
+  return "in-out";
+}
+
+const char* toString(HandleType type) {
+  switch (type) {
+    case HandleType::Free: return "free";
+    case HandleType::Aligned: return "aligned";
+    case HandleType::Vector: return "vector";
+    case HandleType::Auto: return "auto";
+    case HandleType::AutoClamped: return "auto-clamped";
+  }
+  return "auto-clamped";
+}
+
+bool fromString(const std::string& s, ChannelTarget& out) { return lookUp(s, out, kTargets); }
+bool fromString(const std::string& s, Interpolation& out) { return lookUp(s, out, kInterpolations); }
+bool fromString(const std::string& s, EasingFunction& out) { return lookUp(s, out, kEasings); }
+bool fromString(const std::string& s, EasingMode& out) { return lookUp(s, out, kModes); }
+bool fromString(const std::string& s, HandleType& out) { return lookUp(s, out, kHandles); }
+
+bool KeySettings::operator==(const KeySettings& o) const {
+  return interpolation == o.interpolation && easing == o.easing && easingMode == o.easingMode &&
+         tension == o.tension && continuity == o.continuity && bias == o.bias && inTangent == o.inTangent &&
+         outTangent == o.outTangent && leftHandleType == o.leftHandleType && rightHandleType == o.rightHandleType &&
+         leftHandleTime == o.leftHandleTime && rightHandleTime == o.rightHandleTime &&
+         leftHandleValue == o.leftHandleValue && rightHandleValue == o.rightHandleValue;
+}
+
+KeySettings Channel::settings(int k) const {
+  if (!keys.empty()) return keys[k];
+  KeySettings s;
+  s.interpolation = interpolation;
+  return s;
+}
+
+int Channel::valueSize() const {
+  switch (target) {
+    case ChannelTarget::Rotation: return 4;
+    case ChannelTarget::Scalar: return 1;
+    default: return 3;
+  }
 }
 
 float Clip::duration() const {
@@ -38,65 +150,133 @@ std::string Clip::validate(const Skeleton& skeleton) const {
   for (size_t c = 0; c < channels.size(); ++c) {
     const Channel& ch = channels[c];
     const std::string where = "channel " + std::to_string(c);
-    if (ch.joint < 0 || ch.joint >= skeleton.size())
+    const bool scalar = ch.target == ChannelTarget::Scalar;
+    if ((ch.joint < 0 && !(scalar && ch.joint == -1)) || ch.joint >= skeleton.size())
       return where + " animates joint " + std::to_string(ch.joint) + ", which does not exist";
     if (ch.times.empty()) return where + " has no keys";
     if (ch.times.size() != ch.values.size())
       return where + " has " + std::to_string(ch.times.size()) + " key times but " +
              std::to_string(ch.values.size()) + " values";
+    if (!ch.keys.empty() && ch.keys.size() != ch.times.size())
+      return where + " has " + std::to_string(ch.times.size()) + " key times but " +
+             std::to_string(ch.keys.size()) + " key settings";
+    if (ch.keys.empty() && !suits(ch.interpolation, ch.target))
+      return where + ": " + toString(ch.interpolation) + " interpolation does not apply to " + toString(ch.target);
     for (size_t k = 0; k < ch.times.size(); ++k) {
-      if (!std::isfinite(ch.times[k])) return where + " key " + std::to_string(k) + " has a non-finite time";
-      if (k > 0 && !(ch.times[k] > ch.times[k - 1]))
-        return where + " key " + std::to_string(k) + " time is not after the previous key";
-      const glm::vec4& v = ch.values[k];
-      if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z) || !std::isfinite(v.w))
-        return where + " key " + std::to_string(k) + " has a non-finite value";
+      const std::string key = where + " key " + std::to_string(k);
+      if (!std::isfinite(ch.times[k])) return key + " has a non-finite time";
+      if (k > 0 && !(ch.times[k] > ch.times[k - 1])) return key + " time is not after the previous key";
+      if (!finite(ch.values[k])) return key + " has a non-finite value";
+      if (ch.keys.empty()) continue;
+      const KeySettings& s = ch.keys[k];
+      if (!suits(s.interpolation, ch.target))
+        return key + ": " + toString(s.interpolation) + " interpolation does not apply to " + toString(ch.target);
+      if (!std::isfinite(s.tension) || !std::isfinite(s.continuity) || !std::isfinite(s.bias) ||
+          !finite(s.inTangent) || !finite(s.outTangent) || !std::isfinite(s.leftHandleTime) ||
+          !std::isfinite(s.rightHandleTime) || !finite(s.leftHandleValue) || !finite(s.rightHandleValue))
+        return key + " has a non-finite tangent, handle or TCB setting";
+      if (s.leftHandleTime > 0 || s.rightHandleTime < 0)
+        return key + " has a Bezier handle on the wrong side of the key (left must be <= 0, right >= 0 seconds)";
     }
   }
   return {};
 }
 
-namespace {
+int insertKey(Channel& ch, float time, const glm::vec4& value) {
+  const auto it = std::lower_bound(ch.times.begin(), ch.times.end(), time);
+  const int k = static_cast<int>(it - ch.times.begin());
+  if (it != ch.times.end() && *it == time) {
+    ch.values[k] = value;
+    return k;
+  }
+  // A new key takes the settings of the key before it (the segment it splits), or of the
+  // key after it when it becomes the first key.
+  return insertKey(ch, time, value, ch.times.empty() ? ch.settings(0) : ch.settings(k > 0 ? k - 1 : 0));
+}
 
-glm::quat toQuat(const glm::vec4& v) { return safeNormalize(glm::quat(v.w, v.x, v.y, v.z)); }
+int insertKey(Channel& ch, float time, const glm::vec4& value, const KeySettings& settings) {
+  const auto it = std::lower_bound(ch.times.begin(), ch.times.end(), time);
+  const int k = static_cast<int>(it - ch.times.begin());
+  // Materialise per-key settings once any key differs from the channel-wide default.
+  KeySettings channelDefault;
+  channelDefault.interpolation = ch.interpolation;
+  if (ch.keys.empty() && settings != channelDefault) {
+    ch.keys.assign(ch.times.size(), channelDefault);
+    if (ch.times.empty()) ch.interpolation = settings.interpolation;
+  }
+  const bool perKey = !ch.keys.empty() || settings != channelDefault;
+  if (it != ch.times.end() && *it == time) {
+    ch.values[k] = value;
+    if (perKey) ch.keys[k] = settings;
+    return k;
+  }
+  ch.times.insert(ch.times.begin() + k, time);
+  ch.values.insert(ch.values.begin() + k, value);
+  if (perKey) ch.keys.insert(ch.keys.begin() + k, settings);
+  return k;
+}
 
-void apply(const Channel& ch, const glm::vec4& v, Transform& t) {
-  switch (ch.target) {
-    case ChannelTarget::Translation: t.translation = glm::vec3(v); break;
-    case ChannelTarget::Scale: t.scale = glm::vec3(v); break;
-    case ChannelTarget::Rotation: t.rotation = toQuat(v); break;
+int moveKey(Channel& ch, int key, float newTime) {
+  if (key < 0 || key >= ch.keyCount()) return -1;
+  const glm::vec4 value = ch.values[key];
+  const KeySettings s = ch.settings(key);
+  const bool hadKeys = !ch.keys.empty();
+  deleteKey(ch, key);
+  if (!hadKeys) {
+    // Keep the channel compact: the settings were the channel-wide ones.
+    const auto it = std::lower_bound(ch.times.begin(), ch.times.end(), newTime);
+    const int k = static_cast<int>(it - ch.times.begin());
+    if (it != ch.times.end() && *it == newTime) {
+      ch.values[k] = value;
+      return k;
+    }
+    ch.times.insert(ch.times.begin() + k, newTime);
+    ch.values.insert(ch.values.begin() + k, value);
+    return k;
+  }
+  if (ch.keys.empty() && !ch.times.empty()) ch.keys.assign(ch.times.size(), s);
+  return insertKey(ch, newTime, value, s);
+}
+
+void deleteKey(Channel& ch, int key) {
+  if (key < 0 || key >= ch.keyCount()) return;
+  ch.times.erase(ch.times.begin() + key);
+  ch.values.erase(ch.values.begin() + key);
+  if (!ch.keys.empty()) ch.keys.erase(ch.keys.begin() + key);
+}
+
+void setBezierHandle(Channel& ch, int key, bool right, float timeOffset, const glm::vec4& valueOffset) {
+  if (key < 0 || key >= ch.keyCount()) return;
+  if (ch.keys.empty()) ch.keys.assign(ch.times.size(), ch.settings(0));
+  KeySettings& s = ch.keys[key];
+  HandleType& type = right ? s.rightHandleType : s.leftHandleType;
+  HandleType& other = right ? s.leftHandleType : s.rightHandleType;
+  if (type == HandleType::Auto || type == HandleType::AutoClamped) type = HandleType::Aligned;
+  if (type == HandleType::Vector) type = HandleType::Free;
+  // Blender: editing one handle of an auto pair makes both aligned.
+  if (other == HandleType::Auto || other == HandleType::AutoClamped) other = HandleType::Aligned;
+  (right ? s.rightHandleTime : s.leftHandleTime) = right ? std::max(0.0f, timeOffset) : std::min(0.0f, timeOffset);
+  (right ? s.rightHandleValue : s.leftHandleValue) = valueOffset;
+  if (type == HandleType::Aligned && other == HandleType::Aligned) {
+    float& otherTime = right ? s.leftHandleTime : s.rightHandleTime;
+    glm::vec4& otherValue = right ? s.leftHandleValue : s.rightHandleValue;
+    if (otherTime == 0.0f) {
+      // A handle with no time extent: give it the neighbour's third, as Blender's defaults.
+      const int nb = right ? key - 1 : key + 1;
+      otherTime = (nb >= 0 && nb < ch.keyCount()) ? (ch.times[nb] - ch.times[key]) / 3.0f : -timeOffset;
+    }
+    // Opposite direction, same slope: collinear through the key.
+    if (timeOffset != 0.0f) otherValue = valueOffset * (otherTime / timeOffset);
   }
 }
 
-}  // namespace
-
-void sampleClip(const Clip& clip, float time, Pose& pose) {
-  for (const Channel& ch : clip.channels) {
-    if (ch.joint < 0 || ch.joint >= pose.size() || ch.times.empty()) continue;
-    Transform& t = pose.local[ch.joint];
-    // First key whose time is after `time`; keys before it and at it are "reached".
-    const auto it = std::upper_bound(ch.times.begin(), ch.times.end(), time);
-    const size_t hi = static_cast<size_t>(it - ch.times.begin());
-    if (hi == 0) {
-      apply(ch, ch.values.front(), t);
-      continue;
+void unwrapEulerAngles(Channel& ch) {
+  for (size_t k = 1; k < ch.values.size(); ++k)
+    for (int i = 0; i < 3; ++i) {
+      const float prev = ch.values[k - 1][i];
+      float& a = ch.values[k][i];
+      a -= kTwoPi * std::round((a - prev) / kTwoPi);
     }
-    if (hi == ch.times.size()) {
-      apply(ch, ch.values.back(), t);
-      continue;
-    }
-    const size_t lo = hi - 1;
-    if (ch.interpolation == Interpolation::Step || ch.times[lo] == time) {
-      apply(ch, ch.values[lo], t);
-      continue;
-    }
-    const float u = (time - ch.times[lo]) / (ch.times[hi] - ch.times[lo]);
-    if (ch.target == ChannelTarget::Rotation) {
-      t.rotation = safeNormalize(slerpShortest(toQuat(ch.values[lo]), toQuat(ch.values[hi]), u));
-    } else {
-      apply(ch, glm::mix(ch.values[lo], ch.values[hi], u), t);
-    }
-  }
 }
 
 }  // namespace kinema

@@ -4,6 +4,7 @@
 
 #include "cli/command_line.h"
 #include "cli/ik_command.h"
+#include "cli/plot_curves_command.h"
 #include "cli/pose_command.h"
 #include "core/default_character.h"
 #include "core/forward_kinematics.h"
@@ -38,6 +39,8 @@ int main(int argc, char** argv) {
   CLI::App* poseCmd = kinema::cli::addPoseCommand(app, pose);
   kinema::cli::IkOptions ik;
   CLI::App* ikCmd = kinema::cli::addIkCommand(app, ik);
+  kinema::cli::PlotCurvesOptions plotCurves;
+  CLI::App* plotCurvesCmd = kinema::cli::addPlotCurvesCommand(app, plotCurves);
 
   try {
     app.parse(argc, argv);
@@ -54,5 +57,6 @@ int main(int argc, char** argv) {
 
   if (poseCmd->parsed()) return kinema::cli::runPose(pose);
   if (ikCmd->parsed()) return kinema::cli::runIk(ik);
+  if (plotCurvesCmd->parsed()) return kinema::cli::runPlotCurves(plotCurves);
   return describeDefaultCharacter();
 }

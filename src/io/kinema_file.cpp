@@ -65,8 +65,6 @@ std::string collapseNumberArrays(const std::string& in) {
   return out;
 }
 
-int valueSize(ChannelTarget t) { return t == ChannelTarget::Rotation ? 4 : 3; }
-
 // Doubles at or beyond 2^128 - 2^103 (halfway between FLT_MAX and the next power of two)
 // round to infinity as floats; everything below rounds to a finite float.
 const double kFloatOverflow = std::ldexp(1.0, 128) - std::ldexp(1.0, 103);
@@ -363,38 +361,105 @@ Json ikToJson(const Scene& scene) {
   return ik;
 }
 
-bool parseTarget(const std::string& s, ChannelTarget& t) {
-  for (ChannelTarget c : {ChannelTarget::Translation, ChannelTarget::Rotation, ChannelTarget::Scale})
-    if (s == toString(c)) {
-      t = c;
-      return true;
-    }
-  return false;
+// An enum named by a string, with the list of accepted names in the error.
+template <typename E>
+bool readEnum(Reader& r, const Json& j, const std::string& path, E& out, const char* accepted) {
+  std::string text;
+  if (!r.string(j, path, text)) return false;
+  if (!fromString(text, out)) return r.fail(path, "'" + text + "' is not one of " + accepted);
+  return true;
 }
 
-bool parseInterpolation(const std::string& s, Interpolation& t) {
-  for (Interpolation c : {Interpolation::Step, Interpolation::Linear})
-    if (s == toString(c)) {
-      t = c;
-      return true;
-    }
-  return false;
+const char* const kInterpolationNames = "step, linear, hermite, catmull-rom, tcb, bezier, ease, nlerp, squad";
+const char* const kHandleNames = "free, aligned, vector, auto, auto-clamped";
+
+bool readFloat(Reader& r, const Json& j, const std::string& path, float& out) {
+  double v = 0.0;
+  if (!r.number(j, path, v)) return false;
+  if (std::abs(v) >= kFloatOverflow) return r.fail(path, "number out of float range");
+  out = static_cast<float>(v);
+  return true;
+}
+
+// Per-key settings: every member is optional and defaults to KeySettings' default, so a
+// writer may leave out whatever equals the default.
+bool readKeySettings(Reader& r, const Json& j, const std::string& p, int n, KeySettings& k) {
+  if (!j.is_object()) return r.fail(p, "expected an object");
+  const Json* v;
+  if ((v = r.member(j, p, "interpolation", false)) &&
+      !readEnum(r, *v, p + ".interpolation", k.interpolation, kInterpolationNames))
+    return false;
+  if ((v = r.member(j, p, "easing", false)) &&
+      !readEnum(r, *v, p + ".easing", k.easing, "sine, quad, cubic, quart, quint, expo, circ, back, bounce, elastic"))
+    return false;
+  if ((v = r.member(j, p, "easing_mode", false)) && !readEnum(r, *v, p + ".easing_mode", k.easingMode, "in, out, in-out"))
+    return false;
+  if ((v = r.member(j, p, "tension", false)) && !readFloat(r, *v, p + ".tension", k.tension)) return false;
+  if ((v = r.member(j, p, "continuity", false)) && !readFloat(r, *v, p + ".continuity", k.continuity)) return false;
+  if ((v = r.member(j, p, "bias", false)) && !readFloat(r, *v, p + ".bias", k.bias)) return false;
+  if ((v = r.member(j, p, "in_tangent", false)) && !r.floats(*v, p + ".in_tangent", n, &k.inTangent.x)) return false;
+  if ((v = r.member(j, p, "out_tangent", false)) && !r.floats(*v, p + ".out_tangent", n, &k.outTangent.x)) return false;
+  if ((v = r.member(j, p, "left_handle_type", false)) &&
+      !readEnum(r, *v, p + ".left_handle_type", k.leftHandleType, kHandleNames))
+    return false;
+  if ((v = r.member(j, p, "right_handle_type", false)) &&
+      !readEnum(r, *v, p + ".right_handle_type", k.rightHandleType, kHandleNames))
+    return false;
+  if ((v = r.member(j, p, "left_handle_time", false)) && !readFloat(r, *v, p + ".left_handle_time", k.leftHandleTime))
+    return false;
+  if (k.leftHandleTime > 0) return r.fail(p + ".left_handle_time", "must not be positive (seconds before the key)");
+  if ((v = r.member(j, p, "right_handle_time", false)) &&
+      !readFloat(r, *v, p + ".right_handle_time", k.rightHandleTime))
+    return false;
+  if (k.rightHandleTime < 0) return r.fail(p + ".right_handle_time", "must not be negative (seconds after the key)");
+  if ((v = r.member(j, p, "left_handle_value", false)) && !r.floats(*v, p + ".left_handle_value", n, &k.leftHandleValue.x))
+    return false;
+  if ((v = r.member(j, p, "right_handle_value", false)) &&
+      !r.floats(*v, p + ".right_handle_value", n, &k.rightHandleValue.x))
+    return false;
+  return true;
+}
+
+bool isRotationMode(Interpolation i) { return i == Interpolation::Nlerp || i == Interpolation::Squad; }
+bool onlyVectorMode(Interpolation i) {
+  return i == Interpolation::CatmullRom || i == Interpolation::TCB || i == Interpolation::Bezier;
+}
+
+bool checkMode(Reader& r, const std::string& path, Interpolation i, ChannelTarget t) {
+  if (t == ChannelTarget::Rotation && onlyVectorMode(i))
+    return r.fail(path, std::string("'") + toString(i) +
+                            "' does not apply to rotation (use linear, nlerp, squad, hermite, ease or step)");
+  if (t != ChannelTarget::Rotation && isRotationMode(i))
+    return r.fail(path, std::string("'") + toString(i) + "' applies to rotation channels only");
+  return true;
 }
 
 bool readChannel(Reader& r, const Json& j, const std::string& p, const Skeleton& s, Channel& ch) {
   if (!j.is_object()) return r.fail(p, "expected an object");
   const Json* v;
   std::string text;
-  if (!(v = r.member(j, p, "joint", true)) || !r.string(*v, p + ".joint", text)) return false;
-  ch.joint = s.find(text);
-  if (ch.joint < 0) return r.fail(p + ".joint", "no joint named '" + text + "'");
-  if (!(v = r.member(j, p, "target", true)) || !r.string(*v, p + ".target", text)) return false;
-  if (!parseTarget(text, ch.target))
-    return r.fail(p + ".target", "'" + text + "' is not one of translation, rotation, scale");
+  if (!(v = r.member(j, p, "target", true)) ||
+      !readEnum(r, *v, p + ".target", ch.target, "translation, rotation, scale, euler, scalar"))
+    return false;
+  // Scalar channels may belong to no joint.
+  const bool scalar = ch.target == ChannelTarget::Scalar;
+  if ((v = r.member(j, p, "joint", !scalar))) {
+    if (!r.string(*v, p + ".joint", text)) return false;
+    ch.joint = s.find(text);
+    if (ch.joint < 0) return r.fail(p + ".joint", "no joint named '" + text + "'");
+  } else if (!scalar) {
+    return false;
+  }
+  if ((v = r.member(j, p, "property", false)) && !r.string(*v, p + ".property", ch.property)) return false;
+  if ((v = r.member(j, p, "euler_order", false))) {
+    if (!r.string(*v, p + ".euler_order", text)) return false;
+    const std::optional<EulerOrder> order = eulerOrderFromString(text);
+    if (!order) return r.fail(p + ".euler_order", "'" + text + "' is not one of XYZ, XZY, YXZ, YZX, ZXY, ZYX");
+    ch.eulerOrder = *order;
+  }
   if ((v = r.member(j, p, "interpolation", false))) {
-    if (!r.string(*v, p + ".interpolation", text)) return false;
-    if (!parseInterpolation(text, ch.interpolation))
-      return r.fail(p + ".interpolation", "'" + text + "' is not one of step, linear");
+    if (!readEnum(r, *v, p + ".interpolation", ch.interpolation, kInterpolationNames)) return false;
+    if (!checkMode(r, p + ".interpolation", ch.interpolation, ch.target)) return false;
   }
   const Json* times = r.member(j, p, "times", true);
   const Json* values = times ? r.member(j, p, "values", true) : nullptr;
@@ -402,7 +467,7 @@ bool readChannel(Reader& r, const Json& j, const std::string& p, const Skeleton&
   if (!times->is_array() || times->empty()) return r.fail(p + ".times", "expected a non-empty array of numbers");
   if (!values->is_array() || values->size() != times->size())
     return r.fail(p + ".values", "expected an array with one value per key time (" + std::to_string(times->size()) + ")");
-  const int n = valueSize(ch.target);
+  const int n = ch.valueSize();
   for (size_t k = 0; k < times->size(); ++k) {
     const std::string tp = p + ".times[" + std::to_string(k) + "]";
     double t = 0.0;
@@ -419,6 +484,18 @@ bool readChannel(Reader& r, const Json& j, const std::string& p, const Skeleton&
       value = glm::vec4(q.x, q.y, q.z, q.w);
     }
     ch.values.push_back(value);
+  }
+  if ((v = r.member(j, p, "keys", false))) {
+    if (!v->is_array() || v->size() != times->size())
+      return r.fail(p + ".keys", "expected an array with one object per key time (" + std::to_string(times->size()) + ")");
+    KeySettings base;
+    base.interpolation = ch.interpolation;
+    ch.keys.assign(times->size(), base);
+    for (size_t k = 0; k < v->size(); ++k) {
+      const std::string kp = p + ".keys[" + std::to_string(k) + "]";
+      if (!readKeySettings(r, (*v)[k], kp, n, ch.keys[k])) return false;
+      if (!checkMode(r, kp + ".interpolation", ch.keys[k].interpolation, ch.target)) return false;
+    }
   }
   return true;
 }
@@ -438,6 +515,10 @@ bool readClips(Reader& r, const Json& root, Scene& scene) {
       if (!r.number(*v, p + ".frame_time", clip.frameTime)) return false;
       if (clip.frameTime < 0) return r.fail(p + ".frame_time", "must not be negative");
     }
+    if ((v = r.member(j, p, "loop", false))) {
+      if (!v->is_boolean()) return r.fail(p + ".loop", "expected true or false, found " + std::string(v->type_name()));
+      clip.loop = v->get<bool>();
+    }
     const Json* channels = r.member(j, p, "channels", true);
     if (!channels) return false;
     if (!channels->is_array()) return r.fail(p + ".channels", "expected an array");
@@ -450,6 +531,48 @@ bool readClips(Reader& r, const Json& root, Scene& scene) {
     scene.clips.push_back(std::move(clip));
   }
   return true;
+}
+
+// A channel; per-key settings list only what differs from KeySettings' defaults (which
+// the reader fills in), so simple keys stay small and every setting round-trips exactly.
+Json channelJson(const Channel& ch, const Skeleton& s) {
+  const int n = ch.valueSize();
+  Json k;
+  if (ch.joint >= 0) k["joint"] = s.names[ch.joint];
+  k["target"] = toString(ch.target);
+  if (!ch.property.empty()) k["property"] = ch.property;
+  if (ch.target == ChannelTarget::Euler) k["euler_order"] = toString(ch.eulerOrder);
+  k["interpolation"] = toString(ch.interpolation);
+  Json times = Json::array(), values = Json::array();
+  for (float t : ch.times) times.push_back(jsonFloat(t));
+  for (const glm::vec4& v : ch.values) values.push_back(vec(&v.x, n));
+  k["times"] = std::move(times);
+  k["values"] = std::move(values);
+  if (!ch.keys.empty()) {
+    KeySettings d;
+    d.interpolation = ch.interpolation;
+    Json keys = Json::array();
+    for (const KeySettings& ks : ch.keys) {
+      Json o = Json::object();
+      if (ks.interpolation != d.interpolation) o["interpolation"] = toString(ks.interpolation);
+      if (ks.easing != d.easing) o["easing"] = toString(ks.easing);
+      if (ks.easingMode != d.easingMode) o["easing_mode"] = toString(ks.easingMode);
+      if (ks.tension != d.tension) o["tension"] = jsonFloat(ks.tension);
+      if (ks.continuity != d.continuity) o["continuity"] = jsonFloat(ks.continuity);
+      if (ks.bias != d.bias) o["bias"] = jsonFloat(ks.bias);
+      if (ks.inTangent != d.inTangent) o["in_tangent"] = vec(&ks.inTangent.x, n);
+      if (ks.outTangent != d.outTangent) o["out_tangent"] = vec(&ks.outTangent.x, n);
+      if (ks.leftHandleType != d.leftHandleType) o["left_handle_type"] = toString(ks.leftHandleType);
+      if (ks.rightHandleType != d.rightHandleType) o["right_handle_type"] = toString(ks.rightHandleType);
+      if (ks.leftHandleTime != d.leftHandleTime) o["left_handle_time"] = jsonFloat(ks.leftHandleTime);
+      if (ks.rightHandleTime != d.rightHandleTime) o["right_handle_time"] = jsonFloat(ks.rightHandleTime);
+      if (ks.leftHandleValue != d.leftHandleValue) o["left_handle_value"] = vec(&ks.leftHandleValue.x, n);
+      if (ks.rightHandleValue != d.rightHandleValue) o["right_handle_value"] = vec(&ks.rightHandleValue.x, n);
+      keys.push_back(std::move(o));
+    }
+    k["keys"] = std::move(keys);
+  }
+  return k;
 }
 
 }  // namespace
@@ -477,19 +600,9 @@ std::string toKinemaJson(const Scene& scene) {
     Json c;
     c["name"] = clip.name;
     if (clip.frameTime > 0) c["frame_time"] = clip.frameTime;
+    if (clip.loop) c["loop"] = true;
     Json channels = Json::array();
-    for (const Channel& ch : clip.channels) {
-      Json k;
-      k["joint"] = s.names[ch.joint];
-      k["target"] = toString(ch.target);
-      k["interpolation"] = toString(ch.interpolation);
-      Json times = Json::array(), values = Json::array();
-      for (float t : ch.times) times.push_back(jsonFloat(t));
-      for (const glm::vec4& v : ch.values) values.push_back(vec(&v.x, valueSize(ch.target)));
-      k["times"] = std::move(times);
-      k["values"] = std::move(values);
-      channels.push_back(std::move(k));
-    }
+    for (const Channel& ch : clip.channels) channels.push_back(channelJson(ch, s));
     c["channels"] = std::move(channels);
     clips.push_back(std::move(c));
   }

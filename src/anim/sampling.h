@@ -1,0 +1,27 @@
+#pragma once
+#include <vector>
+
+#include "anim/clip.h"
+
+namespace kinema {
+
+// Cursors for sequential playback: one per channel, the index of the first key after the
+// last sampled time. Reusing a cache makes playback O(1) per channel (the cursor is
+// checked, then advanced by one segment); a jump anywhere else falls back to a binary
+// search. The cache only speeds sampling up: results never depend on it.
+struct SamplingCache {
+  std::vector<int> cursors;
+};
+
+// The index of the first key after `time` (0: before the first key; keyCount(): at or
+// after the last), using and updating `cursor` when given.
+int upperKey(const Channel& channel, float time, int* cursor = nullptr);
+
+// The channel's value at `time`, clamped to its keys: (x, y, z, -) for translation, scale
+// and Euler angles, a unit quaternion (x, y, z, w) for rotation, (s, -, -, -) for scalars.
+glm::vec4 sampleChannel(const Channel& channel, float time, int* cursor = nullptr);
+
+// sampleClip (clip.h) with cursors kept in `cache` (resized to the clip as needed).
+void sampleClip(const Clip& clip, float time, Pose& pose, SamplingCache& cache);
+
+}  // namespace kinema
