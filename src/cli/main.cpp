@@ -4,6 +4,7 @@
 
 #include "cli/command_line.h"
 #include "cli/pose_command.h"
+#include "cli/render_command.h"
 #include "core/default_character.h"
 #include "core/forward_kinematics.h"
 
@@ -35,6 +36,8 @@ int main(int argc, char** argv) {
 
   kinema::cli::PoseOptions pose;
   CLI::App* poseCmd = kinema::cli::addPoseCommand(app, pose);
+  kinema::cli::RenderOptions render;
+  CLI::App* renderCmd = kinema::cli::addRenderCommand(app, render);
 
   try {
     app.parse(argc, argv);
@@ -50,5 +53,6 @@ int main(int argc, char** argv) {
   }
 
   if (poseCmd->parsed()) return kinema::cli::runPose(pose);
+  if (renderCmd->parsed()) return kinema::cli::runRender(render);
   return describeDefaultCharacter();
 }
