@@ -9,7 +9,10 @@ KINEMA_BUILD=${KINEMA_BUILD:-$KINEMA_ROOT/build}
 KINEMA_PACKAGES=(build-essential cmake ninja-build pkg-config
   libglfw3-dev libglm-dev libimgui-dev libstb-dev python3-glad libtinygltf-dev nlohmann-json3-dev
   libcli11-dev libeigen3-dev libegl-dev libosmesa6-dev libgtest-dev libbenchmark-dev
-  xvfb xauth xdotool imagemagick clang libclang-rt-14-dev)
+  xvfb xauth xdotool imagemagick clang libclang-rt-14-dev
+  libegl-mesa0 libgl1-mesa-dri libglx-mesa0)
+# The last three are Mesa's EGL, llvmpipe and GLX drivers: they come in today through
+# libegl1 and libgl1, but rendering needs them, so they are named rather than assumed.
 
 kinema_phase_start() { KINEMA_PHASE=$1; KINEMA_PHASE_T0=$(date +%s); echo "== $1"; }
 kinema_phase_end() {

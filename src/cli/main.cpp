@@ -3,31 +3,11 @@
 #include <iostream>
 
 #include "cli/command_line.h"
+#include "cli/edit_command.h"
 #include "cli/ik_command.h"
 #include "cli/plot_curves_command.h"
 #include "cli/pose_command.h"
-#include "core/default_character.h"
-#include "core/forward_kinematics.h"
-
-namespace {
-
-// Until the editor exists, plain `kinema` describes the default character.
-int describeDefaultCharacter() {
-  const kinema::Skeleton s = kinema::makeDefaultCharacter();
-  const std::vector<glm::mat4> world = kinema::computeWorld(s, kinema::Pose::rest(s));
-  float top = 0.0f;
-  for (const glm::mat4& m : world) top = std::max(top, m[3].y);
-  std::printf("Kinema default character: %d joints, %.2f units tall, T-pose, Y up, facing +Z\n", s.size(), top);
-  std::printf("%4s  %-14s %-14s %9s %9s %9s\n", "#", "joint", "parent", "x", "y", "z");
-  for (int i = 0; i < s.size(); ++i)
-    std::printf("%4d  %-14s %-14s %9.3f %9.3f %9.3f\n", i, s.names[i].c_str(),
-                s.parents[i] < 0 ? "-" : s.names[s.parents[i]].c_str(), world[i][3].x, world[i][3].y,
-                world[i][3].z);
-  std::printf("\nTry: kinema pose FILE.bvh --frame 0 --json   (kinema --help lists every subcommand)\n");
-  return kinema::cli::kExitOk;
-}
-
-}  // namespace
+#include "cli/render_command.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Kinema: skeleton posing, inverse kinematics and keyframe animation", "kinema"};
@@ -41,6 +21,10 @@ int main(int argc, char** argv) {
   CLI::App* ikCmd = kinema::cli::addIkCommand(app, ik);
   kinema::cli::PlotCurvesOptions plotCurves;
   CLI::App* plotCurvesCmd = kinema::cli::addPlotCurvesCommand(app, plotCurves);
+  kinema::cli::RenderOptions render;
+  CLI::App* renderCmd = kinema::cli::addRenderCommand(app, render);
+  kinema::cli::EditOptions edit;
+  CLI::App* editCmd = kinema::cli::addEditCommand(app, edit);
 
   try {
     app.parse(argc, argv);
@@ -58,5 +42,7 @@ int main(int argc, char** argv) {
   if (poseCmd->parsed()) return kinema::cli::runPose(pose);
   if (ikCmd->parsed()) return kinema::cli::runIk(ik);
   if (plotCurvesCmd->parsed()) return kinema::cli::runPlotCurves(plotCurves);
-  return describeDefaultCharacter();
+  if (renderCmd->parsed()) return kinema::cli::runRender(render);
+  if (editCmd->parsed()) return kinema::cli::runEdit(edit);
+  return kinema::cli::runDefault();
 }

@@ -1,6 +1,7 @@
 // The command-line contract (docs/cli.md), driven through the built binary.
 #include <nlohmann/json.hpp>
 
+#include "io/image.h"
 #include "test_support.h"
 
 namespace kinema::test {
@@ -125,11 +126,25 @@ TEST_F(Cli, BadInputExitsOneWithOneLine) {
   }
 }
 
-TEST_F(Cli, NoSubcommandDescribesTheDefaultCharacter) {
-  ASSERT_EQ(kinema(""), 0) << err_;
-  EXPECT_NE(out_.find("27 joints"), std::string::npos) << out_;
-  EXPECT_NE(out_.find("UpperArm.L"), std::string::npos);
-  EXPECT_NE(out_.find("1.80 units tall"), std::string::npos);
+// Plain `kinema` opens the editor; without a display it renders the default character to
+// ./kinema-default.png and prints that path.
+TEST_F(Cli, NoSubcommandWithoutDisplayRendersTheDefaultCharacterToAPng) {
+  ASSERT_EQ(runCommand("cd '" + dir_ + "' && env -u DISPLAY -u WAYLAND_DISPLAY LIBGL_ALWAYS_SOFTWARE=1 "
+                           "ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 " +  // Mesa's own leftovers
+
+                           std::string(KINEMA_BINARY), &out_, &err_), 0) << err_;
+  const std::string path = dir_ + "/kinema-default.png";
+  EXPECT_NE(out_.find(path), std::string::npos) << out_;
+  Result<Image> image = loadPng(path);
+  ASSERT_TRUE(image.ok()) << image.error();
+  // Not blank: the background grey is not the only colour, and bones (light grey) are drawn.
+  int bright = 0, background = 0;
+  for (size_t i = 0; i < image->rgba.size(); i += 4) {
+    bright += image->rgba[i] > 140 && image->rgba[i + 1] > 140 && image->rgba[i + 2] > 140;
+    background += image->rgba[i] == image->rgba[0] && image->rgba[i + 1] == image->rgba[1];
+  }
+  EXPECT_GT(bright, 500);
+  EXPECT_LT(background, static_cast<int>(image->rgba.size() / 4) * 95 / 100);
 }
 
 TEST_F(Cli, KinemaFileEvaluatesLikeTheBvhItCameFrom) {

@@ -1,0 +1,21 @@
+#pragma once
+#include <CLI/CLI.hpp>
+
+namespace kinema::cli {
+
+// `kinema edit [FILE] [--frame-count N --screenshot PATH]`
+struct EditOptions {
+  std::string file;
+  long long frameCount = 0;
+  std::string screenshot;
+  int width = 1280, height = 720;
+};
+
+CLI::App* addEditCommand(CLI::App& app, EditOptions& options);
+int runEdit(const EditOptions& options);
+
+// Plain `kinema`: the editor on the default character, or, when no window can open, the
+// default character rendered headlessly to ./kinema-default.png (its path is printed).
+int runDefault();
+
+}  // namespace kinema::cli

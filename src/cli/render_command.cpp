@@ -1,0 +1,229 @@
+#include "cli/render_command.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "cli/command_line.h"
+#include "core/forward_kinematics.h"
+#include "render/headless_renderer.h"
+#include "render/skeleton_view.h"
+
+namespace kinema::cli {
+
+namespace {
+
+// Splits "a,b,c" / "WxH" into numbers; false when the syntax is wrong.
+bool parseNumbers(const std::string& text, char separator, std::vector<double>& out) {
+  out.clear();
+  std::stringstream s(text);
+  std::string item;
+  while (std::getline(s, item, separator)) {
+    if (item.empty()) return false;
+    size_t used = 0;
+    double v = 0;
+    try {
+      v = std::stod(item, &used);
+    } catch (const std::exception&) {
+      return false;
+    }
+    if (used != item.size()) return false;
+    out.push_back(v);
+  }
+  return !text.empty() && text.back() != separator;
+}
+
+struct Sample {
+  long long frame = 0;  // frame number for sequences
+  double time = 0.0;
+};
+
+std::vector<glm::mat4> posedWorld(const Scene& scene, int clip, double time) {
+  Pose pose = Pose::rest(scene.skeleton);
+  if (clip < static_cast<int>(scene.clips.size())) sampleClip(scene.clips[clip], static_cast<float>(time), pose);
+  return computeWorld(scene.skeleton, pose);
+}
+
+bool ensureParentFolder(const std::string& path, std::string& error) {
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  if (parent.empty()) return true;
+  std::error_code ec;
+  std::filesystem::create_directories(parent, ec);
+  if (ec) error = parent.string() + ": cannot create the folder (" + ec.message() + ")";
+  return !ec;
+}
+
+}  // namespace
+
+std::string expandFramePattern(const std::string& pattern, long long frame) {
+  std::string out;
+  int numbers = 0;
+  for (size_t i = 0; i < pattern.size(); ++i) {
+    if (pattern[i] != '%') {
+      out += pattern[i];
+      continue;
+    }
+    if (i + 1 < pattern.size() && pattern[i + 1] == '%') {
+      out += '%';
+      ++i;
+      continue;
+    }
+    size_t j = i + 1;
+    const bool zero = j < pattern.size() && pattern[j] == '0';
+    if (zero) ++j;
+    int width = 0;
+    while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j])) && width < 100)
+      width = width * 10 + (pattern[j++] - '0');
+    if (j >= pattern.size() || pattern[j] != 'd' || width > 20) return {};
+    std::string digits = std::to_string(frame < 0 ? -frame : frame);
+    const int pad = width - static_cast<int>(digits.size()) - (frame < 0 ? 1 : 0);
+    if (pad > 0) digits.insert(0, static_cast<size_t>(pad), zero ? '0' : ' ');
+    out += (frame < 0 ? "-" : "") + digits;
+    ++numbers;
+    i = j;
+  }
+  return numbers == 1 ? out : std::string();
+}
+
+CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
+  CLI::App* cmd = app.add_subcommand("render", "Render a skeleton file (or the default character) to PNG, no display needed");
+  cmd->add_option("file", o.file, "A .bvh or .kinema file (default: the default character)");
+  cmd->add_option("--clip", o.clip, "Clip index (default 0)");
+  o.timeOption = cmd->add_option("--time", o.time, "Time in seconds (clamped to the clip)");
+  o.frameOption = cmd->add_option("--frame", o.frame, "Frame number (time = N x frame time)");
+  o.framesOption = cmd->add_option("--frames", o.frames, "Frame range A:B (inclusive): a numbered PNG sequence");
+  o.timeOption->excludes(o.frameOption)->excludes(o.framesOption);
+  o.frameOption->excludes(o.framesOption);
+  cmd->add_option("--size", o.size, "Image size WxH in pixels (default 1280x720)");
+  cmd->add_option("--camera", o.camera,
+                  "AZ,EL[,DIST]: azimuth and elevation in degrees (0,0 = from the front), distance in file units "
+                  "(default: 30,12 and the distance that frames the skeleton)");
+  cmd->add_option("--backend", o.backend, "egl (default) or osmesa")->check(CLI::IsMember({"egl", "osmesa"}));
+  cmd->add_option("--select", o.select, "Highlight this joint, as the editor shows a selection");
+  cmd->add_option("--out", o.out, "PNG path; with --frames a pattern such as dir/frame_%04d.png")->required();
+  return cmd;
+}
+
+int runRender(const RenderOptions& o) {
+  // Syntax first (exit 2), then values (exit 1).
+  std::vector<double> size, cam;
+  if (!parseNumbers(o.size, 'x', size) || size.size() != 2) {
+    std::cerr << "kinema render: --size takes WxH, e.g. 1280x720; see --help\n";
+    return kExitUsage;
+  }
+  if (!o.camera.empty() && (!parseNumbers(o.camera, ',', cam) || cam.size() < 2 || cam.size() > 3)) {
+    std::cerr << "kinema render: --camera takes AZ,EL or AZ,EL,DIST; see --help\n";
+    return kExitUsage;
+  }
+  long long first = 0, last = 0;
+  if (o.framesOption->count()) {
+    const size_t colon = o.frames.find(':');
+    try {
+      size_t a = 0, b = 0;
+      first = std::stoll(o.frames.substr(0, colon), &a);
+      last = std::stoll(o.frames.substr(colon + 1), &b);
+      if (colon == std::string::npos || a != colon || b != o.frames.size() - colon - 1) throw std::invalid_argument("");
+    } catch (const std::exception&) {
+      std::cerr << "kinema render: --frames takes A:B, e.g. 0:29; see --help\n";
+      return kExitUsage;
+    }
+  }
+
+  const double w = size[0], h = size[1];
+  if (!(w >= 1 && h >= 1 && w <= 16384 && h <= 16384) || w != std::floor(w) || h != std::floor(h))
+    return badInput("--size " + o.size + ": width and height must be whole numbers from 1 to 16384");
+  for (double v : cam)
+    if (!std::isfinite(v)) return badInput("--camera " + o.camera + ": numbers must be finite");
+  if (cam.size() == 3 && !(cam[2] > 0)) return badInput("--camera " + o.camera + ": the distance must be positive");
+  if (!std::isfinite(o.time)) return badInput("--time must be a finite number");
+  if (first > last) return badInput("--frames " + o.frames + ": the first frame comes after the last");
+  const bool sequence = o.framesOption->count() > 0;
+  if (sequence && expandFramePattern(o.out, first).empty())
+    return badInput("--out " + o.out + ": a sequence needs one frame number in the name, e.g. dir/frame_%04d.png");
+
+  Result<Scene> loaded = loadSceneOrDefault(o.file);
+  if (!loaded) return badInput(loaded.error());
+  const Scene& scene = loaded.value();
+  const int clips = static_cast<int>(scene.clips.size());
+  if (o.clip < 0 || (o.clip >= clips && !(clips == 0 && o.clip == 0)))
+    return badInput(scene.source + ": --clip " + std::to_string(o.clip) + " does not exist (the file has " +
+                    std::to_string(clips) + " clip" + (clips == 1 ? "" : "s") + ")");
+  int selected = -1;
+  if (!o.select.empty()) {
+    selected = scene.skeleton.find(o.select);
+    if (selected < 0) return badInput(scene.source + ": no joint named '" + o.select + "' (--select)");
+  }
+
+  std::vector<Sample> samples;
+  const double frameTime = frameTimeOf(scene, o.clip);
+  if (sequence) {
+    for (long long f = first; f <= last; ++f) samples.push_back({f, static_cast<double>(f) * frameTime});
+  } else {
+    samples.push_back({o.frame, o.frameOption->count() ? static_cast<double>(o.frame) * frameTime : o.time});
+  }
+
+  // One camera for the whole sequence, framing every pose in it, so the view does not jump.
+  std::vector<std::vector<glm::mat4>> worlds;
+  Bounds bounds;
+  for (const Sample& s : samples) {
+    worlds.push_back(posedWorld(scene, o.clip, s.time));
+    for (const glm::mat4& m : worlds.back()) bounds.add(glm::vec3(m[3]));
+  }
+  const float aspect = static_cast<float>(w / h);
+  OrbitCamera camera = defaultCamera(bounds, aspect);
+  if (!cam.empty()) {
+    camera.azimuthDeg = static_cast<float>(cam[0]);
+    camera.elevationDeg = static_cast<float>(cam[1]);
+    if (cam.size() == 3) camera.distance = static_cast<float>(cam[2]);
+    camera.fitClipPlanes(bounds.radius());
+  }
+
+  const HeadlessBackend backend = o.backend == "osmesa" ? HeadlessBackend::OsMesa : HeadlessBackend::Egl;
+  Result<std::unique_ptr<HeadlessRenderer>> opened =
+      HeadlessRenderer::open(backend, static_cast<int>(w), static_cast<int>(h));
+  if (!opened) return badInput("cannot render: " + opened.error());
+  HeadlessRenderer& renderer = *opened.value();
+
+  for (size_t k = 0; k < samples.size(); ++k) {
+    const std::string path = sequence ? expandFramePattern(o.out, samples[k].frame) : o.out;
+    SkeletonDrawList list;
+    SkeletonDrawJob job;
+    job.parents = &scene.skeleton.parents;
+    job.world = &worlds[k];
+    job.selectedJoint = selected;
+    job.run(list);
+    FrameDescription frame;
+    frame.skeleton = &list;
+    frame.camera = camera;
+    frame.sceneRadius = bounds.radius();
+    const Image image = renderer.render(frame);
+    std::string error;
+    if (!ensureParentFolder(path, error)) return badInput(error);
+    error = savePng(path, image);
+    if (!error.empty()) return badInput(error);
+    if (sequence)
+      std::fprintf(stderr, "kinema render: frame %lld (%zu/%zu) -> %s\n", samples[k].frame, k + 1, samples.size(),
+                   path.c_str());
+  }
+  if (!sequence) std::fprintf(stderr, "kinema render: wrote %s\n", o.out.c_str());
+  return kExitOk;
+}
+
+int renderDefaultCharacterHeadless(const std::string& path) {
+  RenderOptions o;
+  CLI::App app;
+  addRenderCommand(app, o);  // gives the options their defaults and the option handles
+  o.out = path;
+  const int code = runRender(o);
+  if (code != kExitOk) return code;
+  std::error_code ec;
+  const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
+  std::printf("No display: rendered Kinema's default character to %s\n", (ec ? path : absolute.string()).c_str());
+  std::printf("(open a window with `kinema edit` where there is a display; `kinema --help` lists every subcommand)\n");
+  return kExitOk;
+}
+
+}  // namespace kinema::cli

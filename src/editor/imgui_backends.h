@@ -1,0 +1,12 @@
+#pragma once
+// Dear ImGui's GLFW + OpenGL 3 backends (Debian's sources, compiled against glad), behind
+// four calls so the rest of the editor never includes backend headers.
+struct GLFWwindow;
+struct ImDrawData;
+
+namespace kinema {
+void imguiBackendsInit(GLFWwindow* window);
+void imguiBackendsNewFrame();
+void imguiBackendsRenderDrawData(ImDrawData* data);
+void imguiBackendsShutdown();
+}  // namespace kinema

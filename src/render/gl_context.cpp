@@ -1,0 +1,17 @@
+#include "render/gl_context.h"
+
+#include <glad/gl.h>
+
+namespace kinema {
+
+std::string HeadlessContext::description() const {
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const char* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+  return std::string(renderer ? renderer : "?") + " | " + (version ? version : "?");
+}
+
+Result<std::unique_ptr<HeadlessContext>> createHeadlessContext(HeadlessBackend backend) {
+  return backend == HeadlessBackend::Egl ? createEglContext() : createOsMesaContext();
+}
+
+}  // namespace kinema

@@ -1,0 +1,28 @@
+#pragma once
+#include <memory>
+
+#include "render/gl_context.h"
+#include "render/offscreen_target.h"
+#include "render/skeleton_renderer.h"
+
+namespace kinema {
+
+// A headless context, the renderer and an off-screen target of one size, kept together so
+// a sequence reuses them frame after frame.
+class HeadlessRenderer {
+ public:
+  static Result<std::unique_ptr<HeadlessRenderer>> open(HeadlessBackend backend, int width, int height);
+  // Draws the frame (its viewport is set to the whole target) and reads the pixels back.
+  Image render(FrameDescription frame);
+  const HeadlessContext& context() const { return *context_; }
+  int samples() const { return target_->samples(); }
+
+ private:
+  // Declared first so it is destroyed last: the GL objects below need it current.
+  std::unique_ptr<HeadlessContext> context_;
+  std::unique_ptr<SkeletonRenderer> renderer_;
+  std::unique_ptr<OffscreenTarget> target_;
+  int width_ = 0, height_ = 0;
+};
+
+}  // namespace kinema

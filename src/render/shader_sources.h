@@ -1,0 +1,8 @@
+#pragma once
+// GLSL 330 core sources from shaders/, embedded at build time (src/render/embed_shaders.cmake).
+namespace kinema::shaders {
+extern const char* const shaded_vert;
+extern const char* const shaded_frag;
+extern const char* const lines_vert;
+extern const char* const lines_frag;
+}  // namespace kinema::shaders

@@ -1,0 +1,71 @@
+#include "render/skeleton_draw_list.h"
+
+#include <algorithm>
+#include <string>
+
+#include "render/camera.h"
+
+namespace kinema {
+
+glm::mat4 boneMatrix(const glm::vec3& head, const glm::vec3& tail, const glm::vec3& rollHint) {
+  const glm::vec3 d = tail - head;
+  const float length = glm::length(d);
+  const glm::vec3 y = d / length;
+  // Gram-Schmidt the hint against the bone; fall back to any perpendicular when parallel.
+  glm::vec3 x = rollHint - y * glm::dot(rollHint, y);
+  if (glm::length(x) < 1e-4f) {
+    const glm::vec3 other = std::abs(y.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 0, 1);
+    x = other - y * glm::dot(other, y);
+  }
+  x = glm::normalize(x);
+  const glm::vec3 z = glm::cross(x, y);  // right-handed: x cross y = z
+  glm::mat4 m(1.0f);
+  m[0] = glm::vec4(x * length, 0.0f);
+  m[1] = glm::vec4(y * length, 0.0f);
+  m[2] = glm::vec4(z * length, 0.0f);
+  m[3] = glm::vec4(head, 1.0f);
+  return m;
+}
+
+std::string SkeletonDrawJob::validate() const {
+  if (!parents || !world) return "skeleton drawing needs parents and world transforms";
+  if (parents->size() != world->size()) return "skeleton drawing: parents and world transforms differ in count";
+  for (size_t i = 0; i < parents->size(); ++i) {
+    const int p = (*parents)[i];
+    if (p < -1 || p >= static_cast<int>(i)) return "skeleton drawing: joint " + std::to_string(i) + " has a bad parent";
+  }
+  return {};
+}
+
+bool SkeletonDrawJob::run(SkeletonDrawList& out) const {
+  out = SkeletonDrawList{};
+  if (!validate().empty()) return false;
+  const std::vector<int>& par = *parents;
+  const std::vector<glm::mat4>& w = *world;
+  const int n = static_cast<int>(par.size());
+  auto pos = [&w](int i) { return glm::vec3(w[i][3]); };
+
+  // Joint radius: a tenth of the shortest bone touching the joint (Blender's proportion),
+  // capped by the skeleton's size so tiny or huge bones stay readable.
+  const float size = std::max(jointBounds(w).radius(), 1e-3f);
+  std::vector<float> shortest(n, 0.0f);
+  for (int i = 0; i < n; ++i) {
+    const int p = par[i];
+    if (p < 0) continue;
+    const float len = glm::length(pos(i) - pos(p));
+    if (len <= size * 1e-4f) continue;
+    for (int j : {i, p}) shortest[j] = shortest[j] == 0.0f ? len : std::min(shortest[j], len);
+    out.boneMatrices.push_back(boneMatrix(pos(p), pos(i), glm::vec3(w[p][0])));
+    out.boneColors.push_back(p == selectedJoint ? style.selectedBone : style.bone);
+  }
+  for (int i = 0; i < n; ++i) {
+    const float r = std::clamp(shortest[i] > 0.0f ? shortest[i] * 0.1f : size * 0.02f, size * 0.008f, size * 0.025f);
+    glm::mat4 m(r);
+    m[3] = glm::vec4(pos(i), 1.0f);
+    out.jointMatrices.push_back(m);
+    out.jointColors.push_back(i == selectedJoint ? style.selectedJoint : style.joint);
+  }
+  return true;
+}
+
+}  // namespace kinema

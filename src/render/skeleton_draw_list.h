@@ -1,0 +1,44 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/math.h"
+
+namespace kinema {
+
+// Colours of the skeleton drawing (linear RGB 0..1, alpha 1). Blender-like defaults.
+struct SkeletonStyle {
+  glm::vec4 bone{0.72f, 0.72f, 0.74f, 1.0f};
+  glm::vec4 joint{0.32f, 0.34f, 0.40f, 1.0f};
+  glm::vec4 selectedBone{1.0f, 0.62f, 0.20f, 1.0f};
+  glm::vec4 selectedJoint{1.0f, 0.55f, 0.10f, 1.0f};
+};
+
+// What the renderer draws for a posed skeleton, computed on the CPU from FK output only.
+// Bones: one octahedron per (parent, child) pair, as instance matrices that take the unit
+// bone of makeOctahedralBone() to the segment parent -> child. Joints: one sphere each.
+struct SkeletonDrawList {
+  std::vector<glm::mat4> boneMatrices;
+  std::vector<glm::vec4> boneColors;
+  std::vector<glm::mat4> jointMatrices;  // translate(position) * scale(radius)
+  std::vector<glm::vec4> jointColors;
+};
+
+// Inputs of buildSkeletonDrawList, ozz-job style.
+struct SkeletonDrawJob {
+  const std::vector<int>* parents = nullptr;       // parents[i] < i, -1 for roots
+  const std::vector<glm::mat4>* world = nullptr;   // one world transform per joint
+  int selectedJoint = -1;                          // highlighted with its outgoing bones; -1 = none
+  SkeletonStyle style;
+  // Empty when usable; otherwise what is wrong (missing arrays, sizes differ, bad parent).
+  std::string validate() const;
+  // Fills `out`; returns false (and leaves `out` empty) when validate() fails.
+  bool run(SkeletonDrawList& out) const;
+};
+
+// The instance matrix of a bone from `head` to `tail`: maps (0,0,0) to head, (0,1,0) to tail,
+// scales uniformly by the length, and turns the waist's X axis towards `rollHint` (the
+// parent joint's X axis, so octahedra twist with the joint) where that is not parallel to the bone.
+glm::mat4 boneMatrix(const glm::vec3& head, const glm::vec3& tail, const glm::vec3& rollHint);
+
+}  // namespace kinema

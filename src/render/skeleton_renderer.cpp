@@ -1,0 +1,134 @@
+#include "render/skeleton_renderer.h"
+
+#include <cstddef>
+
+#include "render/shader_sources.h"
+#include "render/shape_meshes.h"
+
+namespace kinema {
+
+SkeletonRenderer::~SkeletonRenderer() {
+  for (ShapeBuffers* s : {&bone_, &sphere_}) {
+    if (s->vao) glDeleteVertexArrays(1, &s->vao);
+    if (s->vertices) glDeleteBuffers(1, &s->vertices);
+    if (s->instances) glDeleteBuffers(1, &s->instances);
+  }
+  if (lineVao_) glDeleteVertexArrays(1, &lineVao_);
+  if (lineVertices_) glDeleteBuffers(1, &lineVertices_);
+}
+
+std::string SkeletonRenderer::init() {
+  std::string error = shaded_.build("shaded", shaders::shaded_vert, shaders::shaded_frag);
+  if (error.empty()) error = lines_.build("lines", shaders::lines_vert, shaders::lines_frag);
+  if (!error.empty()) return error;
+  createShape(bone_, makeOctahedralBone());
+  createShape(sphere_, makeSphere(16, 10));
+
+  glGenVertexArrays(1, &lineVao_);
+  glGenBuffers(1, &lineVertices_);
+  glBindVertexArray(lineVao_);
+  glBindBuffer(GL_ARRAY_BUFFER, lineVertices_);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(LineVertex), reinterpret_cast<void*>(offsetof(LineVertex, position)));
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, sizeof(LineVertex), reinterpret_cast<void*>(offsetof(LineVertex, color)));
+  glBindVertexArray(0);
+  const GLenum status = glGetError();
+  if (status != GL_NO_ERROR) return "OpenGL error " + std::to_string(status) + " while creating the renderer's buffers";
+  return {};
+}
+
+void SkeletonRenderer::createShape(ShapeBuffers& shape, const Mesh& mesh) {
+  // Interleaved position + normal per vertex; a second buffer holds per-instance matrix + colour.
+  std::vector<float> data;
+  data.reserve(mesh.positions.size() * 6);
+  for (int i = 0; i < mesh.vertexCount(); ++i)
+    for (const glm::vec3& v : {mesh.positions[i], mesh.normals[i]}) data.insert(data.end(), {v.x, v.y, v.z});
+  shape.vertexCount = mesh.vertexCount();
+  glGenVertexArrays(1, &shape.vao);
+  glGenBuffers(1, &shape.vertices);
+  glGenBuffers(1, &shape.instances);
+  glBindVertexArray(shape.vao);
+  glBindBuffer(GL_ARRAY_BUFFER, shape.vertices);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(), GL_STATIC_DRAW);
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), nullptr);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), reinterpret_cast<void*>(3 * sizeof(float)));
+  glBindBuffer(GL_ARRAY_BUFFER, shape.instances);
+  const GLsizei stride = 20 * sizeof(float);  // mat4 + vec4
+  for (int c = 0; c < 5; ++c) {
+    glEnableVertexAttribArray(2 + c);
+    glVertexAttribPointer(2 + c, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(c * 4 * sizeof(float)));
+    glVertexAttribDivisor(2 + c, 1);
+  }
+  glBindVertexArray(0);
+}
+
+void SkeletonRenderer::drawInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices,
+                                     const std::vector<glm::vec4>& colors) {
+  if (matrices.empty()) return;
+  instanceScratch_.clear();
+  for (size_t i = 0; i < matrices.size(); ++i) {
+    const float* m = glm::value_ptr(matrices[i]);
+    instanceScratch_.insert(instanceScratch_.end(), m, m + 16);
+    const float* c = glm::value_ptr(colors[i]);
+    instanceScratch_.insert(instanceScratch_.end(), c, c + 4);
+  }
+  glBindVertexArray(shape.vao);
+  glBindBuffer(GL_ARRAY_BUFFER, shape.instances);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(instanceScratch_.size() * sizeof(float)),
+               instanceScratch_.data(), GL_STREAM_DRAW);
+  glDrawArraysInstanced(GL_TRIANGLES, 0, shape.vertexCount, static_cast<GLsizei>(matrices.size()));
+}
+
+void SkeletonRenderer::drawGrid(const FrameDescription& frame, const glm::mat4& viewProjection) {
+  const float cell = gridCellSize(frame.sceneRadius);
+  // Reach past the skeleton, and past the point the camera looks at, whichever is further.
+  const float reach = std::max(frame.sceneRadius * 2.5f, glm::length(frame.camera.target) + frame.sceneRadius * 2.0f);
+  if (cell != gridCacheCell_ || reach != gridCacheReach_ || gridCache_.empty()) {
+    gridCache_ = makeGridLines(cell, reach);
+    gridCacheCell_ = cell;
+    gridCacheReach_ = reach;
+    glBindBuffer(GL_ARRAY_BUFFER, lineVertices_);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(gridCache_.size() * sizeof(LineVertex)), gridCache_.data(),
+                 GL_STATIC_DRAW);
+  }
+  glUseProgram(lines_.id());
+  glUniformMatrix4fv(lines_.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
+  glBindVertexArray(lineVao_);
+  glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(gridCache_.size()));
+}
+
+void SkeletonRenderer::draw(const FrameDescription& frame) {
+  if (frame.width <= 0 || frame.height <= 0) return;
+  glViewport(frame.x, frame.y, frame.width, frame.height);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(frame.x, frame.y, frame.width, frame.height);
+  glClearColor(frame.background.r, frame.background.g, frame.background.b, frame.background.a);
+  glClearDepth(1.0);
+  glDepthMask(GL_TRUE);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);  // thin octahedra seen edge-on; the shader lights back faces too
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+
+  const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
+  const glm::mat4 view = frame.camera.view();
+  const glm::mat4 viewProjection = frame.camera.projection(aspect) * view;
+  if (frame.showGrid) drawGrid(frame, viewProjection);
+  if (frame.skeleton) {
+    glUseProgram(shaded_.id());
+    glUniformMatrix4fv(shaded_.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
+    glUniformMatrix4fv(shaded_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
+    drawInstances(bone_, frame.skeleton->boneMatrices, frame.skeleton->boneColors);
+    drawInstances(sphere_, frame.skeleton->jointMatrices, frame.skeleton->jointColors);
+  }
+  glBindVertexArray(0);
+  glUseProgram(0);
+}
+
+}  // namespace kinema

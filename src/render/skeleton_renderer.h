@@ -1,0 +1,54 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "render/camera.h"
+#include "render/grid_lines.h"
+#include "render/shader_program.h"
+#include "render/shape_meshes.h"
+#include "render/skeleton_draw_list.h"
+
+namespace kinema {
+
+// Everything one frame shows; the renderer keeps no scene state between frames.
+struct FrameDescription {
+  const SkeletonDrawList* skeleton = nullptr;  // may be null: grid only
+  OrbitCamera camera;
+  int x = 0, y = 0, width = 0, height = 0;  // viewport in the bound framebuffer, pixels
+  float sceneRadius = 1.0f;                 // sizes the grid
+  bool showGrid = true;
+  glm::vec4 background{0.235f, 0.235f, 0.235f, 1.0f};  // Blender's viewport grey
+};
+
+// Draws grid, axes, bones and joints with OpenGL 3.3 core into whatever framebuffer is
+// bound (a window's, an FBO): it knows nothing of windows or contexts. Create, init() and
+// destroy it with the same context current.
+class SkeletonRenderer {
+ public:
+  SkeletonRenderer() = default;
+  ~SkeletonRenderer();
+  SkeletonRenderer(const SkeletonRenderer&) = delete;
+  SkeletonRenderer& operator=(const SkeletonRenderer&) = delete;
+
+  // Compiles the embedded shaders and uploads the shape meshes. Empty string on success.
+  std::string init();
+  void draw(const FrameDescription& frame);
+
+ private:
+  struct ShapeBuffers {
+    GLuint vao = 0, vertices = 0, instances = 0;
+    int vertexCount = 0;
+  };
+  void createShape(ShapeBuffers& shape, const Mesh& mesh);
+  void drawInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices, const std::vector<glm::vec4>& colors);
+  void drawGrid(const FrameDescription& frame, const glm::mat4& viewProjection);
+
+  ShaderProgram shaded_, lines_;
+  ShapeBuffers bone_, sphere_;
+  GLuint lineVao_ = 0, lineVertices_ = 0;
+  std::vector<LineVertex> gridCache_;
+  float gridCacheCell_ = 0.0f, gridCacheReach_ = 0.0f;
+  std::vector<float> instanceScratch_;
+};
+
+}  // namespace kinema

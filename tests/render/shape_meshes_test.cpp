@@ -1,0 +1,123 @@
+// Bone, sphere and grid geometry, and the bone instance matrices (no GL context needed).
+#include "render/grid_lines.h"
+#include "render/shape_meshes.h"
+#include "render/skeleton_draw_list.h"
+#include "test_support.h"
+
+namespace kinema::test {
+namespace {
+
+// Signed volume by the divergence theorem: positive when every triangle winds
+// counter-clockwise seen from outside.
+double signedVolume(const Mesh& m) {
+  double v = 0;
+  for (int i = 0; i + 2 < m.vertexCount(); i += 3)
+    v += glm::dot(glm::dvec3(m.positions[i]), glm::cross(glm::dvec3(m.positions[i + 1]), glm::dvec3(m.positions[i + 2]))) / 6.0;
+  return v;
+}
+
+TEST(OctahedralBone, HasBlendersProportionsAndOutwardFaces) {
+  const Mesh m = makeOctahedralBone();
+  ASSERT_EQ(m.vertexCount(), 24);  // 8 flat triangles
+  // Two square pyramids on the waist (side 0.2, area 0.04), heights 0.1 and 0.9: V = 0.04 * 1 / 3.
+  EXPECT_NEAR(signedVolume(m), 0.04 / 3.0, 1e-7);
+  float minY = 1e9f, maxY = -1e9f;
+  for (int i = 0; i < m.vertexCount(); i += 3) {
+    const glm::vec3 centroid = (m.positions[i] + m.positions[i + 1] + m.positions[i + 2]) / 3.0f;
+    const glm::vec3 n = m.normals[i];
+    EXPECT_NEAR(glm::length(n), 1.0f, 1e-6f);
+    // The shape is convex around (0, 0.1, 0), so each face normal points away from it.
+    EXPECT_GT(glm::dot(n, centroid - glm::vec3(0, 0.1f, 0)), 0.0f);
+    for (int k = 0; k < 3; ++k) {
+      minY = std::min(minY, m.positions[i + k].y);
+      maxY = std::max(maxY, m.positions[i + k].y);
+      EXPECT_LE(std::abs(m.positions[i + k].x), 0.1f + 1e-7f);
+    }
+  }
+  EXPECT_FLOAT_EQ(minY, 0.0f);
+  EXPECT_FLOAT_EQ(maxY, 1.0f);
+}
+
+TEST(Sphere, IsAClosedUnitSphereWoundOutward) {
+  const Mesh m = makeSphere(16, 10);
+  ASSERT_EQ(m.vertexCount() % 3, 0);
+  EXPECT_EQ(m.vertexCount(), 3 * (2 * 16 * 10 - 2 * 16));  // quads, minus one triangle per pole cell
+  for (int i = 0; i < m.vertexCount(); ++i) EXPECT_NEAR(glm::length(m.positions[i]), 1.0f, 1e-6f);
+  // Inscribed polyhedron: a little under 4/3 pi, and close to it when finer.
+  const double v = signedVolume(m), fine = signedVolume(makeSphere(64, 40));
+  const double exact = 4.0 / 3.0 * 3.14159265358979;
+  EXPECT_GT(v, 0.9 * exact);
+  EXPECT_LT(v, exact);
+  EXPECT_NEAR(fine, exact, 0.01 * exact);
+}
+
+TEST(BoneMatrix, TakesTheUnitBoneToTheSegmentWithUniformScale) {
+  const glm::vec3 head(1, 2, 3), tail(1, 2, 3 + 2);  // length 2 along +Z
+  const glm::mat4 m = boneMatrix(head, tail, glm::vec3(1, 0, 0));
+  EXPECT_VEC3_NEAR(glm::vec3(m * glm::vec4(0, 0, 0, 1)), head, 1e-6f);
+  EXPECT_VEC3_NEAR(glm::vec3(m * glm::vec4(0, 1, 0, 1)), tail, 1e-6f);
+  EXPECT_VEC3_NEAR(glm::vec3(m[0]), glm::vec3(2, 0, 0), 1e-6f);  // roll follows the hint
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(glm::length(glm::vec3(m[c])), 2.0f, 1e-6f);
+  EXPECT_GT(glm::determinant(glm::mat3(m)), 0.0f);  // no mirroring
+  // A hint along the bone still gives a valid frame.
+  const glm::mat4 p = boneMatrix(head, tail, glm::vec3(0, 0, 1));
+  EXPECT_NEAR(glm::dot(glm::vec3(p[0]), glm::vec3(p[1])), 0.0f, 1e-5f);
+  EXPECT_VEC3_NEAR(glm::vec3(p * glm::vec4(0, 1, 0, 1)), tail, 1e-6f);
+}
+
+TEST(SkeletonDrawList, OneBonePerParentChildPairAndOneSpherePerJoint) {
+  // Root at origin, A 1 up, B 1 up from A, C at A again (zero-length bone: not drawn).
+  std::vector<int> parents = {-1, 0, 1, 1};
+  std::vector<glm::mat4> world(4, glm::mat4(1));
+  world[1][3] = glm::vec4(0, 1, 0, 1);
+  world[2][3] = glm::vec4(0, 2, 0, 1);
+  world[3][3] = glm::vec4(0, 1, 0, 1);
+  SkeletonDrawJob job;
+  job.parents = &parents;
+  job.world = &world;
+  job.selectedJoint = 1;
+  SkeletonDrawList list;
+  ASSERT_TRUE(job.run(list));
+  ASSERT_EQ(list.boneMatrices.size(), 2u);
+  EXPECT_VEC3_NEAR(glm::vec3(list.boneMatrices[1] * glm::vec4(0, 1, 0, 1)), glm::vec3(0, 2, 0), 1e-6f);
+  EXPECT_EQ(list.boneColors[0], job.style.bone);          // root -> A
+  EXPECT_EQ(list.boneColors[1], job.style.selectedBone);  // A -> B starts at the selection
+  ASSERT_EQ(list.jointMatrices.size(), 4u);
+  EXPECT_EQ(list.jointColors[1], job.style.selectedJoint);
+  // Radius = a tenth of the shortest touching bone (0.1), capped at 0.025 x the bounds radius (1);
+  // a joint with no drawn bone (C) gets 0.02 x the bounds radius.
+  for (int j : {0, 1, 2}) EXPECT_NEAR(list.jointMatrices[j][0][0], 0.025f, 1e-6f);
+  EXPECT_NEAR(list.jointMatrices[3][0][0], 0.02f, 1e-6f);
+
+  std::vector<int> bad = {-1, 2, 0};
+  job.parents = &bad;
+  world.resize(3);
+  EXPECT_FALSE(job.validate().empty());
+  EXPECT_FALSE(job.run(list));
+  EXPECT_TRUE(list.boneMatrices.empty());
+}
+
+TEST(GridLines, CoverTheReachWithAxesThroughTheOrigin) {
+  const std::vector<LineVertex> v = makeGridLines(0.5f, 2.2f);
+  // ceil(2.2 / 0.5) = 5 cells each way: 11 lines in each direction, 2 vertices each, + the Y axis.
+  ASSERT_EQ(v.size(), 11u * 2u * 2u + 2u);
+  int red = 0, blue = 0;
+  for (size_t i = 0; i + 3 < v.size(); i += 2) {  // all but the Y axis, last
+    EXPECT_NEAR(std::max(std::abs(v[i].position.x), std::abs(v[i].position.z)), 2.5f, 1e-6f);
+    if (v[i].color.r > 0.8f) {
+      ++red;
+      EXPECT_FLOAT_EQ(v[i].position.z, 0.0f);  // the X axis lies at z = 0
+    }
+    if (v[i].color.b > 0.8f) {
+      ++blue;
+      EXPECT_FLOAT_EQ(v[i].position.x, 0.0f);
+    }
+  }
+  EXPECT_EQ(red, 1);
+  EXPECT_EQ(blue, 1);
+  EXPECT_TRUE(makeGridLines(0.0f, 1.0f).empty());
+  EXPECT_LE(makeGridLines(1e-9f, 1e9f).size(), 201u * 4u + 2u);  // bounded for absurd inputs
+}
+
+}  // namespace
+}  // namespace kinema::test
