@@ -49,7 +49,7 @@ kinema_install_packages() {
 # kinema_build [extra cmake args...]
 kinema_build() {
   kinema_phase_start "configure + build ($(basename "$KINEMA_BUILD"))"
-  cmake -S "$KINEMA_ROOT" -B "$KINEMA_BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+  cmake -S "$KINEMA_ROOT" -B "$KINEMA_BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release -DKINEMA_WERROR=ON "$@" >/dev/null
   cmake --build "$KINEMA_BUILD" -j2
   kinema_phase_end
 }

@@ -5,6 +5,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 kinema=${1:-$root/build/src/kinema}
 export LIBGL_ALWAYS_SOFTWARE=1 MESA_GL_VERSION_OVERRIDE=3.3
-bvh=$root/../shared/data/bvh/cmu_01_01_first720.bvh
+cd "$root"  # the editor shows the path it was given: keep it short
+bvh=../shared/data/bvh/cmu_01_01_first720.bvh
 xvfb-run -a -s "-screen 0 1280x800x24" "$kinema" edit "$bvh" --frame-count 5 --screenshot "$root/docs/images/editor.png"
 "$kinema" render "$bvh" --frame 240 --select LeftArm --size 960x540 --out "$root/docs/images/render_cmu_frame240.png"
