@@ -26,6 +26,20 @@ double frameTimeOf(const Scene& scene, int clip) {
   return 1.0 / 30.0;
 }
 
+std::string clipIndexError(const Scene& scene, int clip) {
+  const int clips = static_cast<int>(scene.clips.size());
+  if (clip == 0 || (clip > 0 && clip < clips)) return {};
+  return scene.source + ": --clip " + std::to_string(clip) + " does not exist (the file has " +
+         std::to_string(clips) + " clip" + (clips == 1 ? "" : "s") + ")";
+}
+
+Pose sampledPose(const Scene& scene, int clip, double time) {
+  Pose pose = Pose::rest(scene.skeleton);
+  if (clip >= 0 && clip < static_cast<int>(scene.clips.size()))
+    sampleClip(scene.clips[clip], static_cast<float>(time), pose);
+  return pose;
+}
+
 nlohmann::ordered_json jointsJson(const Skeleton& skeleton, const std::vector<glm::mat4>& world) {
   nlohmann::ordered_json joints = nlohmann::ordered_json::array();
   for (int i = 0; i < skeleton.size(); ++i) {

@@ -24,6 +24,13 @@ Result<Scene> loadSceneOrDefault(const std::string& path);
 // time (1/30 s for clips without a frame grid).
 double frameTimeOf(const Scene& scene, int clip);
 
+// Empty when `clip` names one of the scene's clips (0 is always allowed: a file without
+// clips evaluates to its rest pose); otherwise the one-line error.
+std::string clipIndexError(const Scene& scene, int clip);
+
+// The local pose at `time` in clip `clip`, or the rest pose when the file has no clips.
+Pose sampledPose(const Scene& scene, int clip, double time);
+
 // The "joints" array of the contract: name, parent, world (16 numbers, column-major).
 nlohmann::ordered_json jointsJson(const Skeleton& skeleton, const std::vector<glm::mat4>& world);
 

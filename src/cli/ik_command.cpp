@@ -100,12 +100,9 @@ int runIk(const IkOptions& o) {
   if (!loaded) return badInput(loaded.error());
   const Scene& scene = loaded.value();
   const Skeleton& skeleton = scene.skeleton;
-  const int clips = static_cast<int>(scene.clips.size());
-  if (o.clip < 0 || (o.clip >= clips && !(clips == 0 && o.clip == 0)))
-    return badInput(scene.source + ": --clip " + std::to_string(o.clip) + " does not exist");
+  if (const std::string bad = clipIndexError(scene, o.clip); !bad.empty()) return badInput(bad);
   const double time = o.frameOption->count() ? static_cast<double>(o.frame) * frameTimeOf(scene, o.clip) : o.time;
-  Pose pose = Pose::rest(skeleton);
-  if (o.clip < clips) sampleClip(scene.clips[o.clip], static_cast<float>(time), pose);
+  Pose pose = sampledPose(scene, o.clip, time);
 
   IkRig rig = scene.ik;
   std::vector<IkTarget> targets;

@@ -30,14 +30,9 @@ int runPose(const PoseOptions& o) {
   Result<Scene> loaded = loadSceneOrDefault(o.file);
   if (!loaded) return badInput(loaded.error());
   const Scene& scene = loaded.value();
-  const int clips = static_cast<int>(scene.clips.size());
-  if (o.clip < 0 || (o.clip >= clips && !(clips == 0 && o.clip == 0)))
-    return badInput(scene.source + ": --clip " + std::to_string(o.clip) + " does not exist (the file has " +
-                    std::to_string(clips) + " clip" + (clips == 1 ? "" : "s") + ")");
+  if (const std::string bad = clipIndexError(scene, o.clip); !bad.empty()) return badInput(bad);
   const double time = o.frameOption->count() ? static_cast<double>(o.frame) * frameTimeOf(scene, o.clip) : o.time;
-
-  Pose pose = Pose::rest(scene.skeleton);
-  if (o.clip < clips) sampleClip(scene.clips[o.clip], static_cast<float>(time), pose);
+  const Pose pose = sampledPose(scene, o.clip, time);
   const std::vector<glm::mat4> world = computeWorld(scene.skeleton, pose);
 
   if (o.json) {

@@ -42,9 +42,7 @@ struct Sample {
 };
 
 std::vector<glm::mat4> posedWorld(const Scene& scene, int clip, double time) {
-  Pose pose = Pose::rest(scene.skeleton);
-  if (clip < static_cast<int>(scene.clips.size())) sampleClip(scene.clips[clip], static_cast<float>(time), pose);
-  return computeWorld(scene.skeleton, pose);
+  return computeWorld(scene.skeleton, sampledPose(scene, clip, time));
 }
 
 bool ensureParentFolder(const std::string& path, std::string& error) {
@@ -147,10 +145,7 @@ int runRender(const RenderOptions& o) {
   Result<Scene> loaded = loadSceneOrDefault(o.file);
   if (!loaded) return badInput(loaded.error());
   const Scene& scene = loaded.value();
-  const int clips = static_cast<int>(scene.clips.size());
-  if (o.clip < 0 || (o.clip >= clips && !(clips == 0 && o.clip == 0)))
-    return badInput(scene.source + ": --clip " + std::to_string(o.clip) + " does not exist (the file has " +
-                    std::to_string(clips) + " clip" + (clips == 1 ? "" : "s") + ")");
+  if (const std::string bad = clipIndexError(scene, o.clip); !bad.empty()) return badInput(bad);
   int selected = -1;
   if (!o.select.empty()) {
     selected = scene.skeleton.find(o.select);
