@@ -26,6 +26,7 @@ struct IkChain {
   std::vector<int> parentSlot;      // -1: the parent lies outside and never moves
   std::vector<int> subtreeSize;     // this slot and the slots below it
   std::vector<glm::mat4> fixedParent;  // world of the parent, for slots with parentSlot -1
+  std::vector<glm::quat> fixedRotation;  // its rotation (scale removed), computed once
   std::vector<glm::mat4> world;     // current world transform of each slot
   std::vector<glm::quat> rotation;  // its world rotation (scale removed)
   std::vector<const JointLimit*> limit;
