@@ -40,15 +40,15 @@ void sweep(IkChain& c, const Goal& g, const IkSettings& settings, int it) {
     if (glm::dot(toEffector, toEffector) > 1e-20f && glm::dot(toTarget, toTarget) > 1e-20f) {
       const glm::quat delta = dampedFromTo(toEffector, toTarget, settings.maxStepAngle);
       const glm::quat parentRot = c.parentRotation(s);
-      glm::quat local = safeNormalize(glm::conjugate(parentRot) * delta * c.rotation[s]);
+      glm::quat local = ik_detail::renormalize(glm::conjugate(parentRot) * delta * c.rotation[s]);
       glm::quat applied = delta;
       if (c.limit[s]) {
         local = applyJointLimit(*c.limit[s], c.skeleton->rest[c.joints[s]].rotation, local);
-        const glm::quat newWorld = safeNormalize(parentRot * local);
-        applied = safeNormalize(newWorld * glm::conjugate(c.rotation[s]));
+        const glm::quat newWorld = ik_detail::renormalize(parentRot * local);
+        applied = ik_detail::renormalize(newWorld * glm::conjugate(c.rotation[s]));
         c.rotation[s] = newWorld;
       } else {
-        c.rotation[s] = safeNormalize(parentRot * local);
+        c.rotation[s] = ik_detail::renormalize(parentRot * local);
       }
       c.pose->local[c.joints[s]].rotation = local;
       effector = p + applied * toEffector;
@@ -79,7 +79,7 @@ IkResult solveCcd(const IkProblem& problem, const IkSettings& settings) {
     for (const Goal& g : c.goals) {
       if (g.hasOrientation) {
         // The effector itself turns to the target orientation first.
-        c.rotateJoint(g.slot, safeNormalize(g.orientation * glm::conjugate(c.rotation[g.slot])));
+        c.rotateJoint(g.slot, ik_detail::renormalize(g.orientation * glm::conjugate(c.rotation[g.slot])));
         c.record(trace, it, IkStep::CcdJoint, c.joints[g.slot]);
       }
       sweep(c, g, settings, it);

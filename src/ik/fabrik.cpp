@@ -66,6 +66,7 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
   std::vector<float> count(m);
   std::vector<glm::quat> backRot(m);  // world rotations the backward pass gives the joints
   std::vector<int> proposals(m);     // how many children (or targets) set backRot
+  std::vector<char> twisted(m);      // backRot was turned to meet a child's limit
   std::vector<glm::vec3> from, to;
   int it = 0;
   while (!c.converged(settings) && it < settings.maxIterations) {
@@ -78,6 +79,7 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
     std::fill(sum.begin(), sum.end(), glm::vec3(0.0f));
     std::fill(count.begin(), count.end(), 0.0f);
     std::fill(proposals.begin(), proposals.end(), 0);
+    std::fill(twisted.begin(), twisted.end(), 0);
     for (int s = m - 1; s >= 0; --s) {
       const Goal* goal = goalOf[s] >= 0 ? &c.goals[goalOf[s]] : nullptr;
       if (goal) {
@@ -109,6 +111,7 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
         // The bone's direction in the parent's frame is fixed; turn it with the frame.
         const glm::vec3 boneInParent = glm::conjugate(c.rotation[p]) * (oldBone / boneLength[s]);
         proposal = reached[s] - (parentRot * boneInParent) * boneLength[s];
+        twisted[p] = 1;
       }
       sum[p] += proposal;
       count[p] += 1.0f;
@@ -135,6 +138,12 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
       const glm::quat parentRot = c.parentRotation(s);
       if (goalOf[s] >= 0 && c.goals[goalOf[s]].hasOrientation && from.empty()) {
         local = glm::conjugate(parentRot) * c.goals[goalOf[s]].orientation;
+      } else if (from.size() == 1 && twisted[s]) {
+        // Start from the frame the backward pass chose to satisfy the child's limit (it
+        // may twist about the bone, which a minimal rotation never would), then aim it.
+        const glm::quat base = backRot[s];
+        const glm::vec3 a = base * (glm::conjugate(c.rotation[s]) * from[0]);
+        local = glm::conjugate(parentRot) * fromToRotation(a, to[0]) * base;
       } else if (from.size() == 1) {
         local = glm::conjugate(parentRot) * fromToRotation(from[0], to[0]) * c.rotation[s];
       } else if (from.size() > 1) {

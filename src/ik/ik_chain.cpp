@@ -94,7 +94,7 @@ void IkChain::forwardSlot(int s) {
   const Transform& t = pose->local[joints[s]];
   const glm::mat4& parent = parentSlot[s] >= 0 ? world[parentSlot[s]] : fixedParent[s];
   world[s] = multiplyAffine(parent, t.toMatrix());
-  rotation[s] = safeNormalize(parentRotation(s) * t.rotation);
+  rotation[s] = renormalize(parentRotation(s) * t.rotation);
 }
 
 void IkChain::forwardKinematics() {

@@ -15,7 +15,7 @@ constexpr int kMaxDepth = 64;
 
 glm::quat rotationOf(const glm::mat4& m) {
   const glm::mat3 r(glm::normalize(glm::vec3(m[0])), glm::normalize(glm::vec3(m[1])), glm::normalize(glm::vec3(m[2])));
-  return safeNormalize(glm::quat_cast(r));
+  return ik_detail::renormalize(glm::quat_cast(r));
 }
 
 // World matrices of `root`'s parent and of every joint from root down to `effector`.
@@ -69,7 +69,7 @@ glm::vec3 anyPerpendicular(const glm::vec3& v) {
 
 // Turns joint `local` by the world rotation `delta` given its parent's world rotation.
 void applyWorldDelta(glm::quat& local, const glm::quat& parentRot, const glm::quat& delta) {
-  local = safeNormalize(glm::conjugate(parentRot) * delta * parentRot * local);
+  local = ik_detail::renormalize(glm::conjugate(parentRot) * delta * parentRot * local);
 }
 
 }  // namespace
@@ -145,7 +145,7 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
       deltaA = fromToRotation(pc - pa, u);  // a zero-length bone: only aiming is possible
     }
     applyWorldDelta(pose.local[a].rotation, rap, deltaA);
-    applyWorldDelta(pose.local[b].rotation, safeNormalize(deltaA * rbp), deltaB);
+    applyWorldDelta(pose.local[b].rotation, ik_detail::renormalize(deltaA * rbp), deltaB);
     glm::quat effectorParentRot(1.0f, 0.0f, 0.0f, 0.0f);
     bool limited = false;
     if (problem.rig) {
@@ -159,8 +159,8 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
     if (target.hasOrientation) {
       const glm::quat rcp = rotationOf(path.world[ic - 1]);
       // The effector's parent turned with the root, then with the middle joint.
-      effectorParentRot = safeNormalize(deltaB * deltaA * rcp);
-      pose.local[c].rotation = safeNormalize(glm::conjugate(effectorParentRot) * safeNormalize(target.orientation));
+      effectorParentRot = ik_detail::renormalize(deltaB * deltaA * rcp);
+      pose.local[c].rotation = ik_detail::renormalize(glm::conjugate(effectorParentRot) * ik_detail::renormalize(target.orientation));
       if (problem.rig)
         if (const JointLimit* l = problem.rig->limitOf(c))
           pose.local[c].rotation = applyJointLimit(*l, s.rest[c].rotation, pose.local[c].rotation);
