@@ -137,7 +137,7 @@ TEST(IkSolvers, TwoHandsReachTwoTargetsWithASharedSpine) {
 
 // Limits of one kind on every joint, then the three kinds mixed along the chain.
 JointLimit limitFor(int kind, int joint) {
-  const int k = kind == 0 ? joint % 3 + 1 : kind;
+  const int k = kind != 0 ? kind : joint % 3 == 0 ? 3 : joint % 3;  // mixed: cone, hinge, Euler, cone, ...
   return k == 1   ? JointLimit::hinge({0, 0, 1}, -1.0f, 1.0f)
          : k == 2 ? JointLimit::euler(EulerOrder::XYZ, glm::vec3(-0.5f), glm::vec3(0.5f))
                   : JointLimit::cone({0, 1, 0}, 0.6f, -0.3f, 0.3f);
