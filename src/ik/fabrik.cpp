@@ -101,7 +101,10 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
         len = glm::length(dir);
       }
       glm::vec3 proposal = len > 1e-12f ? reached[s] + dir * (boneLength[s] / len) : c.position(p);
-      glm::quat parentRot = safeNormalize(fromToRotation(oldBone, reached[s] - proposal) * c.rotation[p]);
+      // The parent's world rotation after this pass, needed only where a limit reads it.
+      const bool needRotation = c.limit[s] || c.limit[p];
+      glm::quat parentRot = c.rotation[p];
+      if (needRotation) parentRot = safeNormalize(fromToRotation(oldBone, reached[s] - proposal) * c.rotation[p]);
       // s's world rotation is known when exactly one thing set it (its only child, or an
       // orientation target); then clamp s's local rotation by moving the parent instead.
       if (c.limit[s] && proposals[s] == 1 && boneLength[s] > 1e-12f) {
