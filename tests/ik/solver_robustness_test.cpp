@@ -180,7 +180,7 @@ TEST(IkSolvers, EverySolverHonoursJointLimits) {
       // DLS and the pseudo-inverse: 100 %. FABRIK with hinges or cones alone: 100 %; with
       // Euler ranges alone: 98.5 % here (3 of 200 stall), 100 % with another target set.
       int percent = 99;
-      if (solver == IkSolver::Fabrik && kind == 0) percent = 65;
+      if (solver == IkSolver::Fabrik && kind == 0) percent = 72;  // 47 % with the backward re-projection switched off
       if (solver == IkSolver::Fabrik && kind == 2) percent = 95;
       if (solver == IkSolver::Ccd || solver == IkSolver::JacobianTranspose) percent = 85;
       EXPECT_GE(converged, (cases * percent + 99) / 100)
