@@ -1,5 +1,10 @@
 // Cyclic coordinate descent (seed 002): from the joint nearest the effector back to the
 // IK root, turn each joint so that joint->effector points along joint->target.
+//
+// Speed: while a sweep climbs from the effector to the root, each joint it reaches is an
+// ancestor of every joint already turned, so that joint's world position and rotation are
+// still those of the last FK; only the effector's position must be carried along. One
+// sweep therefore costs O(chain) (one FK of the chain's slots at its end), not O(chain^2).
 #include <algorithm>
 
 #include "ik/ik_chain.h"
@@ -23,6 +28,41 @@ glm::quat dampedFromTo(const glm::vec3& from, const glm::vec3& to, float maxAngl
   return q;
 }
 
+// One sweep for goal g, effector to IK root. Reads world[] and rotation[] of the joints
+// it visits (valid: see above), writes their local rotations and rotation[].
+void sweep(IkChain& c, const Goal& g, const IkSettings& settings, int it) {
+  IkTrace* trace = settings.trace;
+  glm::vec3 effector = c.position(g.slot);
+  for (int s = c.parentSlot[g.slot]; s >= 0; s = c.parentSlot[s]) {
+    const glm::vec3 p = c.position(s);
+    const glm::vec3 toEffector = effector - p, toTarget = g.position - p;
+    // A target at the joint (or an effector on it) gives no direction: skip the joint.
+    if (glm::dot(toEffector, toEffector) > 1e-20f && glm::dot(toTarget, toTarget) > 1e-20f) {
+      const glm::quat delta = dampedFromTo(toEffector, toTarget, settings.maxStepAngle);
+      const glm::quat parentRot = c.parentRotation(s);
+      glm::quat local = ik_detail::renormalize(glm::conjugate(parentRot) * delta * c.rotation[s]);
+      glm::quat applied = delta;
+      if (c.limit[s]) {
+        local = applyJointLimit(*c.limit[s], c.skeleton->rest[c.joints[s]].rotation, local);
+        const glm::quat newWorld = ik_detail::renormalize(parentRot * local);
+        applied = ik_detail::renormalize(newWorld * glm::conjugate(c.rotation[s]));
+        c.rotation[s] = newWorld;
+      } else {
+        c.rotation[s] = ik_detail::renormalize(parentRot * local);
+      }
+      c.pose->local[c.joints[s]].rotation = local;
+      effector = p + applied * toEffector;
+    }
+    if (trace) {
+      // Tracing only: refresh the sub-tree so the recorded positions are exact. The
+      // sweep itself never reads them, so traced and untraced runs agree bit for bit.
+      for (int k = s; k < s + c.subtreeSize[s]; ++k) c.forwardSlot(k);
+      c.record(trace, it, IkStep::CcdJoint, c.joints[s]);
+    }
+    if (s == g.rootSlot) break;
+  }
+}
+
 }  // namespace
 
 IkResult solveCcd(const IkProblem& problem, const IkSettings& settings) {
@@ -39,21 +79,13 @@ IkResult solveCcd(const IkProblem& problem, const IkSettings& settings) {
     for (const Goal& g : c.goals) {
       if (g.hasOrientation) {
         // The effector itself turns to the target orientation first.
-        c.rotateJoint(g.slot, safeNormalize(g.orientation * glm::conjugate(c.rotation[g.slot])));
+        c.rotateJoint(g.slot, ik_detail::renormalize(g.orientation * glm::conjugate(c.rotation[g.slot])));
         c.record(trace, it, IkStep::CcdJoint, c.joints[g.slot]);
       }
-      for (int s = c.parentSlot[g.slot]; s >= 0; s = c.parentSlot[s]) {
-        const glm::vec3 p = c.position(s);
-        const glm::vec3 toEffector = c.position(g.slot) - p, toTarget = g.position - p;
-        // A target at the joint (or an effector on it) gives no direction: skip the joint.
-        if (glm::dot(toEffector, toEffector) > 1e-20f && glm::dot(toTarget, toTarget) > 1e-20f)
-          c.rotateJoint(s, dampedFromTo(toEffector, toTarget, settings.maxStepAngle));
-        c.record(trace, it, IkStep::CcdJoint, c.joints[s]);
-        if (s == g.rootSlot) break;
-      }
+      sweep(c, g, settings, it);
+      // Bring every slot up to date before the next goal (or the error test) reads them.
+      c.forwardKinematics();
     }
-    // Rigid updates accumulate rounding; one FK pass per sweep keeps positions exact.
-    c.forwardKinematics();
     if (c.stalled(c.maxError(), settings)) break;
   }
   if (!c.converged(settings) && c.straightenIfUnreachable()) c.record(trace, it, IkStep::Straighten);

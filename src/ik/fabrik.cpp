@@ -17,9 +17,13 @@ using ik_detail::IkChain;
 namespace {
 
 // The rotation taking the unit directions from[i] closest onto to[i] (Kabsch), for a
-// sub-base with several children.
+// sub-base with several children. Children on one line (a chest with two shoulders
+// opposite each other) leave the turn about that line undetermined, and plain SVD then
+// picks an arbitrary one, spinning the arms about the shoulder line every pass. A small
+// pull towards no rotation fixes that; at convergence the best turn is none, so it does
+// not move the fixed point.
 glm::quat bestRotation(const std::vector<glm::vec3>& from, const std::vector<glm::vec3>& to) {
-  Eigen::Matrix3f h = Eigen::Matrix3f::Zero();
+  Eigen::Matrix3f h = Eigen::Matrix3f::Identity() * (0.01f * static_cast<float>(from.size()));
   for (size_t i = 0; i < from.size(); ++i)
     h += Eigen::Vector3f(from[i].x, from[i].y, from[i].z) * Eigen::Vector3f(to[i].x, to[i].y, to[i].z).transpose();
   Eigen::JacobiSVD<Eigen::Matrix3f> svd(h, Eigen::ComputeFullU | Eigen::ComputeFullV);
@@ -60,32 +64,62 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
   for (int g = 0; g < static_cast<int>(c.goals.size()); ++g) goalOf[c.goals[g].slot] = g;
   std::vector<glm::vec3> reached(m), sum(m);
   std::vector<float> count(m);
+  std::vector<glm::quat> backRot(m);  // world rotations the backward pass gives the joints
+  std::vector<int> proposals(m);     // how many children (or targets) set backRot
+  std::vector<char> twisted(m);      // backRot was turned to meet a child's limit
   std::vector<glm::vec3> from, to;
   int it = 0;
   while (!c.converged(settings) && it < settings.maxIterations) {
     ++it;
     // Backward: children before parents (reverse preorder); each proposes where its
     // parent should be, at bone length from itself towards the parent's current place.
+    // Limits act here too (Aristidou & Lasenby's constraint handling, run in reverse):
+    // once a joint's own world rotation is settled by its child, its limit decides the
+    // directions its parent's bone may take, and the proposal is re-projected into them.
     std::fill(sum.begin(), sum.end(), glm::vec3(0.0f));
     std::fill(count.begin(), count.end(), 0.0f);
+    std::fill(proposals.begin(), proposals.end(), 0);
+    std::fill(twisted.begin(), twisted.end(), 0);
     for (int s = m - 1; s >= 0; --s) {
-      if (goalOf[s] >= 0) {
-        const Goal& g = c.goals[goalOf[s]];
-        sum[s] += g.weight * g.position;
-        count[s] += g.weight;
+      const Goal* goal = goalOf[s] >= 0 ? &c.goals[goalOf[s]] : nullptr;
+      if (goal) {
+        sum[s] += goal->weight * goal->position;
+        count[s] += goal->weight;
+        if (goal->hasOrientation) {
+          backRot[s] = goal->orientation;
+          proposals[s] = 1;
+        }
       }
       reached[s] = count[s] > 0.0f ? sum[s] / count[s] : c.position(s);
       const int p = c.parentSlot[s];
       if (p < 0) continue;
+      const glm::vec3 oldBone = c.position(s) - c.position(p);  // parent -> s, before this pass
       glm::vec3 dir = c.position(p) - reached[s];
       float len = glm::length(dir);
       if (!(len > 1e-12f)) {  // on top of the parent: keep the bone's current direction
-        dir = c.position(p) - c.position(s);
+        dir = -oldBone;
         len = glm::length(dir);
       }
-      const glm::vec3 proposal = len > 1e-12f ? reached[s] + dir * (boneLength[s] / len) : c.position(p);
+      glm::vec3 proposal = len > 1e-12f ? reached[s] + dir * (boneLength[s] / len) : c.position(p);
+      // The parent's world rotation after this pass, needed only where a limit reads it.
+      const bool needRotation = c.limit[s] || c.limit[p];
+      glm::quat parentRot = c.rotation[p];
+      if (needRotation) parentRot = safeNormalize(fromToRotation(oldBone, reached[s] - proposal) * c.rotation[p]);
+      // s's world rotation is known when exactly one thing set it (its only child, or an
+      // orientation target); then clamp s's local rotation by moving the parent instead.
+      if (c.limit[s] && proposals[s] == 1 && boneLength[s] > 1e-12f) {
+        const glm::quat local = safeNormalize(glm::conjugate(parentRot) * backRot[s]);
+        const glm::quat limited = applyJointLimit(*c.limit[s], c.skeleton->rest[c.joints[s]].rotation, local);
+        parentRot = safeNormalize(backRot[s] * glm::conjugate(limited));
+        // The bone's direction in the parent's frame is fixed; turn it with the frame.
+        const glm::vec3 boneInParent = glm::conjugate(c.rotation[p]) * (oldBone / boneLength[s]);
+        proposal = reached[s] - (parentRot * boneInParent) * boneLength[s];
+        twisted[p] = 1;
+      }
       sum[p] += proposal;
       count[p] += 1.0f;
+      backRot[p] = parentRot;
+      ++proposals[p];
     }
     if (trace) c.recordPositions(trace, it, IkStep::FabrikBackward, reached, c.maxError());
     // Forward: from the fixed roots outwards; each joint turns its bone(s) towards the
@@ -107,6 +141,12 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
       const glm::quat parentRot = c.parentRotation(s);
       if (goalOf[s] >= 0 && c.goals[goalOf[s]].hasOrientation && from.empty()) {
         local = glm::conjugate(parentRot) * c.goals[goalOf[s]].orientation;
+      } else if (from.size() == 1 && twisted[s]) {
+        // Start from the frame the backward pass chose to satisfy the child's limit (it
+        // may twist about the bone, which a minimal rotation never would), then aim it.
+        const glm::quat base = backRot[s];
+        const glm::vec3 a = base * (glm::conjugate(c.rotation[s]) * from[0]);
+        local = glm::conjugate(parentRot) * fromToRotation(a, to[0]) * base;
       } else if (from.size() == 1) {
         local = glm::conjugate(parentRot) * fromToRotation(from[0], to[0]) * c.rotation[s];
       } else if (from.size() > 1) {

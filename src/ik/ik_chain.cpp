@@ -58,6 +58,7 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
     if (parentSlot[i] < 0 && p >= 0) needWorld = true;
     if (rig) limit[i] = rig->limitOf(joints[i]);
   }
+  fixedRotation.assign(m, glm::quat(1.0f, 0.0f, 0.0f, 0.0f));
   for (int i = m - 1; i >= 0; --i)
     if (parentSlot[i] >= 0) subtreeSize[parentSlot[i]] += subtreeSize[i];
   if (needWorld) {
@@ -67,6 +68,8 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
       if (parentSlot[i] < 0 && p >= 0) fixedParent[i] = problem.rootTransform * all[p];
     }
   }
+  for (int i = 0; i < m; ++i)
+    if (parentSlot[i] < 0) fixedRotation[i] = rotationOf(fixedParent[i]);
   goals.clear();
   for (const IkTarget& t : problem.targets) {
     Goal g;
@@ -84,14 +87,14 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
 }
 
 glm::quat IkChain::parentRotation(int s) const {
-  return parentSlot[s] >= 0 ? rotation[parentSlot[s]] : rotationOf(fixedParent[s]);
+  return parentSlot[s] >= 0 ? rotation[parentSlot[s]] : fixedRotation[s];
 }
 
 void IkChain::forwardSlot(int s) {
   const Transform& t = pose->local[joints[s]];
   const glm::mat4& parent = parentSlot[s] >= 0 ? world[parentSlot[s]] : fixedParent[s];
   world[s] = multiplyAffine(parent, t.toMatrix());
-  rotation[s] = safeNormalize(parentRotation(s) * t.rotation);
+  rotation[s] = renormalize(parentRotation(s) * t.rotation);
 }
 
 void IkChain::forwardKinematics() {

@@ -1,12 +1,22 @@
 #pragma once
 // The working state every solver shares: the joints a set of targets moves ("slots"),
 // their world transforms, and the goals. Internal to src/ik.
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "ik/ik_solver.h"
 
 namespace kinema::ik_detail {
+
+// Normalises a quaternion that is already nearly unit (a product of unit quaternions):
+// one square root, where safeNormalize guards against denormal, huge and NaN input
+// (still the fallback here) at several times the cost in the solvers' inner loops.
+inline glm::quat renormalize(const glm::quat& q) {
+  const float d = glm::dot(q, q);
+  if (d > 0.25f && d < 4.0f) return q * (1.0f / std::sqrt(d));
+  return safeNormalize(q);
+}
 
 struct Goal {
   int slot = -1;      // the effector's slot
@@ -26,6 +36,7 @@ struct IkChain {
   std::vector<int> parentSlot;      // -1: the parent lies outside and never moves
   std::vector<int> subtreeSize;     // this slot and the slots below it
   std::vector<glm::mat4> fixedParent;  // world of the parent, for slots with parentSlot -1
+  std::vector<glm::quat> fixedRotation;  // its rotation (scale removed), computed once
   std::vector<glm::mat4> world;     // current world transform of each slot
   std::vector<glm::quat> rotation;  // its world rotation (scale removed)
   std::vector<const JointLimit*> limit;

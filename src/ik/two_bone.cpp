@@ -15,14 +15,16 @@ constexpr int kMaxDepth = 64;
 
 glm::quat rotationOf(const glm::mat4& m) {
   const glm::mat3 r(glm::normalize(glm::vec3(m[0])), glm::normalize(glm::vec3(m[1])), glm::normalize(glm::vec3(m[2])));
-  return safeNormalize(glm::quat_cast(r));
+  return ik_detail::renormalize(glm::quat_cast(r));
 }
 
 // World matrices of `root`'s parent and of every joint from root down to `effector`.
 struct PathWorld {
   int joints[kMaxDepth];
   glm::mat4 world[kMaxDepth];
+  glm::quat rotation[kMaxDepth];  // world rotations, by quaternion products (no matrix decomposition)
   glm::mat4 parentOfRoot{1.0f};
+  glm::quat parentOfRootRotation{1.0f, 0.0f, 0.0f, 0.0f};
   int count = 0;
 
   bool compute(const Skeleton& s, const Pose& pose, const glm::mat4& placement, int root, int effector) {
@@ -33,16 +35,20 @@ struct PathWorld {
       up[n++] = j;
     }
     glm::mat4 w = placement;
+    glm::quat q = placement == glm::mat4(1.0f) ? glm::quat(1.0f, 0.0f, 0.0f, 0.0f) : rotationOf(placement);
     count = 0;
     bool inPath = false;
     for (int i = n - 1; i >= 0; --i) {
       if (up[i] == root) {
         inPath = true;
         parentOfRoot = w;
+        parentOfRootRotation = q;
       }
       w = multiplyAffineLocal(w, pose.local[up[i]]);
+      q = q * pose.local[up[i]].rotation;
       if (inPath) {
         joints[count] = up[i];
+        rotation[count] = ik_detail::renormalize(q);
         world[count++] = w;
       }
     }
@@ -69,7 +75,7 @@ glm::vec3 anyPerpendicular(const glm::vec3& v) {
 
 // Turns joint `local` by the world rotation `delta` given its parent's world rotation.
 void applyWorldDelta(glm::quat& local, const glm::quat& parentRot, const glm::quat& delta) {
-  local = safeNormalize(glm::conjugate(parentRot) * delta * parentRot * local);
+  local = ik_detail::renormalize(glm::conjugate(parentRot) * delta * parentRot * local);
 }
 
 }  // namespace
@@ -94,8 +100,8 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
     }
     const int ib = path.indexOf(b), ic = path.count - 1;
     const glm::vec3 pa(path.world[0][3]), pb(path.world[ib][3]), pc(path.world[ic][3]);
-    const glm::quat rap = rotationOf(path.parentOfRoot);
-    const glm::quat rbp = rotationOf(ib > 0 ? path.world[ib - 1] : path.parentOfRoot);
+    const glm::quat rap = path.parentOfRootRotation;
+    const glm::quat rbp = ib > 0 ? path.rotation[ib - 1] : path.parentOfRootRotation;
     if (settings.trace) {
       IkTrace& t = *settings.trace;
       if (t.joints.empty()) t.joints.assign(path.joints, path.joints + path.count);
@@ -145,7 +151,7 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
       deltaA = fromToRotation(pc - pa, u);  // a zero-length bone: only aiming is possible
     }
     applyWorldDelta(pose.local[a].rotation, rap, deltaA);
-    applyWorldDelta(pose.local[b].rotation, safeNormalize(deltaA * rbp), deltaB);
+    applyWorldDelta(pose.local[b].rotation, ik_detail::renormalize(deltaA * rbp), deltaB);
     glm::quat effectorParentRot(1.0f, 0.0f, 0.0f, 0.0f);
     bool limited = false;
     if (problem.rig) {
@@ -157,10 +163,10 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
       }
     }
     if (target.hasOrientation) {
-      const glm::quat rcp = rotationOf(path.world[ic - 1]);
+      const glm::quat rcp = path.rotation[ic - 1];
       // The effector's parent turned with the root, then with the middle joint.
-      effectorParentRot = safeNormalize(deltaB * deltaA * rcp);
-      pose.local[c].rotation = safeNormalize(glm::conjugate(effectorParentRot) * safeNormalize(target.orientation));
+      effectorParentRot = ik_detail::renormalize(deltaB * deltaA * rcp);
+      pose.local[c].rotation = ik_detail::renormalize(glm::conjugate(effectorParentRot) * ik_detail::renormalize(target.orientation));
       if (problem.rig)
         if (const JointLimit* l = problem.rig->limitOf(c))
           pose.local[c].rotation = applyJointLimit(*l, s.rest[c].rotation, pose.local[c].rotation);

@@ -95,9 +95,9 @@ Skeleton twoArms() {
 
 TEST(IkSolvers, TwoHandsReachTwoTargetsWithASharedSpine) {
   const Skeleton s = twoArms();
-  std::mt19937 rng(5);
   const int cases = test::propertyCases(100);
-  for (IkSolver solver : {IkSolver::Fabrik, IkSolver::JacobianDls, IkSolver::JacobianPinv}) {
+  for (IkSolver solver : {IkSolver::Fabrik, IkSolver::Ccd, IkSolver::JacobianDls, IkSolver::JacobianPinv}) {
+    std::mt19937 rng(5);
     int converged = 0;
     for (int k = 0; k < cases; ++k) {
       const Pose goal = test::randomPose(s, rng, 0.5f);
@@ -113,55 +113,79 @@ TEST(IkSolvers, TwoHandsReachTwoTargetsWithASharedSpine) {
       settings.stallFraction = 0.0f;
       const IkResult r = solveIk(solver, p, settings);
       ASSERT_TRUE(r.message.empty()) << r.message;
+      for (int i = 0; i < s.size(); ++i) ASSERT_TRUE(pose.local[i].isFinite()) << toString(solver) << " joint " << i;
       const float e1 = glm::length(test::worldPosition(s, pose, 5) - p.targets[0].position);
       const float e2 = glm::length(test::worldPosition(s, pose, 8) - p.targets[1].position);
+      ASSERT_TRUE(std::isfinite(e1) && std::isfinite(e2));
+      EXPECT_NEAR(r.error, std::max(e1, e2), 1e-4f) << toString(solver);
       if (r.converged) {
         ++converged;
         EXPECT_LE(std::max(e1, e2), settings.tolerance * 1.01f);
       }
-      EXPECT_LE(test::boneLengthChange(s, before, pose), 1e-5f);
-      EXPECT_EQ(pose.local[0].translation, before.local[0].translation);
+      EXPECT_LE(test::boneLengthChange(s, before, pose), 1e-5f) << toString(solver);
+      EXPECT_VEC3_NEAR(test::worldPosition(s, pose, 0), test::worldPosition(s, before, 0), 1e-6f);
+      for (int i = 0; i < s.size(); ++i) EXPECT_EQ(pose.local[i].translation, before.local[i].translation);
     }
-    // Known weak: FABRIK's centroid rule fights the rigid chest (a sub-base whose two
-    // children cannot move independently); it converges in about half of these cases.
-    const int wanted = solver == IkSolver::Fabrik ? cases * 45 / 100 : cases * 95 / 100;
-    EXPECT_GE(converged, wanted) << toString(solver) << ": " << converged << "/" << cases;
+    // The targets come from one pose of the whole rig, so both are reachable at once.
+    // Known weak: FABRIK's centroid rule converges slowly here (51 % within 500 passes,
+    // 88 % within 5000): each arm drags the rigid chest half way per pass.
+    const int percent = solver == IkSolver::Fabrik ? 40 : 99;
+    EXPECT_GE(converged, (cases * percent + 99) / 100) << toString(solver) << ": " << converged << "/" << cases;
     std::printf("[ two hands ] %-14s converged %d/%d\n", toString(solver), converged, cases);
   }
 }
 
+// Limits of one kind on every joint, then the three kinds mixed along the chain.
+JointLimit limitFor(int kind, int joint) {
+  const int k = kind != 0 ? kind : joint % 3 == 0 ? 3 : joint % 3;  // mixed: cone, hinge, Euler, cone, ...
+  return k == 1   ? JointLimit::hinge({0, 0, 1}, -1.0f, 1.0f)
+         : k == 2 ? JointLimit::euler(EulerOrder::XYZ, glm::vec3(-0.5f), glm::vec3(0.5f))
+                  : JointLimit::cone({0, 1, 0}, 0.6f, -0.3f, 0.3f);
+}
+
 TEST(IkSolvers, EverySolverHonoursJointLimits) {
-  std::mt19937 rng(11);
-  const Skeleton s = test::makeChain(10, &rng);
-  IkRig rig;
-  for (int i = 0; i < s.size(); ++i)
-    rig.setLimit(s.size(), i,
-                 i % 3 == 1 ? JointLimit::hinge({0, 0, 1}, -1.0f, 1.0f)
-                 : i % 3 == 2 ? JointLimit::euler(EulerOrder::XYZ, glm::vec3(-0.5f), glm::vec3(0.5f))
-                              : JointLimit::cone({0, 1, 0}, 0.6f, -0.3f, 0.3f));
-  const float chain = test::chainLength(s);
-  for (IkSolver solver : kIterative) {
-    int converged = 0;
-    for (int k = 0; k < 50; ++k) {
-      Pose goal = test::randomPose(s, rng, 0.8f);
-      for (int i = 0; i < s.size(); ++i)
-        goal.local[i].rotation = applyJointLimit(rig.limits[i], s.rest[i].rotation, goal.local[i].rotation);
-      Pose pose = Pose::rest(s);
-      IkProblem p = problemFor(s, pose, 9, test::worldPosition(s, goal, 9));
-      p.rig = &rig;
-      IkSettings settings;
-      settings.tolerance = 1e-3f * chain;
-      settings.maxIterations = solver == IkSolver::JacobianTranspose ? 5000 : 500;
-      const IkResult r = solveIk(solver, p, settings);
-      converged += r.converged;
-      for (int i = 0; i < s.size(); ++i)
-        EXPECT_LE(jointLimitViolation(rig.limits[i], s.rest[i].rotation, pose.local[i].rotation), 1e-3f)
-            << toString(solver) << " joint " << i;
+  const char* kindName[] = {"mixed", "hinge", "euler", "cone"};
+  const int cases = test::propertyCases(200);
+  for (int kind = 0; kind < 4; ++kind) {
+    std::mt19937 rng(11);
+    const Skeleton s = test::makeChain(10, &rng);
+    IkRig rig;
+    for (int i = 0; i < s.size(); ++i) rig.setLimit(s.size(), i, limitFor(kind, i));
+    const float chain = test::chainLength(s);
+    for (IkSolver solver : kIterative) {
+      std::mt19937 targets(11 + kind);
+      int converged = 0;
+      for (int k = 0; k < cases; ++k) {
+        // Targets made by FK of a random pose that respects the limits: reachable.
+        Pose goal = test::randomPose(s, targets, 0.8f);
+        for (int i = 0; i < s.size(); ++i)
+          goal.local[i].rotation = applyJointLimit(rig.limits[i], s.rest[i].rotation, goal.local[i].rotation);
+        Pose pose = Pose::rest(s);  // every case starts from the straight rest chain
+        IkProblem p = problemFor(s, pose, 9, test::worldPosition(s, goal, 9));
+        p.rig = &rig;
+        IkSettings settings;
+        settings.tolerance = 1e-3f * chain;
+        settings.maxIterations = solver == IkSolver::JacobianTranspose ? 5000 : 500;
+        const IkResult r = solveIk(solver, p, settings);
+        converged += r.converged;
+        for (int i = 0; i < s.size(); ++i)
+          EXPECT_LE(jointLimitViolation(rig.limits[i], s.rest[i].rotation, pose.local[i].rotation), 1e-3f)
+              << toString(solver) << " joint " << i;
+      }
+      std::printf("[ limits ] %-6s %-20s converged %d/%d\n", kindName[kind], toString(solver), converged, cases);
+      // The bar is 99 %. Known short of it (measured with 200 cases, see the
+      // README): FABRIK with the three kinds mixed (76 % within 500 passes, 97 % within
+      // 3000 with no stall stop: slow where a hinge needs twist from a cone above); CCD
+      // (94.5-99.5 %) and the Jacobian transpose (91-98 %), which stall against limits.
+      // DLS and the pseudo-inverse: 100 %. FABRIK with hinges or cones alone: 100 %; with
+      // Euler ranges alone: 98.5 % here (3 of 200 stall), 100 % with another target set.
+      int percent = 99;
+      if (solver == IkSolver::Fabrik && kind == 0) percent = 72;  // 47 % with the backward re-projection switched off
+      if (solver == IkSolver::Fabrik && kind == 2) percent = 95;
+      if (solver == IkSolver::Ccd || solver == IkSolver::JacobianTranspose) percent = 85;
+      EXPECT_GE(converged, (cases * percent + 99) / 100)
+          << kindName[kind] << " limits: " << toString(solver) << " converged " << converged << "/" << cases;
     }
-    // Limits make some targets hard to find from the rest pose; report, require most.
-    // FABRIK projects limits only in its forward pass and often stalls against them.
-    EXPECT_GE(converged, solver == IkSolver::Fabrik ? 15 : 45) << toString(solver) << " converged " << converged << "/50 with limits";
-    std::printf("[ limits ] %-20s converged %d/50\n", toString(solver), converged);
   }
 }
 
