@@ -147,6 +147,8 @@ float Clip::frameToTime(long long frame) const {
 }
 
 std::string Clip::validate(const Skeleton& skeleton) const {
+  if (hasRange && (!std::isfinite(rangeStart) || !std::isfinite(rangeEnd) || rangeStart > rangeEnd))
+    return "the playback range must be two finite times, start <= end";
   for (size_t c = 0; c < channels.size(); ++c) {
     const Channel& ch = channels[c];
     const std::string where = "channel " + std::to_string(c);

@@ -101,6 +101,14 @@ struct Clip {
   double frameTime = 0.0;
   // Editor playback only: sampling always clamps.
   bool loop = false;
+  // The playback range the editor's timeline shows and loops over (seconds), like
+  // Blender's start/end frames; without one it is 0 .. duration(). Sampling ignores it.
+  bool hasRange = false;
+  float rangeStart = 0.0f;
+  float rangeEnd = 0.0f;
+
+  float playStart() const { return hasRange ? rangeStart : 0.0f; }
+  float playEnd() const { return hasRange ? rangeEnd : duration(); }
 
   // The last key time over all channels (clips start at time 0).
   float duration() const;

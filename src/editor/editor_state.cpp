@@ -24,13 +24,16 @@ void evaluateEditorPose(EditorState& state) {
 
 void advancePlayback(EditorState& state, double dt) {
   if (!state.playing || !state.hasMotion()) return;
-  const double length = state.duration();
+  // Playback runs over the clip's range (0 .. duration unless the file sets one).
+  const Clip& clip = state.scene.clips[state.clip];
+  const double start = clip.playStart(), end = clip.playEnd();
   state.time += dt;
-  if (state.time <= length) return;
-  if (state.loop && length > 0) {
-    state.time = std::fmod(state.time, length);
+  if (state.time < start) state.time = start;
+  if (state.time <= end) return;
+  if (state.loop && end > start) {
+    state.time = start + std::fmod(state.time - start, end - start);
   } else {
-    state.time = length;
+    state.time = end;
     state.playing = false;
   }
 }

@@ -519,6 +519,14 @@ bool readClips(Reader& r, const Json& root, Scene& scene) {
       if (!v->is_boolean()) return r.fail(p + ".loop", "expected true or false, found " + std::string(v->type_name()));
       clip.loop = v->get<bool>();
     }
+    if ((v = r.member(j, p, "range", false))) {
+      float range[2];
+      if (!r.floats(*v, p + ".range", 2, range)) return false;
+      if (range[0] > range[1]) return r.fail(p + ".range", "start comes after end");
+      clip.hasRange = true;
+      clip.rangeStart = range[0];
+      clip.rangeEnd = range[1];
+    }
     const Json* channels = r.member(j, p, "channels", true);
     if (!channels) return false;
     if (!channels->is_array()) return r.fail(p + ".channels", "expected an array");
@@ -601,6 +609,10 @@ std::string toKinemaJson(const Scene& scene) {
     c["name"] = clip.name;
     if (clip.frameTime > 0) c["frame_time"] = clip.frameTime;
     if (clip.loop) c["loop"] = true;
+    if (clip.hasRange) {
+      const float range[2] = {clip.rangeStart, clip.rangeEnd};
+      c["range"] = vec(range, 2);
+    }
     Json channels = Json::array();
     for (const Channel& ch : clip.channels) channels.push_back(channelJson(ch, s));
     c["channels"] = std::move(channels);

@@ -91,5 +91,28 @@ TEST(EditorState, PlaybackWrapsWhenLoopingAndStopsOtherwise) {
   EXPECT_VEC3_NEAR(glm::vec3(s.world[0][3]), glm::vec3(2, 0, 0), 1e-6f);
 }
 
+TEST(EditorPlayback, LoopsOverTheClipsPlaybackRange) {
+  EditorState s;
+  s.scene.skeleton.addJoint("Root", -1, Transform{});
+  Clip clip;
+  clip.channels.push_back(Channel{0, ChannelTarget::Translation, Interpolation::Linear, {0.0f, 4.0f},
+                                  {glm::vec4(0), glm::vec4(4, 0, 0, 0)}});
+  clip.hasRange = true;  // play 1 s .. 3 s of a 4 s clip, as Blender's start/end frames do
+  clip.rangeStart = 1.0f;
+  clip.rangeEnd = 3.0f;
+  s.scene.clips.push_back(clip);
+  s.playing = true;
+  s.time = 0.0;
+  advancePlayback(s, 0.25);
+  EXPECT_NEAR(s.time, 1.0, 1e-12);  // before the range: jumps to its start
+  s.time = 2.5;
+  advancePlayback(s, 1.0);          // 3.5 wraps to 1 + 0.5
+  EXPECT_NEAR(s.time, 1.5, 1e-12);
+  s.loop = false;
+  advancePlayback(s, 5.0);
+  EXPECT_NEAR(s.time, 3.0, 1e-12);
+  EXPECT_FALSE(s.playing);
+}
+
 }  // namespace
 }  // namespace kinema::test

@@ -146,6 +146,39 @@ TEST(KinemaFileClips, VersionOneFilesFromBeforeTheEngineStillLoad) {
   EXPECT_FALSE(c.loop);
 }
 
+TEST(KinemaFileClips, PlaybackRangeRoundTripsAndDefaultsToTheKeys) {
+  const std::string text = R"({"format": "kinema", "version": 1,
+    "skeleton": {"joints": [{"name": "Hips", "parent": -1}]},
+    "clips": [{"name": "m", "loop": true, "range": [0.5, 1.5], "channels": [
+      {"joint": "Hips", "target": "translation", "times": [0, 2], "values": [[0,0,0],[2,0,0]]}]},
+      {"name": "n", "channels": [
+      {"joint": "Hips", "target": "translation", "times": [0, 2], "values": [[0,0,0],[2,0,0]]}]}]})";
+  Result<Scene> s = parseKinemaJson(text, "range.kinema");
+  ASSERT_TRUE(s) << s.error();
+  const Clip& c = s.value().clips[0];
+  EXPECT_TRUE(c.hasRange);
+  EXPECT_EQ(c.playStart(), 0.5f);
+  EXPECT_EQ(c.playEnd(), 1.5f);
+  EXPECT_FALSE(s.value().clips[1].hasRange);  // no range: 0 .. last key
+  EXPECT_EQ(s.value().clips[1].playStart(), 0.0f);
+  EXPECT_EQ(s.value().clips[1].playEnd(), 2.0f);
+  Result<Scene> back = parseKinemaJson(toKinemaJson(s.value()), "again.kinema");
+  ASSERT_TRUE(back) << back.error();
+  EXPECT_TRUE(back.value().clips[0].hasRange);
+  EXPECT_EQ(back.value().clips[0].rangeStart, 0.5f);
+  EXPECT_EQ(back.value().clips[0].rangeEnd, 1.5f);
+  EXPECT_FALSE(back.value().clips[1].hasRange);
+
+  std::string reversed = text;
+  reversed.replace(reversed.find("[0.5, 1.5]"), 10, "[1.5, 0.5]");
+  Result<Scene> bad = parseKinemaJson(reversed, "bad.kinema");
+  ASSERT_FALSE(bad);
+  EXPECT_NE(bad.error().find("bad.kinema: clips[0].range:"), std::string::npos) << bad.error();
+  Clip invalid = c;
+  invalid.rangeEnd = 0.0f;  // end before start
+  EXPECT_NE(invalid.validate(s.value().skeleton), "");
+}
+
 TEST(KinemaFileClips, BadSettingsNameTheirPath) {
   const std::string head = R"({"format": "kinema", "version": 1,
     "skeleton": {"joints": [{"name": "Hips", "parent": -1}]}, "clips": [{"channels": [)";
