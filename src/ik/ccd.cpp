@@ -66,13 +66,9 @@ void sweep(IkChain& c, const Goal& g, const IkSettings& settings, int it) {
 }  // namespace
 
 IkResult solveCcd(const IkProblem& problem, const IkSettings& settings) {
-  IkResult bad;
-  bad.message = problem.validate();
-  if (!bad.message.empty()) return bad;
   IkChain c;
-  c.build(problem);
+  if (IkResult bad; !(bad.message = c.begin(problem, settings)).empty()) return bad;
   IkTrace* trace = settings.trace;
-  c.record(trace, 0, IkStep::Start);
   int it = 0;
   while (!c.converged(settings) && it < settings.maxIterations) {
     ++it;

@@ -44,13 +44,9 @@ glm::vec3 childPosition(const IkChain& c, int child) {
 }  // namespace
 
 IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
-  IkResult bad;
-  bad.message = problem.validate();
-  if (!bad.message.empty()) return bad;
   IkChain c;
-  c.build(problem);
+  if (IkResult bad; !(bad.message = c.begin(problem, settings)).empty()) return bad;
   IkTrace* trace = settings.trace;
-  c.record(trace, 0, IkStep::Start);
   const int m = static_cast<int>(c.joints.size());
   // The paper's first test: a single target out of reach straightens the chain at once.
   if (c.straightenIfUnreachable()) {

@@ -13,6 +13,13 @@ glm::quat rotationOf(const glm::mat4& m) {
 }
 }  // namespace
 
+std::string IkChain::begin(const IkProblem& problem, const IkSettings& settings) {
+  std::string error = problem.validate();
+  if (error.empty()) error = build(problem);
+  if (error.empty()) record(settings.trace, 0, IkStep::Start);
+  return error;
+}
+
 std::string IkChain::build(const IkProblem& problem, bool twoBone) {
   skeleton = problem.skeleton;
   pose = problem.pose;

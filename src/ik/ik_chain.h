@@ -45,6 +45,9 @@ struct IkChain {
 
   // Fills the slots from the problem; returns an error message or "".
   std::string build(const IkProblem& problem, bool twoBone = false);
+  // What every iterative solver does first: validate the problem, build the slots and
+  // record the starting pose in the trace. Returns the error message, or "" to go on.
+  std::string begin(const IkProblem& problem, const IkSettings& settings);
   // Recomputes world transforms of every slot from the pose.
   void forwardKinematics();
   // Recomputes slot s only (its parent must be up to date).

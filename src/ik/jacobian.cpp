@@ -37,13 +37,9 @@ bool inChain(const IkChain& c, int s, const Goal& g) {
 }
 
 IkResult solveJacobian(Method method, const IkProblem& problem, const IkSettings& settings) {
-  IkResult bad;
-  bad.message = problem.validate();
-  if (!bad.message.empty()) return bad;
   IkChain c;
-  c.build(problem);
+  if (IkResult bad; !(bad.message = c.begin(problem, settings)).empty()) return bad;
   IkTrace* trace = settings.trace;
-  c.record(trace, 0, IkStep::Start);
   const int m = static_cast<int>(c.joints.size());
 
   // Degrees of freedom: every slot that moves some effector (3 world axes, or its hinge
