@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <unordered_set>
 
@@ -70,6 +71,15 @@ bool parseNumber(const char* begin, const char* end, double& out) {
 
 bool parseNumber(const std::string& s, double& out) { return parseNumber(s.data(), s.data() + s.size(), out); }
 
+// A number that must also fit a float (offsets and motion values are stored as float).
+bool parseFloat(const char* begin, const char* end, float& out) {
+  double v;
+  if (!parseNumber(begin, end, v) || std::abs(v) > static_cast<double>(std::numeric_limits<float>::max()))
+    return false;
+  out = static_cast<float>(v);
+  return true;
+}
+
 class BvhParser {
  public:
   BvhParser(const std::string& text, const std::string& source) : source_(source) {
@@ -129,11 +139,9 @@ class BvhParser {
     for (int a = 0; a < 3; ++a) {
       const Token* t = next();
       if (!t) return fail(endLine(), "unexpected end of hierarchy in the OFFSET of '" + joint + "'");
-      double v;
       // Reported on the OFFSET line: a short OFFSET runs into the next line's keyword.
-      if (!parseNumber(t->text, v))
-        return fail(keywordLine, "OFFSET of '" + joint + "': '" + t->text + "' is not a finite number");
-      offset[a] = static_cast<float>(v);
+      if (!parseFloat(t->text.data(), t->text.data() + t->text.size(), offset[a]))
+        return fail(keywordLine, "OFFSET of '" + joint + "': '" + t->text + "' is not a finite number in float range");
     }
     return true;
   }
@@ -292,11 +300,11 @@ class BvhParser {
         if (p == end) break;
         const char* q = p;
         while (q < end && *q != ' ' && *q != '\t') ++q;
-        double v;
-        if (!parseNumber(p, q, v))
-          return fail(static_cast<int>(l) + 1, "'" + std::string(p, q) + "' is not a finite number (frame " +
+        float v;
+        if (!parseFloat(p, q, v))
+          return fail(static_cast<int>(l) + 1, "'" + std::string(p, q) + "' is not a finite number in float range (frame " +
                                                    std::to_string(frame) + ", value " + std::to_string(got + 1) + ")");
-        if (got < cols) data_.motion.push_back(static_cast<float>(v));
+        if (got < cols) data_.motion.push_back(v);
         ++got;
         p = q;
       }

@@ -565,6 +565,9 @@ std::vector<BadCase> badCases() {
       {"inf in the motion", joinLines(replaced(20, "1 2 3 4 inf 6 7 8 9")), 20, "inf"},
       {"-infinity in the motion", joinLines(replaced(19, "-infinity 0 0 0 0 0 0 0 0")), 19, "infinity"},
       {"overflowing number in the motion", joinLines(replaced(20, "1 2 3 4 5 6 7 8 1e999")), 20, "1e999"},
+      // Found by fuzz_bvh: finite as double, infinite as float (the stored type).
+      {"number beyond float range in the motion", joinLines(replaced(20, "1 2 3 4 5 6 7 8 1e39")), 20, "1e39"},
+      {"number beyond float range in an OFFSET", joinLines(replaced(12, "      OFFSET 0 -4e38 0")), 12, "-4e38"},
       {"two signs in the motion", joinLines(replaced(20, "1 2 +-3 4 5 6 7 8 9")), 20, "+-3"},
       {"too few values", joinLines(replaced(19, "0 0 0 0 0 0 0 0")), 19, "8 values"},
       {"too many values", joinLines(replaced(20, "1 2 3 4 5 6 7 8 9 10")), 20, "10 values"},
