@@ -127,9 +127,10 @@ TEST(IkSolvers, TwoHandsReachTwoTargetsWithASharedSpine) {
       for (int i = 0; i < s.size(); ++i) EXPECT_EQ(pose.local[i].translation, before.local[i].translation);
     }
     // The targets come from one pose of the whole rig, so both are reachable at once.
-    // Known weak: FABRIK's centroid rule converges slowly here (51 % within 500 passes,
-    // 88 % within 5000): each arm drags the rigid chest half way per pass.
-    const int percent = solver == IkSolver::Fabrik ? 40 : 99;
+    // FABRIK fits the rigid chest to both arms in its backward pass: 1000/1000 cases
+    // within 500 passes (943 within 100). With the paper's plain centroid of per-arm
+    // proposals instead it reached only 51 % here, so this bar catches that loss.
+    const int percent = 99;
     EXPECT_GE(converged, (cases * percent + 99) / 100) << toString(solver) << ": " << converged << "/" << cases;
     std::printf("[ two hands ] %-14s converged %d/%d\n", toString(solver), converged, cases);
   }
