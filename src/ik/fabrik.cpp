@@ -1,6 +1,7 @@
 // FABRIK (Aristidou & Lasenby 2011; seed 002): a backward pass from the targets to the
 // root and a forward pass from the fixed root. Several effectors: each sub-chain pulls
-// its sub-base, which takes the centroid of the proposals (the paper's multi-end rule).
+// its sub-base (the paper's multi-end rule); a sub-base with several children moves as
+// one rigid body, fitted to their backward positions (see rigidFit).
 // The forward pass turns positions into local rotations as it goes (the minimal rotation
 // of each bone, so no spurious twist), clamping each joint to its limit before its
 // children are placed: bones keep their length exactly and limits always hold.
@@ -22,10 +23,13 @@ namespace {
 // picks an arbitrary one, spinning the arms about the shoulder line every pass. A small
 // pull towards no rotation fixes that; at convergence the best turn is none, so it does
 // not move the fixed point.
-glm::quat bestRotation(const std::vector<glm::vec3>& from, const std::vector<glm::vec3>& to) {
-  Eigen::Matrix3f h = Eigen::Matrix3f::Identity() * (0.01f * static_cast<float>(from.size()));
+glm::quat bestRotation(const std::vector<glm::vec3>& from, const std::vector<glm::vec3>& to,
+                       const std::vector<float>* weight = nullptr, float pull = -1.0f) {
+  if (pull < 0.0f) pull = 0.01f * static_cast<float>(from.size());
+  Eigen::Matrix3f h = Eigen::Matrix3f::Identity() * pull;
   for (size_t i = 0; i < from.size(); ++i)
-    h += Eigen::Vector3f(from[i].x, from[i].y, from[i].z) * Eigen::Vector3f(to[i].x, to[i].y, to[i].z).transpose();
+    h += (weight ? (*weight)[i] : 1.0f) * Eigen::Vector3f(from[i].x, from[i].y, from[i].z) *
+         Eigen::Vector3f(to[i].x, to[i].y, to[i].z).transpose();
   Eigen::JacobiSVD<Eigen::Matrix3f> svd(h, Eigen::ComputeFullU | Eigen::ComputeFullV);
   Eigen::Matrix3f d = Eigen::Matrix3f::Identity();
   d(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0.0f ? -1.0f : 1.0f;
@@ -39,6 +43,49 @@ glm::quat bestRotation(const std::vector<glm::vec3>& from, const std::vector<glm
 glm::vec3 childPosition(const IkChain& c, int child) {
   const int s = c.parentSlot[child];
   return glm::vec3(c.world[s] * glm::vec4(c.pose->local[c.joints[child]].translation, 1.0f));
+}
+
+// A sub-base with several children is one rigid body (a chest with two shoulders): where
+// its children's backward positions ask it to be is the rigid motion that best carries
+// the children (and the sub-base's own target, if any) onto them (weighted Kabsch with
+// translation). The paper's centroid of per-child proposals treats each child's bone as
+// free to swing about the sub-base; for a rigid chest that swing is not there, so a pull
+// across a shoulder barely moved the chest and the error fell only like 1/sqrt(passes).
+// Returns the sub-base's new position and the turn it makes; `from`/`to`/`w` are scratch.
+glm::vec3 rigidFit(const IkChain& c, int s, const std::vector<glm::vec3>& reached, const Goal* goal,
+                   std::vector<glm::vec3>& from, std::vector<glm::vec3>& to, std::vector<float>& w,
+                   glm::quat& turn) {
+  const glm::vec3 p = c.position(s);
+  from.clear();
+  to.clear();
+  w.clear();
+  for (int k = s + 1; k < s + c.subtreeSize[s]; k += c.subtreeSize[k]) {
+    from.push_back(c.position(k) - p);
+    to.push_back(reached[k]);
+    w.push_back(1.0f);
+  }
+  if (goal) {
+    from.push_back(glm::vec3(0.0f));
+    to.push_back(goal->position);
+    w.push_back(goal->weight);
+  }
+  glm::vec3 fc(0.0f), tc(0.0f);
+  float total = 0.0f, scale = 0.0f;
+  for (size_t i = 0; i < from.size(); ++i) {
+    fc += w[i] * from[i];
+    tc += w[i] * to[i];
+    total += w[i];
+  }
+  fc /= total;
+  tc /= total;
+  for (size_t i = 0; i < from.size(); ++i) {
+    from[i] -= fc;
+    to[i] -= tc;
+    scale += w[i] * glm::length(from[i]) * glm::length(to[i]);
+  }
+  // The same small pull towards no turn as bestRotation, relative to the body's size.
+  turn = bestRotation(from, to, &w, 1e-3f * scale + 1e-20f);
+  return tc - turn * fc;
 }
 
 }  // namespace
@@ -64,6 +111,10 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
   std::vector<int> proposals(m);     // how many children (or targets) set backRot
   std::vector<char> twisted(m);      // backRot was turned to meet a child's limit
   std::vector<glm::vec3> from, to;
+  std::vector<float> fitWeight;
+  std::vector<int> children(m, 0);
+  for (int s = 0; s < m; ++s)
+    if (c.parentSlot[s] >= 0) ++children[c.parentSlot[s]];
   int it = 0;
   while (!c.converged(settings) && it < settings.maxIterations) {
     ++it;
@@ -86,7 +137,13 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
           proposals[s] = 1;
         }
       }
-      reached[s] = count[s] > 0.0f ? sum[s] / count[s] : c.position(s);
+      if (children[s] >= 2 && !(goal && goal->hasOrientation)) {  // a rigid sub-base: fit it
+        glm::quat turn;
+        reached[s] = rigidFit(c, s, reached, goal, from, to, fitWeight, turn);
+        backRot[s] = safeNormalize(turn * c.rotation[s]);
+      } else {
+        reached[s] = count[s] > 0.0f ? sum[s] / count[s] : c.position(s);
+      }
       const int p = c.parentSlot[s];
       if (p < 0) continue;
       const glm::vec3 oldBone = c.position(s) - c.position(p);  // parent -> s, before this pass

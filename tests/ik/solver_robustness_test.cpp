@@ -127,12 +127,52 @@ TEST(IkSolvers, TwoHandsReachTwoTargetsWithASharedSpine) {
       for (int i = 0; i < s.size(); ++i) EXPECT_EQ(pose.local[i].translation, before.local[i].translation);
     }
     // The targets come from one pose of the whole rig, so both are reachable at once.
-    // Known weak: FABRIK's centroid rule converges slowly here (51 % within 500 passes,
-    // 88 % within 5000): each arm drags the rigid chest half way per pass.
-    const int percent = solver == IkSolver::Fabrik ? 40 : 99;
+    // FABRIK fits the rigid chest to both arms in its backward pass: 1000/1000 cases
+    // within 500 passes (943 within 100). With the paper's plain centroid of per-arm
+    // proposals instead it reached only 51 % here, so this bar catches that loss.
+    const int percent = 99;
     EXPECT_GE(converged, (cases * percent + 99) / 100) << toString(solver) << ": " << converged << "/" << cases;
     std::printf("[ two hands ] %-14s converged %d/%d\n", toString(solver), converged, cases);
   }
+}
+
+// FABRIK's rigid sub-base fit on degenerate input: shoulders on top of the chest (zero
+// offsets, so the fit sees only the chest itself), with reachable targets (both must
+// converge), a target on the chest, or one far away (finite, bones kept).
+TEST(IkSolvers, FabrikSubBaseFitHandlesDegenerateRigs) {
+  Skeleton s = twoArms();
+  s.rest[3].translation = glm::vec3(0.0f);
+  s.rest[6].translation = glm::vec3(0.0f);
+  std::mt19937 rng(17);
+  int reachable = 0, converged = 0;
+  for (int k = 0; k < 300; ++k) {
+    Pose pose = k % 2 ? Pose::rest(s) : test::randomPose(s, rng, 1.0f);
+    const Pose before = pose;
+    const Pose goal = test::randomPose(s, rng, 0.5f);
+    const glm::vec3 a = test::worldPosition(s, goal, 5);
+    glm::vec3 b = test::worldPosition(s, goal, 8);                             // reachable
+    if (k % 3 == 1) b = test::worldPosition(s, pose, 2);                        // at the chest
+    if (k % 3 == 2) b = test::worldPosition(s, test::randomPose(s, rng, 1.0f), 8) * 100.0f;  // far away
+    IkProblem p = problemFor(s, pose, 5, a);
+    p.targets.push_back({});
+    p.targets[1].effector = 8;
+    p.targets[1].position = b;
+    IkSettings settings;
+    settings.tolerance = 1e-3f * 4.4f;
+    settings.maxIterations = 500;
+    settings.stallFraction = 0.0f;
+    const IkResult r = solveFabrik(p, settings);
+    if (k % 3 == 0) {
+      ++reachable;
+      converged += r.converged;
+    }
+    ASSERT_TRUE(r.message.empty()) << r.message;
+    ASSERT_TRUE(std::isfinite(r.error)) << "case " << k;
+    for (int i = 0; i < s.size(); ++i) ASSERT_TRUE(pose.local[i].isFinite()) << "case " << k << " joint " << i;
+    EXPECT_LE(test::boneLengthChange(s, before, pose), 1e-5f) << "case " << k;
+  }
+  EXPECT_GE(converged, reachable * 99 / 100) << converged << "/" << reachable;
+  std::printf("[ zero shoulders ] fabrik converged %d/%d\n", converged, reachable);
 }
 
 // Limits of one kind on every joint, then the three kinds mixed along the chain.
