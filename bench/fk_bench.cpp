@@ -102,18 +102,19 @@ void BM_Single10000_ComputeWorld(benchmark::State& state) {
 }
 BENCHMARK(BM_Single10000_ComputeWorld)->Unit(benchmark::kMicrosecond);
 
-// (c) updateSubtree on a mid-size sub-tree of a 10,000-joint skeleton: the joint whose
-// sub-tree is closest to 1,000 joints. ns_per_joint counts the joints rewritten.
-void BM_UpdateSubtree(benchmark::State& state) {
-  std::mt19937 rng(7);
-  const Skeleton s = randomSkeleton(10000, rng, 0.9f);
+// (c) updateSubtree on the sub-tree whose size is closest to `wanted` joints of a random
+// skeleton: a mid-size one of 10,000 joints, and a limb-sized one (the arm of a 64-joint
+// character). ns_per_joint counts the joints rewritten.
+void runUpdateSubtree(benchmark::State& state, int joints, unsigned seed, float chaininess, int wanted) {
+  std::mt19937 rng(seed);
+  const Skeleton s = randomSkeleton(joints, rng, chaininess);
   const Pose pose = Pose::rest(s);
   std::vector<int> subtreeSize(static_cast<size_t>(s.size()), 1);
   for (int i = s.size() - 1; i > 0; --i)
     if (s.parents[i] >= 0) subtreeSize[s.parents[i]] += subtreeSize[i];
   int joint = 0;
   for (int i = 0; i < s.size(); ++i)
-    if (std::abs(subtreeSize[i] - 1000) < std::abs(subtreeSize[joint] - 1000)) joint = i;
+    if (std::abs(subtreeSize[i] - wanted) < std::abs(subtreeSize[joint] - wanted)) joint = i;
   std::vector<glm::mat4> world = kinema::computeWorld(s, pose);
   for (auto _ : state) {
     kinema::updateSubtree(s, pose, joint, world);
@@ -124,28 +125,11 @@ void BM_UpdateSubtree(benchmark::State& state) {
   state.counters["joints_after_root"] = s.size() - joint;
   setPerJoint(state, subtreeSize[joint]);
 }
+
+void BM_UpdateSubtree(benchmark::State& state) { runUpdateSubtree(state, 10000, 7, 0.9f, 1000); }
 BENCHMARK(BM_UpdateSubtree)->Unit(benchmark::kMicrosecond);
 
-// (c') a limb-sized sub-tree (the arm of a 64-joint character).
-void BM_UpdateSubtreeSmall(benchmark::State& state) {
-  std::mt19937 rng(5);
-  const Skeleton s = randomSkeleton(64, rng, 0.7f);
-  const Pose pose = Pose::rest(s);
-  std::vector<int> subtreeSize(static_cast<size_t>(s.size()), 1);
-  for (int i = s.size() - 1; i > 0; --i)
-    if (s.parents[i] >= 0) subtreeSize[s.parents[i]] += subtreeSize[i];
-  int joint = 0;
-  for (int i = 0; i < s.size(); ++i)
-    if (std::abs(subtreeSize[i] - 12) < std::abs(subtreeSize[joint] - 12)) joint = i;
-  std::vector<glm::mat4> world = kinema::computeWorld(s, pose);
-  for (auto _ : state) {
-    kinema::updateSubtree(s, pose, joint, world);
-    benchmark::DoNotOptimize(world.back());
-    benchmark::ClobberMemory();
-  }
-  state.counters["subtree_joints"] = subtreeSize[joint];
-  setPerJoint(state, subtreeSize[joint]);
-}
+void BM_UpdateSubtreeSmall(benchmark::State& state) { runUpdateSubtree(state, 64, 5, 0.7f, 12); }
 BENCHMARK(BM_UpdateSubtreeSmall);
 
 }  // namespace

@@ -44,6 +44,15 @@ int runCommand(const std::string& command, std::string* out, std::string* err) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
+glm::quat randomRotation(std::mt19937& rng) {
+  std::normal_distribution<float> n(0.0f, 1.0f);
+  glm::quat q;
+  do {
+    q = glm::quat(n(rng), n(rng), n(rng), n(rng));
+  } while (glm::dot(q, q) < 1e-4f);
+  return glm::normalize(q);
+}
+
 void writeFile(const std::string& path, const std::string& contents) {
   std::ofstream f(path, std::ios::binary);
   f << contents;

@@ -2,6 +2,7 @@
 // Helpers shared by the test files: where data lives, how many property cases to run.
 #include <gtest/gtest.h>
 
+#include <random>
 #include <string>
 
 #include "core/math.h"
@@ -22,6 +23,9 @@ std::string makeTempDir();
 int runCommand(const std::string& command, std::string* out = nullptr, std::string* err = nullptr);
 
 void writeFile(const std::string& path, const std::string& contents);
+
+// A rotation drawn uniformly over all rotations (a normalised 4D Gaussian).
+glm::quat randomRotation(std::mt19937& rng);
 std::string readFile(const std::string& path);
 
 }  // namespace kinema::test

@@ -100,14 +100,7 @@ TEST(ThreeBoneChain, NonAxisRotationsMatchIndependentScript) {
 // ---------------------------------------------------------------------------------------
 // Random skeletons and a naive recursive reference.
 
-glm::quat randomRotation(std::mt19937& rng) {
-  std::normal_distribution<float> n(0.0f, 1.0f);
-  glm::quat q;
-  do {
-    q = glm::quat(n(rng), n(rng), n(rng), n(rng));
-  } while (glm::dot(q, q) < 1e-4f);
-  return glm::normalize(q);
-}
+using test::randomRotation;
 
 // 100 joints: mostly a long chain (`chainy`) or a bushy random tree, with a few extra roots.
 Skeleton randomSkeleton(std::mt19937& rng, int n, bool chainy, bool unitScale) {

@@ -112,14 +112,7 @@ void expectQuatMatchesMatrix(const glm::quat& q, const M3& expected, double tol,
   }
 }
 
-glm::quat randomRotation(std::mt19937& rng) {
-  std::normal_distribution<float> n(0.0f, 1.0f);
-  glm::quat q;
-  do {
-    q = glm::quat(n(rng), n(rng), n(rng), n(rng));
-  } while (glm::dot(q, q) < 1e-4f);
-  return glm::normalize(q);
-}
+using test::randomRotation;
 glm::vec3 randomUnit(std::mt19937& rng) {
   std::normal_distribution<float> n(0.0f, 1.0f);
   glm::vec3 v;
