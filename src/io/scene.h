@@ -4,17 +4,33 @@
 
 #include "anim/clip.h"
 #include "core/result.h"
+#include "core/mesh.h"
 #include "core/skeleton.h"
 #include "ik/ik_rig.h"
 
 namespace kinema {
 
-// What a file holds once loaded: a skeleton and its clips.
+// What a file holds once loaded: a skeleton (every glTF node is a joint), its clips,
+// and the meshes it shows.
 struct Scene {
   std::string source;  // the path it came from, for messages and titles
   Skeleton skeleton;
   std::vector<Clip> clips;
   IkRig ik;  // joint limits and saved IK targets (optional in files)
+
+  // glTF keeps the file's node order for reports: the node index of each joint (the
+  // skeleton is sorted parent-first, the file need not be). Empty for BVH and .kinema
+  // files that did not come from glTF. Morph-weight animation is a Scalar channel on the
+  // node's joint with property "weights/K" (K = morph target index).
+  std::vector<int> nodeOfJoint;
+  std::vector<Mesh> meshes;
+  std::vector<Skin> skins;
+  std::vector<MeshInstance> meshInstances;
+  std::vector<Material> materials;
+  std::vector<Image> images;
+
+  // The file index of each joint: nodeOfJoint when present, else the joint index.
+  int fileIndexOf(int joint) const { return nodeOfJoint.empty() ? joint : nodeOfJoint[joint]; }
 };
 
 // Loads .bvh or .kinema, chosen by the file's extension.
