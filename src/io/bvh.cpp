@@ -291,6 +291,9 @@ class BvhParser {
       return fail(static_cast<int>(l), "Frames x channels = " + limitExceeded(keys, limits_.maxKeys, "keys", "maxKeys"));
     if (!readHeader(l, "Frame Time:", frameTime)) return false;
     if (!(frameTime > 0)) return fail(static_cast<int>(l), "Frame Time must be positive");
+    // Key times are floats: the last one, (Frames - 1) x Frame Time, must be finite too.
+    if (frameTime * std::max(frames - 1.0, 1.0) > static_cast<double>(std::numeric_limits<float>::max()))
+      return fail(static_cast<int>(l), "Frame Time x Frames is beyond the float range of key times");
     data_.frameCount = static_cast<int>(frames);
     data_.frameTime = frameTime;
     const size_t cols = static_cast<size_t>(data_.channelCount);
