@@ -1,5 +1,6 @@
 #include "io/gltf_reader.h"
 
+#include <sys/stat.h>
 #include <tiny_gltf.h>
 
 #include <cmath>
@@ -57,6 +58,27 @@ bool keepEncodedImage(tinygltf::Image* image, const int, std::string*, std::stri
   if (bytes && size > 0) image->image.assign(bytes, bytes + size);
   image->width = image->height = -1;
   image->as_is = true;
+  return true;
+}
+
+// External buffers and images: regular files only, no larger than the file cap (a .gltf
+// could otherwise name /dev/zero or a huge file).
+bool readExternalFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+  struct stat st;
+  if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) {
+    if (err) *err += "cannot read " + path + " (not a regular file)\n";
+    return false;
+  }
+  if (static_cast<uint64_t>(st.st_size) > GltfLimits::kMaxFileBytes) {
+    if (err) *err += path + " is larger than the limit of " + std::to_string(GltfLimits::kMaxFileBytes) + " bytes\n";
+    return false;
+  }
+  std::ifstream f(path, std::ios::binary);
+  out->resize(static_cast<size_t>(st.st_size));
+  if (!f || !f.read(reinterpret_cast<char*>(out->data()), st.st_size)) {
+    if (err) *err += "cannot read " + path + "\n";
+    return false;
+  }
   return true;
 }
 
@@ -261,6 +283,7 @@ Result<Scene> parseGltf(const std::string& bytes, const std::string& path) {
   tinygltf::Model model;
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(keepEncodedImage, nullptr);
+  loader.SetFsCallbacks({tinygltf::FileExists, tinygltf::ExpandFilePath, readExternalFile, tinygltf::WriteWholeFile, nullptr});
   std::string err, warn;
   const std::string dir = directoryOf(path);
   const bool ok =
