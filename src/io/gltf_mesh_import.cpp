@@ -154,7 +154,9 @@ std::string readPrimitive(GltfContext& ctx, const tinygltf::Primitive& p, const 
   const auto pos = p.attributes.find("POSITION");
   const size_t n = accessorCount(ctx, pos->second);
   std::vector<float> f;
-  if (std::string e = readFloatAccessor(ctx, pos->second, 3, kCompFloat, where + " POSITION", f); !e.empty()) return e;
+  // Integer positions are KHR_mesh_quantization's (normalised or not).
+  const unsigned any = kCompFloat | kCompByte | kCompUByte | kCompShort | kCompUShort;
+  if (std::string e = readFloatAccessor(ctx, pos->second, 3, any, where + " POSITION", f); !e.empty()) return e;
   out.positions = toVec3(f);
   for (const auto& [name, accessor] : p.attributes) {
     if (accessorCount(ctx, accessor) != n && accessor >= 0 && static_cast<size_t>(accessor) < ctx.model.accessors.size())

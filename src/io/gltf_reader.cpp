@@ -294,6 +294,11 @@ Result<Scene> parseGltf(const std::string& bytes, const std::string& path) {
 
   GltfContext ctx{model, path, 0, {}};
   if (!warn.empty()) ctx.warn(oneLine(warn));
+  for (const std::string& ext : model.extensionsRequired) {
+    if (ext == "KHR_draco_mesh_compression" || ext == "EXT_meshopt_compression")
+      return R::failure(ctx.error("requires " + ext + " (compressed geometry), which Kinema does not read"));
+    if (ext != "KHR_mesh_quantization") ctx.warn("requires " + ext + ", which Kinema does not read: it may look different");
+  }
   if (model.nodes.size() > GltfLimits::kMaxNodes)
     return R::failure(ctx.error(std::to_string(model.nodes.size()) + " nodes exceed the limit of " +
                                 std::to_string(GltfLimits::kMaxNodes)));

@@ -1,5 +1,6 @@
 // `kinema pose` on glTF files: the contract's node-order listing, and malformed files
 // → exit 1 with one line on stderr.
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -75,6 +76,34 @@ TEST(GltfCli, MalformedFilesExitOneWithOneLine) {
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << name << ": " << r.err;
     EXPECT_NE(r.err.find(name), std::string::npos) << r.err;
   }
+}
+
+// `kinema ik` on glTF lists joints like `kinema pose` (node order, "node"), and its trace
+// names node indices.
+TEST(GltfCli, IkUsesNodeOrder) {
+  const std::string dir = test::makeTempDir();
+  GltfTestFile f;
+  f.addNode({{"name", "tip"}, {"translation", {0, 1, 0}}});              // 0: child of 1
+  f.addNode({{"name", "elbow"}, {"children", {0}}, {"translation", {0, 1, 0}}});  // 1: child of 2
+  f.addNode({{"name", "shoulder"}, {"children", {1}}});                  // 2: root
+  test::writeFile(dir + "/arm.gltf", f.gltf());
+  PoseRun r;
+  r.status = test::runCommand(std::string(KINEMA_BINARY) + " ik '" + dir +
+                                  "/arm.gltf' --effector tip --target 1,1,0 --solver ccd --trace --json",
+                              &r.out, &r.err);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const json d = json::parse(r.out);
+  ASSERT_EQ(d["joints"].size(), 3u);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(d["joints"][i]["node"], i);
+  EXPECT_EQ(d["joints"][0]["name"], "tip");
+  EXPECT_EQ(d["joints"][0]["parent"], 1);
+  EXPECT_TRUE(d["converged"].get<bool>());
+  // The tip reaches (1,1,0): |(1,1,0)| = sqrt(2) <= 2, the arm's length.
+  EXPECT_NEAR(d["joints"][0]["world"][12].get<double>(), 1.0, 1e-2);
+  EXPECT_NEAR(d["joints"][0]["world"][13].get<double>(), 1.0, 1e-2);
+  std::vector<int> traced = d["trace_joints"].get<std::vector<int>>();
+  std::sort(traced.begin(), traced.end());
+  EXPECT_EQ(traced, (std::vector<int>{0, 1, 2}));  // node indices of the chain
 }
 
 }  // namespace

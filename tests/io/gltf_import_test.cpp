@@ -294,5 +294,38 @@ TEST(GltfImport, BaseColourFactorAndEmbeddedTexture) {
   EXPECT_EQ(image.rgba, (std::vector<uint8_t>{255, 0, 0, 255, 0, 255, 0, 255}));
 }
 
+TEST(GltfImport, DroppedThingsAreReportedAndCompressedGeometryRefused) {
+  GltfTestFile f;
+  const int pos = f.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
+  const int uv = f.addFloats({0, 0, 1, 0, 0, 1}, "VEC2");
+  f.doc["meshes"] = {{{"primitives", {{{"attributes", {{"POSITION", pos}, {"TEXCOORD_0", uv}, {"TEXCOORD_1", uv}}}}}}}};
+  f.doc["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", 1.0}, {"znear", 0.1}}}}};
+  f.addNode({{"mesh", 0}, {"camera", 0}});
+  const Scene s = parsed(f);
+  EXPECT_EQ(s.meshes[0].primitives[0].texcoords.size(), 3u);
+  std::string all;
+  for (const std::string& w : s.warnings) all += w + "|";
+  EXPECT_NE(all.find("TEXCOORD_1"), std::string::npos) << all;
+  EXPECT_NE(all.find("cameras"), std::string::npos) << all;
+
+  f.doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+  f.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+  Result<Scene> r = parseGltf(f.gltf(), "draco.gltf");
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.error().find("KHR_draco_mesh_compression"), std::string::npos) << r.error();
+}
+
+// KHR_mesh_quantization: normalised unsigned short positions read as value / 65535.
+TEST(GltfImport, QuantizedPositions) {
+  GltfTestFile f;
+  const int pos = f.addInts(std::vector<uint16_t>{0, 0, 0, 65535, 0, 0, 0, 65535, 32768, 0}, test::kGltfUShort, "VEC3", 3);
+  f.doc["accessors"][pos]["normalized"] = true;
+  f.doc["meshes"] = {{{"primitives", {{{"attributes", {{"POSITION", pos}}}}}}}};
+  f.addNode({{"mesh", 0}});
+  const Scene s = parsed(f);
+  EXPECT_VEC3_NEAR(s.meshes[0].primitives[0].positions[1], glm::vec3(1, 0, 0), 0.0f);
+  EXPECT_VEC3_NEAR(s.meshes[0].primitives[0].positions[2], glm::vec3(0, 1, 32768.0f / 65535.0f), 1e-7f);
+}
+
 }  // namespace
 }  // namespace kinema
