@@ -92,6 +92,7 @@ std::string checkGlb(const std::string& bytes, const std::string& file, size_t& 
   if (bytes.size() < 20) return file + ": truncated GLB: " + std::to_string(bytes.size()) + " bytes, the header needs 20";
   const uint32_t version = readU32(bytes, 4), length = readU32(bytes, 8);
   if (version != 2) return file + ": GLB version " + std::to_string(version) + " is not 2";
+  if (length < 20) return file + ": GLB header length " + std::to_string(length) + " is shorter than the header";
   if (length > bytes.size())
     return file + ": truncated GLB: the header says " + std::to_string(length) + " bytes, the file has " +
            std::to_string(bytes.size());
