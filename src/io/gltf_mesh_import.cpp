@@ -193,7 +193,7 @@ std::string readPrimitive(GltfContext& ctx, const tinygltf::Primitive& p, const 
     const std::string tw = where + " target " + std::to_string(t);
     for (const auto& [name, accessor] : p.targets[t]) {
       if (name != "POSITION" && name != "NORMAL") {
-        ctx.warn("morph target attribute " + name + " is not kept (" + tw + ")");
+        ctx.warn("morph target attribute " + name + " is not kept (" + where + ")");
         continue;
       }
       if (accessorCount(ctx, accessor) != n && accessorCount(ctx, accessor) != 0)

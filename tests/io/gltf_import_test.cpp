@@ -327,5 +327,24 @@ TEST(GltfImport, QuantizedPositions) {
   EXPECT_VEC3_NEAR(s.meshes[0].primitives[0].positions[2], glm::vec3(0, 1, 32768.0f / 65535.0f), 1e-7f);
 }
 
+// Two skins on one skeleton whose joints lie in separate trees (no common root).
+TEST(GltfImport, SeveralSkinsWithoutACommonRoot) {
+  GltfTestFile f;
+  f.addNode({{"children", {1}}, {"translation", {1, 0, 0}}});  // 0
+  f.addNode({{"translation", {0, 1, 0}}});                      // 1
+  f.addNode({{"translation", {5, 0, 0}}});                      // 2: a second root
+  const int ibm = f.addFloats({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -5, 0, 0, 1}, "MAT4");
+  f.doc["skins"] = {{{"joints", {1, 2}}, {"skeleton", 0}}, {{"joints", {2}}, {"inverseBindMatrices", ibm}}};
+  const Scene s = parsed(f);
+  ASSERT_EQ(s.skins.size(), 2u);
+  ASSERT_EQ(s.skins[0].joints.size(), 2u);
+  EXPECT_EQ(s.nodeOfJoint[s.skins[0].joints[0]], 1);
+  EXPECT_EQ(s.nodeOfJoint[s.skins[0].joints[1]], 2);
+  EXPECT_EQ(s.nodeOfJoint[s.skins[0].skeletonRoot], 0);
+  EXPECT_EQ(s.skins[1].skeletonRoot, -1);
+  EXPECT_EQ(s.skins[1].inverseBind[0][3], glm::vec4(-5, 0, 0, 1));  // column 3 = translation
+  EXPECT_EQ(s.skins[0].inverseBind[1], glm::mat4(1.0f));
+}
+
 }  // namespace
 }  // namespace kinema

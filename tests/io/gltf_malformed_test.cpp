@@ -171,5 +171,25 @@ TEST(GltfMalformed, NotGltf) {
   EXPECT_NE(missing.error().find("/no/such/file.glb"), std::string::npos);
 }
 
+TEST(GltfMalformed, TooManyNodes) {
+  std::string many = "{\"asset\":{\"version\":\"2.0\"},\"nodes\":[{}";
+  for (int i = 0; i < 70000; ++i) many += ",{}";
+  many += "]}";
+  EXPECT_MENTIONS(errorOf(many), "70001 nodes", "limit");
+}
+
+// tinygltf hands an image's bufferView to the image loader without checking it lies in
+// its buffer; ours checks before decoding.
+TEST(GltfMalformed, ImageBufferViewPastItsBuffer) {
+  GltfTestFile f;
+  f.addNode(json::object());
+  const int view = f.addView(std::string(8, 'x'));
+  f.doc["bufferViews"][view]["byteLength"] = 1 << 20;
+  f.doc["images"] = {{{"bufferView", view}, {"mimeType", "image/png"}}};
+  f.doc["textures"] = {{{"source", 0}}};
+  f.doc["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+  EXPECT_MENTIONS(errorOf(f.gltf()), "image 0", "bufferView 0", "buffer 0");
+}
+
 }  // namespace
 }  // namespace kinema
