@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <type_traits>
 
 #include "io/gltf_import_parts.h"
 #include "io/gltf_limits.h"
@@ -140,9 +141,12 @@ std::string viewBytes(const GltfContext& ctx, int view, const std::string& where
   return {};
 }
 
-// Checks accessor `index` and decodes it into doubles, count * components of them.
-std::string decode(GltfContext& ctx, int index, int components, unsigned allowed, bool integers,
-                   const std::string& use, std::vector<double>& out) {
+// Checks accessor `index` and decodes it into count * components numbers of type T
+// (float, or uint32_t for integer data), without an intermediate copy.
+template <class T>
+std::string decode(GltfContext& ctx, int index, int components, unsigned allowed, const std::string& use,
+                   std::vector<T>& out) {
+  constexpr bool integers = std::is_integral<T>::value;
   const tinygltf::Model& m = ctx.model;
   const std::string where = use + " accessor " + std::to_string(index);
   if (index < 0 || static_cast<size_t>(index) >= m.accessors.size())
@@ -189,11 +193,12 @@ std::string decode(GltfContext& ctx, int index, int components, unsigned allowed
     ctx.warn("accessor " + std::to_string(index) + " has no bufferView: read as zeros");
   }
   ctx.decodedValues += values;
-  out.assign(values, 0.0);
+  out.assign(values, T(0));
   if (view.data)
     for (size_t e = 0; e < a.count; ++e) {
       const uint8_t* p = view.data + a.byteOffset + e * view.stride;
-      for (int c = 0; c < components; ++c) out[e * components + c] = component(p + c * csize, a.componentType, a.normalized);
+      for (int c = 0; c < components; ++c)
+        out[e * components + c] = static_cast<T>(component(p + c * csize, a.componentType, a.normalized));
     }
 
   if (a.sparse.isSparse) {
@@ -227,7 +232,7 @@ std::string decode(GltfContext& ctx, int index, int components, unsigned allowed
       previous = target;
       const size_t e = static_cast<size_t>(target);
       for (int c = 0; c < components; ++c)
-        out[e * components + c] = component(vp + k * elementSize + c * csize, a.componentType, a.normalized);
+        out[e * components + c] = static_cast<T>(component(vp + k * elementSize + c * csize, a.componentType, a.normalized));
     }
   }
   if (mask == kCompFloat)
@@ -246,27 +251,12 @@ size_t accessorCount(const GltfContext& ctx, int index) {
 
 std::string readFloatAccessor(GltfContext& ctx, int index, int components, unsigned allowed, const std::string& use,
                               std::vector<float>& out) {
-  std::vector<double> values;
-  if (std::string e = decode(ctx, index, components, allowed, false, use, values); !e.empty()) return e;
-  out.resize(values.size());
-  for (size_t i = 0; i < values.size(); ++i) {
-    out[i] = static_cast<float>(values[i]);
-    if (!std::isfinite(out[i]))  // a finite double beyond float range
-      return ctx.error(use + " accessor " + std::to_string(index) + ": element " + std::to_string(i / components) +
-                       " is out of float range");
-  }
-  return {};
+  return decode(ctx, index, components, allowed, use, out);
 }
 
 std::string readUintAccessor(GltfContext& ctx, int index, int components, unsigned allowed, const std::string& use,
                              std::vector<uint32_t>& out) {
-  std::vector<double> values;
-  if (std::string e = decode(ctx, index, components, allowed & (kCompUByte | kCompUShort | kCompUInt), true, use, values);
-      !e.empty())
-    return e;
-  out.resize(values.size());
-  for (size_t i = 0; i < values.size(); ++i) out[i] = static_cast<uint32_t>(values[i]);
-  return {};
+  return decode(ctx, index, components, allowed & (kCompUByte | kCompUShort | kCompUInt), use, out);
 }
 
 }  // namespace kinema

@@ -11,8 +11,8 @@ struct GltfLimits {
   static constexpr int kMaxJsonDepth = 64;                           // nested [ and {
   static constexpr size_t kMaxNodes = 65536;
   static constexpr size_t kMaxSkinJoints = 65535;                    // joint numbers are uint16
-  static constexpr size_t kMaxAccessorElements = size_t(1) << 24;   // 16 M elements
-  static constexpr size_t kMaxDecodedValues = size_t(1) << 27;      // 128 M numbers per file
+  static constexpr size_t kMaxAccessorElements = size_t(1) << 22;   // 4 M elements (vertices, keys)
+  static constexpr size_t kMaxDecodedValues = size_t(1) << 26;      // 64 M numbers (256 MB) per file
   static constexpr size_t kMaxMorphTargets = 256;
   static constexpr int kMaxImageSide = 16384;
   static constexpr size_t kMaxImagePixels = size_t(1) << 26;        // 64 M pixels per file
