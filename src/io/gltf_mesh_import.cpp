@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "io/gltf_import_parts.h"
 #include "io/gltf_limits.h"

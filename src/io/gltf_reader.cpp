@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
