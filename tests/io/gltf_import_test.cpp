@@ -273,12 +273,14 @@ TEST(GltfImport, SparseAccessorsAreApplied) {
 
 TEST(GltfImport, BaseColourFactorAndEmbeddedTexture) {
   GltfTestFile f;
-  // A 1x1 PNG written by hand would be long; a 2x1 uncompressed 24-bit BMP is short.
+  // A PNG written by hand would be long; a 1x2 uncompressed 24-bit BMP is short. BMP
+  // stores the bottom row first: green at the bottom, red at the top.
   std::string bmp = std::string("BM") + std::string(4, '\0') + std::string(4, '\0') + std::string("\x36\0\0\0", 4);
-  const int32_t header[] = {40, 2, 1};
+  const int32_t header[] = {40, 1, 2};
   bmp.append(reinterpret_cast<const char*>(header), 12);
   bmp += std::string("\x01\x00\x18\x00", 4) + std::string(24, '\0');
-  bmp += std::string("\x00\x00\xff\x00\xff\x00\x00\x00", 8);  // BGR red, BGR green, row padding
+  bmp += std::string("\x00\xff\x00\x00", 4);  // bottom row: BGR green + padding to 4 bytes
+  bmp += std::string("\x00\x00\xff\x00", 4);  // top row: BGR red + padding
   const int view = f.addView(bmp);
   f.doc["images"] = {{{"bufferView", view}, {"mimeType", "image/bmp"}}};
   f.doc["textures"] = {{{"source", 0}}};
@@ -289,9 +291,9 @@ TEST(GltfImport, BaseColourFactorAndEmbeddedTexture) {
   EXPECT_EQ(s.materials[0].baseColor, glm::vec4(0.5f, 0.25f, 1, 1));
   ASSERT_EQ(s.materials[0].baseColorImage, 0);
   const TextureImage& image = s.images[0];
-  ASSERT_EQ(image.width, 2);
-  ASSERT_EQ(image.height, 1);
-  EXPECT_EQ(image.rgba, (std::vector<uint8_t>{255, 0, 0, 255, 0, 255, 0, 255}));
+  ASSERT_EQ(image.width, 1);
+  ASSERT_EQ(image.height, 2);
+  EXPECT_EQ(image.rgba, (std::vector<uint8_t>{255, 0, 0, 255, 0, 255, 0, 255}));  // first row at the top
 }
 
 TEST(GltfImport, DroppedThingsAreReportedAndCompressedGeometryRefused) {
