@@ -228,5 +228,49 @@ TEST(GltfReference, SkinsAndMeshesOfCesiumMan) {
   EXPECT_EQ(image.rgba.size(), static_cast<size_t>(image.width) * image.height * 4);
 }
 
+// The imported skins and influences, put through glTF's skinning formula here
+// (v = sum w_i * world(joint_i) * IBM_i * v_bind), land where three.js puts the vertices
+// (the *.skin.json references): checks joint remapping, inverse bind matrices and the
+// 8-influence weights together.
+TEST(GltfReference, SkinnedVerticesMatchThreeJs) {
+  KINEMA_REQUIRE_SHARED_DATA();
+  const std::regex pattern(R"((.+)\.clip(\d+)\.t([0-9.]+)\.skin\.json)");
+  int compared = 0;
+  for (const auto& e : fs::directory_iterator(sharedDataDir() + "/reference")) {
+    std::smatch m;
+    const std::string name = e.path().filename().string();
+    if (!std::regex_match(name, m, pattern)) continue;
+    const Scene& s = loaded(m[1]);
+    std::ifstream in(e.path());
+    const nlohmann::json ref = nlohmann::json::parse(in);
+    const std::vector<glm::mat4> world = worldAt(s, std::stoi(m[2]), std::stof(m[3]));
+    for (const auto& rm : ref["meshes"]) {
+      const int joint = jointOfNode(s, rm["node"]);
+      const MeshInstance* inst = nullptr;
+      for (const MeshInstance& i : s.meshInstances)
+        if (i.joint == joint && i.mesh == rm["mesh"].get<int>()) inst = &i;
+      ASSERT_TRUE(inst && inst->skin >= 0) << name;
+      const Skin& skin = s.skins[inst->skin];
+      const MeshPrimitive& p = s.meshes[inst->mesh].primitives.at(rm["primitive"].get<int>());
+      ASSERT_EQ(rm["positions"].size(), static_cast<size_t>(p.vertexCount())) << name;
+      double scale = 1.0;
+      for (const auto& q : rm["positions"])
+        for (double x : q) scale = std::max(scale, std::abs(x));
+      for (int v = 0; v < p.vertexCount(); ++v) {
+        glm::vec4 sum(0.0f);
+        for (int k = 0; k < kMaxInfluences; ++k) {
+          const float w = p.influenceWeights[v * kMaxInfluences + k];
+          const int j = p.influenceJoints[v * kMaxInfluences + k];
+          sum += w * (world[skin.joints[j]] * skin.inverseBind[j] * glm::vec4(p.positions[v], 1.0f));
+        }
+        for (int c = 0; c < 3; ++c)
+          ASSERT_NEAR(sum[c], rm["positions"][v][c].get<double>(), 1e-4 * scale) << name << " vertex " << v;
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GT(compared, 1000);
+}
+
 }  // namespace
 }  // namespace kinema
