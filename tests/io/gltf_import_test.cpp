@@ -1,8 +1,12 @@
 // glTF import on small files the tests write themselves (gltf_test_files.h): cubic
 // splines with hand-computed midpoints, STEP, matrices, names, strips and fans, skin
 // influences, sparse accessors, morph targets, warnings.
+#include <algorithm>
 #include <cmath>
+#include <random>
 #include <string>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "anim/sampling.h"
 #include "core/forward_kinematics.h"
@@ -346,6 +350,49 @@ TEST(GltfImport, SeveralSkinsWithoutACommonRoot) {
   EXPECT_EQ(s.skins[1].skeletonRoot, -1);
   EXPECT_EQ(s.skins[1].inverseBind[0][3], glm::vec4(-5, 0, 0, 1));  // column 3 = translation
   EXPECT_EQ(s.skins[0].inverseBind[1], glm::mat4(1.0f));
+}
+
+// Random forests in random node order: the skeleton is parent-first, keeps every
+// parent-child edge, and each node's world position equals the product of its ancestors'
+// TRS matrices walked in the file's own terms.
+TEST(GltfImport, RandomNodeOrdersKeepTheHierarchy) {
+  std::mt19937 rng(7);
+  const int cases = test::propertyCases(200);
+  for (int c = 0; c < cases; ++c) {
+    const int n = 1 + static_cast<int>(rng() % 30);
+    std::vector<int> parent(n, -1);
+    for (int i = 1; i < n; ++i) parent[i] = (rng() % 5 == 0) ? -1 : static_cast<int>(rng() % i);  // a forest
+    std::vector<int> nodeOf(n);  // shuffle: tree vertex i is node nodeOf[i]
+    for (int i = 0; i < n; ++i) nodeOf[i] = i;
+    std::shuffle(nodeOf.begin(), nodeOf.end(), rng);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    GltfTestFile f;
+    f.doc["nodes"] = json::array();
+    std::vector<glm::mat4> local(n);
+    for (int node = 0; node < n; ++node) f.doc["nodes"].push_back(json::object());
+    for (int i = 0; i < n; ++i) {
+      const glm::vec3 t(u(rng), u(rng), u(rng));
+      const glm::quat q = test::randomRotation(rng);
+      json& node = f.doc["nodes"][nodeOf[i]];
+      node["translation"] = {t.x, t.y, t.z};
+      node["rotation"] = {q.x, q.y, q.z, q.w};
+      local[i] = glm::translate(glm::mat4(1.0f), t) * glm::mat4_cast(q);
+      if (parent[i] >= 0) f.doc["nodes"][nodeOf[parent[i]]]["children"].push_back(nodeOf[i]);
+    }
+    const Scene s = parsed(f);
+    ASSERT_EQ(s.skeleton.validate(), "");
+    ASSERT_EQ(s.skeleton.size(), n);
+    const std::vector<glm::mat4> world = computeWorld(s.skeleton, Pose::rest(s.skeleton));
+    for (int j = 0; j < n; ++j) {
+      const int i = static_cast<int>(std::find(nodeOf.begin(), nodeOf.end(), s.nodeOfJoint[j]) - nodeOf.begin());
+      const int p = s.skeleton.parents[j];
+      EXPECT_EQ(p < 0 ? -1 : s.nodeOfJoint[p], parent[i] < 0 ? -1 : nodeOf[parent[i]]);
+      glm::mat4 expected = local[i];
+      for (int a = parent[i]; a >= 0; a = parent[a]) expected = local[a] * expected;
+      SCOPED_TRACE("case " + std::to_string(c));
+      EXPECT_VEC3_NEAR(glm::vec3(world[j][3]), glm::vec3(expected[3]), 1e-4f);
+    }
+  }
 }
 
 }  // namespace
