@@ -67,8 +67,9 @@ struct Material {
   bool doubleSided = false;
 };
 
-// A decoded RGBA8 image (glTF base-colour textures).
-struct Image {
+// A decoded RGBA8 image (glTF base-colour textures). Not named Image: io/image.h has a
+// kinema::Image too, and two classes of one name break the one-definition rule at link time.
+struct TextureImage {
   std::string name;
   int width = 0, height = 0;
   std::vector<uint8_t> rgba;  // width * height * 4, first row at the top
