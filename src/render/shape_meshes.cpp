@@ -5,7 +5,7 @@
 namespace kinema {
 
 namespace {
-void addFlatTriangle(Mesh& m, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+void addFlatTriangle(ShapeMesh& m, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
   const glm::vec3 n = glm::normalize(glm::cross(b - a, c - a));
   for (const glm::vec3& p : {a, b, c}) {
     m.positions.push_back(p);
@@ -14,11 +14,11 @@ void addFlatTriangle(Mesh& m, const glm::vec3& a, const glm::vec3& b, const glm:
 }
 }  // namespace
 
-Mesh makeOctahedralBone() {
+ShapeMesh makeOctahedralBone() {
   const glm::vec3 head(0.0f), tail(0.0f, 1.0f, 0.0f);
   // The waist corners go counter-clockwise seen from the tail (looking down -Y).
   const glm::vec3 waist[4] = {{0.1f, 0.1f, 0.1f}, {0.1f, 0.1f, -0.1f}, {-0.1f, 0.1f, -0.1f}, {-0.1f, 0.1f, 0.1f}};
-  Mesh m;
+  ShapeMesh m;
   for (int i = 0; i < 4; ++i) {
     const glm::vec3& a = waist[i];
     const glm::vec3& b = waist[(i + 1) % 4];
@@ -28,7 +28,7 @@ Mesh makeOctahedralBone() {
   return m;
 }
 
-Mesh makeSphere(int slices, int stacks) {
+ShapeMesh makeSphere(int slices, int stacks) {
   slices = std::max(slices, 3);
   stacks = std::max(stacks, 2);
   const float pi = glm::pi<float>();
@@ -37,7 +37,7 @@ Mesh makeSphere(int slices, int stacks) {
     const float phi = 2.0f * pi * static_cast<float>(i % slices) / static_cast<float>(slices);
     return glm::vec3(std::sin(theta) * std::sin(phi), std::cos(theta), std::sin(theta) * std::cos(phi));
   };
-  Mesh m;
+  ShapeMesh m;
   auto add = [&m](const glm::vec3& p) {
     m.positions.push_back(p);
     m.normals.push_back(p);  // on a unit sphere the position is the normal

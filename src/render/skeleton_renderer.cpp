@@ -38,7 +38,7 @@ std::string SkeletonRenderer::init() {
   return {};
 }
 
-void SkeletonRenderer::createShape(ShapeBuffers& shape, const Mesh& mesh) {
+void SkeletonRenderer::createShape(ShapeBuffers& shape, const ShapeMesh& mesh) {
   // Interleaved position + normal per vertex; a second buffer holds per-instance matrix + colour.
   std::vector<float> data;
   data.reserve(mesh.positions.size() * 6);

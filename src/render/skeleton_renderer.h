@@ -39,7 +39,7 @@ class SkeletonRenderer {
     GLuint vao = 0, vertices = 0, instances = 0;
     int vertexCount = 0;
   };
-  void createShape(ShapeBuffers& shape, const Mesh& mesh);
+  void createShape(ShapeBuffers& shape, const ShapeMesh& mesh);
   void drawInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices, const std::vector<glm::vec4>& colors);
   void drawGrid(const FrameDescription& frame, const glm::mat4& viewProjection);
 

@@ -9,7 +9,7 @@ namespace {
 
 // Signed volume by the divergence theorem: positive when every triangle winds
 // counter-clockwise seen from outside.
-double signedVolume(const Mesh& m) {
+double signedVolume(const ShapeMesh& m) {
   double v = 0;
   for (int i = 0; i + 2 < m.vertexCount(); i += 3)
     v += glm::dot(glm::dvec3(m.positions[i]), glm::cross(glm::dvec3(m.positions[i + 1]), glm::dvec3(m.positions[i + 2]))) / 6.0;
@@ -17,7 +17,7 @@ double signedVolume(const Mesh& m) {
 }
 
 TEST(OctahedralBone, HasBlendersProportionsAndOutwardFaces) {
-  const Mesh m = makeOctahedralBone();
+  const ShapeMesh m = makeOctahedralBone();
   ASSERT_EQ(m.vertexCount(), 24);  // 8 flat triangles
   // Two square pyramids on the waist (side 0.2, area 0.04), heights 0.1 and 0.9: V = 0.04 * 1 / 3.
   EXPECT_NEAR(signedVolume(m), 0.04 / 3.0, 1e-7);
@@ -39,7 +39,7 @@ TEST(OctahedralBone, HasBlendersProportionsAndOutwardFaces) {
 }
 
 TEST(Sphere, IsAClosedUnitSphereWoundOutward) {
-  const Mesh m = makeSphere(16, 10);
+  const ShapeMesh m = makeSphere(16, 10);
   ASSERT_EQ(m.vertexCount() % 3, 0);
   EXPECT_EQ(m.vertexCount(), 3 * (2 * 16 * 10 - 2 * 16));  // quads, minus one triangle per pole cell
   for (int i = 0; i < m.vertexCount(); ++i) EXPECT_NEAR(glm::length(m.positions[i]), 1.0f, 1e-6f);
