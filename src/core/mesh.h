@@ -63,12 +63,11 @@ struct MeshInstance {
 struct Material {
   std::string name;
   glm::vec4 baseColor{1.0f};
-  int baseColorImage = -1;  // index into Scene::images, or -1
+  int baseColorImage = -1;  // index into Scene::images (TextureImage), or -1
   bool doubleSided = false;
 };
 
-// A decoded RGBA8 image (glTF base-colour textures). Not named Image: io/image.h has a
-// kinema::Image too, and two classes of one name break the one-definition rule at link time.
+// A decoded RGBA8 image (glTF base-colour textures).
 struct TextureImage {
   std::string name;
   int width = 0, height = 0;
