@@ -55,4 +55,27 @@ nlohmann::ordered_json jointsJson(const Skeleton& skeleton, const std::vector<gl
   return joints;
 }
 
+nlohmann::ordered_json jointsJson(const Scene& scene, const std::vector<glm::mat4>& world) {
+  if (scene.nodeOfJoint.empty()) return jointsJson(scene.skeleton, world);
+  const int n = scene.skeleton.size();
+  std::vector<int> jointOfNode(n, -1);
+  for (int j = 0; j < n; ++j) jointOfNode[scene.nodeOfJoint[j]] = j;
+  nlohmann::ordered_json joints = nlohmann::ordered_json::array();
+  for (int node = 0; node < n; ++node) {
+    const int j = jointOfNode[node];
+    const int parent = scene.skeleton.parents[j];
+    const bool fileName = node < static_cast<int>(scene.nodeNames.size()) && !scene.nodeNames[node].empty();
+    nlohmann::ordered_json e;
+    e["name"] = fileName ? scene.nodeNames[node] : scene.skeleton.names[j];
+    e["node"] = node;
+    e["parent"] = parent < 0 ? -1 : scene.nodeOfJoint[parent];
+    nlohmann::ordered_json m = nlohmann::ordered_json::array();
+    const float* p = glm::value_ptr(world[j]);  // column-major, as glTF
+    for (int k = 0; k < 16; ++k) m.push_back(jsonFloat(p[k]));
+    e["world"] = std::move(m);
+    joints.push_back(std::move(e));
+  }
+  return joints;
+}
+
 }  // namespace kinema::cli

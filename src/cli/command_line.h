@@ -33,5 +33,8 @@ Pose sampledPose(const Scene& scene, int clip, double time);
 
 // The "joints" array of the contract: name, parent, world (16 numbers, column-major).
 nlohmann::ordered_json jointsJson(const Skeleton& skeleton, const std::vector<glm::mat4>& world);
+// The same for a scene: glTF scenes list one entry per node in node-index order, with
+// "node", the file's name and the parent's node index; other scenes as above.
+nlohmann::ordered_json jointsJson(const Scene& scene, const std::vector<glm::mat4>& world);
 
 }  // namespace kinema::cli

@@ -12,7 +12,7 @@ namespace kinema::cli {
 
 CLI::App* addPoseCommand(CLI::App& app, PoseOptions& o) {
   CLI::App* cmd = app.add_subcommand("pose", "Evaluate a file at a time or frame into world joint transforms");
-  cmd->add_option("file", o.file, "A .bvh or .kinema file")->required();
+  cmd->add_option("file", o.file, "A .bvh, .kinema, .gltf or .glb file")->required();
   cmd->add_option("--clip", o.clip, "Clip index (default 0)");
   o.timeOption = cmd->add_option("--time", o.time, "Time in seconds (clamped to the clip)");
   o.frameOption = cmd->add_option("--frame", o.frame, "Frame number (time = N x frame time)");
@@ -38,7 +38,7 @@ int runPose(const PoseOptions& o) {
   if (o.json) {
     nlohmann::ordered_json out;
     out["time"] = time;
-    out["joints"] = jointsJson(scene.skeleton, world);
+    out["joints"] = jointsJson(scene, world);
     std::cout << out.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
     return kExitOk;
   }

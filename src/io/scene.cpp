@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "io/bvh.h"
+#include "io/gltf_reader.h"
 #include "io/kinema_file.h"
 
 namespace kinema {
@@ -31,8 +32,9 @@ Result<Scene> loadScene(const std::string& path) {
     return scene;
   }
   if (ext == ".kinema") return loadKinemaFile(path);
+  if (ext == ".gltf" || ext == ".glb") return loadGltf(path);
   return Result<Scene>::failure(path + ": unsupported file type '" + ext +
-                                "' (Kinema reads .bvh and .kinema)");
+                                "' (Kinema reads .bvh, .kinema, .gltf and .glb)");
 }
 
 }  // namespace kinema

@@ -28,12 +28,18 @@ struct Scene {
   std::vector<MeshInstance> meshInstances;
   std::vector<Material> materials;
   std::vector<TextureImage> images;
+  // glTF: each node's name as the file gives it, indexed by node ("" when unnamed). Names
+  // may repeat in a file, so the skeleton holds made-unique ones; reports print these.
+  std::vector<std::string> nodeNames;
+  // What the loader dropped or could not keep (cameras, lights, point and line primitives,
+  // extra UV sets...), one line each, for the user to see.
+  std::vector<std::string> warnings;
 
   // The file index of each joint: nodeOfJoint when present, else the joint index.
   int fileIndexOf(int joint) const { return nodeOfJoint.empty() ? joint : nodeOfJoint[joint]; }
 };
 
-// Loads .bvh or .kinema, chosen by the file's extension.
+// Loads .bvh, .kinema, .gltf or .glb, chosen by the file's extension.
 Result<Scene> loadScene(const std::string& path);
 
 }  // namespace kinema
