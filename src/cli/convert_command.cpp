@@ -71,6 +71,7 @@ int runConvert(const ConvertOptions& o) {
   Result<Scene> loaded = loadScene(o.input);
   if (!loaded) return badInput(loaded.error());
   const Scene& scene = loaded.value();
+  for (const std::string& line : scene.warnings) std::cerr << "kinema convert: warning: " << o.input << ": " << line << "\n";
 
   std::vector<std::string> report;
   std::string error;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 
 #include "anim/sampling.h"
 #include "io/atomic_write.h"
@@ -46,6 +47,11 @@ double bvhFrameTime(const Clip* clip, double frameRate, bool* uniform) {
       if (d > 1e-6 && (step == 0.0 || d < step)) step = d;
     }
   if (step == 0.0) return 1.0 / 30.0;
+  // Key times are floats: the whole span divided by its frame count is the better
+  // estimate of the step; then every key must lie on that grid.
+  const double duration = clip->duration();
+  const double frames = std::round(duration / step);
+  if (frames >= 1.0) step = duration / frames;
   for (const Channel& ch : clip->channels)
     for (float t : ch.times) {
       const double n = t / step;
@@ -171,12 +177,25 @@ Result<std::string> bvhText(const Skeleton& sk, const Clip* clip, const BvhWrite
   out += ft;
   out += '\n';
 
+  // Frames that fall on keys sample at the key's own time: a grid found from float key
+  // times is off by an ulp here and there, enough to move a fast joint by 1e-4.
+  std::map<long long, float> keyAtFrame;
+  if (clip && uniform)
+    for (const Channel& ch : clip->channels)
+      for (float t : ch.times) {
+        const double n = t / frameTime;
+        if (std::abs(n - std::round(n)) < 1e-3) keyAtFrame[std::llround(n)] = t;
+      }
+  auto timeOfFrame = [&](long long f) {
+    const auto it = keyAtFrame.find(f);
+    return it != keyAtFrame.end() ? it->second : timing.frameToTime(f);
+  };
   Pose pose = Pose::rest(sk);
   SamplingCache cache;
   std::vector<glm::vec3> previous(n, glm::vec3(0.0f));
   for (long long f = 0; f < frames; ++f) {
     pose.local = sk.rest;
-    if (clip) sampleClip(*clip, timing.frameToTime(f), pose, cache);
+    if (clip) sampleClip(*clip, timeOfFrame(f), pose, cache);
     bool first = true;
     for (int j : columnsOf) {
       const Transform& t = pose.local[j];

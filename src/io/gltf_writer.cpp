@@ -377,7 +377,12 @@ Result<std::string> gltfBytes(const Scene& scene, const GltfWriteOptions& option
   tinygltf::Scene root;
   for (int j = 0; j < sk.size(); ++j) {
     tinygltf::Node& n = model.nodes[node[j]];
-    n.name = sk.names[j];
+    // The file's own node names when the scene came from glTF (they may repeat or be
+    // empty there; the skeleton's are made unique).
+    const bool fileNames = scene.nodeOfJoint.size() == static_cast<size_t>(sk.size()) &&
+                           scene.nodeOfJoint[j] >= 0 &&
+                           scene.nodeOfJoint[j] < static_cast<int>(scene.nodeNames.size());
+    n.name = fileNames ? scene.nodeNames[scene.nodeOfJoint[j]] : sk.names[j];
     const Transform& t = sk.rest[j];
     if (t.translation != glm::vec3(0.0f)) n.translation = toDoubles(&t.translation.x, 3);
     const glm::quat q = glm::normalize(t.rotation);
@@ -455,6 +460,12 @@ Result<std::string> gltfBytes(const Scene& scene, const GltfWriteOptions& option
   for (size_t c = 0; c < scene.clips.size(); ++c) animations.add(scene.clips[c], c, rateFor(scene.clips[c], options));
   if (!scene.ik.empty()) note("IK limits and targets dropped (glTF has no place for them; .kinema keeps them)");
 
+  // tinygltf writes a node without any property as null, which is not glTF: an unnamed
+  // leaf at rest gets its identity rotation written out.
+  for (tinygltf::Node& n : model.nodes)
+    if (n.name.empty() && n.children.empty() && n.mesh < 0 && n.skin < 0 && n.translation.empty() &&
+        n.rotation.empty() && n.scale.empty() && n.weights.empty())
+      n.rotation = {0.0, 0.0, 0.0, 1.0};
   if (model.buffers[0].data.empty()) model.buffers.clear();
   model.scenes.push_back(root);
   model.defaultScene = 0;

@@ -724,6 +724,14 @@ bool readSceneAssets(Reader& r, const Json& root, Scene& scene) {
       scene.nodeOfJoint.push_back(node);
     }
   }
+  if (const Json* v = r.member(root, "", "node_names", false)) {
+    if (!v->is_array()) return r.fail("node_names", "expected an array of strings");
+    for (size_t i = 0; i < v->size(); ++i) {
+      std::string name;
+      if (!r.string((*v)[i], "node_names[" + std::to_string(i) + "]", name)) return false;
+      scene.nodeNames.push_back(name);
+    }
+  }
   auto each = [&](const char* key, const std::function<bool(const Json&, const std::string&)>& f) {
     return readArrayOf(r, root, key, f);
   };
@@ -839,6 +847,7 @@ bool readSceneAssets(Reader& r, const Json& root, Scene& scene) {
 void sceneAssetsToJson(const Scene& scene, Json& root) {
   const Skeleton& s = scene.skeleton;
   if (!scene.nodeOfJoint.empty()) root["node_of_joint"] = scene.nodeOfJoint;
+  if (!scene.nodeNames.empty()) root["node_names"] = scene.nodeNames;
   if (!scene.images.empty()) {
     Json a = Json::array();
     for (const TextureImage& im : scene.images) {

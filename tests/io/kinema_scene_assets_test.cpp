@@ -14,6 +14,7 @@ namespace {
 
 void expectSameAssets(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.nodeOfJoint, b.nodeOfJoint);
+  EXPECT_EQ(a.nodeNames, b.nodeNames);
   ASSERT_EQ(a.meshes.size(), b.meshes.size());
   for (size_t m = 0; m < a.meshes.size(); ++m) {
     EXPECT_EQ(a.meshes[m].name, b.meshes[m].name);
