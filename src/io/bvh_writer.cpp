@@ -13,6 +13,7 @@ namespace kinema {
 namespace {
 
 constexpr double kRadToDeg = 57.29577951308232;
+constexpr double kMaxFrames = 1e7;
 
 void appendNumber(std::string& out, double v) {
   char buf[48];
@@ -167,7 +168,12 @@ Result<std::string> bvhText(const Skeleton& sk, const Clip* clip, const BvhWrite
   Clip timing;
   timing.frameTime = frameTime;
   const double duration = clip ? clip->duration() : 0.0;
-  const long long frames = static_cast<long long>(std::floor(duration / frameTime + 1e-4)) + 1;
+  const double frameCount = std::floor(duration / frameTime + 1e-4) + 1;
+  // A file controls the duration: refuse what would be gigabytes of text.
+  if (!(frameCount <= kMaxFrames))
+    return Result<std::string>::failure("cannot write BVH: " + std::to_string(static_cast<long long>(frameCount)) +
+                                        " frames is more than " + std::to_string(static_cast<long long>(kMaxFrames)));
+  const long long frames = static_cast<long long>(frameCount);
   if (clip && std::abs(double(timing.frameToTime(frames - 1)) - duration) > 1e-4 * frameTime + 1e-6)
     note("the clip's end (" + std::to_string(duration) + " s) is not on a frame: the last frame is at " +
          std::to_string(timing.frameToTime(frames - 1)) + " s");

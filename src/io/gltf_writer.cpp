@@ -3,6 +3,7 @@
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -303,7 +304,9 @@ class AnimationWriter {
   static int morphIndex(const Channel& ch) {
     if (ch.property.rfind("weights/", 0) != 0) return -1;
     const std::string digits = ch.property.substr(8);
-    if (digits.empty() || digits.size() > 6 || !std::all_of(digits.begin(), digits.end(), ::isdigit)) return -1;
+    if (digits.empty() || digits.size() > 6 ||
+        !std::all_of(digits.begin(), digits.end(), [](unsigned char c) { return std::isdigit(c) != 0; }))
+      return -1;
     return std::stoi(digits);
   }
   const MeshInstance* instanceOf(int joint) const {
@@ -350,6 +353,8 @@ class AnimationWriter {
   std::string clipLabel_;
 };
 
+constexpr double kMaxResampledKeys = 1e7;
+
 // The clip's frame rate when it has a frame grid, else the option or 30.
 double rateFor(const Clip& clip, const GltfWriteOptions& options) {
   if (options.resampleRate > 0.0) return options.resampleRate;
@@ -362,6 +367,16 @@ double rateFor(const Clip& clip, const GltfWriteOptions& options) {
 Result<std::string> gltfBytes(const Scene& scene, const GltfWriteOptions& options, std::vector<std::string>* report) {
   const std::string bad = checkScene(scene);
   if (!bad.empty()) return Result<std::string>::failure(bad);
+  // Resampling allocates duration x rate keys per channel: refuse absurd requests (a file
+  // controls the duration) instead of exhausting memory.
+  for (size_t c = 0; c < scene.clips.size(); ++c) {
+    const double samples = double(scene.clips[c].duration()) * rateFor(scene.clips[c], options);
+    if (!(options.resampleRate >= 0.0) || samples > kMaxResampledKeys)
+      return Result<std::string>::failure("cannot export: clip " + std::to_string(c) + " would need " +
+                                          std::to_string(static_cast<long long>(samples)) +
+                                          " samples per resampled curve (at most " +
+                                          std::to_string(static_cast<long long>(kMaxResampledKeys)) + ")");
+  }
   auto note = [&](const std::string& line) {
     if (report) report->push_back(line);
   };

@@ -169,6 +169,12 @@ TEST(BvhWriter, ProgressReachesTheLastFrameAndBadRatesFail) {
   ASSERT_TRUE(bvhText(s, &clip, options).ok());
   EXPECT_EQ(total, 1000);
   EXPECT_EQ(last, 1000);
+  // A key a year away would be billions of frames: refused, not attempted.
+  Clip far = clip;
+  far.channels[0].times[1] = 3.0e7f;
+  const Result<std::string> huge = bvhText(s, &far, {});
+  ASSERT_FALSE(huge.ok());
+  EXPECT_NE(huge.error().find("frames is more than"), std::string::npos) << huge.error();
   options.frameRate = -5.0;
   const Result<std::string> bad = bvhText(s, &clip, options);
   ASSERT_FALSE(bad.ok());

@@ -345,6 +345,14 @@ TEST(GltfWriter, BezierWithLongHandlesIsResampled) {
   EXPECT_EQ(read<float>(m, m.animations[0].samplers[0].input).size(), 101u);
 }
 
+TEST(GltfWriter, AbsurdResamplingIsRefused) {
+  Scene scene = makeSampleScene();
+  scene.clips[0].channels[1].times.back() = 1.0e6f;  // the Squad channel, a million seconds long
+  const Result<std::string> bytes = gltfBytes(scene, {});
+  ASSERT_FALSE(bytes.ok());
+  EXPECT_NE(bytes.error().find("clip 0 would need"), std::string::npos) << bytes.error();
+}
+
 TEST(GltfWriter, GlbIsBinaryAndHoldsTheSameScene) {
   const Scene scene = makeSampleScene();
   GltfWriteOptions options;
