@@ -25,6 +25,16 @@ void appendNumber(std::string& out, double v) {
 // The three axis letters of an order, in multiplication order (BVH channel order).
 const char* axes(EulerOrder order) { return toString(order); }
 
+bool unitScale(const glm::vec3& s) { return glm::all(glm::lessThan(glm::abs(s - 1.0f), glm::vec3(1e-5f))); }
+
+// "3 joints: 'a', 'b', 'c'" (the first few named), for report lines.
+std::string jointList(const Skeleton& sk, const std::vector<int>& joints) {
+  std::string out = std::to_string(joints.size()) + (joints.size() == 1 ? " joint: " : " joints: ");
+  for (size_t i = 0; i < joints.size() && i < 4; ++i) out += (i ? ", '" : "'") + sk.names[joints[i]] + "'";
+  if (joints.size() > 4) out += ", ...";
+  return out;
+}
+
 // A name BVH can carry: no whitespace (the format is whitespace separated).
 std::string bvhName(const std::string& name) {
   std::string out = name;
@@ -81,12 +91,18 @@ Result<std::string> bvhText(const Skeleton& sk, const Clip* clip, const BvhWrite
   for (int j = 0; j < n; ++j)
     if (sk.parents[j] >= 0) children[sk.parents[j]].push_back(j);
   std::vector<bool> translated(n, false), rotated(n, false);
+  std::vector<int> scaledJoints, zeroEndSites, renamed;
   if (clip)
     for (const Channel& ch : clip->channels) {
       if (ch.joint < 0 || ch.times.empty()) continue;
       if (ch.target == ChannelTarget::Translation) translated[ch.joint] = true;
       if (ch.target == ChannelTarget::Rotation || ch.target == ChannelTarget::Euler) rotated[ch.joint] = true;
-      if (ch.target == ChannelTarget::Scale) note("joint '" + sk.names[ch.joint] + "': animated scale dropped (BVH has no scale)");
+      if (ch.target == ChannelTarget::Scale)
+        for (const glm::vec4& v : ch.values)
+          if (!unitScale(glm::vec3(v))) {
+            scaledJoints.push_back(ch.joint);
+            break;
+          }
       if (ch.target == ChannelTarget::Scalar) note("scalar channel '" + ch.property + "' dropped (BVH has none)");
     }
   std::vector<bool> endSite(n, false), positions(n, false);
@@ -94,11 +110,13 @@ Result<std::string> bvhText(const Skeleton& sk, const Clip* clip, const BvhWrite
     const int p = sk.parents[j];
     endSite[j] = p >= 0 && children[j].empty() && !translated[j] && !rotated[j] && sk.names[j] == sk.names[p] + "_End";
     positions[j] = p < 0 || translated[j];
-    if (sk.rest[j].scale != glm::vec3(1.0f) && !endSite[j])
-      note("joint '" + sk.names[j] + "': rest scale dropped (BVH has no scale)");
-    if (bvhName(sk.names[j]) != sk.names[j])
-      note("joint '" + sk.names[j] + "' written as '" + bvhName(sk.names[j]) + "' (BVH names have no spaces)");
+    if (!unitScale(sk.rest[j].scale) && !endSite[j]) scaledJoints.push_back(j);
+    if (bvhName(sk.names[j]) != sk.names[j]) renamed.push_back(j);
   }
+  std::sort(scaledJoints.begin(), scaledJoints.end());
+  scaledJoints.erase(std::unique(scaledJoints.begin(), scaledJoints.end()), scaledJoints.end());
+  if (!scaledJoints.empty()) note("scale dropped (BVH has none): " + jointList(sk, scaledJoints));
+  if (!renamed.empty()) note("whitespace and braces in names written as '_': " + jointList(sk, renamed));
 
   // HIERARCHY, depth first with an explicit stack (a file controls the depth).
   std::string out = "HIERARCHY\n";
@@ -155,11 +173,14 @@ Result<std::string> bvhText(const Skeleton& sk, const Clip* clip, const BvhWrite
       out += "OFFSET 0.000000 0.000000 0.000000\n";
       indent(depth + 1);
       out += "}\n";
-      note("joint '" + sk.names[j] + "' is a leaf: a zero-length End Site was added");
+      zeroEndSites.push_back(j);
     }
     for (auto c = children[j].rbegin(); c != children[j].rend(); ++c) stack.push_back({*c, depth + 1});
   }
   close(0);
+  if (!zeroEndSites.empty())
+    note("leaves given a zero-length End Site (read back, each adds a '<name>_End' joint): " +
+         jointList(sk, zeroEndSites));
 
   // MOTION: one line per frame, each joint's local pose sampled at the frame's time.
   bool uniform = true;
