@@ -156,7 +156,7 @@ int runIk(const IkOptions& o) {
     out["error"] = jsonFloat(r.error);
     if (o.trace) {
       nlohmann::ordered_json names = nlohmann::ordered_json::array();
-      for (int j : trace.joints) names.push_back(j);
+      for (int j : trace.joints) names.push_back(scene.fileIndexOf(j));  // glTF: node indices
       out["trace_joints"] = std::move(names);  // indices into "joints" of each trace position
       nlohmann::ordered_json steps = nlohmann::ordered_json::array();
       for (const IkTraceEntry& e : trace.entries) {
@@ -172,7 +172,7 @@ int runIk(const IkOptions& o) {
       }
       out["trace"] = std::move(steps);
     }
-    out["joints"] = jointsJson(skeleton, world);
+    out["joints"] = jointsJson(scene, world);
     std::cout << out.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
     return kExitOk;
   }

@@ -126,7 +126,7 @@ std::string viewBytes(const GltfContext& ctx, int view, const std::string& where
     return ctx.error(where + ": bufferView " + std::to_string(view) + " does not exist (the file has " +
                      std::to_string(m.bufferViews.size()) + ")");
   const tinygltf::BufferView& bv = m.bufferViews[view];
-  const std::string bvName = "bufferView " + std::to_string(view);
+  const std::string bvName = where + ": bufferView " + std::to_string(view);
   if (bv.buffer < 0 || static_cast<size_t>(bv.buffer) >= m.buffers.size())
     return ctx.error(bvName + ": buffer " + std::to_string(bv.buffer) + " does not exist");
   const size_t size = m.buffers[bv.buffer].data.size();

@@ -12,6 +12,9 @@ namespace kinema {
 
 namespace {
 
+// A JSON number that converts to a finite float (casting one beyond float range is undefined).
+bool finiteFloat(double x) { return std::isfinite(x) && std::abs(x) <= 3.0e38; }
+
 std::string decodeImage(GltfContext& ctx, int index, size_t& pixelBudget, TextureImage& out) {
   const tinygltf::Image& in = ctx.model.images[index];
   const std::string where = "image " + std::to_string(index);
@@ -154,7 +157,9 @@ std::string readPrimitive(GltfContext& ctx, const tinygltf::Primitive& p, const 
   const auto pos = p.attributes.find("POSITION");
   const size_t n = accessorCount(ctx, pos->second);
   std::vector<float> f;
-  if (std::string e = readFloatAccessor(ctx, pos->second, 3, kCompFloat, where + " POSITION", f); !e.empty()) return e;
+  // Integer positions are KHR_mesh_quantization's (normalised or not).
+  const unsigned any = kCompFloat | kCompByte | kCompUByte | kCompShort | kCompUShort;
+  if (std::string e = readFloatAccessor(ctx, pos->second, 3, any, where + " POSITION", f); !e.empty()) return e;
   out.positions = toVec3(f);
   for (const auto& [name, accessor] : p.attributes) {
     if (accessorCount(ctx, accessor) != n && accessor >= 0 && static_cast<size_t>(accessor) < ctx.model.accessors.size())
@@ -188,7 +193,7 @@ std::string readPrimitive(GltfContext& ctx, const tinygltf::Primitive& p, const 
     const std::string tw = where + " target " + std::to_string(t);
     for (const auto& [name, accessor] : p.targets[t]) {
       if (name != "POSITION" && name != "NORMAL") {
-        ctx.warn("morph target attribute " + name + " is not kept (" + tw + ")");
+        ctx.warn("morph target attribute " + name + " is not kept (" + where + ")");
         continue;
       }
       if (accessorCount(ctx, accessor) != n && accessorCount(ctx, accessor) != 0)
@@ -231,7 +236,7 @@ std::string importMaterials(GltfContext& ctx, Scene& scene) {
     const std::vector<double>& f = in.pbrMetallicRoughness.baseColorFactor;
     if (f.size() != 4) return ctx.error(where + ": baseColorFactor needs 4 numbers");
     for (int k = 0; k < 4; ++k) {
-      if (!std::isfinite(f[k])) return ctx.error(where + ": baseColorFactor holds a non-finite number");
+      if (!finiteFloat(f[k])) return ctx.error(where + ": baseColorFactor holds a non-finite number");
       mat.baseColor[k] = static_cast<float>(f[k]);
     }
     const int tex = in.pbrMetallicRoughness.baseColorTexture.index;
@@ -303,7 +308,7 @@ std::string importMeshes(GltfContext& ctx, const std::vector<int>& jointOfNode, 
                        std::to_string(targetsOfMesh[mi]) + " morph targets");
     mesh.morphWeights.assign(targetsOfMesh[mi], 0.0f);
     for (size_t k = 0; k < in.weights.size(); ++k) {
-      if (!std::isfinite(in.weights[k])) return ctx.error("mesh " + std::to_string(mi) + ": weight " + std::to_string(k) + " is not finite");
+      if (!finiteFloat(in.weights[k])) return ctx.error("mesh " + std::to_string(mi) + ": weight " + std::to_string(k) + " is not finite");
       mesh.morphWeights[k] = static_cast<float>(in.weights[k]);
     }
     mesh.targetNames = targetNamesOf(in);
@@ -332,7 +337,7 @@ std::string importMeshes(GltfContext& ctx, const std::vector<int>& jointOfNode, 
       return ctx.error(where + ": " + std::to_string(node.weights.size()) + " weights for " +
                        std::to_string(targetsOfMesh[inst.mesh]) + " morph targets of mesh " + std::to_string(inst.mesh));
     for (size_t k = 0; k < node.weights.size(); ++k) {
-      if (!std::isfinite(node.weights[k])) return ctx.error(where + ": weight " + std::to_string(k) + " is not finite");
+      if (!finiteFloat(node.weights[k])) return ctx.error(where + ": weight " + std::to_string(k) + " is not finite");
       inst.morphWeights.push_back(static_cast<float>(node.weights[k]));
     }
     scene.meshInstances.push_back(std::move(inst));

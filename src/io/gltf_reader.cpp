@@ -1,5 +1,6 @@
 #include "io/gltf_reader.h"
 
+#include <sys/stat.h>
 #include <tiny_gltf.h>
 
 #include <cmath>
@@ -60,6 +61,27 @@ bool keepEncodedImage(tinygltf::Image* image, const int, std::string*, std::stri
   return true;
 }
 
+// External buffers and images: regular files only, no larger than the file cap (a .gltf
+// could otherwise name /dev/zero or a huge file).
+bool readExternalFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+  struct stat st;
+  if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) {
+    if (err) *err += "cannot read " + path + " (not a regular file)\n";
+    return false;
+  }
+  if (static_cast<uint64_t>(st.st_size) > GltfLimits::kMaxFileBytes) {
+    if (err) *err += path + " is larger than the limit of " + std::to_string(GltfLimits::kMaxFileBytes) + " bytes\n";
+    return false;
+  }
+  std::ifstream f(path, std::ios::binary);
+  out->resize(static_cast<size_t>(st.st_size));
+  if (!f || !f.read(reinterpret_cast<char*>(out->data()), st.st_size)) {
+    if (err) *err += "cannot read " + path + "\n";
+    return false;
+  }
+  return true;
+}
+
 std::string directoryOf(const std::string& path) {
   const size_t slash = path.find_last_of('/');
   return slash == std::string::npos ? "." : path.substr(0, slash);
@@ -70,6 +92,7 @@ std::string checkGlb(const std::string& bytes, const std::string& file, size_t& 
   if (bytes.size() < 20) return file + ": truncated GLB: " + std::to_string(bytes.size()) + " bytes, the header needs 20";
   const uint32_t version = readU32(bytes, 4), length = readU32(bytes, 8);
   if (version != 2) return file + ": GLB version " + std::to_string(version) + " is not 2";
+  if (length < 20) return file + ": GLB header length " + std::to_string(length) + " is shorter than the header";
   if (length > bytes.size())
     return file + ": truncated GLB: the header says " + std::to_string(length) + " bytes, the file has " +
            std::to_string(bytes.size());
@@ -261,6 +284,7 @@ Result<Scene> parseGltf(const std::string& bytes, const std::string& path) {
   tinygltf::Model model;
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(keepEncodedImage, nullptr);
+  loader.SetFsCallbacks({tinygltf::FileExists, tinygltf::ExpandFilePath, readExternalFile, tinygltf::WriteWholeFile, nullptr});
   std::string err, warn;
   const std::string dir = directoryOf(path);
   const bool ok =
@@ -271,6 +295,11 @@ Result<Scene> parseGltf(const std::string& bytes, const std::string& path) {
 
   GltfContext ctx{model, path, 0, {}};
   if (!warn.empty()) ctx.warn(oneLine(warn));
+  for (const std::string& ext : model.extensionsRequired) {
+    if (ext == "KHR_draco_mesh_compression" || ext == "EXT_meshopt_compression")
+      return R::failure(ctx.error("requires " + ext + " (compressed geometry), which Kinema does not read"));
+    if (ext != "KHR_mesh_quantization") ctx.warn("requires " + ext + ", which Kinema does not read: it may look different");
+  }
   if (model.nodes.size() > GltfLimits::kMaxNodes)
     return R::failure(ctx.error(std::to_string(model.nodes.size()) + " nodes exceed the limit of " +
                                 std::to_string(GltfLimits::kMaxNodes)));

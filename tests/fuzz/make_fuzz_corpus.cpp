@@ -12,6 +12,7 @@
 #include "core/default_character.h"
 #include "io/bvh.h"
 #include "io/kinema_file.h"
+#include "io/gltf_test_files.h"
 
 namespace {
 
@@ -70,7 +71,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   const std::string out = argv[1];
-  for (const char* sub : {"", "/bvh", "/kinema", "/sampling"}) ::mkdir((out + sub).c_str(), 0755);
+  for (const char* sub : {"", "/bvh", "/kinema", "/sampling", "/gltf"}) ::mkdir((out + sub).c_str(), 0755);
 
   const char* orders[] = {"XYZ", "XZY", "YXZ", "YZX", "ZXY", "ZYX"};
   int n = 0;
@@ -84,6 +85,26 @@ int main(int argc, char** argv) {
         "MOTION\nFrames: 2\nFrame Time: 0.5\n0 0 0 0\n90 0 0 45\n");
   write(out + "/bvh/no_frames.bvh",
         "HIERARCHY\nROOT A {\nOFFSET 0 0 0\nCHANNELS 0\n}\nMOTION\nFrames: 0\nFrame Time: 1\n");
+
+  // glTF: a small animated file as .gltf and .glb, and a skinned, morphing triangle.
+  {
+    const kinema::test::GltfTestFile animated = kinema::test::smallAnimatedFile();
+    write(out + "/gltf/animated.gltf", animated.gltf());
+    write(out + "/gltf/animated.glb", animated.glb());
+    kinema::test::GltfTestFile f = kinema::test::smallAnimatedFile();
+    const int pos = f.addFloats({0, 0, 0, 1, 0, 0, 0, 1, 0}, "VEC3");
+    const int joints = f.addInts(std::vector<std::uint8_t>{0, 1, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0}, kinema::test::kGltfUByte, "VEC4", 3);
+    const int weights = f.addFloats({0.5f, 0.5f, 0, 0, 1, 0, 0, 0, 0.25f, 0.75f, 0, 0}, "VEC4");
+    const int delta = f.addFloats({0, 0, 1, 0, 0, 1, 0, 0, 1}, "VEC3");
+    const int idx = f.addInts(std::vector<std::uint16_t>{0, 1, 2}, kinema::test::kGltfUShort, "SCALAR", 3);
+    f.doc["meshes"] = {{{"primitives", {{{"attributes", {{"POSITION", pos}, {"JOINTS_0", joints}, {"WEIGHTS_0", weights}}},
+                                         {"indices", idx}, {"targets", {{{"POSITION", delta}}}}}}},
+                        {"weights", {0.5}}}};
+    f.addNode({{"mesh", 0}, {"skin", 0}});
+    f.doc["skins"] = {{{"joints", {0, 1}}}};
+    write(out + "/gltf/skinned.gltf", f.gltf());
+    write(out + "/gltf/skinned.glb", f.glb());
+  }
 
   // .kinema files written by the project's writer.
   kinema::Scene character;
