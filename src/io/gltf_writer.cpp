@@ -133,6 +133,12 @@ std::string checkScene(const Scene& scene) {
     if (mi.joint < 0 || mi.joint >= joints || mi.mesh < 0 || mi.mesh >= static_cast<int>(scene.meshes.size()) ||
         mi.skin >= static_cast<int>(scene.skins.size()))
       return "cannot export: mesh instance " + std::to_string(i) + " names a joint, mesh or skin that does not exist";
+    const size_t skinJoints = mi.skin >= 0 ? scene.skins[mi.skin].joints.size() : 0;
+    for (const MeshPrimitive& prim : scene.meshes[mi.mesh].primitives)
+      for (size_t k = 0; k < prim.influenceJoints.size(); ++k)
+        if (prim.influenceWeights[k] != 0.0f && prim.influenceJoints[k] >= skinJoints)
+          return "cannot export: mesh " + std::to_string(mi.mesh) + " uses joint " +
+                 std::to_string(prim.influenceJoints[k]) + " of a skin with " + std::to_string(skinJoints);
   }
   for (size_t m = 0; m < scene.materials.size(); ++m)
     if (scene.materials[m].baseColorImage >= static_cast<int>(scene.images.size()))
@@ -166,13 +172,20 @@ void addMesh(const Mesh& mesh, BufferBuilder& b, tinygltf::Model& model) {
       bool second = false;
       for (size_t v = 0; v < n && !second; ++v)
         for (int i = 4; i < kMaxInfluences; ++i) second = second || p.influenceWeights[v * kMaxInfluences + i] != 0.0f;
+      // glTF wants each vertex's weights to sum to 1; data from elsewhere may be off a bit.
+      std::vector<float> scale(n, 1.0f);
+      for (size_t v = 0; v < n; ++v) {
+        float sum = 0.0f;
+        for (int i = 0; i < kMaxInfluences; ++i) sum += p.influenceWeights[v * kMaxInfluences + i];
+        if (sum > 0.0f && std::abs(sum - 1.0f) > 1e-6f) scale[v] = 1.0f / sum;
+      }
       for (int set = 0; set < (second ? 2 : 1); ++set) {
         std::vector<uint16_t> joints(n * 4);
         std::vector<float> weights(n * 4);
         for (size_t v = 0; v < n; ++v)
           for (int i = 0; i < 4; ++i) {
             const size_t from = v * kMaxInfluences + set * 4 + i;
-            weights[v * 4 + i] = p.influenceWeights[from];
+            weights[v * 4 + i] = p.influenceWeights[from] * scale[v];
             // Unused slots name joint 0 with weight 0, as glTF asks.
             joints[v * 4 + i] = p.influenceWeights[from] != 0.0f ? p.influenceJoints[from] : 0;
           }

@@ -52,6 +52,11 @@ std::string encodePng(int width, int height, const std::uint8_t* rgba) {
 bool decodePng(const std::string& bytes, int& width, int& height, std::vector<std::uint8_t>& rgba) {
   if (bytes.empty() || bytes.size() > static_cast<size_t>(INT32_MAX)) return false;
   int channels = 0;
+  const auto* bytesIn = reinterpret_cast<const unsigned char*>(bytes.data());
+  // The header's size is checked before decoding: a file must not make us allocate gigabytes.
+  if (!stbi_info_from_memory(bytesIn, static_cast<int>(bytes.size()), &width, &height, &channels) ||
+      static_cast<long long>(width) * height > (1LL << 26))
+    return false;
   unsigned char* data = stbi_load_from_memory(reinterpret_cast<const unsigned char*>(bytes.data()),
                                               static_cast<int>(bytes.size()), &width, &height, &channels, 4);
   if (!data) return false;

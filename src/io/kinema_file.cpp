@@ -660,10 +660,14 @@ bool readPrimitive(Reader& r, const Json& j, const std::string& p, const Scene& 
     if (!v->is_array() || v->size() % 3) return r.fail(p + ".indices", "expected an array of vertex indices, 3 per triangle");
     prim.indices.resize(v->size());
     for (size_t i = 0; i < v->size(); ++i) {
-      int index = 0;
-      if (!readIndex(r, (*v)[i], p + ".indices[" + std::to_string(i) + "]", 0, static_cast<long long>(n), index))
+      const Json& x = (*v)[i];
+      // The path is built only for an error: meshes have many indices.
+      if (!x.is_number_unsigned() || x.get<unsigned long long>() >= n) {
+        int unused = 0;
+        readIndex(r, x, p + ".indices[" + std::to_string(i) + "]", 0, static_cast<long long>(n), unused);
         return false;
-      prim.indices[i] = static_cast<uint32_t>(index);
+      }
+      prim.indices[i] = static_cast<uint32_t>(x.get<unsigned long long>());
     }
   }
   const Json* joints = r.member(j, p, "joints", false);
@@ -678,9 +682,13 @@ bool readPrimitive(Reader& r, const Json& j, const std::string& p, const Scene& 
       return r.fail(p + ".weights", "expected " + std::to_string(kMaxInfluences) + " weights per vertex");
     prim.influenceJoints.resize(count);
     for (size_t i = 0; i < count; ++i) {
-      int joint = 0;
-      if (!readIndex(r, (*joints)[i], p + ".joints[" + std::to_string(i) + "]", 0, 65536, joint)) return false;
-      prim.influenceJoints[i] = static_cast<uint16_t>(joint);
+      const Json& x = (*joints)[i];
+      if (!x.is_number_unsigned() || x.get<unsigned long long>() >= 65536) {
+        int unused = 0;
+        readIndex(r, x, p + ".joints[" + std::to_string(i) + "]", 0, 65536, unused);
+        return false;
+      }
+      prim.influenceJoints[i] = static_cast<uint16_t>(x.get<unsigned long long>());
     }
   }
   if (!readOptionalIndex(r, j, p, "material", static_cast<long long>(scene.materials.size()), prim.material)) return false;
