@@ -345,6 +345,24 @@ TEST(GltfWriter, BezierWithLongHandlesIsResampled) {
   EXPECT_EQ(read<float>(m, m.animations[0].samplers[0].input).size(), 101u);
 }
 
+TEST(GltfWriter, WeightsAreRenormalisedAndInfluencesCheckedAgainstTheSkin) {
+  Scene scene = makeSampleScene();
+  for (float& w : scene.meshes[0].primitives[0].influenceWeights) w *= 2.0f;  // sums of 2
+  const tinygltf::Model m = exportAndParse(scene);
+  const tinygltf::Primitive& p = m.meshes[0].primitives[0];
+  const std::vector<float> w0 = read<float>(m, p.attributes.at("WEIGHTS_0")),
+                           w1 = read<float>(m, p.attributes.at("WEIGHTS_1"));
+  for (int v = 0; v < 8; ++v) {
+    float sum = 0.0f;
+    for (int i = 0; i < 4; ++i) sum += w0[v * 4 + i] + w1[v * 4 + i];
+    EXPECT_NEAR(sum, 1.0f, 1e-6f) << "vertex " << v;
+  }
+  scene.meshes[0].primitives[0].influenceJoints[0] = 8;  // the skin has joints 0..7
+  const Result<std::string> bad = gltfBytes(scene, {});
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.error().find("uses joint 8 of a skin with 8"), std::string::npos) << bad.error();
+}
+
 TEST(GltfWriter, AbsurdResamplingIsRefused) {
   Scene scene = makeSampleScene();
   scene.clips[0].channels[1].times.back() = 1.0e6f;  // the Squad channel, a million seconds long
