@@ -13,6 +13,8 @@ KINEMA_PACKAGES=(build-essential cmake ninja-build pkg-config
   libegl-mesa0 libgl1-mesa-dri libglx-mesa0)
 # The last three are Mesa's EGL, llvmpipe and GLX drivers: they come in today through
 # libegl1 and libgl1, but rendering needs them, so they are named rather than assumed.
+# The Khronos glTF validator (npm package, tests/tools/gltf_validator) runs on node.
+KINEMA_PACKAGES+=(nodejs npm)
 
 kinema_phase_start() { KINEMA_PHASE=$1; KINEMA_PHASE_T0=$(date +%s); echo "== $1"; }
 kinema_phase_end() {

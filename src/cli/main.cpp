@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "cli/command_line.h"
+#include "cli/convert_command.h"
 #include "cli/edit_command.h"
 #include "cli/ik_command.h"
 #include "cli/plot_curves_command.h"
@@ -25,6 +26,8 @@ int main(int argc, char** argv) {
   CLI::App* renderCmd = kinema::cli::addRenderCommand(app, render);
   kinema::cli::EditOptions edit;
   CLI::App* editCmd = kinema::cli::addEditCommand(app, edit);
+  kinema::cli::ConvertOptions convert;
+  CLI::App* convertCmd = kinema::cli::addConvertCommand(app, convert);
 
   try {
     app.parse(argc, argv);
@@ -44,5 +47,6 @@ int main(int argc, char** argv) {
   if (plotCurvesCmd->parsed()) return kinema::cli::runPlotCurves(plotCurves);
   if (renderCmd->parsed()) return kinema::cli::runRender(render);
   if (editCmd->parsed()) return kinema::cli::runEdit(edit);
+  if (convertCmd->parsed()) return kinema::cli::runConvert(convert);
   return kinema::cli::runDefault();
 }

@@ -4,6 +4,7 @@
 #include <stb_image_write.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 
 #include "io/atomic_write.h"
@@ -36,6 +37,32 @@ Result<Image> loadPng(const std::string& path) {
   std::copy(data, data + static_cast<size_t>(w) * h * 4, image.rgba.begin());
   stbi_image_free(data);
   return image;
+}
+
+std::string encodePng(int width, int height, const std::uint8_t* rgba) {
+  std::string bytes;
+  if (width <= 0 || height <= 0) return bytes;
+  auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<size_t>(size));
+  };
+  if (!stbi_write_png_to_func(append, &bytes, width, height, 4, rgba, width * 4)) bytes.clear();
+  return bytes;
+}
+
+bool decodePng(const std::string& bytes, int& width, int& height, std::vector<std::uint8_t>& rgba) {
+  if (bytes.empty() || bytes.size() > static_cast<size_t>(INT32_MAX)) return false;
+  int channels = 0;
+  const auto* bytesIn = reinterpret_cast<const unsigned char*>(bytes.data());
+  // The header's size is checked before decoding: a file must not make us allocate gigabytes.
+  if (!stbi_info_from_memory(bytesIn, static_cast<int>(bytes.size()), &width, &height, &channels) ||
+      static_cast<long long>(width) * height > (1LL << 26))
+    return false;
+  unsigned char* data = stbi_load_from_memory(reinterpret_cast<const unsigned char*>(bytes.data()),
+                                              static_cast<int>(bytes.size()), &width, &height, &channels, 4);
+  if (!data) return false;
+  rgba.assign(data, data + static_cast<size_t>(width) * height * 4);
+  stbi_image_free(data);
+  return true;
 }
 
 }  // namespace kinema

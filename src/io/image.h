@@ -24,5 +24,9 @@ struct Image {
 // PNG through Debian's stb. Saving goes through writeFileAtomically.
 std::string savePng(const std::string& path, const Image& image);
 Result<Image> loadPng(const std::string& path);
+// PNG bytes in memory (glTF embeds textures, .kinema stores them as base64). The pixel
+// arrays are width * height * 4 RGBA bytes, first row at the top.
+std::string encodePng(int width, int height, const std::uint8_t* rgba);  // "" on failure
+bool decodePng(const std::string& bytes, int& width, int& height, std::vector<std::uint8_t>& rgba);
 
 }  // namespace kinema

@@ -1,0 +1,110 @@
+#include "cli/convert_command.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <iostream>
+
+#include "cli/command_line.h"
+#include "io/bvh_writer.h"
+#include "io/gltf_writer.h"
+#include "io/kinema_file.h"
+
+namespace kinema::cli {
+
+namespace {
+
+std::string extensionOf(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  const size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return {};
+  std::string ext = path.substr(dot);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+bool writable(const std::string& ext) { return ext == ".bvh" || ext == ".gltf" || ext == ".glb" || ext == ".kinema"; }
+
+// Clips at least this many frames long show a progress line.
+constexpr long long kLongClipFrames = 500;
+
+// What a BVH file cannot hold, beyond what the writer itself reports.
+std::vector<std::string> bvhLosses(const Scene& scene) {
+  std::vector<std::string> lost;
+  if (!scene.meshes.empty())
+    lost.push_back(std::to_string(scene.meshes.size()) + " mesh(es), their skins and materials dropped (BVH holds a skeleton and one motion)");
+  if (scene.clips.size() > 1)
+    lost.push_back("only clip 0 ('" + scene.clips[0].name + "') written; " + std::to_string(scene.clips.size() - 1) +
+                   " more dropped (BVH holds one motion)");
+  if (!scene.ik.empty()) lost.push_back("IK limits and targets dropped (BVH has no place for them)");
+  return lost;
+}
+
+}  // namespace
+
+CLI::App* addConvertCommand(CLI::App& app, ConvertOptions& o) {
+  CLI::App* cmd = app.add_subcommand("convert", "Convert between .bvh, .gltf, .glb and .kinema (by extension)");
+  cmd->add_option("input", o.input, "The file to read")->required();
+  cmd->add_option("output", o.output, "The file to write (replaced only when the conversion succeeds)")->required();
+  cmd->add_option("--rate", o.rate,
+                  "Frames per second: BVH frame rate, and the rate glTF resamples curves it cannot hold "
+                  "(default: the clip's own)");
+  cmd->add_option("--rotation-order", o.rotationOrder, "Euler order of BVH rotation channels (default ZXY)");
+  return cmd;
+}
+
+int runConvert(const ConvertOptions& o) {
+  const std::string ext = extensionOf(o.output);
+  if (!writable(ext)) {
+    std::cerr << "kinema convert: cannot write '" << ext << "' files (use .bvh, .gltf, .glb or .kinema); see --help\n";
+    return kExitUsage;
+  }
+  const std::optional<EulerOrder> order = eulerOrderFromString(o.rotationOrder);
+  if (!order) {
+    std::cerr << "kinema convert: --rotation-order must be one of XYZ XZY YXZ YZX ZXY ZYX; see --help\n";
+    return kExitUsage;
+  }
+  if (!std::isfinite(o.rate) || o.rate < 0.0) return badInput("--rate must be a positive number of frames per second");
+
+  Result<Scene> loaded = loadScene(o.input);
+  if (!loaded) return badInput(loaded.error());
+  const Scene& scene = loaded.value();
+  for (const std::string& line : scene.warnings) std::cerr << "kinema convert: warning: " << o.input << ": " << line << "\n";
+
+  std::vector<std::string> report;
+  std::string error;
+  if (ext == ".bvh") {
+    report = bvhLosses(scene);
+    BvhWriteOptions options;
+    options.order = *order;
+    options.frameRate = o.rate;
+    const bool tty = isatty(STDERR_FILENO) != 0;
+    bool shown = false;
+    options.progress = [&](long long frame, long long total) {
+      if (total < kLongClipFrames) return;
+      // On a terminal the line updates in place; in a log only the last one is written.
+      if (tty) {
+        std::cerr << "\rconverting: frame " << frame << "/" << total << std::flush;
+        shown = true;
+      } else if (frame == total) {
+        std::cerr << "converting: frame " << frame << "/" << total << "\n";
+      }
+    };
+    error = saveBvh(o.output, scene.skeleton, scene.clips.empty() ? nullptr : &scene.clips[0], options, &report);
+    if (shown) std::cerr << "\n";
+  } else if (ext == ".gltf" || ext == ".glb") {
+    GltfWriteOptions options;
+    options.binary = ext == ".glb";
+    options.resampleRate = o.rate;
+    error = saveGltf(o.output, scene, options, &report);
+  } else {
+    error = saveKinemaFile(o.output, scene);
+  }
+  for (const std::string& line : report) std::cerr << "kinema convert: warning: " << line << "\n";
+  if (!error.empty()) return badInput(error);
+  return kExitOk;
+}
+
+}  // namespace kinema::cli

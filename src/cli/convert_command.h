@@ -1,0 +1,18 @@
+#pragma once
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace kinema::cli {
+
+struct ConvertOptions {
+  std::string input, output;
+  double rate = 0.0;  // frames per second for BVH output and glTF resampling; 0: the clip's
+  std::string rotationOrder = "ZXY";
+};
+
+CLI::App* addConvertCommand(CLI::App& app, ConvertOptions& options);
+// IN -> OUT by extension (.bvh, .gltf, .glb, .kinema). What OUT cannot hold is listed on
+// stderr as "kinema convert: warning: ..." lines; a failure leaves OUT untouched.
+int runConvert(const ConvertOptions& options);
+
+}  // namespace kinema::cli

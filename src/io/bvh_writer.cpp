@@ -1,0 +1,258 @@
+#include "io/bvh_writer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+#include "anim/sampling.h"
+#include "io/atomic_write.h"
+
+namespace kinema {
+
+namespace {
+
+constexpr double kRadToDeg = 57.29577951308232;
+constexpr double kMaxFrames = 1e7;
+
+void appendNumber(std::string& out, double v) {
+  char buf[48];
+  if (std::abs(v) < 5e-7) v = 0.0;  // no "-0.000000"
+  std::snprintf(buf, sizeof buf, "%.6f", v);
+  out += buf;
+}
+
+// The three axis letters of an order, in multiplication order (BVH channel order).
+const char* axes(EulerOrder order) { return toString(order); }
+
+bool unitScale(const glm::vec3& s) { return glm::all(glm::lessThan(glm::abs(s - 1.0f), glm::vec3(1e-5f))); }
+
+// "3 joints: 'a', 'b', 'c'" (the first few named), for report lines.
+std::string jointList(const Skeleton& sk, const std::vector<int>& joints) {
+  std::string out = std::to_string(joints.size()) + (joints.size() == 1 ? " joint: " : " joints: ");
+  for (size_t i = 0; i < joints.size() && i < 4; ++i) out += (i ? ", '" : "'") + sk.names[joints[i]] + "'";
+  if (joints.size() > 4) out += ", ...";
+  return out;
+}
+
+// A name BVH can carry: no whitespace (the format is whitespace separated).
+std::string bvhName(const std::string& name) {
+  std::string out = name;
+  for (char& c : out)
+    if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '{' || c == '}') c = '_';
+  return out;
+}
+
+}  // namespace
+
+double bvhFrameTime(const Clip* clip, double frameRate, bool* uniform) {
+  if (uniform) *uniform = true;
+  if (frameRate > 0.0) return 1.0 / frameRate;
+  if (!clip) return 1.0 / 30.0;
+  if (clip->frameTime > 0.0) return clip->frameTime;
+  // Smallest key interval, accepted when every key lies on its grid.
+  double step = 0.0;
+  for (const Channel& ch : clip->channels)
+    for (int k = 0; k + 1 < ch.keyCount(); ++k) {
+      const double d = double(ch.times[k + 1]) - ch.times[k];
+      if (d > 1e-6 && (step == 0.0 || d < step)) step = d;
+    }
+  if (step == 0.0) return 1.0 / 30.0;
+  // Key times are floats: the whole span divided by its frame count is the better
+  // estimate of the step; then every key must lie on that grid.
+  const double duration = clip->duration();
+  const double frames = std::round(duration / step);
+  if (frames >= 1.0) step = duration / frames;
+  for (const Channel& ch : clip->channels)
+    for (float t : ch.times) {
+      const double n = t / step;
+      if (std::abs(n - std::round(n)) > 1e-3) {
+        if (uniform) *uniform = false;
+        return 1.0 / 30.0;
+      }
+    }
+  return step;
+}
+
+Result<std::string> bvhText(const Skeleton& sk, const Clip* clip, const BvhWriteOptions& options,
+                            std::vector<std::string>* report) {
+  auto note = [&](const std::string& line) {
+    if (report) report->push_back(line);
+  };
+  std::string bad = sk.validate();
+  if (bad.empty() && sk.empty()) bad = "the skeleton has no joints";
+  if (bad.empty() && clip) bad = clip->validate(sk);
+  if (!bad.empty()) return Result<std::string>::failure("cannot write BVH: " + bad);
+  if (!(options.frameRate >= 0.0) || !std::isfinite(options.frameRate))
+    return Result<std::string>::failure("cannot write BVH: the frame rate must be a positive number");
+
+  const int n = sk.size();
+  std::vector<std::vector<int>> children(n);
+  for (int j = 0; j < n; ++j)
+    if (sk.parents[j] >= 0) children[sk.parents[j]].push_back(j);
+  std::vector<bool> translated(n, false), rotated(n, false);
+  std::vector<int> scaledJoints, zeroEndSites, renamed;
+  if (clip)
+    for (const Channel& ch : clip->channels) {
+      if (ch.joint < 0 || ch.times.empty()) continue;
+      if (ch.target == ChannelTarget::Translation) translated[ch.joint] = true;
+      if (ch.target == ChannelTarget::Rotation || ch.target == ChannelTarget::Euler) rotated[ch.joint] = true;
+      if (ch.target == ChannelTarget::Scale)
+        for (const glm::vec4& v : ch.values)
+          if (!unitScale(glm::vec3(v))) {
+            scaledJoints.push_back(ch.joint);
+            break;
+          }
+      if (ch.target == ChannelTarget::Scalar) note("scalar channel '" + ch.property + "' dropped (BVH has none)");
+    }
+  std::vector<bool> endSite(n, false), positions(n, false);
+  for (int j = 0; j < n; ++j) {
+    const int p = sk.parents[j];
+    endSite[j] = p >= 0 && children[j].empty() && !translated[j] && !rotated[j] && sk.names[j] == sk.names[p] + "_End";
+    positions[j] = p < 0 || translated[j];
+    if (!unitScale(sk.rest[j].scale) && !endSite[j]) scaledJoints.push_back(j);
+    if (bvhName(sk.names[j]) != sk.names[j]) renamed.push_back(j);
+  }
+  std::sort(scaledJoints.begin(), scaledJoints.end());
+  scaledJoints.erase(std::unique(scaledJoints.begin(), scaledJoints.end()), scaledJoints.end());
+  if (!scaledJoints.empty()) note("scale dropped (BVH has none): " + jointList(sk, scaledJoints));
+  if (!renamed.empty()) note("whitespace and braces in names written as '_': " + jointList(sk, renamed));
+
+  // HIERARCHY, depth first with an explicit stack (a file controls the depth).
+  std::string out = "HIERARCHY\n";
+  std::vector<int> columnsOf;  // joints with channels, in motion-column order
+  std::vector<std::pair<int, int>> stack;  // (joint, depth)
+  for (int j = n - 1; j >= 0; --j)
+    if (sk.parents[j] < 0) stack.push_back({j, 0});
+  int openDepth = 0;  // number of open braces
+  auto indent = [&](int d) { out.append(static_cast<size_t>(d) * 2, ' '); };
+  auto close = [&](int toDepth) {
+    while (openDepth > toDepth) {
+      --openDepth;
+      indent(openDepth);
+      out += "}\n";
+    }
+  };
+  const std::string order = axes(options.order);
+  while (!stack.empty()) {
+    const auto [j, depth] = stack.back();
+    stack.pop_back();
+    close(depth);
+    const glm::vec3 offset = sk.rest[j].translation;
+    indent(depth);
+    if (endSite[j]) {
+      out += "End Site\n";
+    } else {
+      out += sk.parents[j] < 0 ? "ROOT " : "JOINT ";
+      out += bvhName(sk.names[j]) + "\n";
+    }
+    indent(depth);
+    out += "{\n";
+    ++openDepth;
+    indent(depth + 1);
+    out += "OFFSET ";
+    appendNumber(out, offset.x);
+    out += ' ';
+    appendNumber(out, offset.y);
+    out += ' ';
+    appendNumber(out, offset.z);
+    out += '\n';
+    if (endSite[j]) continue;
+    indent(depth + 1);
+    out += positions[j] ? "CHANNELS 6 Xposition Yposition Zposition" : "CHANNELS 3";
+    for (char axis : order) out += std::string(" ") + axis + "rotation";
+    out += '\n';
+    columnsOf.push_back(j);
+    if (children[j].empty()) {
+      // BVH joints end in an End Site; a zero-length one adds no bone.
+      indent(depth + 1);
+      out += "End Site\n";
+      indent(depth + 1);
+      out += "{\n";
+      indent(depth + 2);
+      out += "OFFSET 0.000000 0.000000 0.000000\n";
+      indent(depth + 1);
+      out += "}\n";
+      zeroEndSites.push_back(j);
+    }
+    for (auto c = children[j].rbegin(); c != children[j].rend(); ++c) stack.push_back({*c, depth + 1});
+  }
+  close(0);
+  if (!zeroEndSites.empty())
+    note("leaves given a zero-length End Site (read back, each adds a '<name>_End' joint): " +
+         jointList(sk, zeroEndSites));
+
+  // MOTION: one line per frame, each joint's local pose sampled at the frame's time.
+  bool uniform = true;
+  const double frameTime = bvhFrameTime(clip, options.frameRate, &uniform);
+  if (!uniform) note("key times are not on one frame grid: sampled at 30 fps");
+  Clip timing;
+  timing.frameTime = frameTime;
+  const double duration = clip ? clip->duration() : 0.0;
+  const double frameCount = std::floor(duration / frameTime + 1e-4) + 1;
+  // A file controls the duration: refuse what would be gigabytes of text.
+  if (!(frameCount <= kMaxFrames))
+    return Result<std::string>::failure("cannot write BVH: " + std::to_string(static_cast<long long>(frameCount)) +
+                                        " frames is more than " + std::to_string(static_cast<long long>(kMaxFrames)));
+  const long long frames = static_cast<long long>(frameCount);
+  if (clip && std::abs(double(timing.frameToTime(frames - 1)) - duration) > 1e-4 * frameTime + 1e-6)
+    note("the clip's end (" + std::to_string(duration) + " s) is not on a frame: the last frame is at " +
+         std::to_string(timing.frameToTime(frames - 1)) + " s");
+  out += "MOTION\nFrames: " + std::to_string(frames) + "\nFrame Time: ";
+  char ft[48];
+  std::snprintf(ft, sizeof ft, "%.9g", frameTime);
+  out += ft;
+  out += '\n';
+
+  // Frames that fall on keys sample at the key's own time: a grid found from float key
+  // times is off by an ulp here and there, enough to move a fast joint by 1e-4.
+  std::map<long long, float> keyAtFrame;
+  if (clip && uniform)
+    for (const Channel& ch : clip->channels)
+      for (float t : ch.times) {
+        const double n = t / frameTime;
+        if (std::abs(n - std::round(n)) < 1e-3) keyAtFrame[std::llround(n)] = t;
+      }
+  auto timeOfFrame = [&](long long f) {
+    const auto it = keyAtFrame.find(f);
+    return it != keyAtFrame.end() ? it->second : timing.frameToTime(f);
+  };
+  Pose pose = Pose::rest(sk);
+  SamplingCache cache;
+  std::vector<glm::vec3> previous(n, glm::vec3(0.0f));
+  for (long long f = 0; f < frames; ++f) {
+    pose.local = sk.rest;
+    if (clip) sampleClip(*clip, timeOfFrame(f), pose, cache);
+    bool first = true;
+    for (int j : columnsOf) {
+      const Transform& t = pose.local[j];
+      if (positions[j])
+        for (int i = 0; i < 3; ++i) {
+          if (!first) out += ' ';
+          first = false;
+          appendNumber(out, t.translation[i]);
+        }
+      glm::vec3 e = quatToEuler(t.rotation, options.order) * float(kRadToDeg);
+      // Each angle within 180 degrees of the last frame's: curves stay continuous.
+      for (int i = 0; i < 3 && f > 0; ++i) e[i] += 360.0f * std::round((previous[j][i] - e[i]) / 360.0f);
+      previous[j] = e;
+      for (char axis : order) {
+        if (!first) out += ' ';
+        first = false;
+        appendNumber(out, e[axis - 'X']);
+      }
+    }
+    out += '\n';
+    if (options.progress && (f % 200 == 199 || f + 1 == frames)) options.progress(f + 1, frames);
+  }
+  return out;
+}
+
+std::string saveBvh(const std::string& path, const Skeleton& skeleton, const Clip* clip,
+                    const BvhWriteOptions& options, std::vector<std::string>* report) {
+  Result<std::string> text = bvhText(skeleton, clip, options, report);
+  if (!text) return path + ": " + text.error();
+  return writeFileAtomically(path, text.value());
+}
+
+}  // namespace kinema

@@ -1,0 +1,39 @@
+#pragma once
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "anim/clip.h"
+#include "core/result.h"
+#include "core/rotation.h"
+#include "core/skeleton.h"
+
+namespace kinema {
+
+struct BvhWriteOptions {
+  EulerOrder order = EulerOrder::ZXY;  // rotation channel order of every joint
+  // Frames per second; 0: the clip's own frame rate, else the spacing of its keys when
+  // they lie on one grid, else 30.
+  double frameRate = 0.0;
+  // Called every few hundred frames with (frames written, total), for progress lines.
+  std::function<void(long long, long long)> progress;
+};
+
+// Skeleton + clip -> BVH text. OFFSETs are the rest translations; every joint gets
+// rotation channels in `order` (rest rotations are folded into them, BVH has none);
+// roots, and joints whose translation is animated, get position channels. Leaves named
+// "<parent>_End" without animation (what our BVH reader makes of End Sites) are written
+// back as End Sites; other leaves get a zero-length End Site. `clip` may be null (one
+// frame of the rest pose). `report` gets one line for each thing BVH cannot hold
+// (scale, scalar channels, renamed joints, resampled keys).
+Result<std::string> bvhText(const Skeleton& skeleton, const Clip* clip, const BvhWriteOptions& options,
+                            std::vector<std::string>* report = nullptr);
+// Writes atomically; returns "" or the one-line error.
+std::string saveBvh(const std::string& path, const Skeleton& skeleton, const Clip* clip,
+                    const BvhWriteOptions& options, std::vector<std::string>* report = nullptr);
+
+// The frame time bvhText uses for `clip` (see BvhWriteOptions::frameRate); `uniform` is
+// false when the keys had to be resampled onto a grid.
+double bvhFrameTime(const Clip* clip, double frameRate, bool* uniform = nullptr);
+
+}  // namespace kinema

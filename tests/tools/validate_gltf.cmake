@@ -1,0 +1,52 @@
+# The gltf_validator test: writes every kind of glTF file Kinema produces (the writer's
+# sample scene, the default character, the shared BVH captures converted, the shared glTF
+# files re-exported directly and through .kinema) and runs the Khronos glTF validator on
+# them. Zero errors required. Prints SKIPPED (CTest's skip pattern for this test) when
+# node or the validator is missing; CMake 3.25 has no cmake_language(EXIT).
+# Inputs: NODE, MODULES (node_modules with gltf-validator), SCRIPT, KINEMA, TESTS,
+# SOURCE_DIR, SHARED_DATA, OUT.
+if(NOT NODE OR NOT EXISTS "${MODULES}/gltf-validator/package.json")
+  message("SKIPPED: the Khronos glTF validator is not installed (needs node and "
+          "`npm install` of tests/tools/gltf_validator/package.json into ${MODULES}/..; .ci/test does it)")
+  return()
+endif()
+file(REMOVE_RECURSE "${OUT}")
+file(MAKE_DIRECTORY "${OUT}")
+
+function(run)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "failed (exit ${rc}): ${ARGN}\n${out}${err}")
+  endif()
+endfunction()
+
+run(${CMAKE_COMMAND} -E env KINEMA_GLTF_SAMPLE_DIR=${OUT} ${TESTS} --gtest_filter=GltfWriterSamples.*)
+run(${KINEMA} convert ${SOURCE_DIR}/assets/default_character.kinema ${OUT}/default_character.gltf)
+run(${KINEMA} convert ${SOURCE_DIR}/assets/default_character.kinema ${OUT}/default_character.glb)
+if(EXISTS "${SHARED_DATA}")
+  file(GLOB bvh_files "${SHARED_DATA}/bvh/*.bvh")
+  foreach(f IN LISTS bvh_files)
+    get_filename_component(name "${f}" NAME_WE)
+    run(${KINEMA} convert ${f} ${OUT}/bvh_${name}.gltf)
+    run(${KINEMA} convert ${f} ${OUT}/bvh_${name}.glb)
+  endforeach()
+  file(GLOB_RECURSE gltf_files "${SHARED_DATA}/gltf/*.gltf" "${SHARED_DATA}/gltf/*.glb")
+  foreach(f IN LISTS gltf_files)
+    get_filename_component(name "${f}" NAME_WE)
+    run(${KINEMA} convert ${f} ${OUT}/gltf_${name}.glb)
+    run(${KINEMA} convert ${f} ${OUT}/gltf_${name}.kinema)
+    run(${KINEMA} convert ${OUT}/gltf_${name}.kinema ${OUT}/gltf_${name}_via_kinema.gltf)
+  endforeach()
+else()
+  message("note: ${SHARED_DATA} is absent; validating the project's own files only")
+endif()
+
+file(GLOB written "${OUT}/*.gltf" "${OUT}/*.glb")
+list(LENGTH written count)
+message("validating ${count} files")
+execute_process(COMMAND ${NODE} ${SCRIPT} ${MODULES} ${written} RESULT_VARIABLE rc)
+if(rc EQUAL 77)
+  return()  # validate_gltf.mjs printed SKIPPED
+elseif(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the glTF validator found errors (see above)")
+endif()
