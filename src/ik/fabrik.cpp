@@ -9,6 +9,7 @@
 #include <algorithm>
 
 #include "ik/ik_chain.h"
+#include "ik/jacobian_step.h"
 
 namespace kinema {
 
@@ -115,6 +116,7 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
   std::vector<int> children(m, 0);
   for (int s = 0; s < m; ++s)
     if (c.parentSlot[s] >= 0) ++children[c.parentSlot[s]];
+  const bool finishWithDls = settings.fabrikFinishAfter > 0 && (c.hasLimits() || c.goals.size() > 1);
   int it = 0;
   while (!c.converged(settings) && it < settings.maxIterations) {
     ++it;
@@ -214,6 +216,20 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
     }
     c.record(trace, it, IkStep::FabrikForward);
     if (c.stalled(c.maxError(), settings)) break;
+    if (finishWithDls && it >= settings.fabrikFinishAfter) break;
+  }
+  // Hybrid finish: with limits or several effectors FABRIK gets close in a few passes and
+  // then crawls (a hinge waiting for twist from a cone above it; two arms leaving a rigid
+  // chest only a residual pull). Damped least squares steps, which move every joint at
+  // once and clamp each to its limit, converge from there in a few iterations.
+  if (finishWithDls && !c.converged(settings) && it < settings.maxIterations) {
+    ik_detail::JacobianStepper stepper(c, ik_detail::JacobianMethod::Dls);
+    while (!c.converged(settings) && it < settings.maxIterations) {
+      ++it;
+      if (!stepper.step(c, settings)) break;
+      c.record(trace, it, IkStep::JacobianStep);
+      if (c.stalled(c.maxError(), settings)) break;
+    }
   }
   return c.result(it, settings);
 }

@@ -73,7 +73,7 @@ TEST_P(SolverProperty, ReachesRandomReachableTargets) {
 std::vector<Case> allCases() {
   std::vector<Case> v;
   for (IkSolver s : {IkSolver::Ccd, IkSolver::Fabrik, IkSolver::JacobianTranspose, IkSolver::JacobianPinv,
-                     IkSolver::JacobianDls})
+                     IkSolver::JacobianDls, IkSolver::JacobianSdls})
     for (int n : {3, 10, 30}) v.push_back({s, n});
   return v;
 }

@@ -9,7 +9,7 @@ namespace kinema {
 namespace {
 
 const IkSolver kIterative[] = {IkSolver::Ccd, IkSolver::Fabrik, IkSolver::JacobianTranspose, IkSolver::JacobianPinv,
-                               IkSolver::JacobianDls};
+                               IkSolver::JacobianDls, IkSolver::JacobianSdls};
 
 IkProblem problemFor(const Skeleton& s, Pose& pose, int effector, const glm::vec3& target) {
   IkProblem p;
@@ -51,7 +51,7 @@ TEST(IkSolvers, NoNanOverRandomAndDegenerateTargets) {
   std::mt19937 rng(99);
   std::uniform_real_distribution<float> u(-6.0f, 6.0f);
   const IkSolver all[] = {IkSolver::TwoBone, IkSolver::Ccd, IkSolver::Fabrik, IkSolver::JacobianTranspose,
-                          IkSolver::JacobianPinv, IkSolver::JacobianDls};
+                          IkSolver::JacobianPinv, IkSolver::JacobianDls, IkSolver::JacobianSdls};
   const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
   for (int k = 0; k < cases; ++k) {
     Skeleton s = test::makeChain(4, &rng);
@@ -66,7 +66,7 @@ TEST(IkSolvers, NoNanOverRandomAndDegenerateTargets) {
     IkProblem p = problemFor(s, pose, 3, target);
     IkSettings settings;
     settings.maxIterations = 10;
-    const IkSolver solver = all[k % 6];
+    const IkSolver solver = all[k % 7];
     const IkResult r = solveIk(solver, p, settings);
     if (bad) {
       ASSERT_FALSE(r.message.empty());
@@ -96,7 +96,8 @@ Skeleton twoArms() {
 TEST(IkSolvers, TwoHandsReachTwoTargetsWithASharedSpine) {
   const Skeleton s = twoArms();
   const int cases = test::propertyCases(100);
-  for (IkSolver solver : {IkSolver::Fabrik, IkSolver::Ccd, IkSolver::JacobianDls, IkSolver::JacobianPinv}) {
+  for (IkSolver solver : {IkSolver::Fabrik, IkSolver::JacobianDls, IkSolver::JacobianPinv, IkSolver::JacobianSdls,
+                          IkSolver::Ccd}) {
     std::mt19937 rng(5);
     int converged = 0;
     for (int k = 0; k < cases; ++k) {
@@ -107,10 +108,14 @@ TEST(IkSolvers, TwoHandsReachTwoTargetsWithASharedSpine) {
       p.targets.push_back({});
       p.targets[1].effector = 8;
       p.targets[1].position = test::worldPosition(s, goal, 8);
+      // The default settings (cap of 100 iterations, stall stop on) but for the
+      // tolerance; CCD, which needs far more sweeps for two hands, gets 500.
       IkSettings settings;
       settings.tolerance = 1e-3f * 4.4f;
-      settings.maxIterations = 500;
-      settings.stallFraction = 0.0f;
+      if (solver == IkSolver::Ccd) {
+        settings.maxIterations = 500;
+        settings.stallFraction = 0.0f;
+      }
       const IkResult r = solveIk(solver, p, settings);
       ASSERT_TRUE(r.message.empty()) << r.message;
       for (int i = 0; i < s.size(); ++i) ASSERT_TRUE(pose.local[i].isFinite()) << toString(solver) << " joint " << i;
@@ -127,11 +132,10 @@ TEST(IkSolvers, TwoHandsReachTwoTargetsWithASharedSpine) {
       for (int i = 0; i < s.size(); ++i) EXPECT_EQ(pose.local[i].translation, before.local[i].translation);
     }
     // The targets come from one pose of the whole rig, so both are reachable at once.
-    // FABRIK fits the rigid chest to both arms in its backward pass: 1000/1000 cases
-    // within 500 passes (943 within 100). With the paper's plain centroid of per-arm
-    // proposals instead it reached only 51 % here, so this bar catches that loss.
-    const int percent = 99;
-    EXPECT_GE(converged, (cases * percent + 99) / 100) << toString(solver) << ": " << converged << "/" << cases;
+    // FABRIK fits the rigid chest to both arms in its backward pass and finishes with
+    // DLS steps after 10 passes; with passes alone it reached 94.3 % within 100 (and only
+    // 51 % within 500 with the paper's plain centroid of per-arm proposals for the chest).
+    EXPECT_GE(converged, (cases * 99 + 99) / 100) << toString(solver) << ": " << converged << "/" << cases;
     std::printf("[ two hands ] %-14s converged %d/%d\n", toString(solver), converged, cases);
   }
 }
@@ -213,15 +217,11 @@ TEST(IkSolvers, EverySolverHonoursJointLimits) {
               << toString(solver) << " joint " << i;
       }
       std::printf("[ limits ] %-6s %-20s converged %d/%d\n", kindName[kind], toString(solver), converged, cases);
-      // The bar is 99 %. Known short of it (measured with 200 cases, see the
-      // README): FABRIK with the three kinds mixed (76 % within 500 passes, 97 % within
-      // 3000 with no stall stop: slow where a hinge needs twist from a cone above); CCD
-      // (94.5-99.5 %) and the Jacobian transpose (91-98 %), which stall against limits.
-      // DLS and the pseudo-inverse: 100 %. FABRIK with hinges or cones alone: 100 %; with
-      // Euler ranges alone: 98.5 % here (3 of 200 stall), 100 % with another target set.
+      // The bar is 99 %. FABRIK reaches it with its DLS finish (passes alone: 76 %
+      // with the three kinds mixed, slow where a hinge needs twist from a cone above).
+      // Known short of it (measured with 200 cases, see the README): CCD (96-99 %) and
+      // the Jacobian transpose (92-98 %), which stall against limits.
       int percent = 99;
-      if (solver == IkSolver::Fabrik && kind == 0) percent = 72;  // 47 % with the backward re-projection switched off
-      if (solver == IkSolver::Fabrik && kind == 2) percent = 95;
       if (solver == IkSolver::Ccd || solver == IkSolver::JacobianTranspose) percent = 85;
       EXPECT_GE(converged, (cases * percent + 99) / 100)
           << kindName[kind] << " limits: " << toString(solver) << " converged " << converged << "/" << cases;
