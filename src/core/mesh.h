@@ -63,12 +63,12 @@ struct MeshInstance {
 struct Material {
   std::string name;
   glm::vec4 baseColor{1.0f};
-  int baseColorTexture = -1;  // index into Scene::textures, or -1
+  int baseColorImage = -1;  // index into Scene::images (TextureImage), or -1
   bool doubleSided = false;
 };
 
 // A decoded RGBA8 image (glTF base-colour textures).
-struct Texture {
+struct TextureImage {
   std::string name;
   int width = 0, height = 0;
   std::vector<uint8_t> rgba;  // width * height * 4, first row at the top
