@@ -27,7 +27,7 @@ struct Scene {
   std::vector<Skin> skins;
   std::vector<MeshInstance> meshInstances;
   std::vector<Material> materials;
-  std::vector<Texture> textures;
+  std::vector<TextureImage> images;
 
   // The file index of each joint: nodeOfJoint when present, else the joint index.
   int fileIndexOf(int joint) const { return nodeOfJoint.empty() ? joint : nodeOfJoint[joint]; }
