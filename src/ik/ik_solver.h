@@ -28,8 +28,9 @@ struct IkSettings {
   // Jacobian transpose: search the step length on the true error (backtracking from
   // Buss's step, expanding while it pays) instead of taking Buss's step as it is.
   bool transposeLineSearch = false;
-  // FABRIK with limits or several effectors: after this many passes without converging,
-  // finish with damped least squares steps (see fabrik.cpp); 0 = FABRIK passes only.
+  // FABRIK with limits or several effectors: after at most this many passes (fewer once a
+  // pass gains < 20 %), finish with damped least squares steps (see fabrik.cpp); 0 = FABRIK
+  // passes only, however slow.
   int fabrikFinishAfter = 10;
   float twoBoneSoften = 0.0f;      // two-bone: soften distance near full extension
   IkTrace* trace = nullptr;        // records every step when set; nullptr costs nothing

@@ -318,6 +318,83 @@ TEST(IkSolvers, TraceRecordsEveryStepAndChangesNothing) {
   }
 }
 
+// The transpose's line search only takes steps that lower the true error (with one target
+// the traced error never rises), and each of its steps ends no worse than Buss's step
+// from the same pose, since Buss's step is its first trial.
+TEST(IkSolvers, TransposeLineSearchNeverRaisesTheError) {
+  std::mt19937 rng(31);
+  const Skeleton s = test::makeChain(10, &rng);
+  const float chain = test::chainLength(s);
+  for (int k = 0; k < 50; ++k) {
+    Pose pose = test::randomPose(s, rng, 0.6f);
+    IkProblem p = problemFor(s, pose, 9, test::worldPosition(s, test::randomPose(s, rng, 0.6f), 9));
+    IkTrace trace;
+    IkSettings settings;
+    settings.tolerance = 1e-3f * chain;
+    settings.maxIterations = 300;
+    settings.transposeLineSearch = true;
+    settings.trace = &trace;
+    const IkResult r = solveJacobianTranspose(p, settings);
+    ASSERT_TRUE(r.message.empty());
+    for (size_t i = 1; i < trace.entries.size(); ++i)
+      ASSERT_LE(trace.entries[i].error, trace.entries[i - 1].error * (1.0f + 1e-5f)) << "case " << k << " step " << i;
+    // One step each from the same random pose.
+    const Pose start = test::randomPose(s, rng, 1.2f);
+    const glm::vec3 target = test::worldPosition(s, test::randomPose(s, rng, 1.2f), 9);
+    Pose a = start, b = start;
+    IkProblem pa = problemFor(s, a, 9, target), pb = problemFor(s, b, 9, target);
+    IkSettings one;
+    one.maxIterations = 1;
+    const float buss = solveJacobianTranspose(pa, one).error;
+    one.transposeLineSearch = true;
+    const float searched = solveJacobianTranspose(pb, one).error;
+    EXPECT_LE(searched, buss * (1.0f + 1e-5f)) << "case " << k;
+  }
+}
+
+// FABRIK's hybrid finish, step by step: pairs of passes first, then DLS steps, counted as
+// iterations; with fabrikFinishAfter = 0 the trace holds passes only.
+TEST(IkSolvers, FabrikFinishesWithDlsStepsOnlyWhereAllowed) {
+  std::mt19937 rng(11);
+  const Skeleton s = test::makeChain(10, &rng);
+  IkRig rig;
+  for (int i = 0; i < s.size(); ++i) rig.setLimit(s.size(), i, limitFor(0, i));
+  int sawFinish = 0;
+  for (int k = 0; k < 40; ++k) {
+    Pose goal = test::randomPose(s, rng, 0.8f);
+    for (int i = 0; i < s.size(); ++i)
+      goal.local[i].rotation = applyJointLimit(rig.limits[i], s.rest[i].rotation, goal.local[i].rotation);
+    for (int finishAfter : {10, 0}) {
+      Pose pose = Pose::rest(s);
+      IkProblem p = problemFor(s, pose, 9, test::worldPosition(s, goal, 9));
+      p.rig = &rig;
+      IkTrace trace;
+      IkSettings settings;
+      settings.tolerance = 1e-3f * test::chainLength(s);
+      settings.fabrikFinishAfter = finishAfter;
+      settings.trace = &trace;
+      const IkResult r = solveFabrik(p, settings);
+      ASSERT_TRUE(r.message.empty());
+      int passes = 0, steps = 0;
+      for (size_t i = 1; i < trace.entries.size(); ++i) {
+        const IkStep st = trace.entries[i].step;
+        if (st == IkStep::FabrikForward) ++passes;
+        if (st == IkStep::JacobianStep) {
+          ++steps;
+        } else {
+          ASSERT_EQ(steps, 0) << "a FABRIK pass after the DLS finish began, case " << k;
+        }
+      }
+      EXPECT_EQ(passes + steps, r.iterations) << "case " << k;
+      EXPECT_EQ(trace.entries.back().iteration, r.iterations);
+      if (finishAfter == 0) EXPECT_EQ(steps, 0);
+      else EXPECT_LE(passes, 10);
+      if (finishAfter != 0 && steps > 0) ++sawFinish;
+    }
+  }
+  EXPECT_GT(sawFinish, 0) << "no case needed the finish: the test does not exercise it";
+}
+
 TEST(IkSolvers, BadInputIsReportedAndTheposeIsLeftAlone) {
   const Skeleton s = test::makeChain(4);
   Pose pose = Pose::rest(s);
