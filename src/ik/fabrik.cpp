@@ -4,7 +4,8 @@
 // one rigid body, fitted to their backward positions (see rigidFit).
 // The forward pass turns positions into local rotations as it goes (the minimal rotation
 // of each bone, so no spurious twist), clamping each joint to its limit before its
-// children are placed: bones keep their length exactly and limits always hold.
+// children are placed: bones keep their length exactly and limits always hold; a joint
+// above a hinge is twisted so the hinge's plane holds its target (twistForHingeChild).
 // With limits or several effectors the passes alone crawl (or stall) near the goal, so
 // the solver is a documented hybrid there: FABRIK passes while each gains >= 20 % (at
 // most IkSettings::fabrikFinishAfter), then damped least squares steps finish.
@@ -110,6 +111,38 @@ glm::vec3 rigidFit(const IkChain& c, int s, const std::vector<glm::vec3>& reache
 }
 
 constexpr float kSlowPass = 0.8f;  // a pass that keeps more than this of the error is slow
+
+// A hinge child can bend its bone only in the plane normal to its axis, and that axis
+// turns with this joint's twist about its own bone, which a minimal rotation never
+// changes. Twist (by the smallest angle) so that the plane holds the child's next
+// backward position; when no twist can, leave the rotation alone.
+glm::quat twistForHingeChild(const IkChain& c, int s, const glm::quat& parentRot, const glm::quat& local,
+                             const std::vector<glm::vec3>& reached) {
+  const int k = s + 1;  // the only child (one child: the next slot in preorder)
+  if (k >= s + c.subtreeSize[s] || !c.limit[k] || c.limit[k]->type != JointLimitType::Hinge) return local;
+  if (c.subtreeSize[k] < 2) return local;
+  const int g = k + 1;  // k's first child
+  const glm::quat world = parentRot * local;
+  const glm::vec3 pk = c.position(s) + world * c.pose->local[c.joints[k]].translation;
+  const glm::vec3 bone = pk - c.position(s);
+  const float bl = glm::length(bone);
+  if (!(bl > 1e-9f)) return local;
+  const glm::vec3 b = bone / bl;
+  const glm::vec3 a = world * (c.skeleton->rest[c.joints[k]].rotation * c.limit[k]->axis);
+  const glm::vec3 w = reached[g] - pk;
+  // a(phi) . w = A + B cos(phi) + C sin(phi), rotating a about b by phi.
+  const glm::vec3 along = glm::dot(a, b) * b, across = a - along;
+  const float A = glm::dot(along, w), B = glm::dot(across, w), C = glm::dot(glm::cross(b, across), w);
+  const float r = std::sqrt(B * B + C * C);
+  if (!(r > 1e-9f) || std::abs(A) > r) return local;
+  const float base = std::atan2(C, B), off = std::acos(std::clamp(-A / r, -1.0f, 1.0f));
+  float phi = base + off, other = base - off;
+  auto wrap = [](float x) { return std::remainder(x, glm::two_pi<float>()); };
+  phi = wrap(phi);
+  other = wrap(other);
+  if (std::abs(other) < std::abs(phi)) phi = other;
+  return safeNormalize(glm::conjugate(parentRot) * glm::angleAxis(phi, b) * world);
+}
 
 }  // namespace
 
@@ -239,6 +272,7 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
         continue;
       }
       local = safeNormalize(local);
+      if (from.size() == 1) local = twistForHingeChild(c, s, parentRot, local, reached);
       if (c.limit[s]) local = applyJointLimit(*c.limit[s], c.skeleton->rest[c.joints[s]].rotation, local);
       c.pose->local[c.joints[s]].rotation = local;
       c.forwardSlot(s);

@@ -252,6 +252,7 @@ TEST(IkSolvers, EverySolverHonoursJointLimits) {
     for (int i = 0; i < s.size(); ++i) rig.setLimit(s.size(), i, limitFor(kind, i));
     const float chain = test::chainLength(s);
     for (IkSolver solver : kIterative) {
+     for (int passesOnly = 0; passesOnly < (solver == IkSolver::Fabrik ? 2 : 1); ++passesOnly) {
       std::mt19937 targets(11 + kind);
       int converged = 0;
       for (int k = 0; k < cases; ++k) {
@@ -265,21 +266,25 @@ TEST(IkSolvers, EverySolverHonoursJointLimits) {
         IkSettings settings;
         settings.tolerance = 1e-3f * chain;
         settings.maxIterations = solver == IkSolver::JacobianTranspose ? 5000 : 500;
+        if (passesOnly) settings.fabrikFinishAfter = 0;  // for the record: FABRIK without its DLS finish
         const IkResult r = solveIk(solver, p, settings);
         converged += r.converged;
         for (int i = 0; i < s.size(); ++i)
           EXPECT_LE(jointLimitViolation(rig.limits[i], s.rest[i].rotation, pose.local[i].rotation), 1e-3f)
               << toString(solver) << " joint " << i;
       }
-      std::printf("[ limits ] %-6s %-20s converged %d/%d\n", kindName[kind], toString(solver), converged, cases);
-      // The bar is 99 %. FABRIK reaches it with its DLS finish (passes alone: 76 %
-      // with the three kinds mixed, slow where a hinge needs twist from a cone above).
-      // Known short of it (measured with 200 cases, see the README): CCD (96-99 %) and
-      // the Jacobian transpose (92-98 %), which stall against limits.
+      std::printf("[ limits ] %-6s %-20s converged %d/%d%s\n", kindName[kind], toString(solver), converged, cases,
+                  passesOnly ? " (passes only)" : "");
+      if (passesOnly) continue;
+      // The bar is 99 %. FABRIK reaches it with its DLS finish (passes alone, 1000
+      // cases: 86 % with the three kinds mixed, 80.5 % before the hinge twist). Known short
+      // of it (1000 cases, see the README): CCD (95-99.7 %) and the Jacobian transpose
+      // (92.6-97.8 %), which stall against limits.
       int percent = 99;
       if (solver == IkSolver::Ccd || solver == IkSolver::JacobianTranspose) percent = 85;
       EXPECT_GE(converged, (cases * percent + 99) / 100)
           << kindName[kind] << " limits: " << toString(solver) << " converged " << converged << "/" << cases;
+     }
     }
   }
 }
