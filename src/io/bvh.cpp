@@ -82,7 +82,8 @@ bool parseFloat(const char* begin, const char* end, float& out) {
 
 class BvhParser {
  public:
-  BvhParser(const std::string& text, const std::string& source) : source_(source) {
+  BvhParser(const std::string& text, const std::string& source, const InputLimits& limits)
+      : source_(source), limits_(limits) {
     splitLines(text, lines_);
     endsWithNewline_ = !text.empty() && (text.back() == '\n' || text.back() == '\r');
   }
@@ -226,6 +227,10 @@ class BvhParser {
         if (!readOffset(j.offset, j.name)) return false;
         if (!readChannels(j)) return false;
       }
+      if (static_cast<long long>(data_.joints.size()) >= limits_.maxJoints)
+        return fail(t.line, "the hierarchy has " +
+                                limitExceeded(static_cast<long long>(data_.joints.size()) + 1, limits_.maxJoints,
+                                              "joints or more", "maxJoints"));
       data_.joints.push_back(std::move(j));
       open.push_back(static_cast<int>(data_.joints.size()) - 1);
     }
@@ -281,11 +286,18 @@ class BvhParser {
     if (!readHeader(l, "Frames:", frames)) return false;
     if (frames < 0 || frames != std::floor(frames) || frames > 1e9)
       return fail(static_cast<int>(l), "Frames must be a whole number >= 0");
+    const long long keys = static_cast<long long>(frames) * data_.channelCount;
+    if (keys > limits_.maxKeys)
+      return fail(static_cast<int>(l), "Frames x channels = " + limitExceeded(keys, limits_.maxKeys, "keys", "maxKeys"));
     if (!readHeader(l, "Frame Time:", frameTime)) return false;
     if (!(frameTime > 0)) return fail(static_cast<int>(l), "Frame Time must be positive");
+    // Key times are floats: the last one, (Frames - 1) x Frame Time, must be finite too.
+    if (frameTime * std::max(frames - 1.0, 1.0) > static_cast<double>(std::numeric_limits<float>::max()))
+      return fail(static_cast<int>(l), "Frame Time x Frames is beyond the float range of key times");
     data_.frameCount = static_cast<int>(frames);
     data_.frameTime = frameTime;
     const size_t cols = static_cast<size_t>(data_.channelCount);
+
     // Reserve only what the file can hold, whatever Frames claims.
     data_.motion.reserve(std::min<size_t>(static_cast<size_t>(frames), lines_.size()) * cols);
     int frame = 0;
@@ -320,6 +332,7 @@ class BvhParser {
   }
 
   std::string source_;
+  InputLimits limits_;
   std::vector<std::string> lines_;
   std::vector<Token> tokens_;
   size_t pos_ = 0;
@@ -333,15 +346,15 @@ class BvhParser {
 
 }  // namespace
 
-Result<BvhData> parseBvh(const std::string& text, const std::string& source) {
-  return BvhParser(text, source).parse();
+Result<BvhData> parseBvh(const std::string& text, const std::string& source, const InputLimits& limits) {
+  return BvhParser(text, source, limits).parse();
 }
 
-Result<BvhData> loadBvh(const std::string& path) {
+Result<BvhData> loadBvh(const std::string& path, const InputLimits& limits) {
   std::string text;
-  std::string error = readTextFile(path, text);
+  std::string error = readTextFile(path, text, limits.maxFileBytes);
   if (!error.empty()) return Result<BvhData>::failure(error);
-  return parseBvh(text, path);
+  return parseBvh(text, path, limits);
 }
 
 Skeleton BvhData::skeleton() const {

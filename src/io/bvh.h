@@ -6,6 +6,7 @@
 #include "core/result.h"
 #include "core/rotation.h"
 #include "core/skeleton.h"
+#include "io/input_limits.h"
 
 namespace kinema {
 
@@ -44,7 +45,8 @@ struct BvhData {
 // Parses BVH text. `source` names the file in error messages ("walk.bvh:12: ...").
 // Accepts CRLF and tabs, any channel order on any joint, several ROOTs, and frame times
 // written like ".0083333". Errors are one line naming the file and line.
-Result<BvhData> parseBvh(const std::string& text, const std::string& source);
-Result<BvhData> loadBvh(const std::string& path);
+// `limits` caps the joint count and frames x channels before anything is allocated.
+Result<BvhData> parseBvh(const std::string& text, const std::string& source, const InputLimits& limits = {});
+Result<BvhData> loadBvh(const std::string& path, const InputLimits& limits = {});
 
 }  // namespace kinema

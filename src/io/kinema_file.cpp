@@ -1,5 +1,6 @@
 #include "io/kinema_file.h"
 
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -89,8 +90,10 @@ std::string oneLine(const std::string& s) {
 // Reads with the JSON path of every value at hand, so errors can point at it.
 class Reader {
  public:
-  explicit Reader(std::string source) : source_(std::move(source)) {}
+  explicit Reader(std::string source, const InputLimits& limits = {})
+      : limits(limits), source_(std::move(source)) {}
   const std::string& error() const { return error_; }
+  const InputLimits limits;
 
   bool fail(const std::string& path, const std::string& what) {
     error_ = oneLine(source_ + ": " + (path.empty() ? "" : path + ": ") + what);
@@ -161,6 +164,9 @@ bool readSkeleton(Reader& r, const Json& root, Skeleton& s) {
   const Json* joints = r.member(*sk, "skeleton", "joints", true);
   if (!joints) return false;
   if (!joints->is_array()) return r.fail("skeleton.joints", "expected an array");
+  if (joints->size() > static_cast<size_t>(r.limits.maxJoints))
+    return r.fail("skeleton.joints",
+                  limitExceeded(static_cast<long long>(joints->size()), r.limits.maxJoints, "joints", "maxJoints"));
   for (size_t i = 0; i < joints->size(); ++i) {
     const std::string p = "skeleton.joints[" + std::to_string(i) + "]";
     const Json& j = (*joints)[i];
@@ -530,6 +536,12 @@ bool readClips(Reader& r, const Json& root, Scene& scene) {
     const Json* channels = r.member(j, p, "channels", true);
     if (!channels) return false;
     if (!channels->is_array()) return r.fail(p + ".channels", "expected an array");
+    long long keys = 0;  // counted before any channel is read
+    for (const Json& c : *channels)
+      if (const Json* t = c.is_object() && c.contains("times") ? &c["times"] : nullptr; t && t->is_array())
+        keys += static_cast<long long>(t->size());
+    if (keys > r.limits.maxKeys)
+      return r.fail(p + ".channels", limitExceeded(keys, r.limits.maxKeys, "keys", "maxKeys"));
     for (size_t k = 0; k < channels->size(); ++k) {
       Channel ch;
       if (!readChannel(r, (*channels)[k], p + ".channels[" + std::to_string(k) + "]", scene.skeleton, ch))
@@ -623,14 +635,39 @@ std::string toKinemaJson(const Scene& scene) {
   return collapseNumberArrays(root.dump(1, '\t')) + "\n";
 }
 
-Result<Scene> parseKinemaJson(const std::string& text, const std::string& source) {
+// The deepest nesting of [ and { outside strings, scanned before parsing so that a file
+// of a million '[' is refused without building anything.
+int jsonNestingDepth(const std::string& text) {
+  int depth = 0, deepest = 0;
+  bool inString = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (inString) {
+      if (c == '\\') ++i;
+      else if (c == '"') inString = false;
+    } else if (c == '"') {
+      inString = true;
+    } else if (c == '[' || c == '{') {
+      deepest = std::max(deepest, ++depth);
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return deepest;
+}
+
+Result<Scene> parseKinemaJson(const std::string& text, const std::string& source, const InputLimits& limits) {
+  const int depth = jsonNestingDepth(text);
+  if (depth > limits.maxJsonDepth)
+    return Result<Scene>::failure(
+        source + ": JSON nested " + limitExceeded(depth, limits.maxJsonDepth, "levels deep", "maxJsonDepth"));
   Json root;
   try {
     root = Json::parse(text);
   } catch (const Json::exception& e) {
     return Result<Scene>::failure(oneLine(source + ": not valid JSON: " + e.what()));
   }
-  Reader r(source);
+  Reader r(source, limits);
   if (!root.is_object()) return Result<Scene>::failure(source + ": expected a JSON object at the top");
   std::string format;
   const Json* v;
@@ -659,6 +696,11 @@ Result<Scene> parseKinemaJson(const std::string& text, const std::string& source
 }
 
 Result<IkRig> parseIkRigJson(const std::string& text, const std::string& source, const Skeleton& skeleton) {
+  const InputLimits limits;
+  const int depth = jsonNestingDepth(text);
+  if (depth > limits.maxJsonDepth)
+    return Result<IkRig>::failure(
+        source + ": JSON nested " + limitExceeded(depth, limits.maxJsonDepth, "levels deep", "maxJsonDepth"));
   Json root;
   try {
     root = Json::parse(text);
@@ -672,11 +714,11 @@ Result<IkRig> parseIkRigJson(const std::string& text, const std::string& source,
   return std::move(scene.ik);
 }
 
-Result<Scene> loadKinemaFile(const std::string& path) {
+Result<Scene> loadKinemaFile(const std::string& path, const InputLimits& limits) {
   std::string text;
-  const std::string error = readTextFile(path, text);
+  const std::string error = readTextFile(path, text, limits.maxFileBytes);
   if (!error.empty()) return Result<Scene>::failure(error);
-  return parseKinemaJson(text, path);
+  return parseKinemaJson(text, path, limits);
 }
 
 std::string saveKinemaFile(const std::string& path, const Scene& scene) {

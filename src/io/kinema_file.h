@@ -1,6 +1,7 @@
 #pragma once
 #include <string>
 
+#include "io/input_limits.h"
 #include "io/scene.h"
 
 namespace kinema {
@@ -11,9 +12,10 @@ constexpr int kKinemaFormatVersion = 1;
 std::string toKinemaJson(const Scene& scene);
 // `source` names the file in error messages, which also give the JSON path
 // ("walk.kinema: skeleton.joints[3].parent: ...").
-Result<Scene> parseKinemaJson(const std::string& text, const std::string& source);
+// `limits` caps the nesting depth, joints and keys per clip before they are read.
+Result<Scene> parseKinemaJson(const std::string& text, const std::string& source, const InputLimits& limits = {});
 
-Result<Scene> loadKinemaFile(const std::string& path);
+Result<Scene> loadKinemaFile(const std::string& path, const InputLimits& limits = {});
 // An IK rig file: {"limits": [...], "targets": [...]}, the schema of a .kinema file's
 // "ik" key, with joints named in `skeleton`.
 Result<IkRig> parseIkRigJson(const std::string& text, const std::string& source, const Skeleton& skeleton);

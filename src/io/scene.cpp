@@ -19,10 +19,10 @@ std::string lowerExtension(const std::string& path) {
 }
 }  // namespace
 
-Result<Scene> loadScene(const std::string& path) {
+Result<Scene> loadScene(const std::string& path, const InputLimits& limits) {
   const std::string ext = lowerExtension(path);
   if (ext == ".bvh") {
-    Result<BvhData> bvh = loadBvh(path);
+    Result<BvhData> bvh = loadBvh(path, limits);
     if (!bvh) return Result<Scene>::failure(bvh.error());
     Scene scene;
     scene.source = path;
@@ -30,7 +30,7 @@ Result<Scene> loadScene(const std::string& path) {
     scene.clips.push_back(bvh->clip());
     return scene;
   }
-  if (ext == ".kinema") return loadKinemaFile(path);
+  if (ext == ".kinema") return loadKinemaFile(path, limits);
   return Result<Scene>::failure(path + ": unsupported file type '" + ext +
                                 "' (Kinema reads .bvh and .kinema)");
 }

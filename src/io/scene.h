@@ -7,6 +7,7 @@
 #include "core/mesh.h"
 #include "core/skeleton.h"
 #include "ik/ik_rig.h"
+#include "io/input_limits.h"
 
 namespace kinema {
 
@@ -34,6 +35,6 @@ struct Scene {
 };
 
 // Loads .bvh or .kinema, chosen by the file's extension.
-Result<Scene> loadScene(const std::string& path);
+Result<Scene> loadScene(const std::string& path, const InputLimits& limits = {});
 
 }  // namespace kinema

@@ -3,17 +3,30 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <string>
 #include <sys/stat.h>
 
 namespace kinema {
 
-std::string readTextFile(const std::string& path, std::string& out) {
+std::string readTextFile(const std::string& path, std::string& out, size_t maxBytes) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0) return path + ": " + std::strerror(errno);
   if (S_ISDIR(st.st_mode)) return path + ": is a directory, not a file";
+  if (S_ISREG(st.st_mode) && static_cast<unsigned long long>(st.st_size) > maxBytes)
+    return path + ": the file is " + std::to_string(st.st_size) + " bytes, more than the limit of " +
+           std::to_string(maxBytes) + " (InputLimits::maxFileBytes)";
   std::ifstream in(path, std::ios::binary);
   if (!in) return path + ": cannot open for reading";
-  out.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  // Read in chunks and stop at the limit: pipes and devices (/dev/zero) have no size.
+  out.clear();
+  char buffer[1 << 16];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    out.append(buffer, static_cast<size_t>(in.gcount()));
+    if (out.size() > maxBytes) {
+      out.clear();
+      return path + ": more than " + std::to_string(maxBytes) + " bytes, the limit (InputLimits::maxFileBytes)";
+    }
+  }
   if (in.bad()) return path + ": read error";
   return {};
 }

@@ -1,11 +1,13 @@
 #pragma once
+#include <cstddef>
 #include <string>
 #include <vector>
 
 namespace kinema {
 
 // Reads a whole file; returns an empty string on success or "PATH: reason" on failure.
-std::string readTextFile(const std::string& path, std::string& out);
+// Files larger than maxBytes are refused before anything is read.
+std::string readTextFile(const std::string& path, std::string& out, size_t maxBytes = size_t(2) << 30);
 
 // Splits on \n, \r\n and lone \r; the line ends are dropped.
 void splitLines(const std::string& text, std::vector<std::string>& lines);

@@ -1,6 +1,6 @@
 // Writes the fuzz seed corpus from the project's own code: small valid BVH files of every
 // shape the reader supports, .kinema files made by the writer, and binary clip inputs.
-//   make_fuzz_corpus OUT_DIR   (creates OUT_DIR/bvh, OUT_DIR/kinema, OUT_DIR/sampling)
+//   make_fuzz_corpus OUT_DIR   (creates OUT_DIR/bvh, OUT_DIR/kinema, OUT_DIR/sampling, OUT_DIR/ik)
 #include <sys/stat.h>
 
 #include <cstdio>
@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   const std::string out = argv[1];
-  for (const char* sub : {"", "/bvh", "/kinema", "/sampling"}) ::mkdir((out + sub).c_str(), 0755);
+  for (const char* sub : {"", "/bvh", "/kinema", "/sampling", "/ik"}) ::mkdir((out + sub).c_str(), 0755);
 
   const char* orders[] = {"XYZ", "XZY", "YXZ", "YZX", "ZXY", "ZYX"};
   int n = 0;
@@ -108,6 +108,20 @@ int main(int argc, char** argv) {
   clipInput("rotation_linear", 1, 1, {0, 0, 0, 0, 1, 1, 0, 0.7071f, 0, 0.7071f, 0.5f});
   clipInput("translation_step", 0, 0, {0, 1, 2, 3, 0, 2, -1, 0, 5, 0, 1.5f});
   clipInput("scale_linear_three_keys", 2, 1, {0, 1, 1, 1, 0, 1, 2, 2, 2, 0, 3, 1, 1, 1, 0, 2.9f});
+  // IK inputs (fuzz_ik): [solver][joints - 2][flags], then per joint an offset (x, y, z),
+  // per joint a rotation (x, y, z, w), the target (x, y, z), and [max iterations].
+  for (std::uint8_t solver = 0; solver < 6; ++solver) {
+    for (std::uint8_t flags : {std::uint8_t(0), std::uint8_t(1)}) {  // a chain; a branch at joint 1
+      std::string bytes{static_cast<char>(solver), 2, static_cast<char>(flags)};
+      std::vector<float> floats;
+      for (int j = 0; j < 4; ++j) floats.insert(floats.end(), {0.0f, j ? 1.0f : 0.0f, 0.0f});
+      for (int j = 0; j < 4; ++j) floats.insert(floats.end(), {0.0f, 0.0f, 0.38268343f, 0.9238795f});
+      floats.insert(floats.end(), {1.2f, 1.5f, 0.3f});
+      bytes.append(reinterpret_cast<const char*>(floats.data()), floats.size() * sizeof(float));
+      bytes += static_cast<char>(20);
+      write(out + "/ik/solver" + std::to_string(solver) + (flags ? "_branch" : "_chain"), bytes);
+    }
+  }
   std::printf("wrote the fuzz corpus under %s\n", out.c_str());
   return 0;
 }

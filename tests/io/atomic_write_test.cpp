@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -336,6 +337,50 @@ TEST(AtomicWrite, UnwritableFolderNeverDestroysThePreviousFile) {
   ASSERT_EQ(saved.status, kSaved) << saved.message;
   EXPECT_EQ(readFile(open + "/scene.kinema"), toKinemaJson(defaultScene()));
   EXPECT_EQ(listDir(open), std::vector<std::string>{"scene.kinema"});
+}
+
+// (c): a real full disk. A 16 KiB tmpfs holds the previous file; the new one does not fit,
+// so write() fails with ENOSPC part way. Needs root to mount (CI runs as root).
+TEST(AtomicWrite, FullDiskNeverDestroysThePreviousFile) {
+  if (::geteuid() != 0) GTEST_SKIP() << "mounting a small tmpfs needs root";
+  TempDir dir;
+  const std::string disk = dir / "disk";
+  ASSERT_EQ(::mkdir(disk.c_str(), 0755), 0);
+  if (test::runCommand("mount -t tmpfs -o size=16k kinema-full-disk '" + disk + "' 2>/dev/null") != 0)
+    GTEST_SKIP() << "this machine does not allow mounting a tmpfs (no CAP_SYS_ADMIN)";
+  struct Unmount {
+    std::string path;
+    ~Unmount() { test::runCommand("umount '" + path + "'"); }
+  } unmount{disk};
+
+  const std::string path = disk + "/scene.kinema";
+  const std::string previous = "previous contents, which must survive\n";
+  writeFile(path, previous);
+  // A scene whose file is far larger than the disk: one long clip on the default character.
+  Scene scene = defaultScene();
+  Clip clip;
+  clip.name = "long";
+  Channel ch;
+  ch.joint = 0;
+  ch.target = ChannelTarget::Translation;
+  for (int k = 0; k < 5000; ++k) {
+    ch.times.push_back(k / 30.0f);
+    ch.values.emplace_back(k * 0.001f, 1.0f, -k * 0.002f, 0.0f);
+  }
+  clip.channels.push_back(ch);
+  scene.clips.push_back(clip);
+  ASSERT_GT(toKinemaJson(scene).size(), 64u * 1024u);
+
+  const std::string error = saveKinemaFile(path, scene);
+  ASSERT_NE(error, "") << "the save cannot have fitted on a 16 KiB disk";
+  EXPECT_EQ(error.rfind(path + ": ", 0), 0u) << error;
+  EXPECT_NE(error.find(std::strerror(ENOSPC)), std::string::npos) << error;
+  EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+  EXPECT_EQ(readFile(path), previous);
+  EXPECT_EQ(listDir(disk), std::vector<std::string>{"scene.kinema"});
+  // Control: a scene that fits is saved on the same disk.
+  EXPECT_EQ(saveKinemaFile(path, defaultScene()), "");
+  EXPECT_EQ(readFile(path), toKinemaJson(defaultScene()));
 }
 
 }  // namespace

@@ -559,6 +559,8 @@ std::vector<BadCase> badCases() {
       {"fractional Frames", joinLines(replaced(17, "Frames: 1.5")), 17, "Frames"},
       {"Frame Time nan", joinLines(replaced(18, "Frame Time: nan")), 18, "nan"},
       {"Frame Time zero", joinLines(replaced(18, "Frame Time: 0")), 18, "Frame Time"},
+      // Found by fuzz_bvh (10-minute run): the key time of frame 1 overflowed float.
+      {"Frame Time beyond float range of key times", joinLines(replaced(18, "Frame Time: 8e127")), 18, "float range"},
       {"word in the motion", joinLines(replaced(20, "1 2 3 4 x 6 7 8 9")), 20, "'x'"},
       {"nan in the motion", joinLines(replaced(19, "0 0 0 nan 0 0 0 0 0")), 19, "nan"},
       {"NaN in the motion", joinLines(replaced(20, "1 2 3 4 5 6 7 8 NaN")), 20, "NaN"},
