@@ -57,7 +57,10 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
   world.assign(m, glm::mat4(1.0f));
   rotation.assign(m, glm::quat(1.0f, 0.0f, 0.0f, 0.0f));
   limit.assign(m, nullptr);
-  for (int i = 0; i < m; ++i) slotOf[joints[i]] = i;
+  for (int i = 0; i < m; ++i) {
+    slotOf[joints[i]] = i;
+    makeUnit(pose->local[joints[i]].rotation);
+  }
   bool needWorld = false;
   for (int i = 0; i < m; ++i) {
     const int p = s.parents[joints[i]];

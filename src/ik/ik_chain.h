@@ -20,6 +20,13 @@ inline glm::quat renormalize(const glm::quat& q) {
   return safeNormalize(q);
 }
 
+// A valid pose may hold non-unit rotations (they still encode a rotation); the solvers
+// make the ones they may move unit first, so the pose they hand back is unit where they
+// worked even for joints they did not need to turn. Unit input is left bit for bit.
+inline void makeUnit(glm::quat& q) {
+  if (std::abs(glm::dot(q, q) - 1.0f) > 1e-6f) q = safeNormalize(q);
+}
+
 // The shortest rotation taking direction `from` onto `to` (neither need be unit): the
 // half-way quaternion (|a||b| + a.b, a x b), normalised, costs two square roots where
 // normalising both inputs first costs four. Zero or opposite inputs go to fromToRotation.

@@ -124,6 +124,10 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
     const int c = target.effector;
     const int b = target.mid >= 0 ? target.mid : s.parents[c];
     const int a = ikRootOf(s, target, true);
+    for (int j = c; j >= 0; j = s.parents[j]) {
+      ik_detail::makeUnit(pose.local[j].rotation);
+      if (j == a) break;
+    }
     PathWorld path;
     if (!path.compute(s, pose, problem.rootTransform, a, c)) {
       out.message = "two-bone: the chain from '" + s.names[a] + "' is deeper than " + std::to_string(kMaxDepth) + " joints";

@@ -400,6 +400,37 @@ TEST(IkSolvers, FabrikFinishesWithDlsStepsOnlyWhereAllowed) {
   EXPECT_GT(sawFinish, 0) << "no case needed the finish: the test does not exercise it";
 }
 
+// A valid pose may hold non-unit quaternions (found by fuzz_ik): every solver hands back
+// unit rotations for the chain it worked on, even where a joint did not need to turn
+// (the target already reached), and solves as if the input had been unit.
+TEST(IkSolvers, NonUnitStartRotationsComeBackUnit) {
+  const IkSolver all[] = {IkSolver::TwoBone, IkSolver::Ccd, IkSolver::Fabrik, IkSolver::JacobianTranspose,
+                          IkSolver::JacobianPinv, IkSolver::JacobianDls, IkSolver::JacobianSdls};
+  std::mt19937 rng(41);
+  const Skeleton s = test::makeChain(4, &rng);
+  for (IkSolver solver : all) {
+    for (int k = 0; k < 20; ++k) {
+      const Pose unit = test::randomPose(s, rng, 1.0f);
+      Pose scaled = unit;
+      // Only the chain's joints (IK root j1): what lies above is outside the solver's care.
+      for (int i = 1; i < s.size(); ++i) scaled.local[i].rotation *= (k % 2 ? 3.0f : 0.2f);
+      // Half the cases: the target is where the effector already is, so nothing turns.
+      Pose other = test::randomPose(s, rng, 1.0f);
+      other.local[0] = unit.local[0];
+      const glm::vec3 target = test::worldPosition(s, k % 4 < 2 ? unit : other, 3);
+      Pose a = unit, b = scaled;
+      IkProblem pa = problemFor(s, a, 3, target), pb = problemFor(s, b, 3, target);
+      pa.targets[0].root = pb.targets[0].root = 1;
+      const IkResult ra = solveIk(solver, pa, IkSettings{}), rb = solveIk(solver, pb, IkSettings{});
+      ASSERT_TRUE(rb.message.empty()) << rb.message;
+      for (int i = 1; i < s.size(); ++i)
+        EXPECT_NEAR(glm::length(b.local[i].rotation), 1.0f, 1e-5f) << toString(solver) << " joint " << i;
+      EXPECT_EQ(ra.converged, rb.converged) << toString(solver);
+      EXPECT_NEAR(ra.error, rb.error, 1e-3f) << toString(solver);  // iterations round differently
+    }
+  }
+}
+
 TEST(IkSolvers, BadInputIsReportedAndTheposeIsLeftAlone) {
   const Skeleton s = test::makeChain(4);
   Pose pose = Pose::rest(s);
