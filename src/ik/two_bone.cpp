@@ -162,10 +162,15 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
 
     // Where the middle joint must go: on the circle the law of cosines allows, on the
     // pole's side of the root-target line (without a pole: the side it is on now).
-    glm::vec3 u = dist > 1e-12f ? toTarget / dist : pc - pa;
-    if (glm::dot(u, u) < 1e-20f) u = pb - pa;
-    if (glm::dot(u, u) < 1e-20f) u = glm::vec3(0.0f, 1.0f, 0.0f);
-    u = glm::normalize(u);
+    glm::vec3 u;
+    if (dist > 1e-12f) {
+      u = toTarget / dist;  // unit already
+    } else {
+      u = pc - pa;
+      if (glm::dot(u, u) < 1e-20f) u = pb - pa;
+      if (glm::dot(u, u) < 1e-20f) u = glm::vec3(0.0f, 1.0f, 0.0f);
+      u = glm::normalize(u);
+    }
     glm::vec3 side = target.hasPole ? target.pole - pa : pb - pa;
     side -= glm::dot(side, u) * u;
     if (glm::dot(side, side) < 1e-20f) {
@@ -188,7 +193,8 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
     } else {
       deltaA = fromToRotation(pc - pa, u);  // a zero-length bone: only aiming is possible
     }
-    applyWorldDelta(pose.local[a].rotation, rap, deltaA);
+    // The root's new local rotation from its world one: conj(parent) * delta * world.
+    pose.local[a].rotation = ik_detail::renormalize(glm::conjugate(rap) * (deltaA * path.rotation[0]));
     applyWorldDelta(pose.local[b].rotation, ik_detail::renormalize(deltaA * rbp), deltaB);
     glm::quat effectorParentRot(1.0f, 0.0f, 0.0f, 0.0f);
     bool limited = false;
