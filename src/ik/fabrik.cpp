@@ -119,7 +119,8 @@ constexpr float kSlowPass = 0.8f;  // a pass that keeps more than this of the er
 glm::quat twistForHingeChild(const IkChain& c, int s, const glm::quat& parentRot, const glm::quat& local,
                              const std::vector<glm::vec3>& reached) {
   const int k = s + 1;  // the only child (one child: the next slot in preorder)
-  if (k >= s + c.subtreeSize[s] || !c.limit[k] || c.limit[k]->type != JointLimitType::Hinge) return local;
+  if (k >= s + c.subtreeSize[s] || c.subtreeSize[s] != 1 + c.subtreeSize[k]) return local;
+  if (!c.limit[k] || c.limit[k]->type != JointLimitType::Hinge) return local;
   if (c.subtreeSize[k] < 2) return local;
   const int g = k + 1;  // k's first child
   const glm::quat world = parentRot * local;
