@@ -2,6 +2,7 @@
 // random reachable targets, tolerance 1e-3 x chain length; also unreachable targets.
 // Each benchmark iteration solves one case from a fixed list (the pose is reset first).
 // Counters: iters_mean / iters_median = solver iterations per solve, us_per_iter.
+// two-hands/*: several effectors (FABRIK sub-bases vs stacked Jacobian rows).
 //   ./build/bench/ik_bench --benchmark_min_time=1
 #include <benchmark/benchmark.h>
 
@@ -61,9 +62,10 @@ Cases makeCases(int joints, bool reachable) {
   return c;
 }
 
-void run(benchmark::State& state, IkSolver solver, int joints, bool reachable) {
+void run(benchmark::State& state, IkSolver solver, int joints, bool reachable, bool lineSearch = false) {
   const Cases cases = makeCases(joints, reachable);
   IkSettings settings;
+  settings.transposeLineSearch = lineSearch;
   settings.tolerance = 1e-3f * cases.length;
   settings.maxIterations = solver == IkSolver::JacobianTranspose ? 20000 : 1000;
   settings.stallFraction = reachable ? 0.0f : settings.stallFraction;  // reachable: run to tolerance
@@ -108,19 +110,97 @@ void run(benchmark::State& state, IkSolver solver, int joints, bool reachable) {
   state.SetItemsProcessed(solves);
 }
 
+// Two hands on a shared spine (hips - spine - chest, then two arms of three bones 0.8
+// long): both targets from FK of one random pose of the whole rig (every joint turned up
+// to 0.5 rad), starts from poses turned up to 0.3 rad; tolerance 1e-3 x 4.4 (hips to hand).
+Skeleton twoArms() {
+  Skeleton s;
+  s.addJoint("hips", -1, Transform::identity());
+  s.addJoint("spine", 0, Transform::fromTranslation({0, 1, 0}));
+  s.addJoint("chest", 1, Transform::fromTranslation({0, 1, 0}));
+  int p = 2;
+  for (int i = 0; i < 3; ++i) p = s.addJoint("l" + std::to_string(i), p, Transform::fromTranslation({0.8f, 0, 0}));
+  p = 2;
+  for (int i = 0; i < 3; ++i) p = s.addJoint("r" + std::to_string(i), p, Transform::fromTranslation({-0.8f, 0, 0}));
+  return s;
+}
+
+void runTwoHands(benchmark::State& state, IkSolver solver, bool passesOnly = false) {
+  const Skeleton skeleton = twoArms();
+  std::mt19937 rng(2011);
+  std::vector<Pose> starts;
+  std::vector<glm::vec3> left, right;
+  for (int k = 0; k < kCases; ++k) {
+    const std::vector<glm::mat4> goal = computeWorld(skeleton, randomPose(skeleton, rng, 0.5f));
+    left.push_back(glm::vec3(goal[5][3]));
+    right.push_back(glm::vec3(goal[8][3]));
+    starts.push_back(randomPose(skeleton, rng, 0.3f));
+  }
+  IkSettings settings;  // the defaults: a cap of 100 iterations, stall stop on
+  settings.tolerance = 1e-3f * 4.4f;
+  if (passesOnly) settings.fabrikFinishAfter = 0;  // FABRIK without its DLS finish
+  IkProblem problem;
+  problem.skeleton = &skeleton;
+  problem.targets.resize(2);
+  problem.targets[0].effector = 5;
+  problem.targets[1].effector = 8;
+  std::vector<int> iterations;
+  int converged = 0;
+  for (int k = 0; k < kCases; ++k) {
+    Pose pose = starts[k];
+    problem.pose = &pose;
+    problem.targets[0].position = left[k];
+    problem.targets[1].position = right[k];
+    const IkResult r = solveIk(solver, problem, settings);
+    iterations.push_back(r.iterations);
+    converged += r.converged;
+  }
+  double sum = 0.0;
+  for (int i : iterations) sum += i;
+  std::sort(iterations.begin(), iterations.end());
+  Pose pose;
+  long long iters = 0;
+  int k = 0;
+  for (auto _ : state) {
+    pose = starts[k];
+    problem.pose = &pose;
+    problem.targets[0].position = left[k];
+    problem.targets[1].position = right[k];
+    const IkResult r = solveIk(solver, problem, settings);
+    benchmark::DoNotOptimize(r);
+    iters += r.iterations;
+    k = (k + 1) % kCases;
+  }
+  state.counters["iters_mean"] = sum / kCases;
+  state.counters["iters_median"] = iterations[kCases / 2];
+  state.counters["converged_pct"] = 100.0 * converged / kCases;
+  state.counters["us_per_iter"] =
+      benchmark::Counter(static_cast<double>(iters) * 1e-6, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
 void registerAll() {
   const IkSolver iterative[] = {IkSolver::Ccd, IkSolver::Fabrik, IkSolver::JacobianTranspose, IkSolver::JacobianPinv,
-                                IkSolver::JacobianDls};
+                                IkSolver::JacobianDls, IkSolver::JacobianSdls};
   for (bool reachable : {true, false}) {
     const std::string kind = reachable ? "reachable" : "unreachable";
     for (IkSolver s : iterative)
       benchmark::RegisterBenchmark(("ik10/" + kind + "/" + toString(s)).c_str(),
                                    [=](benchmark::State& st) { run(st, s, 10, reachable); })
           ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark(("ik10/" + kind + "/jacobian-transpose-line-search").c_str(),
+                                 [=](benchmark::State& st) { run(st, IkSolver::JacobianTranspose, 10, reachable, true); })
+        ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark(("ik3/" + kind + "/two-bone").c_str(),
                                  [=](benchmark::State& st) { run(st, IkSolver::TwoBone, 3, reachable); })
         ->Unit(benchmark::kNanosecond);
   }
+  for (IkSolver s : {IkSolver::Fabrik, IkSolver::JacobianDls, IkSolver::JacobianPinv, IkSolver::JacobianSdls})
+    benchmark::RegisterBenchmark((std::string("two-hands/") + toString(s)).c_str(),
+                                 [=](benchmark::State& st) { runTwoHands(st, s); })
+        ->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("two-hands/fabrik-passes-only",
+                               [=](benchmark::State& st) { runTwoHands(st, IkSolver::Fabrik, true); })
+      ->Unit(benchmark::kMicrosecond);
 }
 
 }  // namespace

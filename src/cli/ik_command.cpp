@@ -55,7 +55,7 @@ CLI::App* addIkCommand(CLI::App& app, IkOptions& o) {
   cmd->add_option("--root", o.roots,
                   "IK root joint per effector (default: its topmost ancestor; for two-bone its grandparent)");
   cmd->add_option("--rig", o.rig, "JSON rig file: {\"limits\": [...], \"targets\": [...]} as in .kinema files");
-  cmd->add_option("--solver", o.solver, "ccd, fabrik, jacobian-transpose, jacobian-pinv, jacobian-dls or two-bone");
+  cmd->add_option("--solver", o.solver, "ccd, fabrik, jacobian-transpose, jacobian-pinv, jacobian-dls, jacobian-sdls or two-bone");
   cmd->add_option("--tolerance", o.tolerance, "Converged when every effector is this close (file units; default 0.001)");
   cmd->add_option("--max-iterations", o.maxIterations, "Iteration cap (default 100; 2000 for jacobian-transpose)");
   cmd->add_option("--lambda", o.lambda, "jacobian-dls damping, as a fraction of the chain's reach (default 0.1)");
@@ -72,7 +72,7 @@ CLI::App* addIkCommand(CLI::App& app, IkOptions& o) {
 
 int runIk(const IkOptions& o) {
   const std::optional<IkSolver> solver = ikSolverFromString(o.solver);
-  if (!solver) return usage("--solver '" + o.solver + "' is not one of ccd, fabrik, jacobian-transpose, jacobian-pinv, jacobian-dls, two-bone");
+  if (!solver) return usage("--solver '" + o.solver + "' is not one of ccd, fabrik, jacobian-transpose, jacobian-pinv, jacobian-dls, jacobian-sdls, two-bone");
   if (o.effectors.size() != o.targets.size())
     return usage("give one --target per --effector (" + std::to_string(o.effectors.size()) + " effectors, " +
                  std::to_string(o.targets.size()) + " targets)");

@@ -18,7 +18,7 @@ namespace {
 
 // The shortest rotation of `from` onto `to`, capped at maxAngle (the per-step damping).
 glm::quat dampedFromTo(const glm::vec3& from, const glm::vec3& to, float maxAngle) {
-  glm::quat q = fromToRotation(from, to);
+  glm::quat q = ik_detail::fastFromTo(from, to);
   if (maxAngle < glm::pi<float>()) {
     glm::vec3 axis;
     float angle;
@@ -48,7 +48,8 @@ void sweep(IkChain& c, const Goal& g, const IkSettings& settings, int it) {
         applied = ik_detail::renormalize(newWorld * glm::conjugate(c.rotation[s]));
         c.rotation[s] = newWorld;
       } else {
-        c.rotation[s] = ik_detail::renormalize(parentRot * local);
+        // parentRot * local is delta * rotation[s]: one product fewer.
+        c.rotation[s] = ik_detail::renormalize(delta * c.rotation[s]);
       }
       c.pose->local[c.joints[s]].rotation = local;
       effector = p + applied * toEffector;

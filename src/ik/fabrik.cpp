@@ -4,11 +4,16 @@
 // one rigid body, fitted to their backward positions (see rigidFit).
 // The forward pass turns positions into local rotations as it goes (the minimal rotation
 // of each bone, so no spurious twist), clamping each joint to its limit before its
-// children are placed: bones keep their length exactly and limits always hold.
+// children are placed: bones keep their length exactly and limits always hold; a joint
+// above a hinge is twisted so the hinge's plane holds its target (twistForHingeChild).
+// With limits or several effectors the passes alone crawl (or stall) near the goal, so
+// the solver is a documented hybrid there: FABRIK passes while each gains >= 20 % (at
+// most IkSettings::fabrikFinishAfter), then damped least squares steps finish.
 #include <Eigen/Dense>
 #include <algorithm>
 
 #include "ik/ik_chain.h"
+#include "ik/jacobian_step.h"
 
 namespace kinema {
 
@@ -52,7 +57,11 @@ glm::vec3 childPosition(const IkChain& c, int child) {
 // free to swing about the sub-base; for a rigid chest that swing is not there, so a pull
 // across a shoulder barely moved the chest and the error fell only like 1/sqrt(passes).
 // Returns the sub-base's new position and the turn it makes; `from`/`to`/`w` are scratch.
+// Children whose own limit asks for a particular frame of the sub-base (limitedParent,
+// from the backward pass) add that frame's axes as direction pairs, so the fit turns the
+// sub-base towards frames its children's limits allow.
 glm::vec3 rigidFit(const IkChain& c, int s, const std::vector<glm::vec3>& reached, const Goal* goal,
+                   const std::vector<glm::quat>& limitedParent, const std::vector<char>& hasLimitedParent,
                    std::vector<glm::vec3>& from, std::vector<glm::vec3>& to, std::vector<float>& w,
                    glm::quat& turn) {
   const glm::vec3 p = c.position(s);
@@ -83,9 +92,57 @@ glm::vec3 rigidFit(const IkChain& c, int s, const std::vector<glm::vec3>& reache
     to[i] -= tc;
     scale += w[i] * glm::length(from[i]) * glm::length(to[i]);
   }
+  // Direction pairs do not move the centroids: they are added after centring.
+  const float armScale = from.size() > 0 ? scale / static_cast<float>(from.size()) : 1.0f;
+  for (int k = s + 1; k < s + c.subtreeSize[s]; k += c.subtreeSize[k]) {
+    if (!hasLimitedParent[k]) continue;
+    const glm::quat now = c.rotation[s], wanted = limitedParent[k];
+    for (int a = 0; a < 3; ++a) {
+      glm::vec3 e(0.0f);
+      e[a] = 1.0f;
+      from.push_back(now * e);
+      to.push_back(wanted * e);
+      w.push_back(armScale > 0.0f ? armScale : 1.0f);
+    }
+  }
   // The same small pull towards no turn as bestRotation, relative to the body's size.
   turn = bestRotation(from, to, &w, 1e-3f * scale + 1e-20f);
   return tc - turn * fc;
+}
+
+constexpr float kSlowPass = 0.8f;  // a pass that keeps more than this of the error is slow
+
+// A hinge child can bend its bone only in the plane normal to its axis, and that axis
+// turns with this joint's twist about its own bone, which a minimal rotation never
+// changes. Twist (by the smallest angle) so that the plane holds the child's next
+// backward position; when no twist can, leave the rotation alone.
+glm::quat twistForHingeChild(const IkChain& c, int s, const glm::quat& parentRot, const glm::quat& local,
+                             const std::vector<glm::vec3>& reached) {
+  const int k = s + 1;  // the only child (one child: the next slot in preorder)
+  if (k >= s + c.subtreeSize[s] || c.subtreeSize[s] != 1 + c.subtreeSize[k]) return local;
+  if (!c.limit[k] || c.limit[k]->type != JointLimitType::Hinge) return local;
+  if (c.subtreeSize[k] < 2) return local;
+  const int g = k + 1;  // k's first child
+  const glm::quat world = parentRot * local;
+  const glm::vec3 pk = c.position(s) + world * c.pose->local[c.joints[k]].translation;
+  const glm::vec3 bone = pk - c.position(s);
+  const float bl = glm::length(bone);
+  if (!(bl > 1e-9f)) return local;
+  const glm::vec3 b = bone / bl;
+  const glm::vec3 a = world * (c.skeleton->rest[c.joints[k]].rotation * c.limit[k]->axis);
+  const glm::vec3 w = reached[g] - pk;
+  // a(phi) . w = A + B cos(phi) + C sin(phi), rotating a about b by phi.
+  const glm::vec3 along = glm::dot(a, b) * b, across = a - along;
+  const float A = glm::dot(along, w), B = glm::dot(across, w), C = glm::dot(glm::cross(b, across), w);
+  const float r = std::sqrt(B * B + C * C);
+  if (!(r > 1e-9f) || std::abs(A) > r) return local;
+  const float base = std::atan2(C, B), off = std::acos(std::clamp(-A / r, -1.0f, 1.0f));
+  float phi = base + off, other = base - off;
+  auto wrap = [](float x) { return std::remainder(x, glm::two_pi<float>()); };
+  phi = wrap(phi);
+  other = wrap(other);
+  if (std::abs(other) < std::abs(phi)) phi = other;
+  return safeNormalize(glm::conjugate(parentRot) * glm::angleAxis(phi, b) * world);
 }
 
 }  // namespace
@@ -110,11 +167,15 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
   std::vector<glm::quat> backRot(m);  // world rotations the backward pass gives the joints
   std::vector<int> proposals(m);     // how many children (or targets) set backRot
   std::vector<char> twisted(m);      // backRot was turned to meet a child's limit
+  std::vector<glm::quat> limitedParent(m);  // the parent frame a slot's limit asked for
+  std::vector<char> hasLimitedParent(m);
   std::vector<glm::vec3> from, to;
   std::vector<float> fitWeight;
   std::vector<int> children(m, 0);
   for (int s = 0; s < m; ++s)
     if (c.parentSlot[s] >= 0) ++children[c.parentSlot[s]];
+  const bool finishWithDls = settings.fabrikFinishAfter > 0 && (c.hasLimits() || c.goals.size() > 1);
+  float previousError = c.maxError();
   int it = 0;
   while (!c.converged(settings) && it < settings.maxIterations) {
     ++it;
@@ -127,6 +188,7 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
     std::fill(count.begin(), count.end(), 0.0f);
     std::fill(proposals.begin(), proposals.end(), 0);
     std::fill(twisted.begin(), twisted.end(), 0);
+    std::fill(hasLimitedParent.begin(), hasLimitedParent.end(), 0);
     for (int s = m - 1; s >= 0; --s) {
       const Goal* goal = goalOf[s] >= 0 ? &c.goals[goalOf[s]] : nullptr;
       if (goal) {
@@ -139,8 +201,9 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
       }
       if (children[s] >= 2 && !(goal && goal->hasOrientation)) {  // a rigid sub-base: fit it
         glm::quat turn;
-        reached[s] = rigidFit(c, s, reached, goal, from, to, fitWeight, turn);
+        reached[s] = rigidFit(c, s, reached, goal, limitedParent, hasLimitedParent, from, to, fitWeight, turn);
         backRot[s] = safeNormalize(turn * c.rotation[s]);
+        proposals[s] = 1;  // its frame is settled: its own limit can act on its parent below
       } else {
         reached[s] = count[s] > 0.0f ? sum[s] / count[s] : c.position(s);
       }
@@ -168,6 +231,8 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
         const glm::vec3 boneInParent = glm::conjugate(c.rotation[p]) * (oldBone / boneLength[s]);
         proposal = reached[s] - (parentRot * boneInParent) * boneLength[s];
         twisted[p] = 1;
+        limitedParent[s] = parentRot;
+        hasLimitedParent[s] = 1;
       }
       sum[p] += proposal;
       count[p] += 1.0f;
@@ -208,12 +273,30 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
         continue;
       }
       local = safeNormalize(local);
+      if (from.size() == 1) local = twistForHingeChild(c, s, parentRot, local, reached);
       if (c.limit[s]) local = applyJointLimit(*c.limit[s], c.skeleton->rest[c.joints[s]].rotation, local);
       c.pose->local[c.joints[s]].rotation = local;
       c.forwardSlot(s);
     }
     c.record(trace, it, IkStep::FabrikForward);
-    if (c.stalled(c.maxError(), settings)) break;
+    const float error = c.maxError();
+    if (c.stalled(error, settings)) break;
+    // Hand over once the passes stop paying: at the cap, or when a pass gains < 20 %.
+    if (finishWithDls && (it >= settings.fabrikFinishAfter || error > kSlowPass * previousError)) break;
+    previousError = error;
+  }
+  // Hybrid finish: with limits or several effectors FABRIK gets close in a few passes and
+  // then crawls (a hinge waiting for twist from a cone above it; two arms leaving a rigid
+  // chest only a residual pull). Damped least squares steps, which move every joint at
+  // once and clamp each to its limit, converge from there in a few iterations.
+  if (finishWithDls && !c.converged(settings) && it < settings.maxIterations) {
+    ik_detail::JacobianStepper stepper(c, ik_detail::JacobianMethod::Dls);
+    while (!c.converged(settings) && it < settings.maxIterations) {
+      ++it;
+      if (!stepper.step(c, settings)) break;
+      c.record(trace, it, IkStep::JacobianStep);
+      if (c.stalled(c.maxError(), settings)) break;
+    }
   }
   return c.result(it, settings);
 }

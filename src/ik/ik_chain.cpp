@@ -57,7 +57,10 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
   world.assign(m, glm::mat4(1.0f));
   rotation.assign(m, glm::quat(1.0f, 0.0f, 0.0f, 0.0f));
   limit.assign(m, nullptr);
-  for (int i = 0; i < m; ++i) slotOf[joints[i]] = i;
+  for (int i = 0; i < m; ++i) {
+    slotOf[joints[i]] = i;
+    makeUnit(pose->local[joints[i]].rotation);
+  }
   bool needWorld = false;
   for (int i = 0; i < m; ++i) {
     const int p = s.parents[joints[i]];
@@ -77,6 +80,17 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
   }
   for (int i = 0; i < m; ++i)
     if (parentSlot[i] < 0) fixedRotation[i] = rotationOf(fixedParent[i]);
+  rigid = true;
+  for (int i = 0; i < m && rigid; ++i) {
+    rigid = pose->local[joints[i]].scale == glm::vec3(1.0f);
+    if (parentSlot[i] < 0) {
+      // The fixed parent must be a rotation (orthonormal columns) for the shortcut.
+      const glm::mat3 l(fixedParent[i]);
+      const glm::mat3 ltl = glm::transpose(l) * l;
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) rigid = rigid && std::abs(ltl[a][b] - (a == b ? 1.0f : 0.0f)) < 1e-6f;
+    }
+  }
   goals.clear();
   for (const IkTarget& t : problem.targets) {
     Goal g;
@@ -100,8 +114,16 @@ glm::quat IkChain::parentRotation(int s) const {
 void IkChain::forwardSlot(int s) {
   const Transform& t = pose->local[joints[s]];
   const glm::mat4& parent = parentSlot[s] >= 0 ? world[parentSlot[s]] : fixedParent[s];
+  const glm::quat parentRot = parentRotation(s);
+  rotation[s] = renormalize(parentRot * t.rotation);
+  if (rigid) {
+    // About half the work of the affine product: one quaternion to matrix conversion.
+    const glm::mat3 r = glm::mat3_cast(rotation[s]);
+    const glm::vec3 p = glm::vec3(parent[3]) + parentRot * t.translation;
+    world[s] = glm::mat4(glm::vec4(r[0], 0.0f), glm::vec4(r[1], 0.0f), glm::vec4(r[2], 0.0f), glm::vec4(p, 1.0f));
+    return;
+  }
   world[s] = multiplyAffine(parent, t.toMatrix());
-  rotation[s] = renormalize(parentRotation(s) * t.rotation);
 }
 
 void IkChain::forwardKinematics() {

@@ -10,12 +10,33 @@
 namespace kinema::ik_detail {
 
 // Normalises a quaternion that is already nearly unit (a product of unit quaternions):
-// one square root, where safeNormalize guards against denormal, huge and NaN input
+// at most one square root, where safeNormalize guards against denormal, huge and NaN input
 // (still the fallback here) at several times the cost in the solvers' inner loops.
 inline glm::quat renormalize(const glm::quat& q) {
   const float d = glm::dot(q, q);
+  // Within 1e-3 of unit length one Newton step for 1/sqrt(d) is exact to ~1e-6: no root.
+  if (std::abs(d - 1.0f) < 1e-3f) return q * (1.5f - 0.5f * d);
   if (d > 0.25f && d < 4.0f) return q * (1.0f / std::sqrt(d));
   return safeNormalize(q);
+}
+
+// A valid pose may hold non-unit rotations (they still encode a rotation); the solvers
+// make the ones they may move unit first, so the pose they hand back is unit where they
+// worked even for joints they did not need to turn. Unit input is left bit for bit.
+inline void makeUnit(glm::quat& q) {
+  if (std::abs(glm::dot(q, q) - 1.0f) > 1e-6f) q = safeNormalize(q);
+}
+
+// The shortest rotation taking direction `from` onto `to` (neither need be unit): the
+// half-way quaternion (|a||b| + a.b, a x b), normalised, costs two square roots where
+// normalising both inputs first costs four. Zero or opposite inputs go to fromToRotation.
+inline glm::quat fastFromTo(const glm::vec3& from, const glm::vec3& to) {
+  const float ll = std::sqrt(glm::dot(from, from) * glm::dot(to, to));
+  const float d = glm::dot(from, to);
+  if (!(ll > 0.0f) || d < -0.999999f * ll) return fromToRotation(from, to);
+  const glm::vec3 c = glm::cross(from, to);
+  const glm::quat q(ll + d, c.x, c.y, c.z);
+  return renormalize(q * (1.0f / ll));
 }
 
 struct Goal {
@@ -42,6 +63,9 @@ struct IkChain {
   std::vector<const JointLimit*> limit;
   std::vector<Goal> goals;
   std::vector<float> history;       // error after each iteration, for stall detection
+  // No scale anywhere (slots and fixed parents): FK then needs only quaternion products,
+  // and a world matrix is its rotation plus its position.
+  bool rigid = false;
 
   // Fills the slots from the problem; returns an error message or "".
   std::string build(const IkProblem& problem, bool twoBone = false);

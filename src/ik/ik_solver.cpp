@@ -12,13 +12,14 @@ const char* toString(IkSolver solver) {
     case IkSolver::JacobianTranspose: return "jacobian-transpose";
     case IkSolver::JacobianPinv: return "jacobian-pinv";
     case IkSolver::JacobianDls: return "jacobian-dls";
+    case IkSolver::JacobianSdls: return "jacobian-sdls";
   }
   return "ccd";
 }
 
 std::optional<IkSolver> ikSolverFromString(const std::string& name) {
   for (IkSolver s : {IkSolver::TwoBone, IkSolver::Ccd, IkSolver::Fabrik, IkSolver::JacobianTranspose,
-                     IkSolver::JacobianPinv, IkSolver::JacobianDls})
+                     IkSolver::JacobianPinv, IkSolver::JacobianDls, IkSolver::JacobianSdls})
     if (name == toString(s)) return s;
   return std::nullopt;
 }
@@ -119,6 +120,7 @@ IkResult solveIk(IkSolver solver, const IkProblem& problem, const IkSettings& se
     case IkSolver::JacobianTranspose: return solveJacobianTranspose(problem, settings);
     case IkSolver::JacobianPinv: return solveJacobianPinv(problem, settings);
     case IkSolver::JacobianDls: return solveJacobianDls(problem, settings);
+    case IkSolver::JacobianSdls: return solveJacobianSdls(problem, settings);
   }
   return solveCcd(problem, settings);
 }

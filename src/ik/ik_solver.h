@@ -10,7 +10,7 @@
 
 namespace kinema {
 
-enum class IkSolver { TwoBone, Ccd, Fabrik, JacobianTranspose, JacobianPinv, JacobianDls };
+enum class IkSolver { TwoBone, Ccd, Fabrik, JacobianTranspose, JacobianPinv, JacobianDls, JacobianSdls };
 const char* toString(IkSolver solver);  // "two-bone", "ccd", "fabrik", "jacobian-dls", ...
 std::optional<IkSolver> ikSolverFromString(const std::string& name);
 
@@ -25,6 +25,13 @@ struct IkSettings {
   float maxStepAngle = glm::pi<float>();
   float dlsLambda = 0.1f;         // DLS damping as a fraction of the chain's reach
   float pinvThreshold = 1e-4f;     // singular values below this (relative) are dropped
+  // Jacobian transpose: search the step length on the true error (backtracking from
+  // Buss's step, expanding while it pays) instead of taking Buss's step as it is.
+  bool transposeLineSearch = false;
+  // FABRIK with limits or several effectors: after at most this many passes (fewer once a
+  // pass gains < 20 %), finish with damped least squares steps (see fabrik.cpp); 0 = FABRIK
+  // passes only, however slow.
+  int fabrikFinishAfter = 10;
   float twoBoneSoften = 0.0f;      // two-bone: soften distance near full extension
   IkTrace* trace = nullptr;        // records every step when set; nullptr costs nothing
 };
@@ -55,6 +62,8 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings);
 IkResult solveJacobianTranspose(const IkProblem& problem, const IkSettings& settings);
 IkResult solveJacobianPinv(const IkProblem& problem, const IkSettings& settings);
 IkResult solveJacobianDls(const IkProblem& problem, const IkSettings& settings);
+// Selectively damped least squares (Buss & Kim 2005): per singular direction damping.
+IkResult solveJacobianSdls(const IkProblem& problem, const IkSettings& settings);
 IkResult solveIk(IkSolver solver, const IkProblem& problem, const IkSettings& settings);
 
 }  // namespace kinema

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/forward_kinematics.h"
 #include "ik/ik_chain.h"
 
 namespace kinema {
@@ -18,48 +19,69 @@ glm::quat rotationOf(const glm::mat4& m) {
   return ik_detail::renormalize(glm::quat_cast(r));
 }
 
-// World matrices of `root`'s parent and of every joint from root down to `effector`.
+// World positions and rotations of `root`'s parent and of every joint from root down to
+// `effector`. Rigid paths (no scale, placement without scale) use quaternion products only;
+// any scale falls back to affine matrices. Rotations are renormalised where they are read.
 struct PathWorld {
   int joints[kMaxDepth];
-  glm::mat4 world[kMaxDepth];
-  glm::quat rotation[kMaxDepth];  // world rotations, by quaternion products (no matrix decomposition)
-  glm::mat4 parentOfRoot{1.0f};
+  glm::vec3 position[kMaxDepth];
+  glm::quat rotation[kMaxDepth];  // world rotations (products of unit quaternions)
   glm::quat parentOfRootRotation{1.0f, 0.0f, 0.0f, 0.0f};
   int count = 0;
 
   bool compute(const Skeleton& s, const Pose& pose, const glm::mat4& placement, int root, int effector) {
     int up[kMaxDepth];
     int n = 0;
+    bool rigid = true;
     for (int j = effector; j >= 0; j = s.parents[j]) {
       if (n == kMaxDepth) return false;
       up[n++] = j;
+      rigid = rigid && pose.local[j].scale == glm::vec3(1.0f);
     }
-    glm::mat4 w = placement;
-    glm::quat q = placement == glm::mat4(1.0f) ? glm::quat(1.0f, 0.0f, 0.0f, 0.0f) : rotationOf(placement);
+    const bool identity = placement == glm::mat4(1.0f);
+    if (!identity) {
+      const glm::mat3 l(placement);
+      const glm::mat3 ltl = glm::transpose(l) * l;
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) rigid = rigid && std::abs(ltl[a][b] - (a == b ? 1.0f : 0.0f)) < 1e-6f;
+    }
+    glm::quat q = identity ? glm::quat(1.0f, 0.0f, 0.0f, 0.0f) : rotationOf(placement);
     count = 0;
     bool inPath = false;
+    if (rigid) {
+      glm::vec3 p = identity ? glm::vec3(0.0f) : glm::vec3(placement[3]);
+      for (int i = n - 1; i >= 0; --i) {
+        const Transform& t = pose.local[up[i]];
+        if (up[i] == root) {
+          inPath = true;
+          parentOfRootRotation = q;
+        }
+        p += q * t.translation;
+        q = q * t.rotation;
+        if (inPath) {
+          joints[count] = up[i];
+          rotation[count] = q;
+          position[count++] = p;
+        }
+      }
+      return inPath;
+    }
+    glm::mat4 w = placement;
     for (int i = n - 1; i >= 0; --i) {
+      const Transform& t = pose.local[up[i]];
       if (up[i] == root) {
         inPath = true;
-        parentOfRoot = w;
         parentOfRootRotation = q;
       }
-      w = multiplyAffineLocal(w, pose.local[up[i]]);
-      q = q * pose.local[up[i]].rotation;
+      w = multiplyAffine(w, t.toMatrix());
+      q = ik_detail::renormalize(q * t.rotation);
       if (inPath) {
         joints[count] = up[i];
-        rotation[count] = ik_detail::renormalize(q);
-        world[count++] = w;
+        rotation[count] = q;
+        position[count++] = glm::vec3(w[3]);
       }
     }
     return inPath;
-  }
-  static glm::mat4 multiplyAffineLocal(const glm::mat4& parent, const Transform& t) {
-    const glm::mat4 l = t.toMatrix();
-    glm::mat4 r;
-    for (int c = 0; c < 3; ++c) r[c] = parent[0] * l[c].x + parent[1] * l[c].y + parent[2] * l[c].z;
-    r[3] = parent[0] * l[3].x + parent[1] * l[3].y + parent[2] * l[3].z + parent[3];
-    return r;
   }
   int indexOf(int joint) const {
     for (int i = 0; i < count; ++i)
@@ -67,6 +89,16 @@ struct PathWorld {
     return -1;
   }
 };
+
+// The rotation taking unit vector a onto unit vector b (half-way quaternion: one square
+// root, where fromToRotation also measures and divides both inputs).
+glm::quat unitFromTo(const glm::vec3& a, const glm::vec3& b) {
+  const float d = glm::dot(a, b);
+  if (d < -0.999999f) return fromToRotation(a, b);  // opposite: any perpendicular axis
+  const glm::vec3 c = glm::cross(a, b);
+  const glm::quat q(1.0f + d, c.x, c.y, c.z);
+  return q * (1.0f / std::sqrt(glm::dot(q, q)));
+}
 
 glm::vec3 anyPerpendicular(const glm::vec3& v) {
   const glm::vec3 a = std::abs(v.x) < 0.9f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
@@ -92,6 +124,10 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
     const int c = target.effector;
     const int b = target.mid >= 0 ? target.mid : s.parents[c];
     const int a = ikRootOf(s, target, true);
+    for (int j = c; j >= 0; j = s.parents[j]) {
+      ik_detail::makeUnit(pose.local[j].rotation);
+      if (j == a) break;
+    }
     PathWorld path;
     if (!path.compute(s, pose, problem.rootTransform, a, c)) {
       out.message = "two-bone: the chain from '" + s.names[a] + "' is deeper than " + std::to_string(kMaxDepth) + " joints";
@@ -99,16 +135,16 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
       return out;
     }
     const int ib = path.indexOf(b), ic = path.count - 1;
-    const glm::vec3 pa(path.world[0][3]), pb(path.world[ib][3]), pc(path.world[ic][3]);
-    const glm::quat rap = path.parentOfRootRotation;
-    const glm::quat rbp = ib > 0 ? path.rotation[ib - 1] : path.parentOfRootRotation;
+    const glm::vec3 pa = path.position[0], pb = path.position[ib], pc = path.position[ic];
+    const glm::quat rap = ik_detail::renormalize(path.parentOfRootRotation);
+    const glm::quat rbp = ik_detail::renormalize(ib > 0 ? path.rotation[ib - 1] : path.parentOfRootRotation);
     if (settings.trace) {
       IkTrace& t = *settings.trace;
       if (t.joints.empty()) t.joints.assign(path.joints, path.joints + path.count);
       IkTraceEntry e;
       e.step = IkStep::Start;
       e.error = glm::length(pc - target.position);
-      for (int i = 0; i < path.count; ++i) e.positions.push_back(glm::vec3(path.world[i][3]));
+      for (int i = 0; i < path.count; ++i) e.positions.push_back(path.position[i]);
       t.entries.push_back(std::move(e));
     }
     const float l1 = glm::length(pb - pa), l2 = glm::length(pc - pb);
@@ -126,10 +162,15 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
 
     // Where the middle joint must go: on the circle the law of cosines allows, on the
     // pole's side of the root-target line (without a pole: the side it is on now).
-    glm::vec3 u = dist > 1e-12f ? toTarget / dist : pc - pa;
-    if (glm::dot(u, u) < 1e-20f) u = pb - pa;
-    if (glm::dot(u, u) < 1e-20f) u = glm::vec3(0.0f, 1.0f, 0.0f);
-    u = glm::normalize(u);
+    glm::vec3 u;
+    if (dist > 1e-12f) {
+      u = toTarget / dist;  // unit already
+    } else {
+      u = pc - pa;
+      if (glm::dot(u, u) < 1e-20f) u = pb - pa;
+      if (glm::dot(u, u) < 1e-20f) u = glm::vec3(0.0f, 1.0f, 0.0f);
+      u = glm::normalize(u);
+    }
     glm::vec3 side = target.hasPole ? target.pole - pa : pb - pa;
     side -= glm::dot(side, u) * u;
     if (glm::dot(side, side) < 1e-20f) {
@@ -141,16 +182,19 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
     if (l1 > 1e-12f && l2 > 1e-12f && d > 1e-12f) {
       const float cosA = std::clamp((l1 * l1 + d * d - l2 * l2) / (2.0f * l1 * d), -1.0f, 1.0f);
       const float sinA = std::sqrt(std::max(0.0f, 1.0f - cosA * cosA));
-      const glm::vec3 elbow = pa + l1 * (cosA * u + sinA * w), hand = pa + d * u;
+      const glm::vec3 elbowDir = cosA * u + sinA * w;  // unit
+      const glm::vec3 elbow = pa + l1 * elbowDir, hand = pa + d * u;
       // Minimal rotations (no spurious roll): the root turns its bone onto the elbow,
-      // then the middle joint turns its bone onto the hand.
-      deltaA = fromToRotation(pb - pa, elbow - pa);
+      // then the middle joint turns its bone onto the hand. Both bones keep their length
+      // (l1, l2), so their directions are unit vectors after one division each.
+      deltaA = unitFromTo((pb - pa) * (1.0f / l1), elbowDir);
       const glm::vec3 pc1 = pa + deltaA * (pc - pa);
-      deltaB = fromToRotation(pc1 - elbow, hand - elbow);
+      deltaB = unitFromTo((pc1 - elbow) * (1.0f / l2), (hand - elbow) * (1.0f / l2));
     } else {
       deltaA = fromToRotation(pc - pa, u);  // a zero-length bone: only aiming is possible
     }
-    applyWorldDelta(pose.local[a].rotation, rap, deltaA);
+    // The root's new local rotation from its world one: conj(parent) * delta * world.
+    pose.local[a].rotation = ik_detail::renormalize(glm::conjugate(rap) * (deltaA * path.rotation[0]));
     applyWorldDelta(pose.local[b].rotation, ik_detail::renormalize(deltaA * rbp), deltaB);
     glm::quat effectorParentRot(1.0f, 0.0f, 0.0f, 0.0f);
     bool limited = false;
@@ -163,7 +207,7 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
       }
     }
     if (target.hasOrientation) {
-      const glm::quat rcp = path.rotation[ic - 1];
+      const glm::quat rcp = ik_detail::renormalize(path.rotation[ic - 1]);
       // The effector's parent turned with the root, then with the middle joint.
       effectorParentRot = ik_detail::renormalize(deltaB * deltaA * rcp);
       pose.local[c].rotation = ik_detail::renormalize(glm::conjugate(effectorParentRot) * ik_detail::renormalize(target.orientation));
@@ -176,7 +220,7 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
     glm::vec3 finalC = pb1 + deltaB * (pa + deltaA * (pc - pa) - pb1);
     if (limited || settings.trace) {
       path.compute(s, pose, problem.rootTransform, a, c);
-      finalC = glm::vec3(path.world[ic][3]);
+      finalC = path.position[ic];
     }
     const float err = glm::length(finalC - target.position);
     out.error = std::max(out.error, err);
@@ -186,7 +230,7 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
       e.iteration = 1;
       e.step = IkStep::TwoBone;
       e.error = err;
-      for (int i = 0; i < path.count; ++i) e.positions.push_back(glm::vec3(path.world[i][3]));
+      for (int i = 0; i < path.count; ++i) e.positions.push_back(path.position[i]);
       settings.trace->entries.push_back(std::move(e));
     }
   }

@@ -32,7 +32,7 @@ TEST(IkCommand, ReachesATargetOnARealSkeletonAndKeepsTheRest) {
   const glm::vec3 hand = positionOf(base["joints"], "lWrist");
   const glm::vec3 target = hand + glm::vec3(0.05f, 0.1f, -0.05f);
   const std::string t = std::to_string(target.x) + "," + std::to_string(target.y) + "," + std::to_string(target.z);
-  for (const char* solver : {"ccd", "fabrik", "jacobian-pinv", "jacobian-dls", "two-bone"}) {
+  for (const char* solver : {"ccd", "fabrik", "jacobian-pinv", "jacobian-dls", "jacobian-sdls", "two-bone"}) {
     const Json out = runJson("ik " + bvh() + " --frame 0 --effector lWrist --target " + t + " --root lShoulder --solver " +
                              solver + " --tolerance 0.0005 --json");
     ASSERT_TRUE(out.is_object()) << solver;

@@ -41,7 +41,7 @@ struct Bytes {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, size_t size) {
   if (size < 4) return 0;
   Bytes in{data, data + size};
-  const int solverCount = 6;  // two-bone, CCD, FABRIK, transpose, pseudo-inverse, DLS
+  const int solverCount = 7;  // two-bone, CCD, FABRIK, transpose, pseudo-inverse, DLS, SDLS
   const auto solver = static_cast<kinema::IkSolver>(in.b() % solverCount);
   const int joints = 2 + in.b() % 7;
   const std::uint8_t flags = in.b();
@@ -95,6 +95,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, size_t size) {
   settings.maxIterations = 1 + in.b() % 32;
   if (flags & 64) settings.tolerance = in.f();
   if (flags & 128) settings.maxStepAngle = in.f();
+  settings.transposeLineSearch = in.b() & 1;  // read last: older corpus files keep their meaning
 
   const bool twoBone = solver == kinema::IkSolver::TwoBone;
   const bool valid = problem.validate(twoBone).empty();

@@ -13,6 +13,7 @@ namespace {
 struct Case {
   IkSolver solver;
   int joints;
+  bool lineSearch = false;  // transpose: line search instead of Buss's step
 };
 
 class SolverProperty : public ::testing::TestWithParam<Case> {};
@@ -38,6 +39,7 @@ TEST_P(SolverProperty, ReachesRandomReachableTargets) {
   const int cases = test::propertyCases(c.joints == 30 ? 100 : 200);
   int converged = 0;
   float worstFailure = 0.0f;
+  double iterationSum = 0.0;
   for (int k = 0; k < cases; ++k) {
     const Pose goal = test::randomPose(s, rng, 0.6f);
     const glm::vec3 target = test::worldPosition(s, goal, c.joints - 1);
@@ -49,9 +51,11 @@ TEST_P(SolverProperty, ReachesRandomReachableTargets) {
     p.targets.push_back({});
     p.targets[0].effector = c.joints - 1;
     p.targets[0].position = target;
-    const IkSettings settings = settingsFor(c.solver, chain);
+    IkSettings settings = settingsFor(c.solver, chain);
+    settings.transposeLineSearch = c.lineSearch;
     const IkResult r = solveIk(c.solver, p, settings);
     ASSERT_TRUE(r.message.empty()) << r.message;
+    iterationSum += r.iterations;
     const float err = glm::length(test::worldPosition(s, pose, c.joints - 1) - target);
     ASSERT_TRUE(std::isfinite(err));
     EXPECT_NEAR(r.error, err, 1e-4f * chain) << "reported error matches the pose";
@@ -68,13 +72,16 @@ TEST_P(SolverProperty, ReachesRandomReachableTargets) {
   EXPECT_GE(converged, (cases * 99 + 99) / 100)
       << toString(c.solver) << " on " << c.joints << " joints: " << converged << "/" << cases
       << " converged, worst miss " << worstFailure;
+  std::printf("[ property ] %s%s %d joints: converged %d/%d, mean iterations %.1f\n", toString(c.solver),
+              c.lineSearch ? " (line search)" : "", c.joints, converged, cases, iterationSum / cases);
 }
 
 std::vector<Case> allCases() {
   std::vector<Case> v;
   for (IkSolver s : {IkSolver::Ccd, IkSolver::Fabrik, IkSolver::JacobianTranspose, IkSolver::JacobianPinv,
-                     IkSolver::JacobianDls})
+                     IkSolver::JacobianDls, IkSolver::JacobianSdls})
     for (int n : {3, 10, 30}) v.push_back({s, n});
+  for (int n : {3, 10, 30}) v.push_back({IkSolver::JacobianTranspose, n, true});
   return v;
 }
 
@@ -83,7 +90,8 @@ INSTANTIATE_TEST_SUITE_P(AllSolvers, SolverProperty, ::testing::ValuesIn(allCase
                            std::string name = toString(info.param.solver);
                            for (char& ch : name)
                              if (ch == '-') ch = '_';
-                           return name + "_" + std::to_string(info.param.joints);
+                           return name + (info.param.lineSearch ? "_line_search_" : "_") +
+                                  std::to_string(info.param.joints);
                          });
 
 }  // namespace

@@ -9,7 +9,7 @@ namespace kinema {
 namespace {
 
 const IkSolver kIterative[] = {IkSolver::Ccd, IkSolver::Fabrik, IkSolver::JacobianTranspose, IkSolver::JacobianPinv,
-                               IkSolver::JacobianDls};
+                               IkSolver::JacobianDls, IkSolver::JacobianSdls};
 
 IkProblem problemFor(const Skeleton& s, Pose& pose, int effector, const glm::vec3& target) {
   IkProblem p;
@@ -51,7 +51,7 @@ TEST(IkSolvers, NoNanOverRandomAndDegenerateTargets) {
   std::mt19937 rng(99);
   std::uniform_real_distribution<float> u(-6.0f, 6.0f);
   const IkSolver all[] = {IkSolver::TwoBone, IkSolver::Ccd, IkSolver::Fabrik, IkSolver::JacobianTranspose,
-                          IkSolver::JacobianPinv, IkSolver::JacobianDls};
+                          IkSolver::JacobianPinv, IkSolver::JacobianDls, IkSolver::JacobianSdls};
   const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
   for (int k = 0; k < cases; ++k) {
     Skeleton s = test::makeChain(4, &rng);
@@ -66,7 +66,7 @@ TEST(IkSolvers, NoNanOverRandomAndDegenerateTargets) {
     IkProblem p = problemFor(s, pose, 3, target);
     IkSettings settings;
     settings.maxIterations = 10;
-    const IkSolver solver = all[k % 6];
+    const IkSolver solver = all[k % 7];
     const IkResult r = solveIk(solver, p, settings);
     if (bad) {
       ASSERT_FALSE(r.message.empty());
@@ -96,7 +96,8 @@ Skeleton twoArms() {
 TEST(IkSolvers, TwoHandsReachTwoTargetsWithASharedSpine) {
   const Skeleton s = twoArms();
   const int cases = test::propertyCases(100);
-  for (IkSolver solver : {IkSolver::Fabrik, IkSolver::Ccd, IkSolver::JacobianDls, IkSolver::JacobianPinv}) {
+  for (IkSolver solver : {IkSolver::Fabrik, IkSolver::JacobianDls, IkSolver::JacobianPinv, IkSolver::JacobianSdls,
+                          IkSolver::Ccd}) {
     std::mt19937 rng(5);
     int converged = 0;
     for (int k = 0; k < cases; ++k) {
@@ -107,10 +108,14 @@ TEST(IkSolvers, TwoHandsReachTwoTargetsWithASharedSpine) {
       p.targets.push_back({});
       p.targets[1].effector = 8;
       p.targets[1].position = test::worldPosition(s, goal, 8);
+      // The default settings (cap of 100 iterations, stall stop on) but for the
+      // tolerance; CCD, which needs far more sweeps for two hands, gets 500.
       IkSettings settings;
       settings.tolerance = 1e-3f * 4.4f;
-      settings.maxIterations = 500;
-      settings.stallFraction = 0.0f;
+      if (solver == IkSolver::Ccd) {
+        settings.maxIterations = 500;
+        settings.stallFraction = 0.0f;
+      }
       const IkResult r = solveIk(solver, p, settings);
       ASSERT_TRUE(r.message.empty()) << r.message;
       for (int i = 0; i < s.size(); ++i) ASSERT_TRUE(pose.local[i].isFinite()) << toString(solver) << " joint " << i;
@@ -127,12 +132,66 @@ TEST(IkSolvers, TwoHandsReachTwoTargetsWithASharedSpine) {
       for (int i = 0; i < s.size(); ++i) EXPECT_EQ(pose.local[i].translation, before.local[i].translation);
     }
     // The targets come from one pose of the whole rig, so both are reachable at once.
-    // FABRIK fits the rigid chest to both arms in its backward pass: 1000/1000 cases
-    // within 500 passes (943 within 100). With the paper's plain centroid of per-arm
-    // proposals instead it reached only 51 % here, so this bar catches that loss.
-    const int percent = 99;
-    EXPECT_GE(converged, (cases * percent + 99) / 100) << toString(solver) << ": " << converged << "/" << cases;
+    // FABRIK fits the rigid chest to both arms in its backward pass and finishes with
+    // DLS steps after 10 passes; with passes alone it reached 94.3 % within 100 (and only
+    // 51 % within 500 with the paper's plain centroid of per-arm proposals for the chest).
+    EXPECT_GE(converged, (cases * 99 + 99) / 100) << toString(solver) << ": " << converged << "/" << cases;
     std::printf("[ two hands ] %-14s converged %d/%d\n", toString(solver), converged, cases);
+  }
+}
+
+// Two hands with limits on every joint of the rig, the chest (a sub-base with two arms)
+// included: limits hold at the end for every solver, and FABRIK, which applies the chest's
+// and the shoulders' limits in its backward pass too, converges within the default cap.
+TEST(IkSolvers, TwoHandsWithLimitsOnTheSharedSpine) {
+  const Skeleton s = twoArms();
+  IkRig rig;
+  const int n = s.size();
+  rig.setLimit(n, 1, JointLimit::cone({0, 1, 0}, 0.4f, -0.3f, 0.3f));  // spine
+  rig.setLimit(n, 2, JointLimit::euler(EulerOrder::XYZ, glm::vec3(-0.3f), glm::vec3(0.3f)));  // chest
+  for (int side = 0; side < 2; ++side) {
+    const int a = 3 + 3 * side;
+    const float x = side == 0 ? 1.0f : -1.0f;
+    rig.setLimit(n, a, JointLimit::cone({x, 0, 0}, 0.8f, -0.5f, 0.5f));  // shoulder
+    rig.setLimit(n, a + 1, JointLimit::hinge({0, 0, 1}, -1.5f, 1.5f));    // elbow
+    rig.setLimit(n, a + 2, JointLimit::cone({x, 0, 0}, 0.6f, -0.3f, 0.3f));  // wrist
+  }
+  const int cases = test::propertyCases(200);
+  for (IkSolver solver : kIterative) {
+    for (int finishAfter : {10, 0}) {  // 0: FABRIK's passes alone, for the record
+      if (finishAfter == 0 && solver != IkSolver::Fabrik) continue;
+      std::mt19937 rng(23);
+      int converged = 0;
+      for (int k = 0; k < cases; ++k) {
+        Pose goal = test::randomPose(s, rng, 0.8f);
+        for (int i = 0; i < n; ++i)
+          goal.local[i].rotation = applyJointLimit(rig.limits[i], s.rest[i].rotation, goal.local[i].rotation);
+        Pose pose = Pose::rest(s);
+        IkProblem p = problemFor(s, pose, 5, test::worldPosition(s, goal, 5));
+        p.targets.push_back({});
+        p.targets[1].effector = 8;
+        p.targets[1].position = test::worldPosition(s, goal, 8);
+        p.rig = &rig;
+        IkSettings settings;
+        settings.tolerance = 1e-3f * 4.4f;
+        settings.fabrikFinishAfter = finishAfter;
+        if (finishAfter == 0) settings.maxIterations = 500;
+        if (solver == IkSolver::Ccd || solver == IkSolver::JacobianTranspose) settings.maxIterations = 2000;
+        const IkResult r = solveIk(solver, p, settings);
+        ASSERT_TRUE(r.message.empty()) << r.message;
+        converged += r.converged;
+        for (int i = 0; i < n; ++i)
+          EXPECT_LE(jointLimitViolation(rig.limits[i], s.rest[i].rotation, pose.local[i].rotation), 1e-3f)
+              << toString(solver) << " joint " << i;
+      }
+      std::printf("[ limited hands ] %-20s %s converged %d/%d\n", toString(solver),
+                  finishAfter ? "" : "(passes only, cap 500)", converged, cases);
+      if (finishAfter == 0) continue;
+      // CCD (98 % measured) and the transpose (35 %, with or without line search) stall
+      // against the limits of this rig; the bars below only catch them getting worse.
+      const int percent = solver == IkSolver::Ccd ? 90 : solver == IkSolver::JacobianTranspose ? 30 : 99;
+      EXPECT_GE(converged, (cases * percent + 99) / 100) << toString(solver) << ": " << converged << "/" << cases;
+    }
   }
 }
 
@@ -193,6 +252,7 @@ TEST(IkSolvers, EverySolverHonoursJointLimits) {
     for (int i = 0; i < s.size(); ++i) rig.setLimit(s.size(), i, limitFor(kind, i));
     const float chain = test::chainLength(s);
     for (IkSolver solver : kIterative) {
+     for (int passesOnly = 0; passesOnly < (solver == IkSolver::Fabrik ? 2 : 1); ++passesOnly) {
       std::mt19937 targets(11 + kind);
       int converged = 0;
       for (int k = 0; k < cases; ++k) {
@@ -206,25 +266,25 @@ TEST(IkSolvers, EverySolverHonoursJointLimits) {
         IkSettings settings;
         settings.tolerance = 1e-3f * chain;
         settings.maxIterations = solver == IkSolver::JacobianTranspose ? 5000 : 500;
+        if (passesOnly) settings.fabrikFinishAfter = 0;  // for the record: FABRIK without its DLS finish
         const IkResult r = solveIk(solver, p, settings);
         converged += r.converged;
         for (int i = 0; i < s.size(); ++i)
           EXPECT_LE(jointLimitViolation(rig.limits[i], s.rest[i].rotation, pose.local[i].rotation), 1e-3f)
               << toString(solver) << " joint " << i;
       }
-      std::printf("[ limits ] %-6s %-20s converged %d/%d\n", kindName[kind], toString(solver), converged, cases);
-      // The bar is 99 %. Known short of it (measured with 200 cases, see the
-      // README): FABRIK with the three kinds mixed (76 % within 500 passes, 97 % within
-      // 3000 with no stall stop: slow where a hinge needs twist from a cone above); CCD
-      // (94.5-99.5 %) and the Jacobian transpose (91-98 %), which stall against limits.
-      // DLS and the pseudo-inverse: 100 %. FABRIK with hinges or cones alone: 100 %; with
-      // Euler ranges alone: 98.5 % here (3 of 200 stall), 100 % with another target set.
+      std::printf("[ limits ] %-6s %-20s converged %d/%d%s\n", kindName[kind], toString(solver), converged, cases,
+                  passesOnly ? " (passes only)" : "");
+      if (passesOnly) continue;
+      // The bar is 99 %. FABRIK reaches it with its DLS finish (passes alone, 1000
+      // cases: 86 % with the three kinds mixed, 80.5 % before the hinge twist). Known short
+      // of it (1000 cases, see the README): CCD (95-99.7 %) and the Jacobian transpose
+      // (92.6-97.8 %), which stall against limits.
       int percent = 99;
-      if (solver == IkSolver::Fabrik && kind == 0) percent = 72;  // 47 % with the backward re-projection switched off
-      if (solver == IkSolver::Fabrik && kind == 2) percent = 95;
       if (solver == IkSolver::Ccd || solver == IkSolver::JacobianTranspose) percent = 85;
       EXPECT_GE(converged, (cases * percent + 99) / 100)
           << kindName[kind] << " limits: " << toString(solver) << " converged " << converged << "/" << cases;
+     }
     }
   }
 }
@@ -259,6 +319,114 @@ TEST(IkSolvers, TraceRecordsEveryStepAndChangesNothing) {
     if (solver == IkSolver::Ccd) {
       EXPECT_EQ(trace.entries[1].joint, 3);  // the joint nearest the effector turns first
       EXPECT_EQ(trace.entries[4].joint, 0);
+    }
+  }
+}
+
+// The transpose's line search only takes steps that lower the true error (with one target
+// the traced error never rises), and each of its steps ends no worse than Buss's step
+// from the same pose, since Buss's step is its first trial.
+TEST(IkSolvers, TransposeLineSearchNeverRaisesTheError) {
+  std::mt19937 rng(31);
+  const Skeleton s = test::makeChain(10, &rng);
+  const float chain = test::chainLength(s);
+  for (int k = 0; k < 50; ++k) {
+    Pose pose = test::randomPose(s, rng, 0.6f);
+    IkProblem p = problemFor(s, pose, 9, test::worldPosition(s, test::randomPose(s, rng, 0.6f), 9));
+    IkTrace trace;
+    IkSettings settings;
+    settings.tolerance = 1e-3f * chain;
+    settings.maxIterations = 300;
+    settings.transposeLineSearch = true;
+    settings.trace = &trace;
+    const IkResult r = solveJacobianTranspose(p, settings);
+    ASSERT_TRUE(r.message.empty());
+    for (size_t i = 1; i < trace.entries.size(); ++i)
+      ASSERT_LE(trace.entries[i].error, trace.entries[i - 1].error * (1.0f + 1e-5f)) << "case " << k << " step " << i;
+    // One step each from the same random pose.
+    const Pose start = test::randomPose(s, rng, 1.2f);
+    const glm::vec3 target = test::worldPosition(s, test::randomPose(s, rng, 1.2f), 9);
+    Pose a = start, b = start;
+    IkProblem pa = problemFor(s, a, 9, target), pb = problemFor(s, b, 9, target);
+    IkSettings one;
+    one.maxIterations = 1;
+    const float buss = solveJacobianTranspose(pa, one).error;
+    one.transposeLineSearch = true;
+    const float searched = solveJacobianTranspose(pb, one).error;
+    EXPECT_LE(searched, buss * (1.0f + 1e-5f)) << "case " << k;
+  }
+}
+
+// FABRIK's hybrid finish, step by step: pairs of passes first, then DLS steps, counted as
+// iterations; with fabrikFinishAfter = 0 the trace holds passes only.
+TEST(IkSolvers, FabrikFinishesWithDlsStepsOnlyWhereAllowed) {
+  std::mt19937 rng(11);
+  const Skeleton s = test::makeChain(10, &rng);
+  IkRig rig;
+  for (int i = 0; i < s.size(); ++i) rig.setLimit(s.size(), i, limitFor(0, i));
+  int sawFinish = 0;
+  for (int k = 0; k < 40; ++k) {
+    Pose goal = test::randomPose(s, rng, 0.8f);
+    for (int i = 0; i < s.size(); ++i)
+      goal.local[i].rotation = applyJointLimit(rig.limits[i], s.rest[i].rotation, goal.local[i].rotation);
+    for (int finishAfter : {10, 0}) {
+      Pose pose = Pose::rest(s);
+      IkProblem p = problemFor(s, pose, 9, test::worldPosition(s, goal, 9));
+      p.rig = &rig;
+      IkTrace trace;
+      IkSettings settings;
+      settings.tolerance = 1e-3f * test::chainLength(s);
+      settings.fabrikFinishAfter = finishAfter;
+      settings.trace = &trace;
+      const IkResult r = solveFabrik(p, settings);
+      ASSERT_TRUE(r.message.empty());
+      int passes = 0, steps = 0;
+      for (size_t i = 1; i < trace.entries.size(); ++i) {
+        const IkStep st = trace.entries[i].step;
+        if (st == IkStep::FabrikForward) ++passes;
+        if (st == IkStep::JacobianStep) {
+          ++steps;
+        } else {
+          ASSERT_EQ(steps, 0) << "a FABRIK pass after the DLS finish began, case " << k;
+        }
+      }
+      EXPECT_EQ(passes + steps, r.iterations) << "case " << k;
+      EXPECT_EQ(trace.entries.back().iteration, r.iterations);
+      if (finishAfter == 0) EXPECT_EQ(steps, 0);
+      else EXPECT_LE(passes, 10);
+      if (finishAfter != 0 && steps > 0) ++sawFinish;
+    }
+  }
+  EXPECT_GT(sawFinish, 0) << "no case needed the finish: the test does not exercise it";
+}
+
+// A valid pose may hold non-unit quaternions (found by fuzz_ik): every solver hands back
+// unit rotations for the chain it worked on, even where a joint did not need to turn
+// (the target already reached), and solves as if the input had been unit.
+TEST(IkSolvers, NonUnitStartRotationsComeBackUnit) {
+  const IkSolver all[] = {IkSolver::TwoBone, IkSolver::Ccd, IkSolver::Fabrik, IkSolver::JacobianTranspose,
+                          IkSolver::JacobianPinv, IkSolver::JacobianDls, IkSolver::JacobianSdls};
+  std::mt19937 rng(41);
+  const Skeleton s = test::makeChain(4, &rng);
+  for (IkSolver solver : all) {
+    for (int k = 0; k < 20; ++k) {
+      const Pose unit = test::randomPose(s, rng, 1.0f);
+      Pose scaled = unit;
+      // Only the chain's joints (IK root j1): what lies above is outside the solver's care.
+      for (int i = 1; i < s.size(); ++i) scaled.local[i].rotation *= (k % 2 ? 3.0f : 0.2f);
+      // Half the cases: the target is where the effector already is, so nothing turns.
+      Pose other = test::randomPose(s, rng, 1.0f);
+      other.local[0] = unit.local[0];
+      const glm::vec3 target = test::worldPosition(s, k % 4 < 2 ? unit : other, 3);
+      Pose a = unit, b = scaled;
+      IkProblem pa = problemFor(s, a, 3, target), pb = problemFor(s, b, 3, target);
+      pa.targets[0].root = pb.targets[0].root = 1;
+      const IkResult ra = solveIk(solver, pa, IkSettings{}), rb = solveIk(solver, pb, IkSettings{});
+      ASSERT_TRUE(rb.message.empty()) << rb.message;
+      for (int i = 1; i < s.size(); ++i)
+        EXPECT_NEAR(glm::length(b.local[i].rotation), 1.0f, 1e-5f) << toString(solver) << " joint " << i;
+      EXPECT_EQ(ra.converged, rb.converged) << toString(solver);
+      EXPECT_NEAR(ra.error, rb.error, 1e-3f) << toString(solver);  // iterations round differently
     }
   }
 }
