@@ -13,8 +13,9 @@ KINEMA_PACKAGES=(build-essential cmake ninja-build pkg-config
   libegl-mesa0 libgl1-mesa-dri libglx-mesa0)
 # The last three are Mesa's EGL, llvmpipe and GLX drivers: they come in today through
 # libegl1 and libgl1, but rendering needs them, so they are named rather than assumed.
-# The Khronos glTF validator (npm package, tests/tools/gltf_validator) runs on node.
-KINEMA_PACKAGES+=(nodejs npm)
+# The Khronos glTF validator (npm package, tests/tools/gltf_validator) runs on node. Only
+# when npm is missing: NodeSource's nodejs bundles npm and conflicts with Debian's package.
+if ! command -v npm >/dev/null 2>&1; then KINEMA_PACKAGES+=(nodejs npm); fi
 
 kinema_phase_start() { KINEMA_PHASE=$1; KINEMA_PHASE_T0=$(date +%s); echo "== $1"; }
 kinema_phase_end() {
