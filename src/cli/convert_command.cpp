@@ -11,19 +11,11 @@
 #include "io/bvh_writer.h"
 #include "io/gltf_writer.h"
 #include "io/kinema_file.h"
+#include "io/scene.h"
 
 namespace kinema::cli {
 
 namespace {
-
-std::string extensionOf(const std::string& path) {
-  const size_t slash = path.find_last_of('/');
-  const size_t dot = path.find_last_of('.');
-  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return {};
-  std::string ext = path.substr(dot);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
 
 bool writable(const std::string& ext) { return ext == ".bvh" || ext == ".gltf" || ext == ".glb" || ext == ".kinema"; }
 
@@ -56,7 +48,7 @@ CLI::App* addConvertCommand(CLI::App& app, ConvertOptions& o) {
 }
 
 int runConvert(const ConvertOptions& o) {
-  const std::string ext = extensionOf(o.output);
+  const std::string ext = lowerExtension(o.output);
   if (!writable(ext)) {
     std::cerr << "kinema convert: cannot write '" << ext << "' files (use .bvh, .gltf, .glb or .kinema); see --help\n";
     return kExitUsage;

@@ -11,6 +11,7 @@
 
 #include "io/gltf_import_parts.h"
 #include "io/gltf_limits.h"
+#include "io/json_depth.h"
 
 namespace kinema {
 
@@ -27,27 +28,6 @@ uint32_t readU32(const std::string& b, size_t at) {
   uint32_t v = 0;
   for (int i = 3; i >= 0; --i) v = (v << 8) | static_cast<unsigned char>(b[at + i]);
   return v;
-}
-
-// Deepest nesting of [ and { outside strings: tinygltf turns `extras` into Values
-// recursively, so the depth a file controls is capped before it parses anything.
-int jsonDepth(const char* p, size_t n) {
-  int depth = 0, deepest = 0;
-  bool inString = false;
-  for (size_t i = 0; i < n; ++i) {
-    const char c = p[i];
-    if (inString) {
-      if (c == '\\') ++i;
-      else if (c == '"') inString = false;
-    } else if (c == '"') {
-      inString = true;
-    } else if (c == '[' || c == '{') {
-      deepest = std::max(deepest, ++depth);
-    } else if (c == ']' || c == '}') {
-      --depth;
-    }
-  }
-  return deepest;
 }
 
 // tinygltf hands every image's bytes here while it parses. Images in a bufferView are
@@ -279,7 +259,8 @@ Result<Scene> parseGltf(const std::string& bytes, const std::string& path) {
   size_t jsonOffset = 0, jsonLength = bytes.size();
   if (binary)
     if (std::string e = checkGlb(bytes, path, jsonOffset, jsonLength); !e.empty()) return R::failure(e);
-  if (jsonDepth(bytes.data() + jsonOffset, jsonLength) > GltfLimits::kMaxJsonDepth)
+  // tinygltf turns `extras` into Values recursively: cap the depth before it parses.
+  if (jsonNestingDepth(bytes.data() + jsonOffset, jsonLength) > GltfLimits::kMaxJsonDepth)
     return R::failure(path + ": JSON nested deeper than " + std::to_string(GltfLimits::kMaxJsonDepth) + " levels");
 
   tinygltf::Model model;

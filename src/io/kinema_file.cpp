@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/atomic_write.h"
+#include "io/json_depth.h"
 #include "io/image.h"
 #include "io/json_number.h"
 #include "io/text_file.h"
@@ -1088,29 +1089,8 @@ std::string toKinemaJson(const Scene& scene) {
   return collapseNumberArrays(root.dump(1, '\t')) + "\n";
 }
 
-// The deepest nesting of [ and { outside strings, scanned before parsing so that a file
-// of a million '[' is refused without building anything.
-int jsonNestingDepth(const std::string& text) {
-  int depth = 0, deepest = 0;
-  bool inString = false;
-  for (size_t i = 0; i < text.size(); ++i) {
-    const char c = text[i];
-    if (inString) {
-      if (c == '\\') ++i;
-      else if (c == '"') inString = false;
-    } else if (c == '"') {
-      inString = true;
-    } else if (c == '[' || c == '{') {
-      deepest = std::max(deepest, ++depth);
-    } else if (c == ']' || c == '}') {
-      --depth;
-    }
-  }
-  return deepest;
-}
-
 Result<Scene> parseKinemaJson(const std::string& text, const std::string& source, const InputLimits& limits) {
-  const int depth = jsonNestingDepth(text);
+  const int depth = jsonNestingDepth(text.data(), text.size());
   if (depth > limits.maxJsonDepth)
     return Result<Scene>::failure(
         source + ": JSON nested " + limitExceeded(depth, limits.maxJsonDepth, "levels deep", "maxJsonDepth"));
@@ -1151,7 +1131,7 @@ Result<Scene> parseKinemaJson(const std::string& text, const std::string& source
 
 Result<IkRig> parseIkRigJson(const std::string& text, const std::string& source, const Skeleton& skeleton) {
   const InputLimits limits;
-  const int depth = jsonNestingDepth(text);
+  const int depth = jsonNestingDepth(text.data(), text.size());
   if (depth > limits.maxJsonDepth)
     return Result<IkRig>::failure(
         source + ": JSON nested " + limitExceeded(depth, limits.maxJsonDepth, "levels deep", "maxJsonDepth"));

@@ -9,7 +9,6 @@
 
 namespace kinema {
 
-namespace {
 std::string lowerExtension(const std::string& path) {
   const size_t slash = path.find_last_of('/');
   const size_t dot = path.find_last_of('.');
@@ -18,7 +17,6 @@ std::string lowerExtension(const std::string& path) {
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   return ext;
 }
-}  // namespace
 
 Result<Scene> loadScene(const std::string& path, const InputLimits& limits) {
   const std::string ext = lowerExtension(path);

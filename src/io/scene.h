@@ -40,6 +40,9 @@ struct Scene {
   int fileIndexOf(int joint) const { return nodeOfJoint.empty() ? joint : nodeOfJoint[joint]; }
 };
 
+// A path's extension with its dot, lower-cased (".glb"), or "" when it has none.
+std::string lowerExtension(const std::string& path);
+
 // Loads .bvh, .kinema, .gltf or .glb, chosen by the file's extension.
 Result<Scene> loadScene(const std::string& path, const InputLimits& limits = {});
 
