@@ -12,6 +12,7 @@
 
 #include "core/forward_kinematics.h"
 #include "ik/ik_solver.h"
+#include "ik/two_bone_job.h"
 
 namespace kinema {
 namespace {
@@ -110,6 +111,44 @@ void run(benchmark::State& state, IkSolver solver, int joints, bool reachable, b
   state.SetItemsProcessed(solves);
 }
 
+// The two-bone job alone, as ozz's sample runs its IKTwoBoneJob: the model-space inputs
+// of the 3-joint arm's cases (FK of each start pose, the shoulder as IK root, no pole) are
+// computed before timing; each iteration runs one job (validate() included unless
+// `unchecked`), cycling through the 1000 cases.
+void runTwoBoneJob(benchmark::State& state, bool reachable, bool unchecked) {
+  const Cases cases = makeCases(3, reachable);
+  glm::quat startCorrection, midCorrection;
+  bool reached = false;
+  std::vector<TwoBoneIkJob> jobs(kCases);
+  for (int k = 0; k < kCases; ++k) {
+    const std::vector<glm::mat4> w = computeWorld(cases.skeleton, cases.starts[k]);
+    TwoBoneIkJob& job = jobs[k];
+    job.startPosition = glm::vec3(w[0][3]);
+    job.startRotation = glm::normalize(glm::quat_cast(glm::mat3(w[0])));
+    job.midPosition = glm::vec3(w[1][3]);
+    job.midRotation = glm::normalize(glm::quat_cast(glm::mat3(w[1])));
+    job.endPosition = glm::vec3(w[2][3]);
+    job.target = cases.targets[k];
+    job.startCorrection = &startCorrection;
+    job.midCorrection = &midCorrection;
+    job.reached = &reached;
+  }
+  long long solves = 0;
+  int k = 0;
+  for (auto _ : state) {
+    if (unchecked)
+      jobs[k].runUnchecked();
+    else
+      benchmark::DoNotOptimize(jobs[k].run());
+    benchmark::DoNotOptimize(startCorrection);
+    benchmark::DoNotOptimize(midCorrection);
+    benchmark::ClobberMemory();
+    ++solves;
+    k = (k + 1) % kCases;
+  }
+  state.SetItemsProcessed(solves);
+}
+
 // Two hands on a shared spine (hips - spine - chest, then two arms of three bones 0.8
 // long): both targets from FK of one random pose of the whole rig (every joint turned up
 // to 0.5 rad), starts from poses turned up to 0.3 rad; tolerance 1e-3 x 4.4 (hips to hand).
@@ -192,6 +231,12 @@ void registerAll() {
         ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark(("ik3/" + kind + "/two-bone").c_str(),
                                  [=](benchmark::State& st) { run(st, IkSolver::TwoBone, 3, reachable); })
+        ->Unit(benchmark::kNanosecond);
+    benchmark::RegisterBenchmark(("ik3/" + kind + "/two-bone-job").c_str(),
+                                 [=](benchmark::State& st) { runTwoBoneJob(st, reachable, false); })
+        ->Unit(benchmark::kNanosecond);
+    benchmark::RegisterBenchmark(("ik3/" + kind + "/two-bone-job-unchecked").c_str(),
+                                 [=](benchmark::State& st) { runTwoBoneJob(st, reachable, true); })
         ->Unit(benchmark::kNanosecond);
   }
   for (IkSolver s : {IkSolver::Fabrik, IkSolver::JacobianDls, IkSolver::JacobianPinv, IkSolver::JacobianSdls})

@@ -1,12 +1,12 @@
-// Analytic two-bone IK (seed 002's law-of-cosines triangle): the triangle root-middle-
-// target fixes where the middle joint goes, on the pole's side of the root-target line;
-// the root and then the middle joint turn their bones there by minimal rotations.
-// Joints between root, middle and effector stay rigid. No allocation on the way.
+// Analytic two-bone IK on a pose: walks FK to the three joints, hands their model-space
+// transforms to TwoBoneIkJob (the law-of-cosines geometry, ik/two_bone_job.cpp) and
+// applies its corrections. Joints between root, middle and effector stay rigid.
 #include <algorithm>
 #include <cmath>
 
 #include "core/forward_kinematics.h"
 #include "ik/ik_chain.h"
+#include "ik/two_bone_job.h"
 
 namespace kinema {
 
@@ -90,26 +90,6 @@ struct PathWorld {
   }
 };
 
-// The rotation taking unit vector a onto unit vector b (half-way quaternion: one square
-// root, where fromToRotation also measures and divides both inputs).
-glm::quat unitFromTo(const glm::vec3& a, const glm::vec3& b) {
-  const float d = glm::dot(a, b);
-  if (d < -0.999999f) return fromToRotation(a, b);  // opposite: any perpendicular axis
-  const glm::vec3 c = glm::cross(a, b);
-  const glm::quat q(1.0f + d, c.x, c.y, c.z);
-  return q * (1.0f / std::sqrt(glm::dot(q, q)));
-}
-
-glm::vec3 anyPerpendicular(const glm::vec3& v) {
-  const glm::vec3 a = std::abs(v.x) < 0.9f ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
-  return glm::cross(v, a);
-}
-
-// Turns joint `local` by the world rotation `delta` given its parent's world rotation.
-void applyWorldDelta(glm::quat& local, const glm::quat& parentRot, const glm::quat& delta) {
-  local = ik_detail::renormalize(glm::conjugate(parentRot) * delta * parentRot * local);
-}
-
 }  // namespace
 
 IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
@@ -136,8 +116,6 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
     }
     const int ib = path.indexOf(b), ic = path.count - 1;
     const glm::vec3 pa = path.position[0], pb = path.position[ib], pc = path.position[ic];
-    const glm::quat rap = ik_detail::renormalize(path.parentOfRootRotation);
-    const glm::quat rbp = ik_detail::renormalize(ib > 0 ? path.rotation[ib - 1] : path.parentOfRootRotation);
     if (settings.trace) {
       IkTrace& t = *settings.trace;
       if (t.joints.empty()) t.joints.assign(path.joints, path.joints + path.count);
@@ -147,55 +125,31 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
       for (int i = 0; i < path.count; ++i) e.positions.push_back(path.position[i]);
       t.entries.push_back(std::move(e));
     }
-    const float l1 = glm::length(pb - pa), l2 = glm::length(pc - pb);
-    glm::vec3 toTarget = target.position - pa;
-    float dist = glm::length(toTarget);
-    // Soft IK: approach full extension exponentially, so the elbow does not snap straight.
-    const float soften = std::min(settings.twoBoneSoften, l1 + l2);
-    if (soften > 0.0f && dist > l1 + l2 - soften && dist > 0.0f) {
-      const float da = l1 + l2 - soften;
-      const float softened = da + soften * (1.0f - std::exp(-(dist - da) / soften));
-      toTarget *= softened / dist;
-      dist = softened;
+    // The job does the geometry; the path gives it model-space inputs.
+    const glm::quat ra = ik_detail::renormalize(path.rotation[0]);
+    const glm::quat rb = ik_detail::renormalize(path.rotation[ib]);
+    glm::quat correctionA, correctionB;
+    TwoBoneIkJob job;
+    job.startPosition = pa;
+    job.startRotation = ra;
+    job.midPosition = pb;
+    job.midRotation = rb;
+    job.endPosition = pc;
+    job.target = target.position;
+    if (target.hasPole) job.pole = target.pole - pa;  // zero: bend to the current side
+    if (settings.twoBoneSoften > 0.0f) {
+      const float reach = glm::length(pb - pa) + glm::length(pc - pb);
+      if (reach > 0.0f) job.soften = std::min(settings.twoBoneSoften / reach, 1.0f);
     }
-    const float d = std::clamp(dist, std::abs(l1 - l2), l1 + l2);
-
-    // Where the middle joint must go: on the circle the law of cosines allows, on the
-    // pole's side of the root-target line (without a pole: the side it is on now).
-    glm::vec3 u;
-    if (dist > 1e-12f) {
-      u = toTarget / dist;  // unit already
-    } else {
-      u = pc - pa;
-      if (glm::dot(u, u) < 1e-20f) u = pb - pa;
-      if (glm::dot(u, u) < 1e-20f) u = glm::vec3(0.0f, 1.0f, 0.0f);
-      u = glm::normalize(u);
-    }
-    glm::vec3 side = target.hasPole ? target.pole - pa : pb - pa;
-    side -= glm::dot(side, u) * u;
-    if (glm::dot(side, side) < 1e-20f) {
-      side = pb - pa - glm::dot(pb - pa, u) * u;
-      if (glm::dot(side, side) < 1e-20f) side = anyPerpendicular(u);
-    }
-    const glm::vec3 w = glm::normalize(side);
-    glm::quat deltaA(1.0f, 0.0f, 0.0f, 0.0f), deltaB(1.0f, 0.0f, 0.0f, 0.0f);
-    if (l1 > 1e-12f && l2 > 1e-12f && d > 1e-12f) {
-      const float cosA = std::clamp((l1 * l1 + d * d - l2 * l2) / (2.0f * l1 * d), -1.0f, 1.0f);
-      const float sinA = std::sqrt(std::max(0.0f, 1.0f - cosA * cosA));
-      const glm::vec3 elbowDir = cosA * u + sinA * w;  // unit
-      const glm::vec3 elbow = pa + l1 * elbowDir, hand = pa + d * u;
-      // Minimal rotations (no spurious roll): the root turns its bone onto the elbow,
-      // then the middle joint turns its bone onto the hand. Both bones keep their length
-      // (l1, l2), so their directions are unit vectors after one division each.
-      deltaA = unitFromTo((pb - pa) * (1.0f / l1), elbowDir);
-      const glm::vec3 pc1 = pa + deltaA * (pc - pa);
-      deltaB = unitFromTo((pc1 - elbow) * (1.0f / l2), (hand - elbow) * (1.0f / l2));
-    } else {
-      deltaA = fromToRotation(pc - pa, u);  // a zero-length bone: only aiming is possible
-    }
-    // The root's new local rotation from its world one: conj(parent) * delta * world.
-    pose.local[a].rotation = ik_detail::renormalize(glm::conjugate(rap) * (deltaA * path.rotation[0]));
-    applyWorldDelta(pose.local[b].rotation, ik_detail::renormalize(deltaA * rbp), deltaB);
+    job.startCorrection = &correctionA;
+    job.midCorrection = &correctionB;
+    job.runUnchecked();  // inputs come from a validated problem
+    pose.local[a].rotation = ik_detail::renormalize(pose.local[a].rotation * correctionA);
+    pose.local[b].rotation = ik_detail::renormalize(pose.local[b].rotation * correctionB);
+    // The world turns behind the corrections: of the start joint, and of everything from
+    // the mid joint down (the mid's own turn after the start's).
+    const glm::quat deltaA = ra * correctionA * glm::conjugate(ra);
+    const glm::quat deltaBA = deltaA * rb * correctionB * glm::conjugate(rb);
     glm::quat effectorParentRot(1.0f, 0.0f, 0.0f, 0.0f);
     bool limited = false;
     if (problem.rig) {
@@ -209,15 +163,14 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
     if (target.hasOrientation) {
       const glm::quat rcp = ik_detail::renormalize(path.rotation[ic - 1]);
       // The effector's parent turned with the root, then with the middle joint.
-      effectorParentRot = ik_detail::renormalize(deltaB * deltaA * rcp);
+      effectorParentRot = ik_detail::renormalize(deltaBA * rcp);
       pose.local[c].rotation = ik_detail::renormalize(glm::conjugate(effectorParentRot) * ik_detail::renormalize(target.orientation));
       if (problem.rig)
         if (const JointLimit* l = problem.rig->limitOf(c))
           pose.local[c].rotation = applyJointLimit(*l, s.rest[c].rotation, pose.local[c].rotation);
     }
-    // Where the effector ended: pb moved by deltaA, then pc about the new pb by deltaB.
-    const glm::vec3 pb1 = pa + deltaA * (pb - pa);
-    glm::vec3 finalC = pb1 + deltaB * (pa + deltaA * (pc - pa) - pb1);
+    // Where the effector ended: pb turned about pa by deltaA, pc about pb by deltaBA.
+    glm::vec3 finalC = pa + deltaA * (pb - pa) + deltaBA * (pc - pb);
     if (limited || settings.trace) {
       path.compute(s, pose, problem.rootTransform, a, c);
       finalC = path.position[ic];
