@@ -19,14 +19,13 @@ glm::quat rotationOf(const glm::mat4& m) {
   return ik_detail::renormalize(glm::quat_cast(r));
 }
 
-// World positions and rotations of `root`'s parent and of every joint from root down to
+// World positions and rotations of every joint from root down to
 // `effector`. Rigid paths (no scale, placement without scale) use quaternion products only;
 // any scale falls back to affine matrices. Rotations are renormalised where they are read.
 struct PathWorld {
   int joints[kMaxDepth];
   glm::vec3 position[kMaxDepth];
   glm::quat rotation[kMaxDepth];  // world rotations (products of unit quaternions)
-  glm::quat parentOfRootRotation{1.0f, 0.0f, 0.0f, 0.0f};
   int count = 0;
 
   bool compute(const Skeleton& s, const Pose& pose, const glm::mat4& placement, int root, int effector) {
@@ -52,10 +51,7 @@ struct PathWorld {
       glm::vec3 p = identity ? glm::vec3(0.0f) : glm::vec3(placement[3]);
       for (int i = n - 1; i >= 0; --i) {
         const Transform& t = pose.local[up[i]];
-        if (up[i] == root) {
-          inPath = true;
-          parentOfRootRotation = q;
-        }
+        if (up[i] == root) inPath = true;
         p += q * t.translation;
         q = q * t.rotation;
         if (inPath) {
@@ -69,10 +65,7 @@ struct PathWorld {
     glm::mat4 w = placement;
     for (int i = n - 1; i >= 0; --i) {
       const Transform& t = pose.local[up[i]];
-      if (up[i] == root) {
-        inPath = true;
-        parentOfRootRotation = q;
-      }
+      if (up[i] == root) inPath = true;
       w = multiplyAffine(w, t.toMatrix());
       q = ik_detail::renormalize(q * t.rotation);
       if (inPath) {
