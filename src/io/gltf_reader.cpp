@@ -12,6 +12,7 @@
 #include "io/gltf_import_parts.h"
 #include "io/gltf_limits.h"
 #include "io/json_depth.h"
+#include "io/text_file.h"
 
 namespace kinema {
 
@@ -304,17 +305,8 @@ Result<Scene> parseGltf(const std::string& bytes, const std::string& path) {
 }
 
 Result<Scene> loadGltf(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) return Result<Scene>::failure(path + ": cannot open the file");
-  f.seekg(0, std::ios::end);
-  const std::streamoff size = f.tellg();
-  if (size < 0) return Result<Scene>::failure(path + ": cannot read the file");
-  if (static_cast<uint64_t>(size) > GltfLimits::kMaxFileBytes)
-    return Result<Scene>::failure(path + ": " + std::to_string(size) + " bytes exceed the limit of " +
-                                  std::to_string(GltfLimits::kMaxFileBytes));
-  std::string bytes(static_cast<size_t>(size), '\0');
-  f.seekg(0);
-  if (!f.read(bytes.data(), size)) return Result<Scene>::failure(path + ": cannot read the file");
+  std::string bytes;  // readTextFile reads bytes as they are and stops at the cap
+  if (std::string e = readTextFile(path, bytes, GltfLimits::kMaxFileBytes); !e.empty()) return Result<Scene>::failure(e);
   return parseGltf(bytes, path);
 }
 
