@@ -1,5 +1,6 @@
 #pragma once
 // Chains and random poses shared by the IK tests.
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -18,6 +19,19 @@ inline Skeleton makeChain(int n, std::mt19937* rng = nullptr) {
                Transform::fromTranslation(glm::vec3(0.0f, i == 0 ? 0.0f : (rng ? len(*rng) : 1.0f), 0.0f)));
   return s;
 }
+
+// Root at the origin, bones along +X of lengths l1, l2; every joint turns about Z.
+inline Skeleton planarArm(float l1, float l2) {
+  Skeleton s;
+  s.addJoint("shoulder", -1, Transform::identity());
+  s.addJoint("elbow", 0, Transform::fromTranslation({l1, 0.0f, 0.0f}));
+  s.addJoint("hand", 1, Transform::fromTranslation({l2, 0.0f, 0.0f}));
+  return s;
+}
+
+// Signed angle of a rotation about +Z, and an angle wrapped into (-pi, pi].
+inline float zAngle(const glm::quat& q) { return 2.0f * std::atan2(q.z, q.w); }
+inline float wrap(float a) { return std::atan2(std::sin(a), std::cos(a)); }
 
 inline glm::quat randomRotation(std::mt19937& rng, float maxAngle) {
   std::normal_distribution<float> g(0.0f, 1.0f);

@@ -12,17 +12,9 @@
 namespace kinema {
 namespace {
 
-// Root at the origin, bones along +X of lengths l1, l2; every joint turns about Z.
-Skeleton planarArm(float l1, float l2) {
-  Skeleton s;
-  s.addJoint("shoulder", -1, Transform::identity());
-  s.addJoint("elbow", 0, Transform::fromTranslation({l1, 0.0f, 0.0f}));
-  s.addJoint("hand", 1, Transform::fromTranslation({l2, 0.0f, 0.0f}));
-  return s;
-}
-
-float zAngle(const glm::quat& q) { return 2.0f * std::atan2(q.z, q.w); }
-float wrap(float a) { return std::atan2(std::sin(a), std::cos(a)); }
+using test::planarArm;
+using test::wrap;
+using test::zAngle;
 
 // Runs a job on joints a, b, c of a pose (inputs by FK) and applies its corrections.
 struct Solved {
