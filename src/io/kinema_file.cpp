@@ -7,6 +7,7 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 
+#include "core/rotation.h"
 #include "io/atomic_write.h"
 #include "io/json_depth.h"
 #include "io/image.h"
@@ -158,7 +159,7 @@ class Reader {
 glm::quat normalizeIfNeeded(const glm::quat& q) {
   const float len2 = glm::dot(q, q);
   if (std::abs(len2 - 1.0f) < 1e-6f) return q;
-  return glm::normalize(q);
+  return safeNormalize(q);  // glm::normalize overflows to zero for components near 1e20 and up
 }
 
 bool readSkeleton(Reader& r, const Json& root, Skeleton& s) {

@@ -373,6 +373,34 @@ TEST(KinemaFile, NonUnitRotationsAreNormalisedOnLoad) {
   EXPECT_EQ(s->clips[0].frameTime, 0.0);
 }
 
+// Found by a 10-minute fuzz_kinema_file run: a key like [7.7e26, 0.63, 0.21, 0.67] is
+// finite, but its squared length overflows float, so glm::normalize gave (0, 0, 0, 0),
+// which saved as a "zero quaternion" the reader then refused. Huge and tiny quaternions
+// must normalise to unit length and save/load/save identically.
+TEST(KinemaFile, HugeAndTinyQuaternionsNormaliseAndRoundTrip) {
+  const std::string text = R"({"format":"kinema","version":1,
+    "skeleton":{"joints":[
+      {"name":"a","parent":-1,"rotation":[3e30,0,0,4e30]},
+      {"name":"b","parent":0,"rotation":[0,3e-30,0,4e-30]}]},
+    "clips":[{"name":"c","channels":[
+      {"joint":"b","target":"rotation","times":[0,1],"values":[[7.7e26,0,0,0],[0,0,-2e-38,0]]}]}]})";
+  const Result<Scene> s = parseKinemaJson(text, "huge.kinema");
+  ASSERT_TRUE(s.ok()) << s.error();
+  // |(3,0,0,4)| = 5 at any scale: (0.6, 0, 0, 0.8) and (0, 0.6, 0, 0.8).
+  const glm::quat a = s->skeleton.rest[0].rotation, b = s->skeleton.rest[1].rotation;
+  EXPECT_NEAR(a.x, 0.6f, 1e-6f);
+  EXPECT_NEAR(a.w, 0.8f, 1e-6f);
+  EXPECT_NEAR(b.y, 0.6f, 1e-6f);
+  EXPECT_NEAR(b.w, 0.8f, 1e-6f);
+  const Channel& ch = s->clips.at(0).channels.at(0);
+  EXPECT_EQ(ch.values[0], glm::vec4(1, 0, 0, 0));
+  EXPECT_EQ(ch.values[1], glm::vec4(0, 0, -1, 0));
+  const std::string saved = toKinemaJson(s.value());
+  const Result<Scene> back = parseKinemaJson(saved, "huge.kinema");
+  ASSERT_TRUE(back.ok()) << back.error();
+  EXPECT_EQ(toKinemaJson(back.value()), saved);
+}
+
 TEST(KinemaFile, MinimalFileLoadsWithoutClips) {
   const Result<Scene> s =
       parseKinemaJson(R"({"format":"kinema","version":1,"skeleton":{"joints":[{"name":"r","parent":-1}]}})", "m");
