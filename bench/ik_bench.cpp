@@ -13,6 +13,7 @@
 #include "core/forward_kinematics.h"
 #include "ik/ik_solver.h"
 #include "ik/two_bone_job.h"
+#include "ik_test_chains.h"  // tests/ik: the rigs the IK tests use
 
 namespace kinema {
 namespace {
@@ -152,17 +153,7 @@ void runTwoBoneJob(benchmark::State& state, bool reachable, bool unchecked) {
 // Two hands on a shared spine (hips - spine - chest, then two arms of three bones 0.8
 // long): both targets from FK of one random pose of the whole rig (every joint turned up
 // to 0.5 rad), starts from poses turned up to 0.3 rad; tolerance 1e-3 x 4.4 (hips to hand).
-Skeleton twoArms() {
-  Skeleton s;
-  s.addJoint("hips", -1, Transform::identity());
-  s.addJoint("spine", 0, Transform::fromTranslation({0, 1, 0}));
-  s.addJoint("chest", 1, Transform::fromTranslation({0, 1, 0}));
-  int p = 2;
-  for (int i = 0; i < 3; ++i) p = s.addJoint("l" + std::to_string(i), p, Transform::fromTranslation({0.8f, 0, 0}));
-  p = 2;
-  for (int i = 0; i < 3; ++i) p = s.addJoint("r" + std::to_string(i), p, Transform::fromTranslation({-0.8f, 0, 0}));
-  return s;
-}
+using test::twoArms;
 
 void runTwoHands(benchmark::State& state, IkSolver solver, bool passesOnly = false) {
   const Skeleton skeleton = twoArms();

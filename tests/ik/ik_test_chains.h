@@ -29,6 +29,19 @@ inline Skeleton planarArm(float l1, float l2) {
   return s;
 }
 
+// Hips -> spine -> chest, then two arms of three joints: two hands, one shared spine.
+inline Skeleton twoArms() {
+  Skeleton s;
+  s.addJoint("hips", -1, Transform::identity());
+  s.addJoint("spine", 0, Transform::fromTranslation({0, 1, 0}));
+  s.addJoint("chest", 1, Transform::fromTranslation({0, 1, 0}));
+  int p = 2;
+  for (int i = 0; i < 3; ++i) p = s.addJoint("l" + std::to_string(i), p, Transform::fromTranslation({0.8f, 0, 0}));
+  p = 2;
+  for (int i = 0; i < 3; ++i) p = s.addJoint("r" + std::to_string(i), p, Transform::fromTranslation({-0.8f, 0, 0}));
+  return s;
+}
+
 // Signed angle of a rotation about +Z, and an angle wrapped into (-pi, pi].
 inline float zAngle(const glm::quat& q) { return 2.0f * std::atan2(q.z, q.w); }
 inline float wrap(float a) { return std::atan2(std::sin(a), std::cos(a)); }

@@ -80,18 +80,7 @@ TEST(IkSolvers, NoNanOverRandomAndDegenerateTargets) {
   }
 }
 
-// Hips -> spine -> chest, then two arms of three joints: two hands, one shared spine.
-Skeleton twoArms() {
-  Skeleton s;
-  s.addJoint("hips", -1, Transform::identity());
-  s.addJoint("spine", 0, Transform::fromTranslation({0, 1, 0}));
-  s.addJoint("chest", 1, Transform::fromTranslation({0, 1, 0}));
-  int p = 2;
-  for (int i = 0; i < 3; ++i) p = s.addJoint("l" + std::to_string(i), p, Transform::fromTranslation({0.8f, 0, 0}));
-  p = 2;
-  for (int i = 0; i < 3; ++i) p = s.addJoint("r" + std::to_string(i), p, Transform::fromTranslation({-0.8f, 0, 0}));
-  return s;
-}
+using test::twoArms;
 
 TEST(IkSolvers, TwoHandsReachTwoTargetsWithASharedSpine) {
   const Skeleton s = twoArms();
