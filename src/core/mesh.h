@@ -50,6 +50,10 @@ struct Skin {
   int skeletonRoot = -1;                 // skeleton joint index of glTF `skeleton`, or -1
 };
 
+// How a skinned instance blends its joints: linear blend (glTF's formula, the default) or
+// dual quaternions (keeps volume on twisted limbs; a Kinema option, not in glTF).
+enum class SkinningMethod { LinearBlend, DualQuaternion };
+
 // A joint (a glTF node) that shows a mesh, deformed by a skin when it has one.
 // morphWeights overrides the mesh's defaults when non-empty (glTF node.weights).
 struct MeshInstance {
@@ -57,6 +61,7 @@ struct MeshInstance {
   int mesh = -1;
   int skin = -1;
   std::vector<float> morphWeights;
+  SkinningMethod skinning = SkinningMethod::LinearBlend;
 };
 
 // Display-only material: glTF pbrMetallicRoughness base colour factor and texture.
