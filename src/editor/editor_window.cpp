@@ -11,6 +11,7 @@
 #include "editor/imgui_backends.h"
 #include "editor/viewport_controller.h"
 #include "io/image.h"
+#include "render/mesh_renderer.h"
 #include "render/skeleton_renderer.h"
 #include "render/skeleton_view.h"
 
@@ -108,7 +109,11 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
 
   {
     SkeletonRenderer renderer;
-    const std::string error = renderer.init();
+    std::string error = renderer.init();
+    MeshRenderer meshes;  // the scene's meshes, uploaded once, skinned each frame on the GPU
+    if (error.empty()) error = meshes.init();
+    if (error.empty() && !state.scene.meshInstances.empty()) error = meshes.upload(state.scene);
+    const std::vector<char> skinJoints = skinJointMask(state.scene);
     if (!error.empty()) result.error = error;
     ViewportController controller;
     evaluateEditorPose(state);
@@ -140,7 +145,11 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       job.parents = &state.scene.skeleton.parents;
       job.world = &state.world;
       job.selectedJoint = state.selectedJoint;
+      job.shownJoints = &skinJoints;
       job.run(list);
+      MeshDraw meshDraw;
+      meshDraw.renderer = &meshes;
+      meshDraw.frame.world = &state.world;
       state.camera.fitClipPlanes(bounds.radius());
       FrameDescription description;
       description.skeleton = &list;
@@ -149,6 +158,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       description.height = fbh;
       description.sceneRadius = bounds.radius();
       description.showGrid = state.showGrid;
+      description.meshes = meshes.empty() ? nullptr : &meshDraw;
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       renderer.draw(description);
       imguiBackendsRenderDrawData(ImGui::GetDrawData());

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "core/math.h"
+#include "io/scene.h"
 
 namespace kinema {
 
@@ -30,11 +31,19 @@ struct SkeletonDrawJob {
   const std::vector<glm::mat4>* world = nullptr;   // one world transform per joint
   int selectedJoint = -1;                          // highlighted with its outgoing bones; -1 = none
   SkeletonStyle style;
+  // Optional, one flag per joint: draw only these joints, with a bone from each to its
+  // nearest drawn ancestor (skinJointMask: a glTF character's skin joints, not its mesh
+  // and helper nodes). Null or empty: every joint.
+  const std::vector<char>* shownJoints = nullptr;
   // Empty when usable; otherwise what is wrong (missing arrays, sizes differ, bad parent).
   std::string validate() const;
   // Fills `out`; returns false (and leaves `out` empty) when validate() fails.
   bool run(SkeletonDrawList& out) const;
 };
+
+// One flag per skeleton joint: 1 for the joints of any of the scene's skins. Empty when the
+// scene has no skins (BVH, bare skeletons), which SkeletonDrawJob reads as "every joint".
+std::vector<char> skinJointMask(const Scene& scene);
 
 // The instance matrix of a bone from `head` to `tail`: maps (0,0,0) to head, (0,1,0) to tail,
 // scales uniformly by the length, and turns the waist's X axis towards `rollHint` (the

@@ -10,6 +10,12 @@
 
 namespace kinema {
 
+struct MeshDraw;
+
+// How bones show over meshes: not at all, depth-tested like any surface (hidden inside a
+// body), or x-ray: on top of everything, semi-transparent.
+enum class BoneDisplay { None, On, XRay };
+
 // Everything one frame shows; the renderer keeps no scene state between frames.
 struct FrameDescription {
   const SkeletonDrawList* skeleton = nullptr;  // may be null: grid only
@@ -18,6 +24,8 @@ struct FrameDescription {
   float sceneRadius = 1.0f;                 // sizes the grid
   bool showGrid = true;
   glm::vec4 background{0.235f, 0.235f, 0.235f, 1.0f};  // Blender's viewport grey
+  const MeshDraw* meshes = nullptr;  // shaded (skinned) meshes, drawn before the bones; may be null
+  BoneDisplay bones = BoneDisplay::On;
 };
 
 // Draws grid, axes, bones and joints with OpenGL 3.3 core into whatever framebuffer is
