@@ -216,6 +216,7 @@ int runRender(const RenderOptions& o) {
     job.world = &worlds[k];
     job.selectedJoint = selected;
     job.shownJoints = &skinJoints;
+    if (o.bones == "xray" && meshes) job.style = SkeletonStyle::xRay();
     job.run(list);
     MeshDraw meshDraw;
     meshDraw.renderer = &renderer.meshes();
