@@ -318,11 +318,29 @@ std::string MeshRenderer::upload(const Scene& scene) {
   }
   glBindTexture(GL_TEXTURE_2D, 0);
   skinOffset_.clear();
-  int slots = 0;
+  long long slots = 0;
   for (const Skin& skin : scene.skins) {
-    skinOffset_.push_back(slots);
-    slots += static_cast<int>(skin.joints.size());
+    skinOffset_.push_back(static_cast<int>(std::min<long long>(slots, 1 << 30)));
+    slots += static_cast<long long>(skin.joints.size());
   }
+  // A file decides these sizes: refuse what the driver's texture buffers cannot hold
+  // (at least 65,536 texels: over 4,000 joints) instead of drawing garbage.
+  GLint maxTexels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+  if (slots * kJointTexels > maxTexels) {
+    const std::string error = scene.source + ": " + std::to_string(slots) + " skin joints in all, more than the " +
+                              std::to_string(maxTexels / kJointTexels) + " this OpenGL driver can skin";
+    release();
+    return error;
+  }
+  for (const GpuPrimitive& p : primitives_)
+    if (static_cast<long long>(p.morphCount) * (p.morphNormals ? 2 : 1) * p.vertexCount > maxTexels) {
+      const std::string error = scene.source + ": mesh " + std::to_string(p.mesh) + " primitive " +
+                                std::to_string(p.primitive) + " has more morph target data than this OpenGL driver's " +
+                                std::to_string(maxTexels) + "-texel texture buffers hold";
+      release();
+      return error;
+    }
   const GLenum status = glGetError();
   if (status != GL_NO_ERROR) return "OpenGL error " + std::to_string(status) + " while uploading the meshes";
   return {};
