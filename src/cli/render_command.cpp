@@ -105,6 +105,8 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
                   "Bones over the meshes: none, on (default; hidden inside a body) or xray (on top, see-through)")
       ->check(CLI::IsMember({"none", "on", "xray"}));
   cmd->add_option("--weights", o.weights, "Show this joint's skin weights as heat colours (blue 0 -> red 1)");
+  cmd->add_option("--mesh", o.mesh, "on (default) or off: draw the file's meshes, or its skeleton alone")
+      ->check(CLI::IsMember({"on", "off"}));
   cmd->add_option("--out", o.out, "PNG path; with --frames a pattern such as dir/frame_%04d.png")->required();
   return cmd;
 }
@@ -175,7 +177,7 @@ int runRender(const RenderOptions& o) {
       HeadlessRenderer::open(backend, static_cast<int>(w), static_cast<int>(h));
   if (!opened) return badInput("cannot render: " + opened.error());
   HeadlessRenderer& renderer = *opened.value();
-  const bool meshes = !scene.meshInstances.empty();
+  const bool meshes = !scene.meshInstances.empty() && o.mesh == "on";
   if (meshes) {
     const std::string error = renderer.meshes().upload(scene);
     if (!error.empty()) return badInput("cannot render: " + error);

@@ -5,7 +5,7 @@ namespace kinema::cli {
 
 // `kinema render [FILE] [--clip I] [--time T | --frame N | --frames A:B] [--size WxH]
 //  [--camera AZ,EL[,DIST]] [--backend egl|osmesa] [--select JOINT] [--bones none|on|xray]
-//  [--weights JOINT] --out PATH`
+//  [--weights JOINT] [--mesh on|off] --out PATH`
 struct RenderOptions {
   std::string file;
   int clip = 0;
@@ -18,6 +18,7 @@ struct RenderOptions {
   std::string select;
   std::string bones = "on";
   std::string weights;
+  std::string mesh = "on";
   std::string out;
   CLI::Option* timeOption = nullptr;
   CLI::Option* frameOption = nullptr;

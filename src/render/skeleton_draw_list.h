@@ -13,11 +13,12 @@ struct SkeletonStyle {
   glm::vec4 joint{0.32f, 0.34f, 0.40f, 1.0f};
   glm::vec4 selectedBone{1.0f, 0.62f, 0.20f, 1.0f};
   glm::vec4 selectedJoint{1.0f, 0.55f, 0.10f, 1.0f};
-  // Bones drawn x-ray over a (usually light) body: a blue that stands out from skin tones.
+  // Bones drawn x-ray over a (usually light) body: a blue that stands out from skin tones,
+  // 60% opaque so the body shows through; the selection stays opaque so it stands out.
   static SkeletonStyle xRay() {
     SkeletonStyle s;
-    s.bone = glm::vec4(0.30f, 0.52f, 0.95f, 1.0f);
-    s.joint = glm::vec4(0.12f, 0.20f, 0.45f, 1.0f);
+    s.bone = glm::vec4(0.30f, 0.52f, 0.95f, 0.6f);
+    s.joint = glm::vec4(0.12f, 0.20f, 0.45f, 0.6f);
     return s;
   }
 };

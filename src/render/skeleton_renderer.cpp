@@ -129,7 +129,7 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
     const bool xray = frame.bones == BoneDisplay::XRay && frame.meshes;
     if (xray) {
       // On top of the meshes: fresh depth, a depth-only pass, then the nearest bone surfaces
-      // blended at 60% so the body still shows through.
+      // blended by their colours' alpha (SkeletonStyle::xRay()) so the body still shows through.
       glEnable(GL_SCISSOR_TEST);
       glClear(GL_DEPTH_BUFFER_BIT);
       glDisable(GL_SCISSOR_TEST);
@@ -139,8 +139,7 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
       glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
       glDepthFunc(GL_LEQUAL);
       glEnable(GL_BLEND);
-      glBlendColor(0.0f, 0.0f, 0.0f, 0.6f);
-      glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
+      glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     }
     drawInstances(bone_, frame.skeleton->boneMatrices, frame.skeleton->boneColors);
     drawInstances(sphere_, frame.skeleton->jointMatrices, frame.skeleton->jointColors);

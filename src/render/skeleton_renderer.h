@@ -13,7 +13,8 @@ namespace kinema {
 struct MeshDraw;
 
 // How bones show over meshes: not at all, depth-tested like any surface (hidden inside a
-// body), or x-ray: on top of everything, semi-transparent.
+// body), or x-ray: on top of everything, blended by the bone colours' alpha (draw with
+// SkeletonStyle::xRay() for semi-transparent bones).
 enum class BoneDisplay { None, On, XRay };
 
 // Everything one frame shows; the renderer keeps no scene state between frames.

@@ -94,6 +94,15 @@ TEST_F(MeshRenderCli, MeshCoversTheBonesUnlessXRayAndWeightsShowAsHeat) {
   // (CesiumMan's texture has light-blue stripes, far less saturated).
   EXPECT_GT(countPixels(xray, isXRayBlue), countPixels(none, isXRayBlue) + 200);
 
+  // The selection stays opaque orange in x-ray; drawn solid it hides inside the thigh.
+  ASSERT_EQ(kinema("render " + common + "/xray_sel.png --bones xray --select leg_joint_L_1", &err_), 0) << err_;
+  ASSERT_EQ(kinema("render " + common + "/on_sel.png --bones on --select leg_joint_L_1", &err_), 0) << err_;
+  auto orange = [](const std::uint8_t* p) { return p[0] > 150 && p[1] > 0.45 * p[0] && p[1] < 0.8 * p[0] && p[2] < 0.3 * p[0]; };
+  EXPECT_GT(countPixels(load(dir_ + "/xray_sel.png"), orange), countPixels(load(dir_ + "/on_sel.png"), orange) + 60);
+  // --mesh off: the skeleton alone, far fewer non-background pixels than the body.
+  ASSERT_EQ(kinema("render " + common + "/bare.png --mesh off", &err_), 0) << err_;
+  EXPECT_LT(320 * 240 - countPixels(load(dir_ + "/bare.png"), isBackgroundGrey), body / 2);
+
   // Heat colours: the left forearm's weights are warm on the arm, blue elsewhere.
   ASSERT_EQ(kinema("render " + common + "/weights.png --bones none --weights Skeleton_arm_joint_L__3_", &err_), 0) << err_;
   const Image weights = load(dir_ + "/weights.png");
@@ -107,6 +116,7 @@ TEST_F(MeshRenderCli, BadBonesOrWeightsFailWithOneLine) {
   KINEMA_REQUIRE_SHARED_DATA();
   const std::string out = " --out " + dir_ + "/x.png";
   EXPECT_EQ(kinema("render " + cesium_ + " --bones sometimes" + out, &err_), 2) << err_;
+  EXPECT_EQ(kinema("render " + cesium_ + " --mesh sometimes" + out, &err_), 2) << err_;
   EXPECT_EQ(kinema("render " + cesium_ + " --weights Nobody" + out, &err_), 1) << err_;
   EXPECT_NE(err_.find("Nobody"), std::string::npos) << err_;
   EXPECT_EQ(std::count(err_.begin(), err_.end(), '\n'), 1) << err_;
