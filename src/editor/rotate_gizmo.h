@@ -33,6 +33,14 @@ GizmoPart hitTestRotateGizmo(const RotateGizmo& gizmo, const ViewportView& view,
 // The angle (radians) the cursor swept around `center` going from `from` to `to`, in pixels
 // with y down; positive = counter-clockwise as the viewer sees it. In (-pi, pi].
 float sweptAngle(glm::vec2 center, glm::vec2 from, glm::vec2 to);
+// Accumulates the swept angle over a drag frame by frame, so turns past 180 degrees (and
+// several full turns) add up instead of wrapping.
+struct SweepTracker {
+  glm::vec2 center{0.0f}, last{0.0f};
+  float total = 0.0f;  // radians, counter-clockwise as the viewer sees it
+  void begin(glm::vec2 centerPixel, glm::vec2 cursor);
+  float update(glm::vec2 cursor);  // returns the new total
+};
 // Rounds to multiples of `stepDegrees` (Ctrl snapping, 5 degrees in Blender).
 float snapAngle(float radians, float stepDegrees = 5.0f);
 
@@ -41,6 +49,9 @@ float snapAngle(float radians, float stepDegrees = 5.0f);
 // towards or away from the viewer. `angleOut` (optional) receives the signed angle about `axis`.
 glm::quat ringDragRotation(const ViewportView& view, const glm::vec3& pivot, const glm::vec3& axis, glm::vec2 start,
                            glm::vec2 current, bool snap, float* angleOut = nullptr);
+// The same from an accumulated sweep (SweepTracker::total) instead of two cursor positions.
+glm::quat axisTurnForSweep(const ViewportView& view, const glm::vec3& pivot, const glm::vec3& axis, float sweptRadians,
+                           bool snap, float* angleOut = nullptr);
 // Trackball: about the view-plane axis perpendicular to the drag, `radiansPerPixel` * length.
 glm::quat trackballRotation(const ViewportView& view, glm::vec2 start, glm::vec2 current,
                             float radiansPerPixel = 0.01f, bool snap = false);
