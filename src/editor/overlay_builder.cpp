@@ -14,7 +14,6 @@ void addRotateGizmo(OverlayDrawList& list, const RotateGizmo& gizmo, const Viewp
 
   const GizmoPart parts[3] = {GizmoPart::AxisX, GizmoPart::AxisY, GizmoPart::AxisZ};
   const glm::vec4 colors[3] = {style.axisX, style.axisY, style.axisZ};
-  const glm::vec3 toViewer = view.towardViewer(gizmo.pivot);
   for (int i = 0; i < 3; ++i) {
     const bool hot = hovered == parts[i];
     const glm::vec4 color = hot ? style.highlight : colors[i];
@@ -24,7 +23,7 @@ void addRotateGizmo(OverlayDrawList& list, const RotateGizmo& gizmo, const Viewp
       const glm::vec3& a = ring[k];
       const glm::vec3& b = ring[(k + 1) % ring.size()];
       // Only the half facing the viewer, as Blender clips its rings by the gizmo's sphere.
-      if (glm::dot((a + b) * 0.5f - gizmo.pivot, toViewer) < 0.0f) continue;
+      if (!ringSegmentFacesViewer(gizmo, view, a, b)) continue;
       list.addLine(a, b, color, width, Layer::OnTop);
     }
   }

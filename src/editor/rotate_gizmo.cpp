@@ -56,10 +56,15 @@ std::vector<glm::vec3> RotateGizmo::ringPoints(const ViewportView& view, int i, 
   return points;
 }
 
+bool ringSegmentFacesViewer(const RotateGizmo& gizmo, const ViewportView& view, const glm::vec3& a,
+                            const glm::vec3& b) {
+  const glm::vec3 mid = (a + b) * 0.5f - gizmo.pivot;
+  return glm::dot(mid, view.towardViewer(gizmo.pivot)) >= -1e-4f * glm::length(mid);
+}
+
 GizmoPart hitTestRotateGizmo(const RotateGizmo& gizmo, const ViewportView& view, glm::vec2 cursor) {
   glm::vec2 center;
   if (!view.project(gizmo.pivot, center)) return GizmoPart::None;
-  const glm::vec3 toViewer = view.towardViewer(gizmo.pivot);
   const GizmoPart parts[4] = {GizmoPart::AxisX, GizmoPart::AxisY, GizmoPart::AxisZ, GizmoPart::ViewRing};
   GizmoPart best = GizmoPart::None;
   float bestDistance = gizmo.tolerancePixels;
@@ -69,7 +74,7 @@ GizmoPart hitTestRotateGizmo(const RotateGizmo& gizmo, const ViewportView& view,
       const glm::vec3& a = ring[k];
       const glm::vec3& b = ring[(k + 1) % ring.size()];
       // Axis rings: only the half facing the viewer is drawn (as in Blender), so only it grabs.
-      if (i < 3 && glm::dot((a + b) * 0.5f - gizmo.pivot, toViewer) < 0.0f) continue;
+      if (i < 3 && !ringSegmentFacesViewer(gizmo, view, a, b)) continue;
       glm::vec2 pa, pb;
       if (!view.project(a, pa) || !view.project(b, pb)) continue;
       const float d = distanceToSegment(cursor, pa, pb);

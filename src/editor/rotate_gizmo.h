@@ -26,6 +26,11 @@ struct RotateGizmo {
   std::vector<glm::vec3> ringPoints(const ViewportView& view, int i, int segments = 64) const;
 };
 
+// Whether the axis-ring segment a-b is on the half facing the viewer (Blender draws and grabs
+// only that half; a ring facing the viewer is whole, within a small tolerance for rounding).
+bool ringSegmentFacesViewer(const RotateGizmo& gizmo, const ViewportView& view, const glm::vec3& a,
+                            const glm::vec3& b);
+
 // Which part the cursor is over: the nearest ring within the tolerance; else the trackball
 // when inside the axis rings' radius; else None.
 GizmoPart hitTestRotateGizmo(const RotateGizmo& gizmo, const ViewportView& view, glm::vec2 cursor);

@@ -33,17 +33,20 @@ bool ViewportView::project(const glm::vec3& world, glm::vec2& pixel) const {
 }
 
 PickRay ViewportView::rayThrough(glm::vec2 pixel) const {
+  // Built from the camera's axes rather than by inverting the view-projection, which loses
+  // digits to the near/far ratio; OrbitCamera's frusta are symmetric, so projection[0][0] and
+  // [1][1] (1 / tan of the half-angles, or 1 / the half-sizes) say all there is.
   const glm::vec2 ndc(2.0f * pixel.x / size.x - 1.0f, 1.0f - 2.0f * pixel.y / size.y);
-  const glm::mat4 inverse = glm::inverse(viewProjection());
-  const glm::vec4 nearPoint = inverse * glm::vec4(ndc, -1.0f, 1.0f);
-  const glm::vec3 onNear = glm::vec3(nearPoint) / nearPoint.w;
+  const glm::vec2 half(1.0f / projection[0][0], 1.0f / projection[1][1]);
+  const glm::vec3 side = right() * (ndc.x * half.x) + up() * (ndc.y * half.y);
   PickRay ray;
   if (orthographic) {
-    ray.origin = onNear;
+    const float nearDistance = (projection[3][2] + 1.0f) / projection[2][2];  // ortho: P32 = -(f+n)/(f-n), P22 = -2/(f-n)
+    ray.origin = eye() + side + forward() * nearDistance;
     ray.direction = forward();
   } else {
     ray.origin = eye();
-    ray.direction = glm::normalize(onNear - ray.origin);
+    ray.direction = glm::normalize(forward() + side);
   }
   return ray;
 }
