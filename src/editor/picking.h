@@ -26,7 +26,7 @@ float raySphereDistance(const PickRay& ray, const glm::vec3& center, float radiu
 // SkeletonDrawJob). Joint spheres win ties with bones (the sphere sits on the bone's head).
 SkeletonPick pickSkeleton(const SkeletonDrawList& list, const PickRay& ray);
 
-// Click / hover: the ray under `cursor` first; when it hits nothing, the joint whose screen
+// Click and hover (call it on every mouse move): the ray under `cursor` first; when it hits nothing, the joint whose screen
 // position is nearest within `fallbackRadiusPixels` (tiny or far-away bones stay clickable).
 SkeletonPick pickSkeletonAt(const SkeletonDrawList& list, const ViewportView& view, glm::vec2 cursor,
                             float fallbackRadiusPixels = 8.0f);

@@ -65,7 +65,9 @@ glm::quat gizmoDragRotation(const RotateGizmo& gizmo, const ViewportView& view, 
                             glm::vec2 current, bool snap);
 
 // Blender's R: free (about the view axis), or constrained to X/Y/Z. Pressing an axis key
-// cycles global -> local -> free for that axis; another axis starts at global.
+// cycles global -> local -> free for that axis; another axis starts at global. rotation()
+// measures start -> current directly (within half a turn); for longer drags feed a
+// SweepTracker each mouse move and use axisTurnForSweep(view, pivot, worldAxis(...), total, ...).
 struct RotateMode {
   int axis = -1;          // -1 = view axis, 0/1/2 = X/Y/Z
   bool local = false;
