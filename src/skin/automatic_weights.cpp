@@ -141,16 +141,16 @@ bool AutomaticWeightsJob::run() const {
         }
         jointWeight[nearestJoint] = 1.0f;
         break;
-      case AutomaticWeightsMethod::InverseDistance: {
-        // Relative to the nearest distance, so a vertex on a bone (d = 0) stays finite.
-        const float floor = std::max(nearest, 1e-6f);
+      case AutomaticWeightsMethod::InverseDistance:
+        // (d_nearest / d)^power: proportional to 1 / d^power and finite. A vertex on a bone
+        // (d = 0) is that bone's alone; weights under 1e-5 of the nearest's are dropped.
         for (size_t b = 0; b < bones.size(); ++b) {
-          const float w = std::pow(floor / std::max(distance[b], floor), inverseDistancePower);
-          jointWeight[bones[b].joint] = std::max(jointWeight[bones[b].joint], w);
+          const float w = nearest > 0.0f ? std::pow(nearest / distance[b], inverseDistancePower)
+                                         : (distance[b] == 0.0f ? 1.0f : 0.0f);
+          if (w >= 1e-5f) jointWeight[bones[b].joint] = std::max(jointWeight[bones[b].joint], w);
         }
         jointWeight[nearestJoint] = 1.0f;
         break;
-      }
     }
     influences.clear();
     for (int j = 0; j < joints; ++j)

@@ -106,6 +106,10 @@ const BodyShape& bodyShape() {
   return shape;
 }
 
+// Rounded to 1e-5 (a hundredth of a millimetre; normals to 1e-5 of unit length) so the
+// committed .kinema file prints short numbers and exact zeros on the mirror plane.
+glm::vec3 quantised(const dvec3& v) { return glm::vec3(glm::round(v * 1e5) / 1e5); }
+
 dvec3 gradientAt(const dvec3& p) {
   const double e = 1e-4;
   return dvec3(defaultBodySignedDistance(p + dvec3(e, 0, 0)) - defaultBodySignedDistance(p - dvec3(e, 0, 0)),
@@ -170,7 +174,7 @@ MeshPrimitive makeDefaultBodyMesh() {
         const double margin = 1e-3 * h;
         p = glm::clamp(p, x[0] + margin, x[7] - margin);
         cellVertex[nodeIndex(i, j, k)] = mesh.vertexCount();
-        mesh.positions.push_back(glm::vec3(p));
+        mesh.positions.push_back(quantised(p));
       }
 
   // Quads: for an edge along axis a, the four cells around it in counter-clockwise order
@@ -202,7 +206,7 @@ MeshPrimitive makeDefaultBodyMesh() {
   for (const glm::vec3& p : mesh.positions) {
     const dvec3 g = gradientAt(dvec3(p));
     const double len = glm::length(g);
-    mesh.normals.push_back(len > 1e-12 ? glm::vec3(g / len) : glm::vec3(0.0f, 1.0f, 0.0f));
+    mesh.normals.push_back(len > 1e-12 ? quantised(g / len) : glm::vec3(0.0f, 1.0f, 0.0f));
   }
   return mesh;
 }
