@@ -23,7 +23,7 @@ std::string baseName(const std::string& name) {
 // shoulder, small at the ends (a childless end joint only ties with its parent's bone tip).
 std::vector<float> defaultCharacterCapsuleRadii(const Skeleton& skeleton) {
   static const std::map<std::string, float> radius = {
-      {"Hips", 0.07f},      {"Spine", 0.08f},     {"Chest", 0.08f},    {"UpperChest", 0.07f},
+      {"Hips", 0.10f},      {"Spine", 0.08f},     {"Chest", 0.08f},    {"UpperChest", 0.07f},
       {"Neck", 0.05f},      {"Head", 0.05f},      {"HeadTop", 0.01f},  {"Shoulder", 0.05f},
       {"UpperArm", 0.06f},  {"LowerArm", 0.05f},  {"Hand", 0.04f},     {"Fingertip", 0.01f},
       {"UpperLeg", 0.07f},  {"LowerLeg", 0.06f},  {"Foot", 0.04f},     {"Toe", 0.03f},

@@ -245,6 +245,39 @@ TEST(AutomaticWeights, DefaultCharacterLargestWeightIsTheNearestBone) {
   EXPECT_GT(checked, 1000);
 }
 
+// Random points in and around the default character's box, every method and the default
+// radii: well formed, and the largest weight on the nearest bone.
+TEST(AutomaticWeights, RandomPointsLeanOnTheirNearestBone) {
+  const Skeleton s = makeDefaultCharacter();
+  const std::vector<glm::mat4> world = computeWorld(s, Pose::rest(s));
+  std::vector<glm::dvec3> at;
+  for (const glm::mat4& m : world) at.push_back(glm::dvec3(m[3]));
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<float> x(-1.2f, 1.2f), y(-0.2f, 2.0f), z(-0.5f, 0.5f);
+  MeshPrimitive points;
+  for (int i = 0; i < propertyCases(2000); ++i) points.positions.push_back({x(rng), y(rng), z(rng)});
+  for (AutomaticWeightsMethod method :
+       {AutomaticWeightsMethod::Capsule, AutomaticWeightsMethod::InverseDistance, AutomaticWeightsMethod::Nearest}) {
+    AutomaticWeightsJob job;
+    job.skeleton = &s;
+    job.bindWorld = &world;
+    job.positions = &points.positions;
+    job.method = method;
+    job.maxInfluences = 3;
+    job.outJoints = &points.influenceJoints;
+    job.outWeights = &points.influenceWeights;
+    ASSERT_TRUE(job.run());
+    expectWellFormed(points, method == AutomaticWeightsMethod::Nearest ? 1 : 3);
+    for (int v = 0; v < points.vertexCount(); ++v) {
+      const glm::dvec3 p(points.positions[v]);
+      double nearest = std::numeric_limits<double>::infinity();
+      for (int j = 0; j < s.size(); ++j) nearest = std::min(nearest, independentDistance(s, at, j, p));
+      ASSERT_LE(independentDistance(s, at, points.influenceJoints[v * kMaxInfluences], p), nearest + 1e-5)
+          << "method " << static_cast<int>(method) << ", point " << v;
+    }
+  }
+}
+
 TEST(AutomaticWeights, DefaultCharacterHandsAndForearmsFeelOnlyTheirArm) {
   const Scene scene = makeDefaultCharacterScene();
   const Skeleton& s = scene.skeleton;
