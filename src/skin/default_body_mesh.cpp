@@ -57,9 +57,11 @@ struct BodyShape {
     torso = smoothMin(torso, chest.distance(p), 0.10);
     torso = smoothMin(torso, shoulder.distance(p), 0.06);
     double headAndNeck = smoothMin(neck.distance(p), head.distance(p), 0.04);
-    double arm = smoothMin(upperArm.distance(p), forearm.distance(p), 0.02);
+    // Small blends where a limb continues along the same axis: a wide smooth-min bulges a
+    // ring (up to k/4) out of the elbow and knee.
+    double arm = smoothMin(upperArm.distance(p), forearm.distance(p), 0.008);
     arm = smoothMin(arm, hand.distance(p), 0.025);
-    double leg = smoothMin(thigh.distance(p), shin.distance(p), 0.03);
+    double leg = smoothMin(thigh.distance(p), shin.distance(p), 0.008);
     leg = smoothMin(leg, calfMuscle.distance(p), 0.04);
     leg = smoothMin(leg, foot.distance(p), 0.04);
     double body = smoothMin(torso, headAndNeck, 0.05);
@@ -94,7 +96,7 @@ BodyShape makeBodyShape() {
   // A mitten, flat in Y (palms down in the T-pose), from the wrist to the fingertip.
   b.hand = {dvec3(0.5 * (hand.x + fingertip.x) - 0.005, hand.y - 0.003, hand.z), {0.5 * (fingertip.x - hand.x) + 0.01, 0.026, 0.047}};
   b.thigh = {upperLeg, lowerLeg, 0.085, 0.055};
-  b.shin = {lowerLeg, foot + dvec3(0.0, 0.01, 0.0), 0.052, 0.037};
+  b.shin = {lowerLeg, foot + dvec3(0.0, 0.01, 0.0), 0.055, 0.037};
   b.calfMuscle = {dvec3(upperLeg.x, lowerLeg.y - 0.14, lowerLeg.z - 0.015), {0.05, 0.12, 0.055}};
   // Heel to toes; the half-space y >= 0 cuts the sole flat.
   b.foot = {dvec3(foot.x, 0.045, foot.z - 0.02), dvec3(toeTip.x, 0.035, toeTip.z - 0.025), 0.047, 0.036};
