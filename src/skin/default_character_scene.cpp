@@ -26,7 +26,7 @@ std::vector<float> defaultCharacterCapsuleRadii(const Skeleton& skeleton) {
       {"Hips", 0.10f},      {"Spine", 0.08f},     {"Chest", 0.08f},    {"UpperChest", 0.07f},
       {"Neck", 0.05f},      {"Head", 0.05f},      {"HeadTop", 0.01f},  {"Shoulder", 0.05f},
       {"UpperArm", 0.06f},  {"LowerArm", 0.05f},  {"Hand", 0.04f},     {"Fingertip", 0.01f},
-      {"UpperLeg", 0.07f},  {"LowerLeg", 0.06f},  {"Foot", 0.04f},     {"Toe", 0.03f},
+      {"UpperLeg", 0.10f},  {"LowerLeg", 0.06f},  {"Foot", 0.04f},     {"Toe", 0.03f},
       {"ToeTip", 0.01f},
   };
   std::vector<float> radii;
