@@ -2,7 +2,7 @@
 
 #include <iostream>
 
-#include "core/default_character.h"
+#include "skin/default_character_scene.h"
 #include "io/json_number.h"
 
 namespace kinema::cli {
@@ -14,10 +14,7 @@ int badInput(const std::string& message) {
 
 Result<Scene> loadSceneOrDefault(const std::string& path) {
   if (!path.empty()) return loadScene(path);
-  Scene scene;
-  scene.source = "default character";
-  scene.skeleton = makeDefaultCharacter();
-  return scene;
+  return makeDefaultCharacterScene();
 }
 
 double frameTimeOf(const Scene& scene, int clip) {

@@ -3,7 +3,7 @@
 // (build target `update-assets`; a test checks the committed files match).
 #include <cstdio>
 
-#include "core/default_character.h"
+#include "skin/default_character_scene.h"
 #include "io/kinema_file.h"
 
 int main(int argc, char** argv) {
@@ -11,8 +11,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: make_assets ASSETS_DIR\n");
     return 2;
   }
-  kinema::Scene scene;
-  scene.skeleton = kinema::makeDefaultCharacter();
+  const kinema::Scene scene = kinema::makeDefaultCharacterScene();
   const std::string path = std::string(argv[1]) + "/default_character.kinema";
   const std::string error = kinema::saveKinemaFile(path, scene);
   if (!error.empty()) {

@@ -9,8 +9,10 @@
 namespace kinema {
 
 enum class AutomaticWeightsMethod {
-  // Seed 001: each bone a capsule of radius r; w = max(0, r - d) / r from the distance d
-  // to the bone segment, normalised; the nearest bone when no capsule reaches the vertex.
+  // Seed 001: each bone a capsule of radius r; w = max(0, r - d) / r, normalised, with d
+  // measured as the vertex's distance to the bone minus its distance to the nearest bone
+  // (so the nearest bone always weighs most and no vertex is left unweighted; why in
+  // automatic_weights.cpp). A bone blends in only where it is within r of being nearest.
   Capsule,
   // w = 1 / d^power to every bone segment, keeping the largest, normalised.
   InverseDistance,
