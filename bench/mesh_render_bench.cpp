@@ -7,6 +7,7 @@
 //   ./build/bench/mesh_render_bench --benchmark_min_time=2
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "render/offscreen_target.h"
 #include "render/skeleton_renderer.h"
 #include "render/skeleton_view.h"
+#include "skin/default_character_scene.h"
 
 namespace {
 
@@ -103,5 +105,25 @@ void BM_FoxFrame(benchmark::State& state) { fileBenchmark(state, "gltf/Fox.glb",
 BENCHMARK(BM_FoxFrame)->Arg(0)->Arg(1)->ArgName("dqs")->Unit(benchmark::kMillisecond)->UseRealTime();
 void BM_CesiumManFrame(benchmark::State& state) { fileBenchmark(state, "gltf/CesiumMan.glb", state.range(0) != 0); }
 BENCHMARK(BM_CesiumManFrame)->Arg(0)->Arg(1)->ArgName("dqs")->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The default character (makeDefaultCharacterScene) waving: elbows and knees bend through
+// 60 poses, as `kinema render` and the editor draw it.
+void BM_DefaultCharacterFrame(benchmark::State& state) {
+  Scene scene = makeDefaultCharacterScene();
+  for (MeshInstance& inst : scene.meshInstances)
+    inst.skinning = state.range(0) != 0 ? SkinningMethod::DualQuaternion : SkinningMethod::LinearBlend;
+  std::vector<std::vector<glm::mat4>> worlds;
+  for (int i = 0; i < 60; ++i) {
+    Pose pose = Pose::rest(scene.skeleton);
+    const float a = glm::radians(80.0f) * std::sin(6.2831853f * i / 60.0f);
+    for (const char* joint : {"LowerArm.L", "LowerArm.R", "LowerLeg.L", "LowerLeg.R"}) {
+      const int j = scene.skeleton.find(joint);
+      if (j >= 0) pose.local[j].rotation = glm::angleAxis(a, glm::vec3(j % 2 ? 1.0f : 0.0f, j % 2 ? 0.0f : 1.0f, 0.0f));
+    }
+    worlds.push_back(computeWorld(scene.skeleton, pose));
+  }
+  drawFrames(state, scene, worlds);
+}
+BENCHMARK(BM_DefaultCharacterFrame)->Arg(0)->Arg(1)->ArgName("dqs")->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
