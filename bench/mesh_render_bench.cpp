@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <memory>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -116,9 +117,11 @@ void BM_DefaultCharacterFrame(benchmark::State& state) {
   for (int i = 0; i < 60; ++i) {
     Pose pose = Pose::rest(scene.skeleton);
     const float a = glm::radians(80.0f) * std::sin(6.2831853f * i / 60.0f);
-    for (const char* joint : {"LowerArm.L", "LowerArm.R", "LowerLeg.L", "LowerLeg.R"}) {
+    const std::pair<const char*, glm::vec3> bends[] = {{"LowerArm.L", glm::vec3(0, -1, 0)}, {"LowerArm.R", glm::vec3(0, 1, 0)},
+                                                       {"LowerLeg.L", glm::vec3(1, 0, 0)}, {"LowerLeg.R", glm::vec3(1, 0, 0)}};
+    for (const auto& [joint, axis] : bends) {
       const int j = scene.skeleton.find(joint);
-      if (j >= 0) pose.local[j].rotation = glm::angleAxis(a, glm::vec3(j % 2 ? 1.0f : 0.0f, j % 2 ? 0.0f : 1.0f, 0.0f));
+      if (j >= 0) pose.local[j].rotation = glm::angleAxis(std::abs(a), axis);  // elbows forward, knees back
     }
     worlds.push_back(computeWorld(scene.skeleton, pose));
   }
