@@ -2,8 +2,8 @@
 // Meshes, skinned in the vertex shader (glTF: v = sum w_i * world(joint_i) * IBM_i * v).
 // Per joint, texture buffer uJoints holds kJointTexels RGBA32F texels (written by
 // render/mesh_renderer.cpp): the skinning matrix M (4 columns), the upper 3x3 of its inverse
-// transpose (3), the rigid part as a unit dual quaternion (real, dual), the remaining
-// scale/shear S = rigid^-1 * M (3 columns) and S's inverse transpose (3). Hundreds of joints
+// transpose (3), the rigid part as a unit dual quaternion (real, dual) and the remaining
+// scale/shear S = rigid^-1 * M (3 columns). Hundreds of joints
 // fit (a texture buffer holds at least 64k texels). The same program writes world positions
 // and normals through transform feedback, which is how tests compare it with the CPU.
 layout(location = 0) in vec3 aPosition;
@@ -36,14 +36,13 @@ out vec3 vNormalView;
 out vec2 vTexcoord;
 out float vHeat;
 
-const int kJointTexels = 15;
+const int kJointTexels = 12;
 
 vec4 texel(int joint, int k) { return texelFetch(uJoints, (uJointOffset + joint) * kJointTexels + k); }
 
 mat4 skinMatrix(int j) { return mat4(texel(j, 0), texel(j, 1), texel(j, 2), texel(j, 3)); }
 mat3 skinNormalMatrix(int j) { return mat3(texel(j, 4).xyz, texel(j, 5).xyz, texel(j, 6).xyz); }
 mat3 scaleMatrix(int j) { return mat3(texel(j, 9).xyz, texel(j, 10).xyz, texel(j, 11).xyz); }
-mat3 scaleNormalMatrix(int j) { return mat3(texel(j, 12).xyz, texel(j, 13).xyz, texel(j, 14).xyz); }
 
 vec3 rotateByQuat(vec4 q, vec3 v) { return v + 2.0 * cross(q.xyz, cross(q.xyz, v) + q.w * v); }
 
@@ -78,7 +77,7 @@ void main() {
     // dual quaternions with signs aligned to the first influence (shortest arc).
     vec4 pivot = texel(joints[0], 7);
     vec4 real = vec4(0.0), dual = vec4(0.0);
-    mat3 scale = mat3(0.0), scaleNormal = mat3(0.0);
+    mat3 scale = mat3(0.0);
     for (int i = 0; i < 8; ++i) {
       if (weights[i] == 0.0) continue;
       vec4 r = texel(joints[i], 7);
@@ -86,7 +85,6 @@ void main() {
       real += w * r;
       dual += w * texel(joints[i], 8);
       scale += weights[i] * scaleMatrix(joints[i]);
-      scaleNormal += weights[i] * scaleNormalMatrix(joints[i]);
       if (joints[i] == uWeightJoint) heat += weights[i];
     }
     float len = length(real);
@@ -95,7 +93,8 @@ void main() {
     // Translation of a unit dual quaternion: 2 * dual * conjugate(real).
     vec3 t = 2.0 * (real.w * dual.xyz - dual.w * real.xyz + cross(real.xyz, dual.xyz));
     world = rotateByQuat(real, scale * position) + t;
-    worldNormal = rotateByQuat(real, scaleNormal * normal);
+    // Normals: the inverse transpose of the blended stretch, then the blended rotation.
+    worldNormal = rotateByQuat(real, transpose(inverse(scale)) * normal);
   } else {
     world = (uModel * vec4(position, 1.0)).xyz;
     worldNormal = uModelNormal * normal;

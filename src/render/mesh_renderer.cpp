@@ -18,22 +18,23 @@ struct PackedVertex {
   float texcoord[2];
 };
 
-// The rotation nearest to `a` (polar decomposition by Newton's iteration, which converges
-// in a handful of steps for the near-rotations skins hold); a mirrored `a` gets the
-// rotation of its X-flipped copy, the flip staying in the scale/shear rest.
+// The rotation of the polar decomposition A = R P (the rotation nearest A), by Higham's
+// iteration R <- (R + R^-T) / 2 in double, as DualQuaternionSkinningJob does so GPU and CPU
+// split a matrix alike; a reflection (det < 0) is negated into a rotation, the sign moving
+// into the stretch S = R^T A. A singular A (a zero scale) keeps the identity.
 glm::mat3 nearestRotation(const glm::mat3& a) {
-  glm::mat3 r = a;
-  if (glm::determinant(r) < 0.0f) r[0] = -r[0];
+  glm::dmat3 r(a);
+  const double det = glm::determinant(r);
+  if (!(std::abs(det) > 1e-30) || !std::isfinite(det)) return glm::mat3(1.0f);
   for (int i = 0; i < 30; ++i) {
-    const float det = glm::determinant(r);
-    if (!(std::abs(det) > 1e-20f)) return glm::mat3(1.0f);
-    const glm::mat3 next = 0.5f * (r + glm::transpose(glm::inverse(r)));
-    float change = 0.0f;
-    for (int c = 0; c < 3; ++c) change = std::max(change, glm::length(next[c] - r[c]));
+    const glm::dmat3 next = 0.5 * (r + glm::transpose(glm::inverse(r)));
+    double change = 0.0;
+    for (int c = 0; c < 3; ++c) change += glm::dot(next[c] - r[c], next[c] - r[c]);
     r = next;
-    if (change < 1e-7f) break;
+    if (change < 1e-24) break;
   }
-  return r;
+  if (det < 0.0) r = -r;
+  return glm::mat3(r);
 }
 
 glm::mat3 inverseTranspose3(const glm::mat3& m) {
@@ -73,12 +74,10 @@ std::vector<glm::vec3> displayNormals(const MeshPrimitive& p) {
 void packJointTexels(const glm::mat4& m, float* out) {
   const glm::mat3 a(m);
   const glm::mat3 normal = inverseTranspose3(a);
-  const glm::mat3 rotation = nearestRotation(a);
-  const glm::mat3 rest = glm::transpose(rotation) * a;  // S = R^T * A, so A = R * S
-  const glm::quat real = glm::normalize(glm::quat_cast(rotation));
+  const glm::quat real = glm::normalize(glm::quat_cast(nearestRotation(a)));
+  const glm::mat3 rest = glm::transpose(glm::mat3_cast(real)) * a;  // S = R^T * A, so A = R * S
   const glm::vec3 t(m[3]);
   const glm::quat dual = 0.5f * (glm::quat(0.0f, t.x, t.y, t.z) * real);
-  const glm::mat3 restNormal = inverseTranspose3(rest);
   auto put = [&out](const glm::vec4& v) {
     out[0] = v.x;
     out[1] = v.y;
@@ -91,7 +90,6 @@ void packJointTexels(const glm::mat4& m, float* out) {
   put(glm::vec4(real.x, real.y, real.z, real.w));
   put(glm::vec4(dual.x, dual.y, dual.z, dual.w));
   for (int c = 0; c < 3; ++c) put(glm::vec4(rest[c], 0.0f));
-  for (int c = 0; c < 3; ++c) put(glm::vec4(restNormal[c], 0.0f));
 }
 
 MeshRenderer::~MeshRenderer() {

@@ -90,8 +90,8 @@ struct MeshDraw {
 
 // The per-joint texels mesh.vert reads for a skinning matrix M: M's 4 columns, the 3x3
 // inverse transpose (3 texels), the rigid part as a unit dual quaternion (real xyzw, dual
-// xyzw) and the scale/shear rest S = rigid^-1 * M with its inverse transpose (3 + 3).
-constexpr int kJointTexels = 15;
+// xyzw) and the scale/shear rest S = rigid^-1 * M (3), as DualQuaternionSkinningJob splits it.
+constexpr int kJointTexels = 12;
 void packJointTexels(const glm::mat4& m, float* out);  // writes kJointTexels * 4 floats
 
 }  // namespace kinema

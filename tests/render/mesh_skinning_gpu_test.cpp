@@ -10,6 +10,7 @@
 #include <memory>
 #include <random>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
 #include "anim/clip.h"
@@ -26,11 +27,11 @@ using test::sharedDataDir;
 
 // ---- A plain CPU reference, in double precision (independent of the shader's packing). ----
 
+// The rotation of the polar decomposition (Higham's iteration); a reflection is negated.
 glm::dmat3 polarRotation(const glm::dmat3& a) {
   glm::dmat3 r = a;
-  if (glm::determinant(r) < 0.0) r[0] = -r[0];
   for (int i = 0; i < 50; ++i) r = 0.5 * (r + glm::transpose(glm::inverse(r)));
-  return r;
+  return glm::determinant(a) < 0.0 ? -r : r;
 }
 
 struct Deformed {
@@ -38,7 +39,7 @@ struct Deformed {
 };
 
 // glTF skinning of one vertex; dual quaternions per Kavan 2007 with the scale/shear rest
-// blended linearly first.
+// blended linearly first (normals by that blend's inverse transpose, then the rotation).
 Deformed skinVertex(const glm::dvec3& p, const glm::dvec3& n, const uint16_t* joints, const float* weights,
                     const std::vector<glm::dmat4>& m, bool dualQuaternion) {
   Deformed out{glm::dvec3(0.0), glm::dvec3(0.0)};
@@ -51,7 +52,7 @@ Deformed skinVertex(const glm::dvec3& p, const glm::dvec3& n, const uint16_t* jo
     }
   } else {
     glm::dquat real(0, 0, 0, 0), dual(0, 0, 0, 0), pivot(1, 0, 0, 0);
-    glm::dmat3 rest(0.0), restNormal(0.0);
+    glm::dmat3 rest(0.0);
     for (int i = 0; i < kMaxInfluences; ++i) {
       if (weights[i] == 0.0f) continue;
       const glm::dmat4& s = m[joints[i]];
@@ -65,14 +66,13 @@ Deformed skinVertex(const glm::dvec3& p, const glm::dvec3& n, const uint16_t* jo
       dual = dual + w * qd;
       const glm::dmat3 restI = glm::transpose(r) * glm::dmat3(s);
       rest += double(weights[i]) * restI;
-      restNormal += double(weights[i]) * glm::transpose(glm::inverse(restI));
     }
     const double len = glm::length(real);
     real = real / len;
     dual = dual / len;
     const glm::dquat t = 2.0 * dual * glm::conjugate(real);
     out.position = real * (rest * p) + glm::dvec3(t.x, t.y, t.z);
-    out.normal = real * (restNormal * n);
+    out.normal = real * (glm::transpose(glm::inverse(rest)) * n);
   }
   if (glm::length(out.normal) > 0.0) out.normal = glm::normalize(out.normal);
   return out;
@@ -343,6 +343,56 @@ TEST(MeshSkinningGpu, ThreeHundredJointSkinMatchesCpu) {
       EXPECT_LT(gap.normal, 1e-4) << int(method);
       // The chain's tip really moved: a vertex weighted to the last joints is not at rest.
       EXPECT_GT(glm::length(out[0].positions[kVertices - 1] - p.positions[kVertices - 1]), 0.1f);
+    }
+  }
+}
+
+// Skinning matrices with non-uniform scale, shear and a mirror (files whose inverse bind
+// matrices scale): DQS splits each into rotation and stretch (two-phase) like the CPU.
+TEST(MeshSkinningGpu, ScaledShearedAndMirroredMatricesMatchCpu) {
+  Scene scene;
+  for (int j = 0; j < 3; ++j) scene.skeleton.addJoint("j" + std::to_string(j), -1, Transform{});
+  glm::mat4 shear(1.0f);
+  shear[1][0] = 0.4f;  // x += 0.4 y
+  const glm::mat4 mirror = glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 1.0f));
+  scene.skins.push_back(Skin{"s", {0, 1, 2},
+                             {glm::scale(glm::mat4(1.0f), glm::vec3(1.0f, 2.0f, 0.5f)), shear, mirror}, -1});
+  MeshPrimitive p;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  for (int v = 0; v < 64; ++v) {
+    p.positions.push_back(glm::vec3(unit(rng), unit(rng), unit(rng)));
+    p.normals.push_back(glm::normalize(glm::vec3(unit(rng), unit(rng), 2.0f)));
+    const float w0 = 0.5f + 0.4f * std::abs(unit(rng));
+    const float w[3] = {w0, (1.0f - w0) * 0.7f, (1.0f - w0) * 0.3f};
+    for (int i = 0; i < kMaxInfluences; ++i) {
+      p.influenceJoints.push_back(static_cast<uint16_t>(i < 3 ? (v + i) % 3 : 0));
+      p.influenceWeights.push_back(i < 3 ? w[i] : 0.0f);
+    }
+    p.indices.push_back(static_cast<uint32_t>(v));
+  }
+  p.indices.resize(63);
+  scene.meshes.push_back(Mesh{"m", {p}, {}, {}});
+  MeshInstance inst;
+  inst.joint = 0;
+  inst.mesh = 0;
+  inst.skin = 0;
+  scene.meshInstances.push_back(inst);
+  std::vector<glm::mat4> world;
+  for (int j = 0; j < 3; ++j)
+    world.push_back(glm::translate(glm::mat4(1.0f), glm::vec3(0.3f * j, -0.2f, 0.1f)) *
+                    glm::mat4_cast(glm::angleAxis(0.5f + 0.7f * j, glm::normalize(glm::vec3(1.0f, j, 2.0f)))));
+  for (HeadlessBackend backend : backends()) {
+    SCOPED_TRACE(nameOf(backend));
+    Gpu gpu;
+    if (!openGpu(backend, gpu)) continue;
+    for (SkinningMethod method : {SkinningMethod::LinearBlend, SkinningMethod::DualQuaternion}) {
+      scene.meshInstances[0].skinning = method;
+      const std::vector<DeformedPrimitive> out = gpuDeform(*gpu.renderer, scene, world, true);
+      ASSERT_EQ(out.size(), 1u);
+      const Gap gap = compareWithReference(scene, world, out);
+      EXPECT_LT(gap.position, 1e-5) << int(method);
+      EXPECT_LT(gap.normal, 1e-5) << int(method);
     }
   }
 }
