@@ -105,7 +105,9 @@ TEST(DocumentFiles, RecentFilesKeepTenNewestFirstAndSurviveAReload) {
   ASSERT_EQ(recent.entries().size(), 10u);
   EXPECT_EQ(recent.entries()[0], "/f5.kinema");
   EXPECT_EQ(recent.entries()[1], "/f11.kinema");
-  EXPECT_EQ(recent.entries()[9], "/f3.kinema");  // f0..f2 dropped (f5 moved up, so f3 stays)
+  EXPECT_EQ(recent.entries()[2], "/f10.kinema");
+  EXPECT_EQ(recent.entries()[7], "/f4.kinema");  // f5 moved out from between f6 and f4
+  EXPECT_EQ(recent.entries()[9], "/f2.kinema");  // f0 and f1 dropped
   ASSERT_EQ(recent.save(), "");
   RecentFiles again(file);
   EXPECT_EQ(again.load(), "");
@@ -126,7 +128,9 @@ TEST(DocumentFiles, ConfigDirFollowsXdg) {
   EXPECT_EQ(RecentFiles::defaultFile(), "/tmp/xdg-test/kinema/recent.json");
   unsetenv("XDG_CONFIG_HOME");
   const char* home = std::getenv("HOME");
-  if (home) EXPECT_EQ(kinemaConfigDir(), std::string(home) + "/.config/kinema");
+  if (home) {
+    EXPECT_EQ(kinemaConfigDir(), std::string(home) + "/.config/kinema");
+  }
   if (old) setenv("XDG_CONFIG_HOME", saved.c_str(), 1);
 }
 

@@ -132,7 +132,9 @@ TEST(RecoveryFile, StateDirFollowsXdg) {
   EXPECT_EQ(defaultRecoveryDir(), "/tmp/xdg-state/kinema/recovery");
   unsetenv("XDG_STATE_HOME");
   const char* home = std::getenv("HOME");
-  if (home) EXPECT_EQ(defaultRecoveryDir(), std::string(home) + "/.local/state/kinema/recovery");
+  if (home) {
+    EXPECT_EQ(defaultRecoveryDir(), std::string(home) + "/.local/state/kinema/recovery");
+  }
   if (old) setenv("XDG_STATE_HOME", saved.c_str(), 1);
 }
 
