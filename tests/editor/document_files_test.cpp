@@ -23,6 +23,10 @@ TEST(DocumentFiles, NewIsTheDefaultCharacterAtRest) {
   EXPECT_FALSE(doc.dirty());
   EXPECT_FALSE(canSaveInPlace(doc));
   EXPECT_NE(saveDocument(doc), "");  // needs Save As
+  EXPECT_EQ(documentTitle(doc), "untitled - Kinema");
+  ASSERT_EQ(setJointTranslation(doc, 0, glm::vec3(0, 1, 0)), "");
+  doc.setPath("/some/dir/walk.kinema");
+  EXPECT_EQ(documentTitle(doc), "walk.kinema* - Kinema");
 }
 
 TEST(DocumentFiles, SaveAsThenOpenKeepsThePoseNamesAndTargets) {
