@@ -347,8 +347,8 @@ std::string MeshRenderer::upload(const Scene& scene) {
 void MeshRenderer::uploadJointMatrices(const MeshFrame& frame) {
   // Every skin's matrices in one buffer, skin after skin; instances index from their skin's offset.
   jointScratch_.clear();
-  for (const Skin& skin : scene_->skins) {
-    computeSkinningMatrices(skin, *frame.world, skinScratch_);
+  for (size_t k = 0; k < scene_->skins.size() && k < skinOffset_.size(); ++k) {
+    computeSkinningMatrices(scene_->skins[k], *frame.world, skinScratch_);
     const size_t at = jointScratch_.size();
     jointScratch_.resize(at + skinScratch_.size() * kJointTexels * 4);
     for (size_t j = 0; j < skinScratch_.size(); ++j) packJointTexels(skinScratch_[j], &jointScratch_[at + j * kJointTexels * 4]);
@@ -360,9 +360,15 @@ void MeshRenderer::uploadJointMatrices(const MeshFrame& frame) {
   glBindBuffer(GL_TEXTURE_BUFFER, 0);
 }
 
+bool MeshRenderer::uploadedMesh(int mesh) const {
+  // The scene may have changed since upload() (the editor edits it): draw only what both know.
+  return mesh >= 0 && mesh < static_cast<int>(primitivesOfMesh_.size()) && mesh < static_cast<int>(scene_->meshes.size());
+}
+
 void MeshRenderer::bindInstance(const MeshFrame& frame, int instance, const GpuPrimitive& p, bool weightsView) {
   const MeshInstance& inst = scene_->meshInstances[instance];
-  const bool skinned = p.skinned && inst.skin >= 0 && inst.skin < static_cast<int>(scene_->skins.size());
+  const bool skinned = p.skinned && inst.skin >= 0 && inst.skin < static_cast<int>(skinOffset_.size()) &&
+                       inst.skin < static_cast<int>(scene_->skins.size());
   const int method = !skinned ? 0 : inst.skinning == SkinningMethod::DualQuaternion ? 2 : 1;
   glUniform1i(glGetUniformLocation(program_, "uSkinning"), method);
   // The skin's joints start at its offset in the joint buffer: a buffer texture view per
@@ -431,10 +437,10 @@ void MeshRenderer::draw(const MeshFrame& frame, const glm::mat4& viewProjection,
   glDisable(GL_CULL_FACE);  // double-sided: the fragment shader lights back faces too
   for (size_t i = 0; i < scene_->meshInstances.size(); ++i) {
     const MeshInstance& inst = scene_->meshInstances[i];
-    if (inst.mesh < 0 || inst.mesh >= static_cast<int>(primitivesOfMesh_.size())) continue;
+    if (!uploadedMesh(inst.mesh)) continue;
     for (int index : primitivesOfMesh_[inst.mesh]) {
       const GpuPrimitive& p = primitives_[index];
-      if (p.indexCount == 0) continue;
+      if (p.indexCount == 0 || p.primitive >= static_cast<int>(scene_->meshes[inst.mesh].primitives.size())) continue;
       bindInstance(frame, static_cast<int>(i), p, true);
       glBindVertexArray(p.vao);
       glDrawElements(GL_TRIANGLES, p.indexCount, GL_UNSIGNED_INT, nullptr);
@@ -463,10 +469,11 @@ std::string MeshRenderer::deform(const MeshFrame& frame, bool skinnedOnly, std::
   glEnable(GL_RASTERIZER_DISCARD);
   for (size_t i = 0; i < scene_->meshInstances.size(); ++i) {
     const MeshInstance& inst = scene_->meshInstances[i];
-    if (inst.mesh < 0 || inst.mesh >= static_cast<int>(primitivesOfMesh_.size())) continue;
+    if (!uploadedMesh(inst.mesh)) continue;
     if (skinnedOnly && inst.skin < 0) continue;
     for (int index : primitivesOfMesh_[inst.mesh]) {
       const GpuPrimitive& p = primitives_[index];
+      if (p.primitive >= static_cast<int>(scene_->meshes[inst.mesh].primitives.size())) continue;
       DeformedPrimitive result;
       result.instance = static_cast<int>(i);
       result.primitive = p.primitive;

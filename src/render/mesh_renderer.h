@@ -39,7 +39,8 @@ class MeshRenderer {
   // Compiles the shaders. Empty string on success.
   std::string init();
   // Uploads the scene's meshes, skins and textures (replacing any earlier scene). The scene
-  // must outlive the renderer's use of it (draw() reads its skins and instances).
+  // must outlive the renderer's use of it (draw() reads its skins and instances); upload
+  // again when its meshes or skins change (draws skip what no longer matches, never crash).
   std::string upload(const Scene& scene);
   bool empty() const { return primitives_.empty(); }
 
@@ -67,6 +68,7 @@ class MeshRenderer {
   };
   void bindInstance(const MeshFrame& frame, int instance, const GpuPrimitive& p, bool weightsView);
   void uploadJointMatrices(const MeshFrame& frame);
+  bool uploadedMesh(int mesh) const;
   void release();
 
   GLuint program_ = 0;
