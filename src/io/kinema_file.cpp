@@ -293,7 +293,33 @@ bool readIkTarget(Reader& r, const Json& j, const std::string& p, Scene& scene) 
   }
   const std::string bad = t.validate(scene.skeleton);
   if (!bad.empty()) return r.fail(p, bad);
+  // Editor options, all optional: solver, chain_length, pinned, active.
+  IkTargetOptions o;
+  bool hasOptions = false;
+  if ((v = r.member(j, p, "solver", false))) {
+    const std::optional<IkSolver> solver = v->is_string() ? ikSolverFromString(v->get<std::string>()) : std::nullopt;
+    if (!solver) return r.fail(p + ".solver", "expected a solver name (two-bone, ccd, fabrik, jacobian-dls, ...)");
+    o.solver = *solver;
+    hasOptions = true;
+  }
+  if ((v = r.member(j, p, "chain_length", false))) {
+    double n = 0.0;
+    if (!r.number(*v, p + ".chain_length", n)) return false;
+    if (!(n >= 0.0 && n <= 1e6 && n == static_cast<double>(static_cast<long>(n))))
+      return r.fail(p + ".chain_length", "expected a whole number >= 0");
+    o.chainLength = static_cast<int>(n);
+    hasOptions = true;
+  }
+  for (const char* key : {"pinned", "active"}) {
+    if (!(v = r.member(j, p, key, false))) continue;
+    if (!v->is_boolean()) return r.fail(p + "." + key, "expected true or false");
+    (key[0] == 'p' ? o.pinned : o.active) = v->get<bool>();
+    hasOptions = true;
+  }
   scene.ik.targets.push_back(t);
+  // targetOptions is empty until some target has options; then one per target, defaults elsewhere.
+  if (hasOptions || !scene.ik.targetOptions.empty()) scene.ik.targetOptions.resize(scene.ik.targets.size());
+  if (hasOptions) scene.ik.targetOptions.back() = o;
   return true;
 }
 
@@ -401,7 +427,8 @@ Json ikToJson(const Scene& scene) {
     limits.push_back(std::move(j));
   }
   Json targets = Json::array();
-  for (const IkTarget& t : scene.ik.targets) {
+  for (size_t ti = 0; ti < scene.ik.targets.size(); ++ti) {
+    const IkTarget& t = scene.ik.targets[ti];
     Json j;
     j["effector"] = s.names[t.effector];
     if (t.root >= 0) j["root"] = s.names[t.root];
@@ -413,6 +440,13 @@ Json ikToJson(const Scene& scene) {
     }
     if (t.hasPole) j["pole"] = vec(&t.pole.x, 3);
     j["weight"] = jsonFloat(t.weight);
+    if (ti < scene.ik.targetOptions.size()) {
+      const IkTargetOptions& o = scene.ik.targetOptions[ti];
+      j["solver"] = toString(o.solver);
+      j["chain_length"] = o.chainLength;
+      j["pinned"] = o.pinned;
+      j["active"] = o.active;
+    }
     targets.push_back(std::move(j));
   }
   Json ik;
