@@ -1,0 +1,168 @@
+#include "skin/linear_blend_skinning.h"
+
+#include <cmath>
+#include <vector>
+
+#include "skin/skinning_job_checks.h"
+
+#if defined(__SSE2__) || defined(_M_X64)
+#include <emmintrin.h>
+#define KINEMA_SKIN_SSE2 1
+#endif
+
+namespace kinema {
+
+namespace {
+
+// A per-joint normal matrix, three columns padded to four floats for aligned-width loads.
+struct NormalMatrix {
+  float c[3][4];
+};
+
+#if KINEMA_SKIN_SSE2
+
+// Stores the x, y, z lanes of v (a 16-byte store would overrun the last vertex).
+inline void storeVec3(float* out, __m128 v) {
+  _mm_storel_pi(reinterpret_cast<__m64*>(out), v);
+  _mm_store_ss(out + 2, _mm_movehl_ps(v, v));
+}
+
+// v / |v.xyz|, or zero for a zero vector (a degenerate normal stays degenerate, not NaN).
+inline __m128 normalize3(__m128 v) {
+  const __m128 sq = _mm_mul_ps(v, v);
+  __m128 len2 = _mm_add_ss(sq, _mm_shuffle_ps(sq, sq, _MM_SHUFFLE(1, 1, 1, 1)));
+  len2 = _mm_add_ss(len2, _mm_movehl_ps(sq, sq));
+  __m128 inv = _mm_div_ss(_mm_set_ss(1.0f), _mm_sqrt_ss(len2));
+  inv = _mm_and_ps(inv, _mm_cmpgt_ss(len2, _mm_setzero_ps()));
+  return _mm_mul_ps(v, _mm_shuffle_ps(inv, inv, 0));
+}
+
+// One loop for every stride; `Stride` > 0 fixes it at compile time so the influence loop
+// unrolls (strides 1..4 and 8 are the common ones), 0 reads it from `stride`.
+// normalMats == nullptr: normals use the blended skinning matrix (see sharedSimilarity).
+template <int Stride>
+void skinLoop(const LinearBlendSkinningJob& job, int stride, const NormalMatrix* normalMats) {
+  const int s = Stride > 0 ? Stride : stride;
+  const float* mats = glm::value_ptr(job.jointMatrices[0]);
+  const uint16_t* joints = job.influenceJoints;
+  const float* weights = job.influenceWeights;
+  const float* in = &job.positions[0].x;
+  float* out = &job.outPositions[0].x;
+  const float* nin = job.normals ? &job.normals[0].x : nullptr;
+  float* nout = job.normals ? &job.outNormals[0].x : nullptr;
+  for (int v = 0; v < job.vertexCount; ++v, joints += s, weights += s) {
+    // The blended matrix sum_i w_i M_i, column by column.
+    __m128 w = _mm_set1_ps(weights[0]);
+    const float* m = mats + 16 * joints[0];
+    __m128 c0 = _mm_mul_ps(w, _mm_loadu_ps(m));
+    __m128 c1 = _mm_mul_ps(w, _mm_loadu_ps(m + 4));
+    __m128 c2 = _mm_mul_ps(w, _mm_loadu_ps(m + 8));
+    __m128 c3 = _mm_mul_ps(w, _mm_loadu_ps(m + 12));
+    for (int k = 1; k < s; ++k) {
+      w = _mm_set1_ps(weights[k]);
+      m = mats + 16 * joints[k];
+      c0 = _mm_add_ps(c0, _mm_mul_ps(w, _mm_loadu_ps(m)));
+      c1 = _mm_add_ps(c1, _mm_mul_ps(w, _mm_loadu_ps(m + 4)));
+      c2 = _mm_add_ps(c2, _mm_mul_ps(w, _mm_loadu_ps(m + 8)));
+      c3 = _mm_add_ps(c3, _mm_mul_ps(w, _mm_loadu_ps(m + 12)));
+    }
+    const float* p = in + 3 * static_cast<size_t>(v);
+    const __m128 r = _mm_add_ps(_mm_add_ps(_mm_mul_ps(c0, _mm_set1_ps(p[0])), _mm_mul_ps(c1, _mm_set1_ps(p[1]))),
+                                _mm_add_ps(_mm_mul_ps(c2, _mm_set1_ps(p[2])), c3));
+    storeVec3(out + 3 * static_cast<size_t>(v), r);
+    if (!nin) continue;
+    const float* n = nin + 3 * static_cast<size_t>(v);
+    if (normalMats) {
+      w = _mm_set1_ps(weights[0]);
+      const NormalMatrix* nm = normalMats + joints[0];
+      c0 = _mm_mul_ps(w, _mm_loadu_ps(nm->c[0]));
+      c1 = _mm_mul_ps(w, _mm_loadu_ps(nm->c[1]));
+      c2 = _mm_mul_ps(w, _mm_loadu_ps(nm->c[2]));
+      for (int k = 1; k < s; ++k) {
+        w = _mm_set1_ps(weights[k]);
+        nm = normalMats + joints[k];
+        c0 = _mm_add_ps(c0, _mm_mul_ps(w, _mm_loadu_ps(nm->c[0])));
+        c1 = _mm_add_ps(c1, _mm_mul_ps(w, _mm_loadu_ps(nm->c[1])));
+        c2 = _mm_add_ps(c2, _mm_mul_ps(w, _mm_loadu_ps(nm->c[2])));
+      }
+    }
+    const __m128 rn = _mm_add_ps(_mm_add_ps(_mm_mul_ps(c0, _mm_set1_ps(n[0])), _mm_mul_ps(c1, _mm_set1_ps(n[1]))),
+                                 _mm_mul_ps(c2, _mm_set1_ps(n[2])));
+    storeVec3(nout + 3 * static_cast<size_t>(v), normalize3(rn));
+  }
+}
+
+#else  // Portable scalar loop for targets without SSE2 (same arithmetic, one lane at a time).
+
+template <int Stride>
+void skinLoop(const LinearBlendSkinningJob& job, int stride, const NormalMatrix* normalMats) {
+  const int s = Stride > 0 ? Stride : stride;
+  for (int v = 0; v < job.vertexCount; ++v) {
+    const uint16_t* joints = job.influenceJoints + static_cast<size_t>(v) * s;
+    const float* weights = job.influenceWeights + static_cast<size_t>(v) * s;
+    glm::mat4 m(0.0f);
+    for (int k = 0; k < s; ++k) m += weights[k] * job.jointMatrices[joints[k]];
+    job.outPositions[v] = glm::vec3(m * glm::vec4(job.positions[v], 1.0f));
+    if (!job.normals) continue;
+    glm::mat3 nm(m);
+    if (normalMats) {
+      nm = glm::mat3(0.0f);
+      for (int k = 0; k < s; ++k) {
+        const NormalMatrix& j = normalMats[joints[k]];
+        for (int c = 0; c < 3; ++c) nm[c] += weights[k] * glm::vec3(j.c[c][0], j.c[c][1], j.c[c][2]);
+      }
+    }
+    const glm::vec3 n = nm * job.normals[v];
+    const float len2 = glm::dot(n, n);
+    job.outNormals[v] = len2 > 0.0f ? n / std::sqrt(len2) : glm::vec3(0.0f);
+  }
+}
+
+#endif
+
+// Scratch for the per-joint normal matrices of the general path: grows to the largest
+// skeleton seen on this thread and is then reused, so a run allocates at most once.
+std::vector<NormalMatrix>& normalMatrixScratch() {
+  thread_local std::vector<NormalMatrix> scratch;
+  return scratch;
+}
+
+}  // namespace
+
+std::string LinearBlendSkinningJob::validate() const {
+  return validateSkinningArrays(positions, normals, vertexCount, influenceJoints, influenceWeights,
+                                influencesPerVertex, jointMatrices, jointCount, outPositions, outNormals);
+}
+
+bool LinearBlendSkinningJob::run() const {
+  if (!validate().empty()) return false;
+  if (vertexCount == 0) return true;
+  // Normals need inverseTranspose(M_i) per joint. When every M_i is a rotation times one
+  // shared uniform scale s (rigid rigs, the usual case), inverseTranspose(M_i) = M_i / s^2
+  // for all i, so sum_i w_i inverseTranspose(M_i) n is (1/s^2) times the blended matrix
+  // applied to n and the normalisation removes the factor: no per-joint matrices needed.
+  const NormalMatrix* normalMats = nullptr;
+  if (normals && !sharedSimilarity(jointMatrices, jointCount)) {
+    std::vector<NormalMatrix>& scratch = normalMatrixScratch();
+    if (scratch.size() < static_cast<size_t>(jointCount)) scratch.resize(jointCount);
+    for (int j = 0; j < jointCount; ++j) {
+      const glm::mat3 n = normalMatrixOf(jointMatrices[j]);
+      for (int c = 0; c < 3; ++c) {
+        for (int r = 0; r < 3; ++r) scratch[j].c[c][r] = n[c][r];
+        scratch[j].c[c][3] = 0.0f;
+      }
+    }
+    normalMats = scratch.data();
+  }
+  switch (influencesPerVertex) {
+    case 1: skinLoop<1>(*this, 1, normalMats); break;
+    case 2: skinLoop<2>(*this, 2, normalMats); break;
+    case 3: skinLoop<3>(*this, 3, normalMats); break;
+    case 4: skinLoop<4>(*this, 4, normalMats); break;
+    case 8: skinLoop<8>(*this, 8, normalMats); break;
+    default: skinLoop<0>(*this, influencesPerVertex, normalMats); break;
+  }
+  return true;
+}
+
+}  // namespace kinema
