@@ -14,8 +14,14 @@ namespace kinema {
 
 namespace {
 
-// A per-joint normal matrix, three columns padded to four floats for aligned-width loads.
-struct NormalMatrix {
+// Per-joint matrices copied 16-byte aligned, so the blend's loads fold into its multiplies
+// (SSE arithmetic takes only aligned memory operands); a copy of a few hundred joints is
+// nothing next to the vertices.
+struct alignas(16) JointMatrix {
+  float c[4][4];
+};
+// A per-joint normal matrix, three columns padded to four floats.
+struct alignas(16) NormalMatrix {
   float c[3][4];
 };
 
@@ -29,25 +35,27 @@ inline void storeVec3(float* out, __m128 v) {
 
 // v / |v.xyz|, or zero for a zero vector (a degenerate normal stays degenerate, not NaN).
 // The reciprocal square root estimate (12 bits) refined by one Newton step is good to a
-// few float ulps, well inside 1e-6, at a fraction of sqrt + divide.
+// few float ulps, well inside 1e-6, at a fraction of sqrt + divide. Packed instructions
+// only: the scalar forms (rsqrtss, movss between registers) merge into their destination
+// and chain each vertex to the previous one through false dependencies.
 inline __m128 normalize3(__m128 v) {
   const __m128 sq = _mm_mul_ps(v, v);
-  __m128 len2 = _mm_add_ss(sq, _mm_shuffle_ps(sq, sq, _MM_SHUFFLE(1, 1, 1, 1)));
-  len2 = _mm_add_ss(len2, _mm_movehl_ps(sq, sq));
-  const __m128 y = _mm_rsqrt_ss(len2);
+  const __m128 len2 = _mm_add_ps(_mm_add_ps(_mm_shuffle_ps(sq, sq, _MM_SHUFFLE(0, 0, 0, 0)),
+                                            _mm_shuffle_ps(sq, sq, _MM_SHUFFLE(1, 1, 1, 1))),
+                                 _mm_shuffle_ps(sq, sq, _MM_SHUFFLE(2, 2, 2, 2)));
+  const __m128 y = _mm_rsqrt_ps(len2);
   // y (1.5 - 0.5 x y^2)
-  __m128 inv = _mm_mul_ss(y, _mm_sub_ss(_mm_set_ss(1.5f), _mm_mul_ss(_mm_mul_ss(_mm_set_ss(0.5f), len2), _mm_mul_ss(y, y))));
-  inv = _mm_and_ps(inv, _mm_cmpgt_ss(len2, _mm_set_ss(1e-36f)));
-  return _mm_mul_ps(v, _mm_shuffle_ps(inv, inv, 0));
+  const __m128 inv =
+      _mm_mul_ps(y, _mm_sub_ps(_mm_set1_ps(1.5f), _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(0.5f), len2), _mm_mul_ps(y, y))));
+  return _mm_and_ps(_mm_mul_ps(v, inv), _mm_cmpgt_ps(len2, _mm_set1_ps(1e-36f)));
 }
 
 // One loop for every stride; `Stride` > 0 fixes it at compile time so the influence loop
 // unrolls (strides 1..4 and 8 are the common ones), 0 reads it from `stride`.
 // normalMats == nullptr: normals use the blended skinning matrix (see sharedSimilarity).
 template <int Stride>
-void skinLoop(const LinearBlendSkinningJob& job, int stride, const NormalMatrix* normalMats) {
+void skinLoop(const LinearBlendSkinningJob& job, int stride, const JointMatrix* mats, const NormalMatrix* normalMats) {
   const int s = Stride > 0 ? Stride : stride;
-  const float* mats = glm::value_ptr(job.jointMatrices[0]);
   const uint16_t* joints = job.influenceJoints;
   const float* weights = job.influenceWeights;
   const float* in = &job.positions[0].x;
@@ -57,18 +65,18 @@ void skinLoop(const LinearBlendSkinningJob& job, int stride, const NormalMatrix*
   for (int v = 0; v < job.vertexCount; ++v, joints += s, weights += s) {
     // The blended matrix sum_i w_i M_i, column by column.
     __m128 w = _mm_set1_ps(weights[0]);
-    const float* m = mats + 16 * joints[0];
-    __m128 c0 = _mm_mul_ps(w, _mm_loadu_ps(m));
-    __m128 c1 = _mm_mul_ps(w, _mm_loadu_ps(m + 4));
-    __m128 c2 = _mm_mul_ps(w, _mm_loadu_ps(m + 8));
-    __m128 c3 = _mm_mul_ps(w, _mm_loadu_ps(m + 12));
+    const JointMatrix* m = mats + static_cast<size_t>(joints[0]);
+    __m128 c0 = _mm_mul_ps(w, _mm_load_ps(m->c[0]));
+    __m128 c1 = _mm_mul_ps(w, _mm_load_ps(m->c[1]));
+    __m128 c2 = _mm_mul_ps(w, _mm_load_ps(m->c[2]));
+    __m128 c3 = _mm_mul_ps(w, _mm_load_ps(m->c[3]));
     for (int k = 1; k < s; ++k) {
       w = _mm_set1_ps(weights[k]);
-      m = mats + 16 * joints[k];
-      c0 = _mm_add_ps(c0, _mm_mul_ps(w, _mm_loadu_ps(m)));
-      c1 = _mm_add_ps(c1, _mm_mul_ps(w, _mm_loadu_ps(m + 4)));
-      c2 = _mm_add_ps(c2, _mm_mul_ps(w, _mm_loadu_ps(m + 8)));
-      c3 = _mm_add_ps(c3, _mm_mul_ps(w, _mm_loadu_ps(m + 12)));
+      m = mats + static_cast<size_t>(joints[k]);
+      c0 = _mm_add_ps(c0, _mm_mul_ps(w, _mm_load_ps(m->c[0])));
+      c1 = _mm_add_ps(c1, _mm_mul_ps(w, _mm_load_ps(m->c[1])));
+      c2 = _mm_add_ps(c2, _mm_mul_ps(w, _mm_load_ps(m->c[2])));
+      c3 = _mm_add_ps(c3, _mm_mul_ps(w, _mm_load_ps(m->c[3])));
     }
     const float* p = in + 3 * static_cast<size_t>(v);
     const __m128 r = _mm_add_ps(_mm_add_ps(_mm_mul_ps(c0, _mm_set1_ps(p[0])), _mm_mul_ps(c1, _mm_set1_ps(p[1]))),
@@ -78,16 +86,16 @@ void skinLoop(const LinearBlendSkinningJob& job, int stride, const NormalMatrix*
     const float* n = nin + 3 * static_cast<size_t>(v);
     if (normalMats) {
       w = _mm_set1_ps(weights[0]);
-      const NormalMatrix* nm = normalMats + joints[0];
-      c0 = _mm_mul_ps(w, _mm_loadu_ps(nm->c[0]));
-      c1 = _mm_mul_ps(w, _mm_loadu_ps(nm->c[1]));
-      c2 = _mm_mul_ps(w, _mm_loadu_ps(nm->c[2]));
+      const NormalMatrix* nm = normalMats + static_cast<size_t>(joints[0]);
+      c0 = _mm_mul_ps(w, _mm_load_ps(nm->c[0]));
+      c1 = _mm_mul_ps(w, _mm_load_ps(nm->c[1]));
+      c2 = _mm_mul_ps(w, _mm_load_ps(nm->c[2]));
       for (int k = 1; k < s; ++k) {
         w = _mm_set1_ps(weights[k]);
-        nm = normalMats + joints[k];
-        c0 = _mm_add_ps(c0, _mm_mul_ps(w, _mm_loadu_ps(nm->c[0])));
-        c1 = _mm_add_ps(c1, _mm_mul_ps(w, _mm_loadu_ps(nm->c[1])));
-        c2 = _mm_add_ps(c2, _mm_mul_ps(w, _mm_loadu_ps(nm->c[2])));
+        nm = normalMats + static_cast<size_t>(joints[k]);
+        c0 = _mm_add_ps(c0, _mm_mul_ps(w, _mm_load_ps(nm->c[0])));
+        c1 = _mm_add_ps(c1, _mm_mul_ps(w, _mm_load_ps(nm->c[1])));
+        c2 = _mm_add_ps(c2, _mm_mul_ps(w, _mm_load_ps(nm->c[2])));
       }
     }
     const __m128 rn = _mm_add_ps(_mm_add_ps(_mm_mul_ps(c0, _mm_set1_ps(n[0])), _mm_mul_ps(c1, _mm_set1_ps(n[1]))),
@@ -99,7 +107,8 @@ void skinLoop(const LinearBlendSkinningJob& job, int stride, const NormalMatrix*
 #else  // Portable scalar loop for targets without SSE2 (same arithmetic, one lane at a time).
 
 template <int Stride>
-void skinLoop(const LinearBlendSkinningJob& job, int stride, const NormalMatrix* normalMats) {
+void skinLoop(const LinearBlendSkinningJob& job, int stride, const JointMatrix* /*aligned copy, unused*/,
+              const NormalMatrix* normalMats) {
   const int s = Stride > 0 ? Stride : stride;
   for (int v = 0; v < job.vertexCount; ++v) {
     const uint16_t* joints = job.influenceJoints + static_cast<size_t>(v) * s;
@@ -124,11 +133,15 @@ void skinLoop(const LinearBlendSkinningJob& job, int stride, const NormalMatrix*
 
 #endif
 
-// Scratch for the per-joint normal matrices of the general path: grows to the largest
-// skeleton seen on this thread and is then reused, so a run allocates at most once.
-std::vector<NormalMatrix>& normalMatrixScratch() {
-  thread_local std::vector<NormalMatrix> scratch;
-  return scratch;
+// Scratch for the aligned per-joint matrices: grows to the largest skeleton seen on this
+// thread and is then reused, so a run allocates at most once.
+struct Scratch {
+  std::vector<JointMatrix> matrices;
+  std::vector<NormalMatrix> normals;
+};
+Scratch& scratch() {
+  thread_local Scratch s;
+  return s;
 }
 
 }  // namespace
@@ -145,26 +158,31 @@ bool LinearBlendSkinningJob::run() const {
   // shared uniform scale s (rigid rigs, the usual case), inverseTranspose(M_i) = M_i / s^2
   // for all i, so sum_i w_i inverseTranspose(M_i) n is (1/s^2) times the blended matrix
   // applied to n and the normalisation removes the factor: no per-joint matrices needed.
+  Scratch& sc = scratch();
+  if (sc.matrices.size() < static_cast<size_t>(jointCount)) sc.matrices.resize(jointCount);
+  for (int j = 0; j < jointCount; ++j)
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r) sc.matrices[j].c[c][r] = jointMatrices[j][c][r];
   const NormalMatrix* normalMats = nullptr;
   if (normals && !sharedSimilarity(jointMatrices, jointCount)) {
-    std::vector<NormalMatrix>& scratch = normalMatrixScratch();
-    if (scratch.size() < static_cast<size_t>(jointCount)) scratch.resize(jointCount);
+    if (sc.normals.size() < static_cast<size_t>(jointCount)) sc.normals.resize(jointCount);
     for (int j = 0; j < jointCount; ++j) {
       const glm::mat3 n = normalMatrixOf(jointMatrices[j]);
       for (int c = 0; c < 3; ++c) {
-        for (int r = 0; r < 3; ++r) scratch[j].c[c][r] = n[c][r];
-        scratch[j].c[c][3] = 0.0f;
+        for (int r = 0; r < 3; ++r) sc.normals[j].c[c][r] = n[c][r];
+        sc.normals[j].c[c][3] = 0.0f;
       }
     }
-    normalMats = scratch.data();
+    normalMats = sc.normals.data();
   }
+  const JointMatrix* mats = sc.matrices.data();
   switch (influencesPerVertex) {
-    case 1: skinLoop<1>(*this, 1, normalMats); break;
-    case 2: skinLoop<2>(*this, 2, normalMats); break;
-    case 3: skinLoop<3>(*this, 3, normalMats); break;
-    case 4: skinLoop<4>(*this, 4, normalMats); break;
-    case 8: skinLoop<8>(*this, 8, normalMats); break;
-    default: skinLoop<0>(*this, influencesPerVertex, normalMats); break;
+    case 1: skinLoop<1>(*this, 1, mats, normalMats); break;
+    case 2: skinLoop<2>(*this, 2, mats, normalMats); break;
+    case 3: skinLoop<3>(*this, 3, mats, normalMats); break;
+    case 4: skinLoop<4>(*this, 4, mats, normalMats); break;
+    case 8: skinLoop<8>(*this, 8, mats, normalMats); break;
+    default: skinLoop<0>(*this, influencesPerVertex, mats, normalMats); break;
   }
   return true;
 }
