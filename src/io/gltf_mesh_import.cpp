@@ -56,7 +56,7 @@ std::string decodeImage(GltfContext& ctx, int index, size_t& pixelBudget, Textur
 
 // A vertex whose kept weights sum further than this from 1 is counted in the load report
 // (every vertex is renormalised; float rounding alone stays far below it).
-constexpr float kWeightSumTolerance = 1e-3f;
+constexpr double kWeightSumTolerance = 1e-3;
 
 // Per-vertex influences from every JOINTS_n / WEIGHTS_n pair: the largest kMaxInfluences
 // kept, largest first, renormalised to sum 1. `maxJoint` gets the largest joint used.
@@ -105,12 +105,12 @@ std::string readInfluences(GltfContext& ctx, const tinygltf::Primitive& p, const
       zeroWeights = true;
       all.emplace_back(1.0f, joints[0][v * 4]);
     }
-    float sum = 0;
+    double sum = 0;  // double: weights near FLT_MAX must not sum to infinity
     for (const auto& a : all) sum += a.first;
-    if (std::abs(sum - 1.0f) > kWeightSumTolerance) ++renormalised;
+    if (std::abs(sum - 1.0) > kWeightSumTolerance) ++renormalised;
     for (size_t k = 0; k < all.size(); ++k) {
       out.influenceJoints[v * kMaxInfluences + k] = static_cast<uint16_t>(all[k].second);
-      out.influenceWeights[v * kMaxInfluences + k] = all[k].first / sum;
+      out.influenceWeights[v * kMaxInfluences + k] = static_cast<float>(all[k].first / sum);
       maxJoint = std::max(maxJoint, static_cast<int>(all[k].second));
     }
   }

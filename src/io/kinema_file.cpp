@@ -721,7 +721,7 @@ bool normaliseInfluences(Reader& r, const std::string& p, MeshPrimitive& prim, s
   for (size_t v = 0; v < n; ++v) {
     float* w = &prim.influenceWeights[v * kMaxInfluences];
     uint16_t* joint = &prim.influenceJoints[v * kMaxInfluences];
-    float sum = 0.0f;
+    double sum = 0.0;  // double: eight weights near FLT_MAX must not sum to infinity
     bool sorted = true;
     for (int k = 0; k < kMaxInfluences; ++k) {
       if (w[k] < 0.0f)
@@ -729,19 +729,20 @@ bool normaliseInfluences(Reader& r, const std::string& p, MeshPrimitive& prim, s
       sum += w[k];
       sorted = sorted && (k == 0 || w[k] <= w[k - 1]);
     }
-    if (sum == 0.0f) {
+    if (sum == 0.0) {
       ++unweighted;
-      w[0] = sum = 1.0f;
+      w[0] = 1.0f;
+      sum = 1.0;
     }
     if (!sorted) {
       for (int k = 0; k < kMaxInfluences; ++k) slot[k] = {w[k], joint[k]};
       std::stable_sort(slot, slot + kMaxInfluences, [](const auto& a, const auto& b) { return a.first > b.first; });
       for (int k = 0; k < kMaxInfluences; ++k) w[k] = slot[k].first, joint[k] = slot[k].second;
     }
-    if (std::abs(sum - 1.0f) > 1e-3f) ++renormalised;
+    if (std::abs(sum - 1.0) > 1e-3) ++renormalised;
     // Sums off by float rounding only are left alone, so saved files read back bit for bit.
-    if (std::abs(sum - 1.0f) > 1e-6f)
-      for (int k = 0; k < kMaxInfluences; ++k) w[k] /= sum;
+    if (std::abs(sum - 1.0) > 1e-6)
+      for (int k = 0; k < kMaxInfluences; ++k) w[k] = static_cast<float>(w[k] / sum);
     for (int k = 0; k < kMaxInfluences; ++k)
       if (w[k] == 0.0f) joint[k] = 0;
   }

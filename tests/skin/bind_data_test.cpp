@@ -86,6 +86,18 @@ TEST(BindData, KinemaWeightsAreRenormalisedSortedAndReportedOnce) {
   EXPECT_NEAR(weightSum(p, 1), 1.0f, 0.0f);
 }
 
+// Weights near FLT_MAX sum past float range; the renormalised weights must still be 1/2 each.
+TEST(BindData, KinemaHugeWeightsRenormaliseWithoutOverflow) {
+  nlohmann::json j = sampleJson();
+  auto& w = j["meshes"][0]["primitives"][0]["weights"];
+  for (int k = 0; k < kMaxInfluences; ++k) w[k] = k < 2 ? 3.0e38 : 0.0;
+  const Result<Scene> r = parseKinemaJson(j.dump(), "huge.kinema");
+  ASSERT_TRUE(r.ok()) << r.error();
+  const MeshPrimitive& p = r.value().meshes[0].primitives[0];
+  EXPECT_EQ(p.influenceWeights[0], 0.5f);
+  EXPECT_EQ(p.influenceWeights[1], 0.5f);
+}
+
 TEST(BindData, KinemaNegativeWeightIsAnError) {
   nlohmann::json j = sampleJson();
   j["meshes"][0]["primitives"][0]["weights"][3] = -0.25;
