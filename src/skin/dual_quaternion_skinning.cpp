@@ -148,10 +148,11 @@ inline void blend(const uint16_t* joints, const float* weights, int s, const Joi
 template <int Stride, bool Stretch>
 void dqsLoop(const DualQuaternionSkinningJob& job, int stride, const JointDualQuaternion* dq, float sharedScale) {
   const int s = Stride > 0 ? Stride : stride;
+  const size_t step = job.influenceStride > 0 ? job.influenceStride : s;
   Blend b;
   for (int v = 0; v < job.vertexCount; ++v) {
-    const uint16_t* joints = job.influenceJoints + static_cast<size_t>(v) * s;
-    blend<Stride, Stretch>(joints, job.influenceWeights + static_cast<size_t>(v) * s, s, dq, b);
+    const uint16_t* joints = job.influenceJoints + static_cast<size_t>(v) * step;
+    blend<Stride, Stretch>(joints, job.influenceWeights + static_cast<size_t>(v) * step, s, dq, b);
     float len2 = b.b0[0] * b.b0[0] + b.b0[1] * b.b0[1] + b.b0[2] * b.b0[2] + b.b0[3] * b.b0[3];
     if (!(len2 > 0.0f)) {  // only when every weight is zero: follow the first joint
       const JointDualQuaternion& first = dq[joints[0]];
@@ -196,7 +197,8 @@ void dqsDispatch(const DualQuaternionSkinningJob& job, const JointDualQuaternion
 
 std::string DualQuaternionSkinningJob::validate() const {
   return validateSkinningArrays(positions, normals, vertexCount, influenceJoints, influenceWeights,
-                                influencesPerVertex, jointMatrices, jointCount, outPositions, outNormals);
+                                influencesPerVertex, influenceStride, jointMatrices, jointCount, outPositions,
+                                outNormals);
 }
 
 bool DualQuaternionSkinningJob::run() const {

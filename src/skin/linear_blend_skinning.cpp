@@ -56,13 +56,14 @@ inline __m128 normalize3(__m128 v) {
 template <int Stride>
 void skinLoop(const LinearBlendSkinningJob& job, int stride, const JointMatrix* mats, const NormalMatrix* normalMats) {
   const int s = Stride > 0 ? Stride : stride;
+  const size_t step = job.influenceStride > 0 ? job.influenceStride : s;
   const uint16_t* joints = job.influenceJoints;
   const float* weights = job.influenceWeights;
   const float* in = &job.positions[0].x;
   float* out = &job.outPositions[0].x;
   const float* nin = job.normals ? &job.normals[0].x : nullptr;
   float* nout = job.normals ? &job.outNormals[0].x : nullptr;
-  for (int v = 0; v < job.vertexCount; ++v, joints += s, weights += s) {
+  for (int v = 0; v < job.vertexCount; ++v, joints += step, weights += step) {
     // The blended matrix sum_i w_i M_i, column by column.
     __m128 w = _mm_set1_ps(weights[0]);
     const JointMatrix* m = mats + static_cast<size_t>(joints[0]);
@@ -110,9 +111,10 @@ template <int Stride>
 void skinLoop(const LinearBlendSkinningJob& job, int stride, const JointMatrix* /*aligned copy, unused*/,
               const NormalMatrix* normalMats) {
   const int s = Stride > 0 ? Stride : stride;
+  const size_t step = job.influenceStride > 0 ? job.influenceStride : s;
   for (int v = 0; v < job.vertexCount; ++v) {
-    const uint16_t* joints = job.influenceJoints + static_cast<size_t>(v) * s;
-    const float* weights = job.influenceWeights + static_cast<size_t>(v) * s;
+    const uint16_t* joints = job.influenceJoints + static_cast<size_t>(v) * step;
+    const float* weights = job.influenceWeights + static_cast<size_t>(v) * step;
     glm::mat4 m(0.0f);
     for (int k = 0; k < s; ++k) m += weights[k] * job.jointMatrices[joints[k]];
     job.outPositions[v] = glm::vec3(m * glm::vec4(job.positions[v], 1.0f));
@@ -148,7 +150,8 @@ Scratch& scratch() {
 
 std::string LinearBlendSkinningJob::validate() const {
   return validateSkinningArrays(positions, normals, vertexCount, influenceJoints, influenceWeights,
-                                influencesPerVertex, jointMatrices, jointCount, outPositions, outNormals);
+                                influencesPerVertex, influenceStride, jointMatrices, jointCount, outPositions,
+                                outNormals);
 }
 
 bool LinearBlendSkinningJob::run() const {

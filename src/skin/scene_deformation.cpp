@@ -67,6 +67,20 @@ std::string instanceError(const Scene& scene, size_t i) {
   return {};
 }
 
+// How many leading influence slots any vertex uses (the last non-zero weight's slot + 1):
+// most files use 4 of the 8, and the jobs then read only those.
+int usedInfluences(const MeshPrimitive& prim) {
+  int used = 1;
+  const size_t n = prim.positions.size();
+  for (size_t v = 0; v < n && used < kMaxInfluences; ++v)
+    for (int k = kMaxInfluences - 1; k >= used; --k)
+      if (prim.influenceWeights[v * kMaxInfluences + k] != 0.0f) {
+        used = k + 1;
+        break;
+      }
+  return used;
+}
+
 // An unskinned primitive (or one of a node without a skin) moves rigidly with its node.
 void transformRigidly(const glm::mat4& world, const std::vector<glm::vec3>& positions,
                       const std::vector<glm::vec3>& normals, DeformedPrimitive& out) {
@@ -162,6 +176,7 @@ bool SceneDeformationJob::run() const {
         const int n = prim.vertexCount();
         d.positions.resize(n);
         d.normals.resize(normals->size());
+        const int used = usedInfluences(prim);
         const glm::vec3* nin = normals->empty() ? nullptr : normals->data();
         glm::vec3* nout = normals->empty() ? nullptr : d.normals.data();
         bool ok = false;
@@ -172,7 +187,8 @@ bool SceneDeformationJob::run() const {
           job.vertexCount = n;
           job.influenceJoints = prim.influenceJoints.data();
           job.influenceWeights = prim.influenceWeights.data();
-          job.influencesPerVertex = kMaxInfluences;
+          job.influencesPerVertex = used;
+          job.influenceStride = kMaxInfluences;
           job.jointMatrices = skinning.data();
           job.jointCount = static_cast<int>(skinning.size());
           job.outPositions = d.positions.data();
@@ -185,7 +201,8 @@ bool SceneDeformationJob::run() const {
           job.vertexCount = n;
           job.influenceJoints = prim.influenceJoints.data();
           job.influenceWeights = prim.influenceWeights.data();
-          job.influencesPerVertex = kMaxInfluences;
+          job.influencesPerVertex = used;
+          job.influenceStride = kMaxInfluences;
           job.jointMatrices = skinning.data();
           job.jointCount = static_cast<int>(skinning.size());
           job.outPositions = d.positions.data();

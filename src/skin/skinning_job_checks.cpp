@@ -9,12 +9,16 @@ namespace kinema {
 
 std::string validateSkinningArrays(const glm::vec3* positions, const glm::vec3* normals, int vertexCount,
                                    const uint16_t* influenceJoints, const float* influenceWeights,
-                                   int influencesPerVertex, const glm::mat4* jointMatrices, int jointCount,
+                                   int influencesPerVertex, int influenceStride, const glm::mat4* jointMatrices,
+                                   int jointCount,
                                    const glm::vec3* outPositions, const glm::vec3* outNormals) {
   if (vertexCount < 0) return "vertexCount is negative";
   if (jointCount < 0) return "jointCount is negative";
   if (influencesPerVertex < 1 || influencesPerVertex > kMaxInfluences)
     return "influencesPerVertex must be 1.." + std::to_string(kMaxInfluences) + ", not " +
+           std::to_string(influencesPerVertex);
+  if (influenceStride != 0 && influenceStride < influencesPerVertex)
+    return "influenceStride " + std::to_string(influenceStride) + " is smaller than influencesPerVertex " +
            std::to_string(influencesPerVertex);
   if ((normals == nullptr) != (outNormals == nullptr))
     return normals ? "normals are given but outNormals is null" : "outNormals is given but normals is null";
@@ -28,15 +32,22 @@ std::string validateSkinningArrays(const glm::vec3* positions, const glm::vec3* 
       if (!std::isfinite(m[k])) return "joint matrix " + std::to_string(j) + " is not finite";
   }
   // A max over the indices first (vectorises): the index search runs only on failure.
-  const size_t count = static_cast<size_t>(vertexCount) * influencesPerVertex;
+  const size_t stride = influenceStride ? influenceStride : influencesPerVertex;
   uint16_t largest = 0;
-  for (size_t i = 0; i < count; ++i) largest = std::max(largest, influenceJoints[i]);
+  if (stride == static_cast<size_t>(influencesPerVertex)) {
+    const size_t count = static_cast<size_t>(vertexCount) * stride;
+    for (size_t i = 0; i < count; ++i) largest = std::max(largest, influenceJoints[i]);
+  } else {
+    for (size_t v = 0; v < static_cast<size_t>(vertexCount); ++v)
+      for (int k = 0; k < influencesPerVertex; ++k) largest = std::max(largest, influenceJoints[v * stride + k]);
+  }
   if (largest >= jointCount) {
-    for (size_t i = 0; i < count; ++i)
-      if (influenceJoints[i] >= jointCount)
-        return "vertex " + std::to_string(i / influencesPerVertex) + " influence " +
-               std::to_string(i % influencesPerVertex) + " uses joint " + std::to_string(influenceJoints[i]) +
-               ", past the " + std::to_string(jointCount) + " joint matrices";
+    for (size_t v = 0; v < static_cast<size_t>(vertexCount); ++v)
+      for (int k = 0; k < influencesPerVertex; ++k)
+        if (influenceJoints[v * stride + k] >= jointCount)
+          return "vertex " + std::to_string(v) + " influence " + std::to_string(k) + " uses joint " +
+                 std::to_string(influenceJoints[v * stride + k]) + ", past the " + std::to_string(jointCount) +
+                 " joint matrices";
   }
   return {};
 }

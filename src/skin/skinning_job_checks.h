@@ -9,11 +9,13 @@
 namespace kinema {
 
 // Empty when the arrays of a skinning job can be used; otherwise one sentence naming what
-// is wrong (null arrays, a stride out of 1..kMaxInfluences, normals without outNormals or
-// the reverse, a joint index >= jointCount, a non-finite matrix).
+// is wrong (null arrays, influencesPerVertex out of 1..kMaxInfluences or above a non-zero
+// influenceStride, normals without outNormals or the reverse, a joint index >= jointCount,
+// a non-finite matrix).
 std::string validateSkinningArrays(const glm::vec3* positions, const glm::vec3* normals, int vertexCount,
                                    const uint16_t* influenceJoints, const float* influenceWeights,
-                                   int influencesPerVertex, const glm::mat4* jointMatrices, int jointCount,
+                                   int influencesPerVertex, int influenceStride, const glm::mat4* jointMatrices,
+                                   int jointCount,
                                    const glm::vec3* outPositions, const glm::vec3* outNormals);
 
 // True when every matrix's upper 3x3 is an orthogonal matrix times one uniform scale s

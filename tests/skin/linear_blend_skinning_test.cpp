@@ -246,6 +246,44 @@ TEST(LinearBlendSkinning, InPlaceMatchesSeparateOutputs) {
   EXPECT_EQ(b.normals, expectedN);
 }
 
+// influenceStride: reading the first 3 of every 8 entries (MeshPrimitive's layout) gives
+// exactly what the same influences packed 3 per vertex give; the other 5 are never read.
+TEST(LinearBlendSkinning, InfluenceStrideSkipsUnusedSlots) {
+  std::mt19937 rng(3);
+  Buffers packed, wide;
+  for (int j = 0; j < 6; ++j) packed.matrices.push_back(test::randomAffine(rng));
+  wide.matrices = packed.matrices;
+  std::vector<float> w(3);
+  for (int v = 0; v < 50; ++v) {
+    packed.positions.push_back(test::randomPoint(rng, 1.0f));
+    packed.normals.push_back(glm::normalize(test::randomPoint(rng, 1.0f) + glm::vec3(2, 0, 0)));
+    test::randomWeights(rng, 3, w.data());
+    for (int k = 0; k < 8; ++k) {
+      const uint16_t joint = static_cast<uint16_t>(rng() % 6);
+      if (k < 3) {
+        packed.joints.push_back(joint);
+        packed.weights.push_back(w[k]);
+      }
+      wide.joints.push_back(k < 3 ? joint : 999);  // past the matrices: must not be read
+      wide.weights.push_back(k < 3 ? w[k] : std::nanf(""));
+    }
+  }
+  wide.positions = packed.positions;
+  wide.normals = packed.normals;
+  ASSERT_TRUE(packed.job(3).run());
+  LinearBlendSkinningJob j = wide.job(3);
+  j.influenceStride = 8;
+  EXPECT_EQ(j.validate(), "");
+  ASSERT_TRUE(j.run());
+  EXPECT_EQ(wide.outPositions, packed.outPositions);
+  EXPECT_EQ(wide.outNormals, packed.outNormals);
+  j.influenceStride = 2;
+  EXPECT_NE(j.validate().find("influenceStride 2 is smaller than influencesPerVertex 3"), std::string::npos);
+  j.influenceStride = 8;
+  wide.joints[8 + 2] = 6;  // vertex 1, influence 2: one past the matrices
+  EXPECT_NE(j.validate().find("vertex 1 influence 2 uses joint 6"), std::string::npos) << j.validate();
+}
+
 TEST(SkinningMatrices, WorldTimesInverseBind) {
   Skin skin;
   skin.joints = {2, 0};
