@@ -37,7 +37,7 @@ inline void storeVec3(float* out, __m128 v) {
 // The reciprocal square root estimate (12 bits) refined by one Newton step is good to a
 // few float ulps, well inside 1e-6, at a fraction of sqrt + divide. Packed instructions
 // only: the scalar forms (rsqrtss, movss between registers) merge into their destination
-// and chain each vertex to the previous one through false dependencies.
+// register, a dependency on whatever wrote it last.
 inline __m128 normalize3(__m128 v) {
   const __m128 sq = _mm_mul_ps(v, v);
   const __m128 len2 = _mm_add_ps(_mm_add_ps(_mm_shuffle_ps(sq, sq, _MM_SHUFFLE(0, 0, 0, 0)),
