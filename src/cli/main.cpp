@@ -9,6 +9,7 @@
 #include "cli/plot_curves_command.h"
 #include "cli/pose_command.h"
 #include "cli/render_command.h"
+#include "cli/skin_command.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"Kinema: skeleton posing, inverse kinematics and keyframe animation", "kinema"};
@@ -28,6 +29,8 @@ int main(int argc, char** argv) {
   CLI::App* editCmd = kinema::cli::addEditCommand(app, edit);
   kinema::cli::ConvertOptions convert;
   CLI::App* convertCmd = kinema::cli::addConvertCommand(app, convert);
+  kinema::cli::SkinOptions skin;
+  CLI::App* skinCmd = kinema::cli::addSkinCommand(app, skin);
 
   try {
     app.parse(argc, argv);
@@ -48,5 +51,6 @@ int main(int argc, char** argv) {
   if (renderCmd->parsed()) return kinema::cli::runRender(render);
   if (editCmd->parsed()) return kinema::cli::runEdit(edit);
   if (convertCmd->parsed()) return kinema::cli::runConvert(convert);
+  if (skinCmd->parsed()) return kinema::cli::runSkin(skin);
   return kinema::cli::runDefault();
 }

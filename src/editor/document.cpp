@@ -40,12 +40,20 @@ Document::Document(Scene scene, std::string path) : scene_(std::move(scene)), pa
                                                                                  : Pose::rest(scene_.skeleton);
   scene_.pose = Pose{};  // the document's pose_ is the one truth
   if (!scene_.ik.limits.empty()) scene_.ik.limits.resize(n);
-  for (const IkTarget& t : scene_.ik.targets) {
+  for (size_t i = 0; i < scene_.ik.targets.size(); ++i) {
     PoseIkTarget p;
-    p.target = t;
+    p.target = scene_.ik.targets[i];
+    if (i < scene_.ik.targetOptions.size()) {
+      const IkTargetOptions& o = scene_.ik.targetOptions[i];
+      p.solver = o.solver;
+      p.chainLength = o.chainLength;
+      p.pinned = o.pinned;
+      p.active = o.active;
+    }
     targets_.push_back(p);
   }
   scene_.ik.targets.clear();  // targets_ hold them with their editor settings
+  scene_.ik.targetOptions.clear();
   loadedNames_ = scene_.skeleton.names;
 }
 
@@ -54,9 +62,12 @@ std::vector<glm::mat4> Document::worldTransforms() const { return computeWorld(s
 Scene Document::sceneForSaving() const {
   Scene s = scene_;
   s.pose = pose_;
-  // Solver, chain length, pinned and active are editor settings the file does not hold:
-  // the chain length is saved as the root it resolves to.
-  for (const PoseIkTarget& t : targets_) s.ik.targets.push_back(t.resolved(s.skeleton));
+  // The chain length is saved both as the root it resolves to (for other readers) and as
+  // itself, with the solver, pinned and active flags.
+  for (const PoseIkTarget& t : targets_) {
+    s.ik.targets.push_back(t.resolved(s.skeleton));
+    s.ik.targetOptions.push_back({t.solver, t.chainLength, t.pinned, t.active});
+  }
   // glTF scenes report and export the file's node names: a renamed joint renames its node.
   for (int j = 0; j < s.skeleton.size() && j < static_cast<int>(s.nodeOfJoint.size()); ++j) {
     const int node = s.nodeOfJoint[j];

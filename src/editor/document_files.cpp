@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "core/default_character.h"
+#include "skin/default_character_scene.h"
 #include "io/atomic_write.h"
 #include "io/bvh_writer.h"
 #include "io/gltf_writer.h"
@@ -16,11 +16,8 @@ namespace kinema {
 namespace fs = std::filesystem;
 
 Document newDocument() {
-  // The same scene as cli/command_line.cpp's loadSceneOrDefault(""): keep the two in step.
-  Scene scene;
-  scene.source = "default character";
-  scene.skeleton = makeDefaultCharacter();
-  return Document(std::move(scene));
+  // The same scene as cli/command_line.cpp's loadSceneOrDefault(""): the skinned body.
+  return Document(makeDefaultCharacterScene());
 }
 
 Result<Document> openDocument(const std::string& path) {

@@ -5,6 +5,7 @@
 #include "core/skeleton.h"
 #include "ik/ik_target.h"
 #include "ik/joint_limits.h"
+#include "ik/ik_solver_kind.h"
 
 namespace kinema {
 
@@ -14,6 +15,8 @@ struct IkRig {
   // Empty (no limits) or one entry per skeleton joint.
   std::vector<JointLimit> limits;
   std::vector<IkTarget> targets;
+  // How the editor drives each saved target: empty, or one entry per target.
+  std::vector<IkTargetOptions> targetOptions;
 
   bool empty() const { return limits.empty() && targets.empty(); }
   // The limit of `joint`, or nullptr when it has none.

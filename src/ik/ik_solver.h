@@ -5,14 +5,12 @@
 
 #include "core/pose.h"
 #include "ik/ik_rig.h"
+#include "ik/ik_solver_kind.h"
 #include "ik/ik_target.h"
 #include "ik/ik_trace.h"
 
 namespace kinema {
 
-enum class IkSolver { TwoBone, Ccd, Fabrik, JacobianTranspose, JacobianPinv, JacobianDls, JacobianSdls };
-const char* toString(IkSolver solver);  // "two-bone", "ccd", "fabrik", "jacobian-dls", ...
-std::optional<IkSolver> ikSolverFromString(const std::string& name);
 
 struct IkSettings {
   float tolerance = 1e-3f;  // converged when every effector is this close (file units)

@@ -54,6 +54,10 @@ std::string decodeImage(GltfContext& ctx, int index, size_t& pixelBudget, Textur
   return {};
 }
 
+// A vertex whose kept weights sum further than this from 1 is counted in the load report
+// (every vertex is renormalised; float rounding alone stays far below it).
+constexpr double kWeightSumTolerance = 1e-3;
+
 // Per-vertex influences from every JOINTS_n / WEIGHTS_n pair: the largest kMaxInfluences
 // kept, largest first, renormalised to sum 1. `maxJoint` gets the largest joint used.
 std::string readInfluences(GltfContext& ctx, const tinygltf::Primitive& p, const std::string& where, size_t vertices,
@@ -83,6 +87,7 @@ std::string readInfluences(GltfContext& ctx, const tinygltf::Primitive& p, const
   out.influenceWeights.assign(vertices * kMaxInfluences, 0.0f);
   std::vector<std::pair<float, uint32_t>> all;
   bool zeroWeights = false;
+  size_t renormalised = 0;  // vertices whose kept weights summed to 1 +- more than 1e-3
   for (size_t v = 0; v < vertices; ++v) {
     all.clear();
     for (size_t s = 0; s < joints.size(); ++s)
@@ -100,15 +105,19 @@ std::string readInfluences(GltfContext& ctx, const tinygltf::Primitive& p, const
       zeroWeights = true;
       all.emplace_back(1.0f, joints[0][v * 4]);
     }
-    float sum = 0;
+    double sum = 0;  // double: weights near FLT_MAX must not sum to infinity
     for (const auto& a : all) sum += a.first;
+    if (std::abs(sum - 1.0) > kWeightSumTolerance) ++renormalised;
     for (size_t k = 0; k < all.size(); ++k) {
       out.influenceJoints[v * kMaxInfluences + k] = static_cast<uint16_t>(all[k].second);
-      out.influenceWeights[v * kMaxInfluences + k] = all[k].first / sum;
+      out.influenceWeights[v * kMaxInfluences + k] = static_cast<float>(all[k].first / sum);
       maxJoint = std::max(maxJoint, static_cast<int>(all[k].second));
     }
   }
   if (zeroWeights) ctx.warn(where + ": vertices whose weights are all zero follow their first joint");
+  if (renormalised)
+    ctx.warn(where + ": " + std::to_string(renormalised) + " of " + std::to_string(vertices) +
+             " vertices had skin weights not summing to 1 (beyond 1e-3); renormalised");
   return {};
 }
 

@@ -293,7 +293,33 @@ bool readIkTarget(Reader& r, const Json& j, const std::string& p, Scene& scene) 
   }
   const std::string bad = t.validate(scene.skeleton);
   if (!bad.empty()) return r.fail(p, bad);
+  // Editor options, all optional: solver, chain_length, pinned, active.
+  IkTargetOptions o;
+  bool hasOptions = false;
+  if ((v = r.member(j, p, "solver", false))) {
+    const std::optional<IkSolver> solver = v->is_string() ? ikSolverFromString(v->get<std::string>()) : std::nullopt;
+    if (!solver) return r.fail(p + ".solver", "expected a solver name (two-bone, ccd, fabrik, jacobian-dls, ...)");
+    o.solver = *solver;
+    hasOptions = true;
+  }
+  if ((v = r.member(j, p, "chain_length", false))) {
+    double n = 0.0;
+    if (!r.number(*v, p + ".chain_length", n)) return false;
+    if (!(n >= 0.0 && n <= 1e6 && n == static_cast<double>(static_cast<long>(n))))
+      return r.fail(p + ".chain_length", "expected a whole number >= 0");
+    o.chainLength = static_cast<int>(n);
+    hasOptions = true;
+  }
+  for (const char* key : {"pinned", "active"}) {
+    if (!(v = r.member(j, p, key, false))) continue;
+    if (!v->is_boolean()) return r.fail(p + "." + key, "expected true or false");
+    (key[0] == 'p' ? o.pinned : o.active) = v->get<bool>();
+    hasOptions = true;
+  }
   scene.ik.targets.push_back(t);
+  // targetOptions is empty until some target has options; then one per target, defaults elsewhere.
+  if (hasOptions || !scene.ik.targetOptions.empty()) scene.ik.targetOptions.resize(scene.ik.targets.size());
+  if (hasOptions) scene.ik.targetOptions.back() = o;
   return true;
 }
 
@@ -401,7 +427,8 @@ Json ikToJson(const Scene& scene) {
     limits.push_back(std::move(j));
   }
   Json targets = Json::array();
-  for (const IkTarget& t : scene.ik.targets) {
+  for (size_t ti = 0; ti < scene.ik.targets.size(); ++ti) {
+    const IkTarget& t = scene.ik.targets[ti];
     Json j;
     j["effector"] = s.names[t.effector];
     if (t.root >= 0) j["root"] = s.names[t.root];
@@ -413,6 +440,13 @@ Json ikToJson(const Scene& scene) {
     }
     if (t.hasPole) j["pole"] = vec(&t.pole.x, 3);
     j["weight"] = jsonFloat(t.weight);
+    if (ti < scene.ik.targetOptions.size()) {
+      const IkTargetOptions& o = scene.ik.targetOptions[ti];
+      j["solver"] = toString(o.solver);
+      j["chain_length"] = o.chainLength;
+      j["pinned"] = o.pinned;
+      j["active"] = o.active;
+    }
     targets.push_back(std::move(j));
   }
   Json ik;
@@ -711,7 +745,50 @@ bool readArrayOf(Reader& r, const Json& root, const char* key, const std::functi
   return true;
 }
 
-bool readPrimitive(Reader& r, const Json& j, const std::string& p, const Scene& scene, MeshPrimitive& prim) {
+// Influences as the loaders promise them (core/mesh.h): no negative weight, largest first,
+// summing to 1 (renormalised, with one warning per primitive when a sum was off by more
+// than 1e-3), zero weights on joint 0. A vertex without weight follows its first joint.
+bool normaliseInfluences(Reader& r, const std::string& p, MeshPrimitive& prim, std::vector<std::string>& warnings) {
+  const size_t n = prim.positions.size();
+  size_t renormalised = 0, unweighted = 0;
+  std::pair<float, uint16_t> slot[kMaxInfluences];
+  for (size_t v = 0; v < n; ++v) {
+    float* w = &prim.influenceWeights[v * kMaxInfluences];
+    uint16_t* joint = &prim.influenceJoints[v * kMaxInfluences];
+    double sum = 0.0;  // double: eight weights near FLT_MAX must not sum to infinity
+    bool sorted = true;
+    for (int k = 0; k < kMaxInfluences; ++k) {
+      if (w[k] < 0.0f)
+        return r.fail(p + ".weights[" + std::to_string(v * kMaxInfluences + k) + "]", "a weight must not be negative");
+      sum += w[k];
+      sorted = sorted && (k == 0 || w[k] <= w[k - 1]);
+    }
+    if (sum == 0.0) {
+      ++unweighted;
+      w[0] = 1.0f;
+      sum = 1.0;
+    }
+    if (!sorted) {
+      for (int k = 0; k < kMaxInfluences; ++k) slot[k] = {w[k], joint[k]};
+      std::stable_sort(slot, slot + kMaxInfluences, [](const auto& a, const auto& b) { return a.first > b.first; });
+      for (int k = 0; k < kMaxInfluences; ++k) w[k] = slot[k].first, joint[k] = slot[k].second;
+    }
+    if (std::abs(sum - 1.0) > 1e-3) ++renormalised;
+    // Sums off by float rounding only are left alone, so saved files read back bit for bit.
+    if (std::abs(sum - 1.0) > 1e-6)
+      for (int k = 0; k < kMaxInfluences; ++k) w[k] = static_cast<float>(w[k] / sum);
+    for (int k = 0; k < kMaxInfluences; ++k)
+      if (w[k] == 0.0f) joint[k] = 0;
+  }
+  if (unweighted)
+    warnings.push_back(p + ": " + std::to_string(unweighted) + " vertices without skin weight follow their first joint");
+  if (renormalised)
+    warnings.push_back(p + ": " + std::to_string(renormalised) + " of " + std::to_string(n) +
+                       " vertices had skin weights not summing to 1 (beyond 1e-3); renormalised");
+  return true;
+}
+
+bool readPrimitive(Reader& r, const Json& j, const std::string& p, Scene& scene, MeshPrimitive& prim) {
   if (!readVectors(r, j, p, "positions", true, prim.positions) || !readVectors(r, j, p, "normals", false, prim.normals) ||
       !readVectors(r, j, p, "texcoords", false, prim.texcoords))
     return false;
@@ -753,6 +830,7 @@ bool readPrimitive(Reader& r, const Json& j, const std::string& p, const Scene& 
       }
       prim.influenceJoints[i] = static_cast<uint16_t>(x.get<unsigned long long>());
     }
+    if (!normaliseInfluences(r, p, prim, scene.warnings)) return false;
   }
   if (!readOptionalIndex(r, j, p, "material", static_cast<long long>(scene.materials.size()), prim.material)) return false;
   if (const Json* v = r.member(j, p, "targets", false)) {
@@ -897,6 +975,13 @@ bool readSceneAssets(Reader& r, const Json& root, Scene& scene) {
         if ((v = r.member(j, p, "morph_weights", false)) &&
             !readFlatFloats(r, *v, p + ".morph_weights", 1, mi.morphWeights))
           return false;
+        if ((v = r.member(j, p, "skinning", false))) {
+          std::string method;
+          if (!r.string(*v, p + ".skinning", method)) return false;
+          if (method == "linear") mi.skinning = SkinningMethod::LinearBlend;
+          else if (method == "dual-quaternion") mi.skinning = SkinningMethod::DualQuaternion;
+          else return r.fail(p + ".skinning", "expected \"linear\" or \"dual-quaternion\", found \"" + method + "\"");
+        }
         // Influences index the skin's joint list.
         const Mesh& mesh = scene.meshes[mi.mesh];
         const size_t joints = mi.skin >= 0 ? scene.skins[mi.skin].joints.size() : 0;
@@ -999,6 +1084,7 @@ void sceneAssetsToJson(const Scene& scene, Json& root) {
       j["mesh"] = mi.mesh;
       if (mi.skin >= 0) j["skin"] = mi.skin;
       if (!mi.morphWeights.empty()) j["morph_weights"] = flatFloats(mi.morphWeights, 1);
+      if (mi.skinning == SkinningMethod::DualQuaternion) j["skinning"] = "dual-quaternion";
       a.push_back(std::move(j));
     }
     root["mesh_instances"] = std::move(a);

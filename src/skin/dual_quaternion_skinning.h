@@ -20,6 +20,7 @@ struct DualQuaternionSkinningJob {
   const uint16_t* influenceJoints = nullptr;
   const float* influenceWeights = nullptr;
   int influencesPerVertex = kMaxInfluences;
+  int influenceStride = 0;  // as in LinearBlendSkinningJob: 0 means influencesPerVertex
   const glm::mat4* jointMatrices = nullptr;
   int jointCount = 0;
   glm::vec3* outPositions = nullptr;

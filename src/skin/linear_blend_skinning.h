@@ -21,6 +21,10 @@ struct LinearBlendSkinningJob {
   const uint16_t* influenceJoints = nullptr;
   const float* influenceWeights = nullptr;
   int influencesPerVertex = kMaxInfluences;
+  // Entries from one vertex to the next in both arrays when only the first
+  // influencesPerVertex of each are to be read (MeshPrimitive's kMaxInfluences layout
+  // with at most 4 in use); 0: influencesPerVertex.
+  int influenceStride = 0;
   // Skinning matrices (computeSkinningMatrices), indexed by influenceJoints.
   const glm::mat4* jointMatrices = nullptr;
   int jointCount = 0;

@@ -76,5 +76,37 @@ TEST(KinemaFileIk, ErrorsNameTheJsonPath) {
   EXPECT_NE(r.error().find("ik.targets[0].effector"), std::string::npos) << r.error();
 }
 
+// The editor's per-target options (solver, chain length, pinned, active) travel with the
+// rig; a target without them reads as the defaults when another target has some.
+TEST(KinemaFileIk, TargetOptionsRoundTrip) {
+  const std::string head = R"({"format":"kinema","version":1,"skeleton":{"joints":[{"name":"a","parent":-1},{"name":"b","parent":0},{"name":"c","parent":1}]},)";
+  Result<Scene> r = parseKinemaJson(head + R"("ik":{"targets":[{"effector":"c","position":[1,0,0]},)" +
+                                        R"({"effector":"b","position":[0,1,0],"solver":"two-bone","chain_length":2,"pinned":true,"active":false}]}})",
+                                    "o.kinema");
+  ASSERT_TRUE(r) << r.error();
+  ASSERT_EQ(r->ik.targetOptions.size(), 2u);
+  EXPECT_EQ(r->ik.targetOptions[0].solver, IkSolver::JacobianDls);
+  EXPECT_EQ(r->ik.targetOptions[0].chainLength, 0);
+  EXPECT_FALSE(r->ik.targetOptions[0].pinned);
+  EXPECT_TRUE(r->ik.targetOptions[0].active);
+  EXPECT_EQ(r->ik.targetOptions[1].solver, IkSolver::TwoBone);
+  EXPECT_EQ(r->ik.targetOptions[1].chainLength, 2);
+  EXPECT_TRUE(r->ik.targetOptions[1].pinned);
+  EXPECT_FALSE(r->ik.targetOptions[1].active);
+  Result<Scene> back = parseKinemaJson(toKinemaJson(r.value()), "o2.kinema");
+  ASSERT_TRUE(back) << back.error();
+  ASSERT_EQ(back->ik.targetOptions.size(), 2u);
+  EXPECT_EQ(back->ik.targetOptions[1].solver, IkSolver::TwoBone);
+  EXPECT_EQ(back->ik.targetOptions[1].chainLength, 2);
+  EXPECT_TRUE(back->ik.targetOptions[1].pinned);
+  EXPECT_FALSE(back->ik.targetOptions[1].active);
+
+  for (const char* bad : {R"("solver":"magic")", R"("chain_length":-1)", R"("chain_length":1.5)", R"("pinned":1)"}) {
+    r = parseKinemaJson(head + R"("ik":{"targets":[{"effector":"c","position":[1,0,0],)" + bad + "}]}}", "x.kinema");
+    ASSERT_FALSE(r) << bad;
+    EXPECT_NE(r.error().find("x.kinema: ik.targets[0]."), std::string::npos) << r.error();
+  }
+}
+
 }  // namespace
 }  // namespace kinema

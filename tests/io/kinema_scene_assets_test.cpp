@@ -50,6 +50,7 @@ void expectSameAssets(const Scene& a, const Scene& b) {
     EXPECT_EQ(a.meshInstances[i].mesh, b.meshInstances[i].mesh);
     EXPECT_EQ(a.meshInstances[i].skin, b.meshInstances[i].skin);
     EXPECT_EQ(a.meshInstances[i].morphWeights, b.meshInstances[i].morphWeights);
+    EXPECT_EQ(a.meshInstances[i].skinning, b.meshInstances[i].skinning);
   }
   ASSERT_EQ(a.materials.size(), b.materials.size());
   for (size_t i = 0; i < a.materials.size(); ++i) {
