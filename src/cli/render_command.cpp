@@ -11,6 +11,7 @@
 #include "core/forward_kinematics.h"
 #include "render/headless_renderer.h"
 #include "render/skeleton_view.h"
+#include "skin/scene_deformation.h"
 
 namespace kinema::cli {
 
@@ -186,14 +187,17 @@ int runRender(const RenderOptions& o) {
   // One camera for the whole sequence, framing every pose in it (joints and deformed
   // vertices, read back from the GPU), so the view does not jump.
   std::vector<std::vector<glm::mat4>> worlds;
+  std::vector<std::vector<std::vector<float>>> morphWeights;  // per sample, per mesh instance
   Bounds bounds;
   for (const Sample& s : samples) {
     worlds.push_back(posedWorld(scene, o.clip, s.time));
     for (const glm::mat4& m : worlds.back()) bounds.add(glm::vec3(m[3]));
     if (!meshes) continue;
+    morphWeights.push_back(sampleMorphWeights(scene, scene.clips.empty() ? -1 : o.clip, s.time));
     std::vector<DeformedPrimitive> deformed;
     MeshFrame meshFrame;
     meshFrame.world = &worlds.back();
+    meshFrame.morphWeights = &morphWeights.back();
     const std::string error = renderer.meshes().deform(meshFrame, false, deformed);
     if (!error.empty()) return badInput("cannot render: " + error);
     for (const DeformedPrimitive& d : deformed)
@@ -223,6 +227,7 @@ int runRender(const RenderOptions& o) {
     MeshDraw meshDraw;
     meshDraw.renderer = &renderer.meshes();
     meshDraw.frame.world = &worlds[k];
+    meshDraw.frame.morphWeights = meshes ? &morphWeights[k] : nullptr;
     meshDraw.frame.weightJoint = weightJoint;
     FrameDescription frame;
     frame.skeleton = &list;

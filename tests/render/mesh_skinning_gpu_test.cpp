@@ -1,7 +1,7 @@
 // GPU skinning (shaders/mesh.vert through MeshRenderer::deform, transform feedback) against
-// CPU references: a hand-derived two-joint case, a plain double-precision LBS / DQS written
-// here, three.js's skinned vertices (../shared/data/reference), and a synthetic 300-joint
-// skin. On EGL, and on OSMesa when the build has it. Rendering stays on llvmpipe so a GPU host
+// CPU references: a hand-derived two-joint case, the CPU SceneDeformationJob, a plain
+// double-precision LBS / DQS written here, three.js's skinned vertices
+// (../shared/data/reference), and a synthetic 300-joint skin. On EGL, and on OSMesa when the build has it. Rendering stays on llvmpipe so a GPU host
 // runs the same path as CI.
 #include <cstdlib>
 #include <fstream>
@@ -18,6 +18,7 @@
 #include "render/camera.h"
 #include "render/gl_context.h"
 #include "render/mesh_renderer.h"
+#include "skin/scene_deformation.h"
 #include "test_support.h"
 
 namespace kinema {
@@ -151,6 +152,37 @@ Gap compareWithReference(const Scene& scene, const std::vector<glm::mat4>& world
   return gap;
 }
 
+// Largest gap between the GPU and the CPU's SceneDeformationJob (same order, same layout).
+Gap compareWithCpuJob(const Scene& scene, const std::vector<glm::mat4>& world, const std::vector<DeformedPrimitive>& gpu,
+                      bool skinnedOnly, const std::vector<std::vector<float>>* morphWeights = nullptr) {
+  std::vector<DeformedPrimitive> cpu;
+  SceneDeformationJob job;
+  job.scene = &scene;
+  job.world = &world;
+  job.morphWeights = morphWeights;
+  job.skinnedOnly = skinnedOnly;
+  job.out = &cpu;
+  EXPECT_EQ(job.validate(), "");
+  EXPECT_TRUE(job.run());
+  Gap gap;
+  Bounds box;
+  EXPECT_EQ(cpu.size(), gpu.size());
+  for (size_t k = 0; k < std::min(cpu.size(), gpu.size()); ++k) {
+    EXPECT_EQ(cpu[k].instance, gpu[k].instance);
+    EXPECT_EQ(cpu[k].primitive, gpu[k].primitive);
+    EXPECT_EQ(cpu[k].positions.size(), gpu[k].positions.size());
+    EXPECT_EQ(cpu[k].normals.size(), gpu[k].normals.size());
+    for (size_t v = 0; v < std::min(cpu[k].positions.size(), gpu[k].positions.size()); ++v) {
+      box.add(cpu[k].positions[v]);
+      gap.position = std::max(gap.position, double(glm::length(cpu[k].positions[v] - gpu[k].positions[v])));
+    }
+    for (size_t v = 0; v < std::min(cpu[k].normals.size(), gpu[k].normals.size()); ++v)
+      gap.normal = std::max(gap.normal, double(glm::length(cpu[k].normals[v] - gpu[k].normals[v])));
+  }
+  gap.size = 2.0 * box.radius();
+  return gap;
+}
+
 // ---- Hand-derived ----
 
 // Two joints at the origin, the second turned a quarter about Z; a vertex at (1,0,0) with
@@ -256,6 +288,9 @@ TEST(MeshSkinningGpu, KhronosSamplesMatchCpuLbsAndDqsAndThreeJs) {
         const double tolerance = 1e-4 * std::max(1.0, gap.size);
         EXPECT_LT(gap.position, tolerance) << (method == SkinningMethod::LinearBlend ? "LBS" : "DQS") << ", model size " << gap.size;
         EXPECT_LT(gap.normal, 1e-4) << (method == SkinningMethod::LinearBlend ? "LBS" : "DQS");
+        const Gap job = compareWithCpuJob(scene, world, out, true);
+        EXPECT_LT(job.position, tolerance) << "vs SceneDeformationJob, " << (method == SkinningMethod::LinearBlend ? "LBS" : "DQS");
+        EXPECT_LT(job.normal, 1e-4) << "vs SceneDeformationJob, " << (method == SkinningMethod::LinearBlend ? "LBS" : "DQS");
         if (method != SkinningMethod::LinearBlend) continue;
         // Outside opinion: three.js's SkinnedMesh at the same time (LBS, glTF semantics).
         std::ifstream in(sharedDataDir() + "/reference/" + c.reference);
@@ -341,6 +376,9 @@ TEST(MeshSkinningGpu, ThreeHundredJointSkinMatchesCpu) {
       EXPECT_GT(gap.size, 0.5);  // the chain curled, it did not collapse to a point
       EXPECT_LT(gap.position, 1e-4 * std::max(1.0, gap.size)) << int(method);
       EXPECT_LT(gap.normal, 1e-4) << int(method);
+      const Gap job = compareWithCpuJob(scene, world, out, true);
+      EXPECT_LT(job.position, 1e-4 * std::max(1.0, gap.size)) << "vs SceneDeformationJob " << int(method);
+      EXPECT_LT(job.normal, 1e-4) << "vs SceneDeformationJob " << int(method);
       // The chain's tip really moved: a vertex weighted to the last joints is not at rest.
       EXPECT_GT(glm::length(out[0].positions[kVertices - 1] - p.positions[kVertices - 1]), 0.1f);
     }
@@ -393,6 +431,9 @@ TEST(MeshSkinningGpu, ScaledShearedAndMirroredMatricesMatchCpu) {
       const Gap gap = compareWithReference(scene, world, out);
       EXPECT_LT(gap.position, 1e-5) << int(method);
       EXPECT_LT(gap.normal, 1e-5) << int(method);
+      const Gap job = compareWithCpuJob(scene, world, out, true);
+      EXPECT_LT(job.position, 1e-5) << "vs SceneDeformationJob " << int(method);
+      EXPECT_LT(job.normal, 1e-5) << "vs SceneDeformationJob " << int(method);
     }
   }
 }
@@ -409,6 +450,7 @@ TEST(MeshSkinningGpu, MorphTargetsBlendOnTheGpuForUnskinnedInstances) {
     for (const std::string file : {"gltf/SimpleMorph/SimpleMorph.gltf", "gltf/AnimatedMorphCube/AnimatedMorphCube.gltf"}) {
       SCOPED_TRACE(std::string(nameOf(backend)) + " " + file);
       const Scene& scene = loaded(file);
+      ASSERT_FALSE(scene.clips.empty());
       ASSERT_FALSE(scene.meshInstances.empty());
       const std::vector<glm::mat4> world = posedWorld(scene, 0, 0.0);
       std::vector<std::vector<float>> given(scene.meshInstances.size());
@@ -418,9 +460,14 @@ TEST(MeshSkinningGpu, MorphTargetsBlendOnTheGpuForUnskinnedInstances) {
       }
       using Weights = std::vector<std::vector<float>>;
       const Weights* none = nullptr;
-      for (const Weights* weights : {none, static_cast<const Weights*>(&given)}) {
+      // The clip's own weights half way through (sampleMorphWeights), next to none and given ones.
+      const Weights sampled = sampleMorphWeights(scene, 0, 0.5 * (scene.clips.empty() ? 0.0 : scene.clips[0].duration()));
+      for (const Weights* weights : {none, static_cast<const Weights*>(&given), &sampled}) {
         const std::vector<DeformedPrimitive> out = gpuDeform(*gpu.renderer, scene, world, false, weights);
         ASSERT_FALSE(out.empty());
+        const Gap job = compareWithCpuJob(scene, world, out, false, weights);
+        EXPECT_LT(job.position, 1e-5) << "vs SceneDeformationJob";
+        EXPECT_LT(job.normal, 1e-4) << "vs SceneDeformationJob";
         for (const DeformedPrimitive& d : out) {
           const MeshInstance& inst = scene.meshInstances[d.instance];
           const Mesh& mesh = scene.meshes[inst.mesh];
