@@ -94,7 +94,8 @@ void packJointTexels(const glm::mat4& m, float* out) {
 
 MeshRenderer::~MeshRenderer() {
   release();
-  if (program_) glDeleteProgram(program_);
+  if (!program_) return;  // init() never succeeded: no GL objects (and maybe no GL loaded)
+  glDeleteProgram(program_);
   const GLuint buffers[] = {jointBuffer_, feedbackBuffer_, emptyBuffer_};
   glDeleteBuffers(3, buffers);
   const GLuint textures[] = {jointTexture_, emptyTexture_};
