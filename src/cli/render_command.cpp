@@ -194,15 +194,14 @@ int runRender(const RenderOptions& o) {
     for (const glm::mat4& m : worlds.back()) bounds.add(glm::vec3(m[3]));
     if (!meshes) continue;
     morphWeights.push_back(sampleMorphWeights(scene, scene.clips.empty() ? -1 : o.clip, s.time));
-    std::vector<DeformedPrimitive> deformed;
     MeshFrame meshFrame;
     meshFrame.world = &worlds.back();
     meshFrame.morphWeights = &morphWeights.back();
-    const std::string error = renderer.meshes().deform(meshFrame, false, deformed);
-    if (!error.empty()) return badInput("cannot render: " + error);
-    for (const DeformedPrimitive& d : deformed)
-      for (const glm::vec3& p : d.positions)
-        if (isFinite(p)) bounds.add(p);
+    const Bounds body = renderer.meshes().deformedBounds(meshFrame);
+    if (!body.empty) {
+      bounds.add(body.min);
+      bounds.add(body.max);
+    }
   }
   const float aspect = static_cast<float>(w / h);
   OrbitCamera camera = defaultCamera(bounds, aspect);

@@ -14,6 +14,7 @@
 #include "render/mesh_renderer.h"
 #include "render/skeleton_renderer.h"
 #include "render/skeleton_view.h"
+#include "skin/scene_deformation.h"
 
 namespace kinema {
 
@@ -119,7 +120,24 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     evaluateEditorPose(state);
     int fbw = 0, fbh = 0;
     glfwGetFramebufferSize(window, &fbw, &fbh);
-    state.camera = defaultCamera(jointBounds(state.world), fbh > 0 ? float(fbw) / float(fbh) : 1.0f);
+    // How far the body reaches past the joints (a head above the neck joint), measured once at
+    // the first pose, so framing and the grid take in the mesh without reading it back each frame.
+    glm::vec3 meshReach(0.0f);
+    if (!meshes.empty()) {
+      MeshFrame first;
+      first.world = &state.world;
+      const Bounds body = meshes.deformedBounds(first), joints = jointBounds(state.world);
+      if (!body.empty && !joints.empty) meshReach = glm::max(glm::max(joints.min - body.min, body.max - joints.max), glm::vec3(0.0f));
+    }
+    auto viewBounds = [&state, &meshReach]() {
+      Bounds b = jointBounds(state.world);
+      if (!b.empty) {
+        b.add(b.min - meshReach);
+        b.add(b.max + meshReach);
+      }
+      return b;
+    };
+    state.camera = defaultCamera(viewBounds(), fbh > 0 ? float(fbw) / float(fbh) : 1.0f);
     double previous = glfwGetTime();
     for (long long frame = 1; error.empty() && !glfwWindowShouldClose(window); ++frame) {
       glfwPollEvents();
@@ -127,7 +145,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       advancePlayback(state, now - previous);
       previous = now;
       evaluateEditorPose(state);
-      const Bounds bounds = jointBounds(state.world);
+      const Bounds bounds = viewBounds();
 
       imguiBackendsNewFrame();
       ImGui::NewFrame();
@@ -150,6 +168,9 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       MeshDraw meshDraw;
       meshDraw.renderer = &meshes;
       meshDraw.frame.world = &state.world;
+      std::vector<std::vector<float>> morphWeights;  // animated blend shapes at the playhead
+      if (!meshes.empty()) morphWeights = sampleMorphWeights(state.scene, state.hasMotion() ? state.clip : -1, state.time);
+      meshDraw.frame.morphWeights = &morphWeights;
       state.camera.fitClipPlanes(bounds.radius());
       FrameDescription description;
       description.skeleton = &list;

@@ -513,4 +513,14 @@ std::string MeshRenderer::deform(const MeshFrame& frame, bool skinnedOnly, std::
   return {};
 }
 
+Bounds MeshRenderer::deformedBounds(const MeshFrame& frame) {
+  Bounds bounds;
+  std::vector<DeformedPrimitive> deformed;
+  if (!deform(frame, false, deformed).empty()) return bounds;
+  for (const DeformedPrimitive& d : deformed)
+    for (const glm::vec3& p : d.positions)
+      if (isFinite(p)) bounds.add(p);
+  return bounds;
+}
+
 }  // namespace kinema

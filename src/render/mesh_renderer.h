@@ -6,6 +6,7 @@
 
 #include "core/math.h"
 #include "io/scene.h"
+#include "render/camera.h"
 #include "skin/scene_deformation.h"
 
 namespace kinema {
@@ -52,6 +53,10 @@ class MeshRenderer {
   // empty where the primitive has none), so tests compare the GPU with the CPU.
   // skinnedOnly as in SceneDeformationJob. Empty string on success.
   std::string deform(const MeshFrame& frame, bool skinnedOnly, std::vector<DeformedPrimitive>& out);
+
+  // The box around every deformed vertex of the frame (deform() then a loop); empty bounds
+  // when there is nothing to draw.
+  Bounds deformedBounds(const MeshFrame& frame);
 
   // Most morph targets a primitive blends (more are ignored, with a warning from upload()).
   static constexpr int kMaxMorphTargets = 32;
