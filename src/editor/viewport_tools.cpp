@@ -111,17 +111,19 @@ int pickJointOrBone(const EditorState& state, const ViewportGeometry& g, glm::ve
   std::vector<glm::vec2> screen(n);
   std::vector<char> visible(n);
   for (int i = 0; i < n; ++i) visible[i] = g.toScreen(glm::vec3(state.world[i][3]), screen[i]);
+  // A joint point within 3/4 of the radius wins over any bone (bones end at joints).
   int best = -1;
-  float bestDistance = radius;
-  // Joint points first: at a joint, the joint wins over the bone ending there.
+  float bestDistance = radius * 0.75f;
   for (int i = 0; i < n; ++i) {
     if (!visible[i]) continue;
     const float d = glm::length(cursor - screen[i]);
-    if (d < bestDistance * 0.75f || (best < 0 && d < bestDistance * 0.75f)) {
-      bestDistance = d / 0.75f;
+    if (d < bestDistance) {
+      bestDistance = d;
       best = i;
     }
   }
+  if (best >= 0) return best;
+  bestDistance = radius;
   for (int i = 0; i < n; ++i) {
     const int p = parents[i];
     if (p < 0 || !visible[i] || !visible[p]) continue;
