@@ -51,14 +51,15 @@ void handleViewportInput(EditorState& state, const ViewportController& controlle
     if (io.MouseWheel != 0) controller.zoom(state.camera, io.MouseWheel);
     if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !io.KeyAlt) {
       const glm::mat4 vp = state.camera.projection(aspect) * state.camera.view();
-      state.selectedJoint = pickJoint(state.world, vp, windowSize, glm::vec2(io.MousePos.x, io.MousePos.y), 12.0f);
+      const int picked = pickJoint(state.world, vp, windowSize, glm::vec2(io.MousePos.x, io.MousePos.y), 12.0f);
+      setSelection(state, picked >= 0 ? std::vector<int>{picked} : std::vector<int>{});
     }
   }
   if (!io.WantCaptureKeyboard) {
     // ImGui 1.86 indexes keys by the platform's codes (GLFW's here).
     if (ImGui::IsKeyPressed(GLFW_KEY_HOME) || ImGui::IsKeyPressed(GLFW_KEY_F)) controller.frameAll(state.camera, bounds, aspect);
     if (ImGui::IsKeyPressed(GLFW_KEY_SPACE) && state.hasMotion()) state.playing = !state.playing;
-    if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE)) state.selectedJoint = -1;
+    if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE)) setSelection(state, {});
   }
 }
 
@@ -139,7 +140,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       SkeletonDrawJob job;
       job.parents = &state.scene.skeleton.parents;
       job.world = &state.world;
-      job.selectedJoint = state.selectedJoint;
+      job.selectedJoint = state.activeJoint;
       job.run(list);
       state.camera.fitClipPlanes(bounds.radius());
       FrameDescription description;
@@ -148,7 +149,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       description.width = fbw;
       description.height = fbh;
       description.sceneRadius = bounds.radius();
-      description.showGrid = state.showGrid;
+      description.showGrid = state.view.showGrid;
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       renderer.draw(description);
       imguiBackendsRenderDrawData(ImGui::GetDrawData());

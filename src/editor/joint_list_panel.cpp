@@ -20,15 +20,17 @@ void drawJointListPanel(EditorState& state) {
     if (s.parents[i] >= 0) depth[i] = depth[s.parents[i]] + 1;
     ImGui::PushID(i);
     ImGui::Indent(static_cast<float>(depth[i]) * 10.0f + 0.001f);
-    if (ImGui::Selectable(s.names[i].c_str(), state.selectedJoint == i))
-      state.selectedJoint = state.selectedJoint == i ? -1 : i;
+    if (ImGui::Selectable(s.names[i].c_str(), state.isSelected(i))) {
+      if (ImGui::GetIO().KeyShift) toggleSelection(state, i);
+      else setSelection(state, {i});
+    }
     ImGui::Unindent(static_cast<float>(depth[i]) * 10.0f + 0.001f);
     ImGui::PopID();
   }
-  if (state.selectedJoint >= 0 && state.selectedJoint < static_cast<int>(state.world.size())) {
+  if (state.activeJoint >= 0 && state.activeJoint < static_cast<int>(state.world.size())) {
     ImGui::Separator();
-    const glm::vec3 p(state.world[state.selectedJoint][3]);
-    ImGui::Text("%s", s.names[state.selectedJoint].c_str());
+    const glm::vec3 p(state.world[state.activeJoint][3]);
+    ImGui::Text("%s", s.names[state.activeJoint].c_str());
     ImGui::Text("world %.3f %.3f %.3f", p.x, p.y, p.z);
   }
   ImGui::End();

@@ -24,6 +24,7 @@ void drawTimelinePanel(EditorState& state) {
   if (ImGui::SliderInt("##frame", &frame, 0, static_cast<int>(last), "frame %d")) {
     state.time = frame * state.frameTime();
     state.playing = false;
+    state.sampleClip = true;
   }
   ImGui::SameLine();
   ImGui::Text("%.2f / %.2f s", state.time, state.duration());
