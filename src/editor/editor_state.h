@@ -3,6 +3,8 @@
 #include <vector>
 
 #include "core/pose.h"
+#include "editor/document.h"
+#include "editor/panel_state.h"
 #include "io/scene.h"
 #include "render/camera.h"
 
@@ -80,6 +82,9 @@ struct EditorState {
   std::vector<int> selection;     // selected joints, in selection order
   int activeJoint = -1;           // the last one clicked (gizmo, properties); -1 = none
   int undoDepth = 0;              // steps that Ctrl+Z can undo
+
+  Document doc;        // editor-model's document; the panels edit it (the placeholders above go)
+  PanelState panels;   // the panels' own state: dialogs, buffers, clipboard, autosave (editor_panels.h)
 
   // --- Playback (files with motion) ---
   int clip = 0;            // the clip the timeline plays, when the scene has clips
