@@ -52,14 +52,15 @@ void handleViewportInput(EditorState& state, const ViewportController& controlle
     if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !io.KeyAlt) {
       const glm::mat4 vp = state.camera.projection(aspect) * state.camera.view();
       const int picked = pickJoint(state.world, vp, windowSize, glm::vec2(io.MousePos.x, io.MousePos.y), 12.0f);
-      setSelection(state, picked >= 0 ? std::vector<int>{picked} : std::vector<int>{});
+      if (io.KeyShift) state.doc.selection.shiftClick(picked);
+      else state.doc.selection.click(picked);
     }
   }
   if (!io.WantCaptureKeyboard) {
     // ImGui 1.86 indexes keys by the platform's codes (GLFW's here).
     if (ImGui::IsKeyPressed(GLFW_KEY_HOME) || ImGui::IsKeyPressed(GLFW_KEY_F)) controller.frameAll(state.camera, bounds, aspect);
     if (ImGui::IsKeyPressed(GLFW_KEY_SPACE) && state.hasMotion()) state.playing = !state.playing;
-    if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE)) setSelection(state, {});
+    if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE)) state.doc.selection.clear();
   }
 }
 
@@ -112,27 +113,34 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     const std::string error = renderer.init();
     if (!error.empty()) result.error = error;
     ViewportController controller;
-    evaluateEditorPose(state);
+    // The panels edit the document; until the window's own integration lands it shows it.
+    if (state.doc.skeleton().empty() && !state.scene.skeleton.empty()) state.doc = Document(state.scene, state.scene.source);
+    state.world = state.doc.worldTransforms();
     int fbw = 0, fbh = 0;
     glfwGetFramebufferSize(window, &fbw, &fbh);
     state.camera = defaultCamera(jointBounds(state.world), fbh > 0 ? float(fbw) / float(fbh) : 1.0f);
-    double previous = glfwGetTime();
-    for (long long frame = 1; error.empty() && !glfwWindowShouldClose(window); ++frame) {
+    std::string shownTitle = title;
+    for (long long frame = 1; error.empty() && !state.panels.quitApproved; ++frame) {
       glfwPollEvents();
-      const double now = glfwGetTime();
-      advancePlayback(state, now - previous);
-      previous = now;
-      evaluateEditorPose(state);
+      if (glfwWindowShouldClose(window)) {
+        glfwSetWindowShouldClose(window, GLFW_FALSE);
+        requestQuit(state);  // asks first when there are unsaved changes
+      }
+      state.world = state.doc.worldTransforms();
       const Bounds bounds = jointBounds(state.world);
+      if (state.requests.frameAll) {
+        state.requests.frameAll = false;
+        controller.frameAll(state.camera, bounds, fbh > 0 ? float(fbw) / float(fbh) : 1.0f);
+      }
+      const std::string wanted = "Kinema - " + documentTitle(state) + (state.doc.dirty() ? " *" : "");
+      if (wanted != shownTitle) glfwSetWindowTitle(window, (shownTitle = wanted).c_str());
 
       imguiBackendsNewFrame();
       ImGui::NewFrame();
       int ww = 0, wh = 0;
       glfwGetWindowSize(window, &ww, &wh);
       handleViewportInput(state, controller, bounds, glm::vec2(ww, wh));
-      drawJointListPanel(state);
-      drawTimelinePanel(state);
-      drawViewportHelp(state, ImGui::GetIO().Framerate);
+      drawEditorPanels(state, ImGui::GetIO().Framerate);
       ImGui::Render();
 
       glfwGetFramebufferSize(window, &fbw, &fbh);
@@ -140,7 +148,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       SkeletonDrawJob job;
       job.parents = &state.scene.skeleton.parents;
       job.world = &state.world;
-      job.selectedJoint = state.activeJoint;
+      job.selectedJoint = state.doc.selection.active();
       job.run(list);
       state.camera.fitClipPlanes(bounds.radius());
       FrameDescription description;
