@@ -4,6 +4,8 @@
 #include <vector>
 
 #include "core/pose.h"
+#include "editor/document.h"
+#include "editor/panel_state.h"
 #include "io/scene.h"
 #include "render/camera.h"
 
@@ -85,6 +87,9 @@ struct EditorState {
   // Placeholder history (whole poses) until editor-model's command history lands.
   std::vector<Pose> undoPoses, redoPoses;
   std::vector<std::pair<std::string, Transform>> clipboard;  // copied joints by name
+
+  Document doc;        // editor-model's document; the panels edit it (the placeholders above go)
+  PanelState panels;   // the panels' own state: dialogs, buffers, clipboard, autosave (editor_panels.h)
 
   // --- Playback (files with motion) ---
   int clip = 0;            // the clip the timeline plays, when the scene has clips

@@ -5,6 +5,7 @@
 #include "anim/clip.h"
 #include "core/result.h"
 #include "core/mesh.h"
+#include "core/pose.h"
 #include "core/skeleton.h"
 #include "ik/ik_rig.h"
 #include "io/input_limits.h"
@@ -18,6 +19,8 @@ struct Scene {
   Skeleton skeleton;
   std::vector<Clip> clips;
   IkRig ik;  // joint limits and saved IK targets (optional in files)
+  // The editor's working pose as saved (.kinema "pose"); empty = the rest pose.
+  Pose pose;
 
   // glTF keeps the file's node order for reports: the node index of each joint (the
   // skeleton is sorted parent-first, the file need not be). Empty for BVH and .kinema

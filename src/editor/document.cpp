@@ -1,0 +1,241 @@
+#include "editor/document.h"
+
+#include <cstring>
+#include <set>
+
+#include "core/forward_kinematics.h"
+#include "editor/ik_posing.h"
+
+namespace kinema {
+
+namespace {
+
+bool sameBits(const Transform& a, const Transform& b) { return std::memcmp(&a, &b, sizeof(Transform)) == 0; }
+
+// JointLimit holds only 4-byte members (no padding), so its bytes are its value.
+static_assert(sizeof(JointLimit) == 64, "JointLimit layout changed: compare it field by field");
+bool sameBits(const JointLimit& a, const JointLimit& b) { return std::memcmp(&a, &b, sizeof(JointLimit)) == 0; }
+
+bool sameLimits(const std::vector<JointLimit>& a, const std::vector<JointLimit>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (!sameBits(a[i], b[i])) return false;
+  return true;
+}
+
+bool sameTargets(const std::vector<PoseIkTarget>& a, const std::vector<PoseIkTarget>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (!sameBits(a[i], b[i])) return false;
+  return true;
+}
+
+}  // namespace
+
+Document::Document() = default;
+
+Document::Document(Scene scene, std::string path) : scene_(std::move(scene)), path_(std::move(path)) {
+  const int n = scene_.skeleton.size();
+  pose_ = scene_.pose.size() == n && scene_.pose.validate(scene_.skeleton).empty() ? scene_.pose
+                                                                                 : Pose::rest(scene_.skeleton);
+  scene_.pose = Pose{};  // the document's pose_ is the one truth
+  if (!scene_.ik.limits.empty()) scene_.ik.limits.resize(n);
+  for (const IkTarget& t : scene_.ik.targets) {
+    PoseIkTarget p;
+    p.target = t;
+    targets_.push_back(p);
+  }
+  scene_.ik.targets.clear();  // targets_ hold them with their editor settings
+}
+
+std::vector<glm::mat4> Document::worldTransforms() const { return computeWorld(scene_.skeleton, pose_); }
+
+Scene Document::sceneForSaving() const {
+  Scene s = scene_;
+  s.pose = pose_;
+  // Solver, chain length, pinned and active are editor settings the file does not hold:
+  // the chain length is saved as the root it resolves to.
+  for (const PoseIkTarget& t : targets_) s.ik.targets.push_back(t.resolved(s.skeleton));
+  return s;
+}
+
+bool Document::dirty() const {
+  return drag_.has_value() || !savedReachable_ || history_.dropped() + history_.position() != savedAt_;
+}
+
+void Document::markSaved() {
+  savedAt_ = history_.dropped() + history_.position();
+  savedReachable_ = true;
+}
+
+void Document::markModified() { savedReachable_ = false; }
+
+Document::Snapshot Document::capture() const {
+  return Snapshot{scene_.skeleton.names, pose_.local, scene_.ik.limits, targets_};
+}
+
+void Document::restore(const Snapshot& s) {
+  scene_.skeleton.names = s.names;
+  pose_.local = s.pose;
+  scene_.ik.limits = s.limits;
+  targets_ = s.targets;
+}
+
+DocumentEdit Document::editView() {
+  return DocumentEdit{scene_.skeleton, scene_.skeleton.names, pose_, scene_.ik.limits, targets_};
+}
+
+std::string Document::runChange(const std::function<std::string(DocumentEdit&)>& change, bool /*driven*/) {
+  DocumentEdit view = editView();
+  std::string error = change(view);
+  if (!error.empty()) return error;
+  // The change function is ours (pose_edits.cpp...), but a window may pass its own: keep
+  // the document's invariants whatever it did.
+  const int n = scene_.skeleton.size();
+  if (pose_.size() != n || static_cast<int>(scene_.skeleton.names.size()) != n)
+    return "an edit may not add or remove joints";
+  if (!scene_.ik.limits.empty() && static_cast<int>(scene_.ik.limits.size()) != n)
+    return "joint limits must be empty or one per joint";
+  std::set<std::string> names;
+  for (const std::string& name : scene_.skeleton.names) {
+    if (name.empty()) return "a joint name may not be empty";
+    if (!names.insert(name).second) return "two joints may not share the name '" + name + "'";
+  }
+  for (size_t i = 0; i < targets_.size(); ++i) {
+    const std::string bad = targets_[i].validate(scene_.skeleton);
+    if (!bad.empty()) return "IK target " + std::to_string(i) + ": " + bad;
+  }
+  if (autoSolveIk) {
+    IkPosingInput in;
+    in.skeleton = &scene_.skeleton;
+    in.limits = &scene_.ik.limits;
+    in.targets = &targets_;
+    in.temporary = temporaryTarget_ ? &*temporaryTarget_ : nullptr;
+    in.driven = drivenTarget_ >= 0 && drivenTarget_ < static_cast<int>(targets_.size()) ? drivenTarget_ : -1;
+    in.settings = ikSettings;
+    in.settings.trace = nullptr;
+    ikReports_ = solveIkPosing(in, pose_);
+  }
+  return {};
+}
+
+EditRecord Document::diff(const std::string& label, const Snapshot& before) const {
+  EditRecord r;
+  r.label = label;
+  for (int i = 0; i < pose_.size(); ++i)
+    if (!sameBits(before.pose[i], pose_.local[i])) r.pose.push_back({i, before.pose[i], pose_.local[i]});
+  for (size_t i = 0; i < before.names.size(); ++i)
+    if (before.names[i] != scene_.skeleton.names[i])
+      r.names.push_back({static_cast<int>(i), before.names[i], scene_.skeleton.names[i]});
+  if (!sameLimits(before.limits, scene_.ik.limits)) {
+    r.limitsChanged = true;
+    r.limitsBefore = before.limits;
+    r.limitsAfter = scene_.ik.limits;
+  }
+  if (!sameTargets(before.targets, targets_)) {
+    r.targetsChanged = true;
+    r.targetsBefore = before.targets;
+    r.targetsAfter = targets_;
+  }
+  return r;
+}
+
+void Document::pushRecord(EditRecord record) {
+  // A saved state in the redo tail that this edit drops can never come back.
+  if (savedAt_ > history_.dropped() + history_.position()) savedReachable_ = false;
+  history_.push(std::move(record));
+  if (savedAt_ < history_.dropped()) savedReachable_ = false;
+}
+
+std::string Document::edit(const std::string& label, const std::function<std::string(DocumentEdit&)>& change) {
+  if (drag_) return "finish the current drag first";
+  const Snapshot before = capture();
+  const std::string error = runChange(change, false);
+  if (!error.empty()) {
+    restore(before);
+    return error;
+  }
+  EditRecord record = diff(label, before);
+  if (!record.empty()) {
+    pushRecord(std::move(record));
+    ++changeCount_;
+  }
+  return {};
+}
+
+std::string Document::beginDrag(const std::string& label) {
+  if (drag_) return "a drag is already in progress";
+  drag_ = Drag{label, capture()};
+  return {};
+}
+
+std::string Document::updateDrag(const std::function<std::string(DocumentEdit&)>& change) {
+  if (!drag_) return "no drag in progress";
+  restore(drag_->start);
+  const std::string error = runChange(change, true);
+  if (!error.empty()) restore(drag_->start);
+  ++changeCount_;
+  return error;
+}
+
+void Document::commitDrag() {
+  if (!drag_) return;
+  EditRecord record = diff(drag_->label, drag_->start);
+  drag_.reset();
+  temporaryTarget_.reset();
+  drivenTarget_ = -1;
+  if (!record.empty()) pushRecord(std::move(record));
+  ++changeCount_;
+}
+
+void Document::cancelDrag() {
+  if (!drag_) return;
+  restore(drag_->start);
+  drag_.reset();
+  temporaryTarget_.reset();
+  drivenTarget_ = -1;
+  ++changeCount_;
+}
+
+void Document::apply(const EditRecord& r, bool forward) {
+  for (const EditRecord::JointChange& c : r.pose) pose_.local[c.joint] = forward ? c.after : c.before;
+  for (const EditRecord::NameChange& c : r.names) scene_.skeleton.names[c.joint] = forward ? c.after : c.before;
+  if (r.limitsChanged) scene_.ik.limits = forward ? r.limitsAfter : r.limitsBefore;
+  if (r.targetsChanged) targets_ = forward ? r.targetsAfter : r.targetsBefore;
+  ikReports_.clear();
+  ++changeCount_;
+}
+
+bool Document::canUndo() const { return !drag_ && history_.canUndo(); }
+bool Document::canRedo() const { return !drag_ && history_.canRedo(); }
+
+bool Document::undo() {
+  if (drag_) return false;
+  const EditRecord* r = history_.stepBack();
+  if (!r) return false;
+  apply(*r, false);
+  return true;
+}
+
+bool Document::redo() {
+  if (drag_) return false;
+  const EditRecord* r = history_.stepForward();
+  if (!r) return false;
+  apply(*r, true);
+  return true;
+}
+
+std::vector<std::string> Document::historyLabels() const {
+  std::vector<std::string> labels;
+  for (const EditRecord& r : history_.entries()) labels.push_back(r.label);
+  return labels;
+}
+
+bool Document::jumpToHistory(int position) {
+  if (drag_ || position < 0 || position > history_.size()) return false;
+  while (history_.position() > position) undo();
+  while (history_.position() < position) redo();
+  return true;
+}
+
+}  // namespace kinema

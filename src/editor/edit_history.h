@@ -1,0 +1,61 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/transform.h"
+#include "editor/pose_ik_target.h"
+#include "ik/joint_limits.h"
+
+namespace kinema {
+
+// What one undo step changed: before/after copies of exactly what the edit touched
+// (simple and exact: undo/redo restore the stored values bit for bit).
+struct EditRecord {
+  struct JointChange {
+    int joint = -1;
+    Transform before, after;
+  };
+  struct NameChange {
+    int joint = -1;
+    std::string before, after;
+  };
+  std::string label;
+  std::vector<JointChange> pose;
+  std::vector<NameChange> names;
+  bool limitsChanged = false;
+  std::vector<JointLimit> limitsBefore, limitsAfter;
+  bool targetsChanged = false;
+  std::vector<PoseIkTarget> targetsBefore, targetsAfter;
+
+  bool empty() const { return pose.empty() && names.empty() && !limitsChanged && !targetsChanged; }
+};
+
+// A linear undo history: entries [0, position) are applied, [position, size) can be redone.
+// A new edit drops the redo tail. At most `capacity` entries; the oldest go first.
+class EditHistory {
+ public:
+  explicit EditHistory(int capacity = 500) : capacity_(capacity) {}
+
+  void push(EditRecord record);
+  bool canUndo() const { return position_ > 0; }
+  bool canRedo() const { return position_ < size(); }
+  // The record to revert / re-apply next (moves the position); nullptr when none.
+  const EditRecord* stepBack();
+  const EditRecord* stepForward();
+
+  int size() const { return static_cast<int>(entries_.size()); }
+  int position() const { return position_; }  // how many entries are applied
+  const std::vector<EditRecord>& entries() const { return entries_; }
+  // Counts entries dropped from the front (by the capacity): a saved position older than
+  // that can never be reached again.
+  long long dropped() const { return dropped_; }
+  void clear();
+
+ private:
+  std::vector<EditRecord> entries_;
+  int position_ = 0;
+  int capacity_;
+  long long dropped_ = 0;
+};
+
+}  // namespace kinema
