@@ -120,7 +120,9 @@ class EditorE2e : public ::testing::Test {
     const std::string scriptPath = dir + "/" + name + ".jsonl", dump = dir + "/" + name + ".json";
     std::ofstream(scriptPath) << script.text();
     std::string out, err;
-    const int rc = runCommand(kXvfb + "env " + kSoftware + KINEMA_BINARY + " edit --script " + scriptPath +
+    // Recent files and recovery files go to the test's folder, not the user's.
+    const std::string xdg = "XDG_STATE_HOME=" + dir + " XDG_CONFIG_HOME=" + dir + " ";
+    const int rc = runCommand(kXvfb + "env " + xdg + kSoftware + KINEMA_BINARY + " edit --script " + scriptPath +
                                   " --dump-state " + dump + " --screenshot " + shotDir() + "/" + name + ".png",
                               &out, &err);
     EXPECT_EQ(rc, 0) << err;
@@ -233,15 +235,16 @@ TEST_F(EditorE2e, RThenAxisKeysConstrainAndTypedDegreesAreExact) {
 }
 
 TEST_F(EditorE2e, GizmoRingDragRotatesAboutItsAxis) {
-  // In the front view the Z ring (radius 70 px) is a circle around the joint; X and Y are
-  // edge-on lines. Press on the Z ring at 45 degrees, drag along it to 135: +90 about Z.
+  // In the front view the Z ring (radius 80 px, RotateGizmo's default) is a circle around
+  // the joint; X and Y are edge-on lines. Press on the Z ring at 45 degrees, drag along it
+  // to 135: +90 about Z.
   const glm::dvec2 p = pixelOf("LowerArm.L");
   Script s;
   s.click(midpoint("LowerArm.L", "Hand.L"));
-  s.move(p + 70.0 * glm::dvec2(std::cos(M_PI / 4), -std::sin(M_PI / 4))).down();
+  s.move(p + 80.0 * glm::dvec2(std::cos(M_PI / 4), -std::sin(M_PI / 4))).down();
   for (int k = 1; k <= 8; ++k) {
     const double a = M_PI / 4 + k * M_PI / 16;
-    s.move(p + 70.0 * glm::dvec2(std::cos(a), -std::sin(a)));
+    s.move(p + 80.0 * glm::dvec2(std::cos(a), -std::sin(a)));
   }
   s.up();
   json d = run(s, "gizmo_ring_drag");
@@ -293,10 +296,11 @@ TEST_F(EditorE2e, DraggingTheHandsIkTargetMovesTheHandThereAndKeepsBoneLengths) 
   expectNear(joint(d, "Hand.L"), expected, 2e-3, "the hand reaches the target");
   EXPECT_LT(double(d["ik_targets"][0]["error"]), 2e-3);
   expectNear(joint(d, "UpperArm.L"), joint(front_, "UpperArm.L"), 1e-5, "the IK root stays");
+  EXPECT_EQ(d["ik_targets"][0]["solver"], "two-bone");
   for (auto [a, b] : {std::pair{"UpperArm.L", "LowerArm.L"}, {"LowerArm.L", "Hand.L"}, {"Hand.L", "Fingertip.L"}})
     EXPECT_NEAR(glm::length(joint(d, b) - joint(d, a)), glm::length(joint(front_, b) - joint(front_, a)), 1e-4)
         << a << "-" << b;
-  EXPECT_EQ(int(d["undo_depth"]), 1);
+  EXPECT_EQ(int(d["undo_depth"]), 2);  // adding the target, then the drag
   // Esc during the drag puts the target and the arm back.
   d = run(Script()
               .click(midpoint("Hand.L", "Fingertip.L"))
@@ -360,7 +364,7 @@ TEST_F(EditorE2e, XdotoolClickSelectsTheHandThroughTheXServer) {
   char move[64];
   std::snprintf(move, sizeof move, "%d %d", int(std::lround(hand.x)), int(std::lround(hand.y)));
   std::ofstream(sh) << "set -e\n"
-                    << "env " << kSoftware << KINEMA_BINARY << " edit --frame-count 100000 --dump-state " << dump
+                    << "env XDG_STATE_HOME=" << dir_ << " XDG_CONFIG_HOME=" << dir_ << " " << kSoftware << KINEMA_BINARY << " edit --frame-count 100000 --dump-state " << dump
                     << " --screenshot " << shotDir() << "/xdotool.png & pid=$!\n"
                     << "for i in $(seq 100); do w=$(xdotool search --name 'Kinema - ' | head -1) && [ -n \"$w\" ] && break; sleep 0.1; done\n"
                     << "xdotool windowfocus --sync $w || true\n"
