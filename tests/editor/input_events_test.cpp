@@ -127,7 +127,7 @@ TEST(ViewportTools, ClickOnABoneSelectsItsHeadJoint) {
   const glm::vec2 mid = (v.pixelOf("Hand.L") + v.pixelOf("Fingertip.L")) * 0.5f;
   v.click(mid);
   EXPECT_EQ(v.state.doc.selection.joints(), std::vector<int>{v.joint("Hand.L")});
-  v.click(mid + glm::vec2(0, 60));  // nothing there: a click clears
+  v.click(mid + glm::vec2(0, 120));  // nothing there (beyond the gizmo): a click clears
   EXPECT_TRUE(v.state.doc.selection.empty());
 }
 
@@ -158,11 +158,15 @@ TEST(ViewportTools, RSweepRotatesTheForearmAndIsOneUndoStep) {
   v.key(GLFW_KEY_R);
   EXPECT_EQ(v.state.tool.mode, ModalTool::Rotate);
   v.move(p + glm::vec2(-80, -80));
-  v.move(p + glm::vec2(-80, 0));  // a quarter turn counter-clockwise: the forearm points up
+  v.move(p + glm::vec2(-80, 0));  // a quarter turn counter-clockwise on screen
   v.send(InputEventType::ButtonDown);
   v.send(InputEventType::ButtonUp);
+  // Free R turns about the line from the elbow to the eye (it projects to the elbow's pixel,
+  // so the bone follows the cursor): +90 degrees about u takes the forearm f = (0.26, 0, 0)
+  // to (u.f) u + u x f (Rodrigues with cos = 0, sin = 1).
   const glm::vec3 e = v.position("LowerArm.L");
-  EXPECT_VEC3_NEAR(v.position("Hand.L"), e + glm::vec3(0, 0.26f, 0), 1e-4f);
+  const glm::vec3 u = glm::normalize(glm::vec3(0, 1, 5) - e), f(0.26f, 0, 0);
+  EXPECT_VEC3_NEAR(v.position("Hand.L"), e + glm::dot(u, f) * u + glm::cross(u, f), 1e-4f);
   EXPECT_EQ(v.state.doc.historyPosition(), 1);
   ASSERT_TRUE(v.state.doc.undo());
   v.refresh();
