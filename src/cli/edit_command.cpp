@@ -22,6 +22,7 @@ int runEdit(const EditOptions& o) {
   if (!loaded) return badInput(loaded.error());
   EditorState state;
   state.scene = std::move(loaded.value());
+  state.path = o.file;
   EditorWindowOptions options;
   options.frameCount = o.frameCount;
   options.screenshotPath = o.screenshot;

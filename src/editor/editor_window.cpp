@@ -114,7 +114,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     if (!error.empty()) result.error = error;
     ViewportController controller;
     // The panels edit the document; until the window's own integration lands it shows it.
-    if (state.doc.skeleton().empty() && !state.scene.skeleton.empty()) state.doc = Document(state.scene, state.scene.source);
+    if (state.doc.skeleton().empty() && !state.scene.skeleton.empty()) state.doc = Document(state.scene, state.path);
     state.world = state.doc.worldTransforms();
     int fbw = 0, fbh = 0;
     glfwGetFramebufferSize(window, &fbw, &fbh);

@@ -80,12 +80,13 @@ void recoveryModal(EditorState& state) {
   ImGui::Text("Recover unsaved work from %s?", localTime(session.time).c_str());
   ImGui::TextDisabled("%s", session.originalPath.empty() ? "(a new document)" : session.originalPath.c_str());
   ImGui::TextDisabled("autosave: %s", session.recoveryPath.c_str());
-  if (ImGui::Button("Recover", ImVec2(110, 0))) {
+  ImGui::TextDisabled("Enter recovers, Esc discards");
+  if (ImGui::Button("Recover", ImVec2(110, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false)) {
     ImGui::CloseCurrentPopup();
     acceptRecovery(state);
   }
   ImGui::SameLine();
-  if (ImGui::Button("Discard", ImVec2(110, 0))) {
+  if (ImGui::Button("Discard", ImVec2(110, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
     ImGui::CloseCurrentPopup();
     declineRecovery(state);
   }
