@@ -1,5 +1,6 @@
 #pragma once
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/pose.h"
@@ -45,6 +46,7 @@ struct ViewOptions {
   bool xrayBones = false;   // bones drawn over everything
   bool showLimits = true;   // joint-limit cones and arcs of the selection
   bool showGizmo = true;
+  bool localGizmo = false;  // the gizmo's rings turn with the joint (else world axes)
   bool autoIk = false;      // dragging a joint moves it by IK up the chain
   int autoIkChainLength = 2;
 };
@@ -82,6 +84,9 @@ struct EditorState {
   std::vector<int> selection;     // selected joints, in selection order
   int activeJoint = -1;           // the last one clicked (gizmo, properties); -1 = none
   int undoDepth = 0;              // steps that Ctrl+Z can undo
+  // Placeholder history (whole poses) until editor-model's command history lands.
+  std::vector<Pose> undoPoses, redoPoses;
+  std::vector<std::pair<std::string, Transform>> clipboard;  // copied joints by name
 
   Document doc;        // editor-model's document; the panels edit it (the placeholders above go)
   PanelState panels;   // the panels' own state: dialogs, buffers, clipboard, autosave (editor_panels.h)

@@ -48,3 +48,39 @@ int pickJoint(const std::vector<glm::mat4>& world, const glm::mat4& viewProjecti
 }
 
 }  // namespace kinema
+
+namespace kinema {
+
+void applyViewPreset(OrbitCamera& camera, ViewPreset preset) {
+  // Azimuth 0 puts the eye on +Z (the character's front), 90 on +X. Blender's Right view
+  // looks from +X too, so both show the character's left side (Left joints lie at +X).
+  switch (preset) {
+    case ViewPreset::Front: camera.azimuthDeg = 0.0f; camera.elevationDeg = 0.0f; break;
+    case ViewPreset::Back: camera.azimuthDeg = 180.0f; camera.elevationDeg = 0.0f; break;
+    case ViewPreset::Right: camera.azimuthDeg = 90.0f; camera.elevationDeg = 0.0f; break;
+    case ViewPreset::Left: camera.azimuthDeg = -90.0f; camera.elevationDeg = 0.0f; break;
+    case ViewPreset::Top: camera.azimuthDeg = 0.0f; camera.elevationDeg = 90.0f; break;
+    case ViewPreset::Bottom: camera.azimuthDeg = 0.0f; camera.elevationDeg = -90.0f; break;
+  }
+}
+
+void toggleOrthographic(OrbitCamera& camera) { camera.orthographic = !camera.orthographic; }
+
+void frameSelected(OrbitCamera& camera, const std::vector<glm::mat4>& world, const std::vector<int>& selected,
+                   float aspect, float minRadius) {
+  Bounds bounds;
+  for (int i : selected)
+    if (i >= 0 && i < static_cast<int>(world.size())) bounds.add(glm::vec3(world[i][3]));
+  if (bounds.empty) bounds = jointBounds(world);
+  if (bounds.empty) return;
+  if (bounds.radius() < minRadius) {
+    // Grow to a cube whose half-diagonal is minRadius, centred where the selection is.
+    const glm::vec3 c = bounds.center();
+    const glm::vec3 half(minRadius / std::sqrt(3.0f));
+    bounds.add(c - half);
+    bounds.add(c + half);
+  }
+  camera.frame(bounds, aspect);
+}
+
+}  // namespace kinema

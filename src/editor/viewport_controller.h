@@ -1,4 +1,6 @@
 #pragma once
+#include <vector>
+
 #include "core/math.h"
 #include "render/camera.h"
 
@@ -21,6 +23,18 @@ struct ViewportController {
   // Frames the bounds from the current direction (Blender's Home / View All).
   void frameAll(OrbitCamera& camera, const Bounds& bounds, float aspect) const;
 };
+
+// Blender's numpad views with Y up and the character facing +Z: Front (1) from +Z, Right (3)
+// from +X, Top (7) from +Y; Ctrl+numpad gives Back (-Z), Left (-X), Bottom (-Y). The target
+// and distance are kept.
+enum class ViewPreset { Front, Back, Right, Left, Top, Bottom };
+void applyViewPreset(OrbitCamera& camera, ViewPreset preset);
+// Numpad 5: perspective <-> orthographic (the framing at the target is kept by construction).
+void toggleOrthographic(OrbitCamera& camera);
+// F: frames the selected joints' positions (all joints when none is selected) from the current
+// direction; a box smaller than `minRadius` is grown to it so one joint is not filled to the edges.
+void frameSelected(OrbitCamera& camera, const std::vector<glm::mat4>& world, const std::vector<int>& selected,
+                   float aspect, float minRadius);
 
 // The joint whose screen position is nearest `cursor` (pixels, origin top left) within
 // `radiusPixels`, or -1. `viewProjection` maps world to clip space for a viewport of `size`.

@@ -35,13 +35,26 @@ glm::mat4 OrbitCamera::view() const {
   glm::vec3 up(0.0f, 1.0f, 0.0f);
   if (std::abs(f.y) > 0.9999f) {
     const float az = glm::radians(azimuthDeg);
-    up = glm::vec3(-std::sin(az), 0.0f, -std::cos(az)) * (f.y < 0 ? -1.0f : 1.0f);
+    // Continuous with the view just short of the pole: looking down, screen-up is the horizontal
+    // direction away from the eye (-Z at azimuth 0); looking up, towards it.
+    up = glm::vec3(-std::sin(az), 0.0f, -std::cos(az)) * (f.y < 0 ? 1.0f : -1.0f);
   }
   return glm::lookAt(eye(), target, up);
 }
 
 glm::mat4 OrbitCamera::projection(float aspect) const {
+  if (orthographic) {
+    // The perspective view's height at the target's depth, so toggling keeps the framing there.
+    const float halfHeight = distance * std::tan(glm::radians(fovYDeg) * 0.5f);
+    const float halfWidth = halfHeight * aspect;
+    return glm::ortho(-halfWidth, halfWidth, -halfHeight, halfHeight, nearPlane, farPlane);
+  }
   return glm::perspective(glm::radians(fovYDeg), aspect, nearPlane, farPlane);
+}
+
+float OrbitCamera::unitsPerPixelAtTarget(float viewportHeight) const {
+  if (!(viewportHeight > 0.0f)) return 0.0f;
+  return 2.0f * distance * std::tan(glm::radians(fovYDeg) * 0.5f) / viewportHeight;
 }
 
 void OrbitCamera::frame(const Bounds& bounds, float aspect, float fill) {

@@ -30,11 +30,16 @@ struct OrbitCamera {
   float fovYDeg = 35.0f;
   float nearPlane = 0.01f;  // set from the framed size by frame()
   float farPlane = 100.0f;
+  // Orthographic projection with half-height distance * tan(fov/2): the target's plane keeps
+  // the same framing when toggled (Blender's numpad 5). Zooming still changes `distance`.
+  bool orthographic = false;
 
   glm::vec3 forward() const;  // unit vector from the eye to the target
   glm::vec3 eye() const { return target - forward() * distance; }
   glm::mat4 view() const;
-  glm::mat4 projection(float aspect) const;  // aspect = width / height
+  glm::mat4 projection(float aspect) const;  // aspect = width / height; honours `orthographic`
+  // World units per pixel at the target's depth for a viewport this many pixels high.
+  float unitsPerPixelAtTarget(float viewportHeight) const;
   // Moves target and distance so that the sphere around `bounds` fits the view with a
   // margin (`fill` = the fraction of the narrower half-field it spans), keeping the angles.
   void frame(const Bounds& bounds, float aspect, float fill = 0.85f);

@@ -5,4 +5,6 @@ extern const char* const shaded_vert;
 extern const char* const shaded_frag;
 extern const char* const lines_vert;
 extern const char* const lines_frag;
+extern const char* const overlay_vert;
+extern const char* const overlay_frag;
 }  // namespace kinema::shaders

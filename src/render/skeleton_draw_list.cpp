@@ -57,6 +57,8 @@ bool SkeletonDrawJob::run(SkeletonDrawList& out) const {
     for (int j : {i, p}) shortest[j] = shortest[j] == 0.0f ? len : std::min(shortest[j], len);
     out.boneMatrices.push_back(boneMatrix(pos(p), pos(i), glm::vec3(w[p][0])));
     out.boneColors.push_back(p == selectedJoint ? style.selectedBone : style.bone);
+    out.boneParents.push_back(p);
+    out.boneChildren.push_back(i);
   }
   for (int i = 0; i < n; ++i) {
     const float r = std::clamp(shortest[i] > 0.0f ? shortest[i] * 0.1f : size * 0.02f, size * 0.008f, size * 0.025f);

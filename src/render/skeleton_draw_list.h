@@ -20,6 +20,8 @@ struct SkeletonStyle {
 struct SkeletonDrawList {
   std::vector<glm::mat4> boneMatrices;
   std::vector<glm::vec4> boneColors;
+  std::vector<int> boneParents;   // per bone: its head joint (picking selects it)
+  std::vector<int> boneChildren;  // per bone: its tail joint
   std::vector<glm::mat4> jointMatrices;  // translate(position) * scale(radius)
   std::vector<glm::vec4> jointColors;
 };

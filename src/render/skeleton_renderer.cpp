@@ -20,6 +20,7 @@ SkeletonRenderer::~SkeletonRenderer() {
 std::string SkeletonRenderer::init() {
   std::string error = shaded_.build("shaded", shaders::shaded_vert, shaders::shaded_frag);
   if (error.empty()) error = lines_.build("lines", shaders::lines_vert, shaders::lines_frag);
+  if (error.empty()) error = overlay_.init();
   if (!error.empty()) return error;
   createShape(bone_, makeOctahedralBone());
   createShape(sphere_, makeSphere(16, 10));
@@ -127,6 +128,7 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
     drawInstances(bone_, frame.skeleton->boneMatrices, frame.skeleton->boneColors);
     drawInstances(sphere_, frame.skeleton->jointMatrices, frame.skeleton->jointColors);
   }
+  if (frame.overlay) overlay_.draw(*frame.overlay, viewProjection, frame.width, frame.height);
   glBindVertexArray(0);
   glUseProgram(0);
 }

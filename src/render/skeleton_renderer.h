@@ -4,6 +4,7 @@
 
 #include "render/camera.h"
 #include "render/grid_lines.h"
+#include "render/overlay_renderer.h"
 #include "render/shader_program.h"
 #include "render/shape_meshes.h"
 #include "render/skeleton_draw_list.h"
@@ -18,6 +19,7 @@ struct FrameDescription {
   float sceneRadius = 1.0f;                 // sizes the grid
   bool showGrid = true;
   glm::vec4 background{0.235f, 0.235f, 0.235f, 1.0f};  // Blender's viewport grey
+  const OverlayDrawList* overlay = nullptr;             // gizmos, handles, ...; drawn last
 };
 
 // Draws grid, axes, bones and joints with OpenGL 3.3 core into whatever framebuffer is
@@ -44,6 +46,7 @@ class SkeletonRenderer {
   void drawGrid(const FrameDescription& frame, const glm::mat4& viewProjection);
 
   ShaderProgram shaded_, lines_;
+  OverlayRenderer overlay_;
   ShapeBuffers bone_, sphere_;
   GLuint lineVao_ = 0, lineVertices_ = 0;
   std::vector<LineVertex> gridCache_;

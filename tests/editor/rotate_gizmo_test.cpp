@@ -1,0 +1,181 @@
+// The rotate gizmo and R-mode on the hand camera (viewport_test_views.h): eye on +Z looking
+// down -Z, so screen right = +X, screen up = +Y and the Z axis points at the viewer. With the
+// orthographic view a ring of 80 px has world radius 8 (0.1 units per pixel).
+#include "editor/rotate_gizmo.h"
+#include "editor/viewport_test_views.h"
+#include "test_support.h"
+
+namespace kinema::test {
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+
+glm::vec2 onCircle(float radiusPixels, float degreesCcw) {  // around the screen centre (100, 100)
+  const float a = glm::radians(degreesCcw);
+  return {100 + radiusPixels * std::cos(a), 100 - radiusPixels * std::sin(a)};
+}
+
+TEST(RotateGizmo, RingsAreWorldCirclesOfThePixelRadius) {
+  const ViewportView v = handView(true);
+  RotateGizmo g;
+  EXPECT_NEAR(g.ringRadiusWorld(v), 8.0f, 1e-4f);
+  for (int i = 0; i < 4; ++i)
+    for (const glm::vec3& p : g.ringPoints(v, i, 16)) {
+      EXPECT_NEAR(glm::length(p), i < 3 ? 8.0f : 9.6f, 1e-4f);
+      if (i < 3) {
+        EXPECT_NEAR(p[i], 0.0f, 1e-5f);  // ring i lies in the plane normal to axis i
+      }
+    }
+  // The view ring is an exact 96 px circle on screen, also in perspective.
+  const ViewportView persp = handView(false);
+  g.pivot = {2, 1, -3};
+  for (const glm::vec3& p : g.ringPoints(persp, 3, 12)) {
+    glm::vec2 a, c;
+    ASSERT_TRUE(persp.project(p, a));
+    ASSERT_TRUE(persp.project(g.pivot, c));
+    EXPECT_NEAR(glm::length(a - c), 96.0f, 1e-2f);
+  }
+}
+
+TEST(RotateGizmo, HitTestFindsRingsViewRingTrackballAndNothing) {
+  const ViewportView v = handView(true);
+  RotateGizmo g;
+  // Seen from +Z the Z ring is the 80 px circle; the X and Y rings are edge-on (their front
+  // halves are the vertical and horizontal diameters).
+  EXPECT_EQ(hitTestRotateGizmo(g, v, onCircle(80, 45)), GizmoPart::AxisZ);
+  EXPECT_EQ(hitTestRotateGizmo(g, v, onCircle(84, 45)), GizmoPart::AxisZ);  // within 6 px
+  EXPECT_EQ(hitTestRotateGizmo(g, v, {140, 100}), GizmoPart::AxisY);
+  EXPECT_EQ(hitTestRotateGizmo(g, v, {100, 60}), GizmoPart::AxisX);
+  EXPECT_EQ(hitTestRotateGizmo(g, v, onCircle(96, 45)), GizmoPart::ViewRing);
+  EXPECT_EQ(hitTestRotateGizmo(g, v, {130, 130}), GizmoPart::Trackball);  // 30 px from both diameters
+  EXPECT_EQ(hitTestRotateGizmo(g, v, onCircle(88, 45)), GizmoPart::None);  // between the rings
+  EXPECT_EQ(hitTestRotateGizmo(g, v, {10, 190}), GizmoPart::None);
+  // Local axes turned 90 degrees about Y: local X points along world -Z, so ITS ring faces the viewer.
+  g.axesRotation = RotateGizmo::axesFor(GizmoOrientation::Local, glm::angleAxis(kPi / 2, glm::vec3(0, 1, 0)));
+  EXPECT_VEC3_NEAR(g.axis(0), glm::vec3(0, 0, -1), 1e-6f);
+  EXPECT_EQ(hitTestRotateGizmo(g, v, onCircle(80, 45)), GizmoPart::AxisX);
+  EXPECT_EQ(RotateGizmo::axesFor(GizmoOrientation::Global, glm::angleAxis(1.0f, glm::vec3(0, 1, 0))),
+            glm::quat(1, 0, 0, 0));
+}
+
+TEST(RotateGizmo, SweptAngleIsCounterClockwiseAsTheViewerSeesIt) {
+  const glm::vec2 c(100, 100);
+  EXPECT_NEAR(sweptAngle(c, {150, 100}, {100, 50}), kPi / 2, 1e-6f);   // right -> up: CCW
+  EXPECT_NEAR(sweptAngle(c, {150, 100}, {100, 150}), -kPi / 2, 1e-6f); // right -> down: CW
+  EXPECT_NEAR(sweptAngle(c, {150, 100}, {300, 100}), 0.0f, 1e-6f);    // radius does not matter
+  EXPECT_EQ(sweptAngle(c, c, {0, 0}), 0.0f);
+  SweepTracker t;
+  t.begin(c, onCircle(80, 0));
+  for (float deg : {90.0f, 180.0f, 270.0f, 360.0f, 450.0f}) t.update(onCircle(80, deg));
+  EXPECT_NEAR(t.total, 2.5f * kPi, 1e-5f);  // a turn and a quarter, not wrapped
+}
+
+// A quarter sweep counter-clockwise on screen around the pivot, from the right (180, 100) to
+// the top (100, 20). Hand derivation: seen from +Z, a counter-clockwise quarter turn is +90
+// degrees about +Z (right-hand rule: x -> y). The ring point under the start cursor, (8, 0, 0),
+// goes to (0, 8, 0), which projects to the end cursor: the joint follows the mouse.
+TEST(RotateGizmo, QuarterSweepIsNinetyDegreesAboutTheAxis) {
+  for (bool ortho : {true, false}) {
+    const ViewportView v = handView(ortho);
+    float angle = 0;
+    const glm::quat q = ringDragRotation(v, {0, 0, 0}, {0, 0, 1}, {180, 100}, {100, 20}, false, &angle);
+    EXPECT_NEAR(angle, kPi / 2, 1e-5f);
+    EXPECT_SAME_ROTATION(q, glm::angleAxis(kPi / 2, glm::vec3(0, 0, 1)), 1e-6f);
+    EXPECT_VEC3_NEAR(q * glm::vec3(8, 0, 0), glm::vec3(0, 8, 0), 1e-4f);
+    // The axis pointing away from the viewer: -90 degrees about -Z, the same turn on screen.
+    const glm::quat away = ringDragRotation(v, {0, 0, 0}, {0, 0, -1}, {180, 100}, {100, 20}, false, &angle);
+    EXPECT_NEAR(angle, -kPi / 2, 1e-5f);
+    EXPECT_VEC3_NEAR(away * glm::vec3(8, 0, 0), glm::vec3(0, 8, 0), 1e-4f);
+  }
+}
+
+TEST(RotateGizmo, CtrlSnapsToFiveDegrees) {
+  const ViewportView v = handView(true);
+  float angle = 0;
+  ringDragRotation(v, {0, 0, 0}, {0, 0, 1}, onCircle(80, 0), onCircle(80, 47), true, &angle);
+  EXPECT_NEAR(angle, glm::radians(45.0f), 1e-6f);
+  ringDragRotation(v, {0, 0, 0}, {0, 0, 1}, onCircle(80, 0), onCircle(80, -48), true, &angle);
+  EXPECT_NEAR(angle, glm::radians(-50.0f), 1e-6f);
+  EXPECT_NEAR(snapAngle(glm::radians(2.4f)), 0.0f, 1e-7f);
+  EXPECT_NEAR(snapAngle(glm::radians(12.6f), 5.0f), glm::radians(15.0f), 1e-6f);
+}
+
+TEST(RotateGizmo, TrackballTurnsAboutTheViewAxisPerpendicularToTheDrag) {
+  const ViewportView v = handView(false);
+  // 100 px to the right at 0.01 rad/px: 1 rad about +Y (towardViewer x drag = z x x = y), which
+  // carries the ball's front point (0, 0, 1) towards +X, with the cursor.
+  const glm::quat right = trackballRotation(v, {100, 100}, {200, 100}, 0.01f);
+  EXPECT_SAME_ROTATION(right, glm::angleAxis(1.0f, glm::vec3(0, 1, 0)), 1e-6f);
+  EXPECT_GT((right * glm::vec3(0, 0, 1)).x, 0.8f);
+  // 50 px up (pixel y decreases): 0.5 rad about z x y = -X; the front point moves up.
+  const glm::quat up = trackballRotation(v, {100, 100}, {100, 50}, 0.01f);
+  EXPECT_SAME_ROTATION(up, glm::angleAxis(0.5f, glm::vec3(-1, 0, 0)), 1e-6f);
+  EXPECT_GT((up * glm::vec3(0, 0, 1)).y, 0.4f);
+  EXPECT_SAME_ROTATION(trackballRotation(v, {5, 5}, {5, 5}), glm::quat(1, 0, 0, 0), 1e-7f);
+}
+
+TEST(RotateGizmo, GizmoPartsTurnAboutTheirAxes) {
+  const ViewportView v = handView(true);
+  RotateGizmo g;
+  const glm::vec2 from = onCircle(80, 0), to = onCircle(80, 90);
+  EXPECT_SAME_ROTATION(gizmoDragRotation(g, v, GizmoPart::AxisZ, from, to, false),
+                       glm::angleAxis(kPi / 2, glm::vec3(0, 0, 1)), 1e-5f);
+  EXPECT_SAME_ROTATION(gizmoDragRotation(g, v, GizmoPart::ViewRing, from, to, false),
+                       glm::angleAxis(kPi / 2, glm::vec3(0, 0, 1)), 1e-5f);
+  // The X ring is edge-on here: the sweep still turns about X, by +90 (X lies in the view plane; sign +).
+  EXPECT_SAME_ROTATION(gizmoDragRotation(g, v, GizmoPart::AxisX, from, to, false),
+                       glm::angleAxis(kPi / 2, glm::vec3(1, 0, 0)), 1e-5f);
+  EXPECT_SAME_ROTATION(gizmoDragRotation(g, v, GizmoPart::None, from, to, false), glm::quat(1, 0, 0, 0), 1e-7f);
+}
+
+TEST(RotateMode, AxisKeysCycleGlobalLocalFree) {
+  RotateMode m;
+  EXPECT_EQ(m.axis, -1);
+  m.pressAxis(0);
+  EXPECT_EQ(m.axis, 0);
+  EXPECT_FALSE(m.local);
+  m.pressAxis(0);
+  EXPECT_EQ(m.axis, 0);
+  EXPECT_TRUE(m.local);
+  m.pressAxis(0);
+  EXPECT_EQ(m.axis, -1);
+  m.pressAxis(1);
+  m.pressAxis(1);
+  m.pressAxis(2);  // another axis starts global
+  EXPECT_EQ(m.axis, 2);
+  EXPECT_FALSE(m.local);
+}
+
+TEST(RotateMode, ConstrainedAndFreeRotations) {
+  const ViewportView v = handView(false);
+  const glm::quat joint = glm::angleAxis(kPi / 2, glm::vec3(0, 1, 0));  // local X = world -Z
+  RotateMode m;
+  float angle = 0;
+  // Free: about the view axis (+Z here), a CCW quarter = +90 about +Z.
+  EXPECT_SAME_ROTATION(m.rotation(v, {0, 0, 0}, joint, {180, 100}, {100, 20}, false, &angle),
+                       glm::angleAxis(kPi / 2, glm::vec3(0, 0, 1)), 1e-5f);
+  m.pressAxis(0);  // global X
+  EXPECT_VEC3_NEAR(m.worldAxis(v, {0, 0, 0}, joint), glm::vec3(1, 0, 0), 1e-6f);
+  m.pressAxis(0);  // local X = (0, 0, -1), pointing away: the angle about it is -90
+  EXPECT_VEC3_NEAR(m.worldAxis(v, {0, 0, 0}, joint), glm::vec3(0, 0, -1), 1e-6f);
+  const glm::quat q = m.rotation(v, {0, 0, 0}, joint, {180, 100}, {100, 20}, false, &angle);
+  EXPECT_NEAR(angle, -kPi / 2, 1e-5f);
+  EXPECT_VEC3_NEAR(q * glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), 1e-5f);
+}
+
+// Parent world rotation P = 90 degrees about Z, start local L = identity, world turn D = 90
+// degrees about X. The new world rotation is D P, so the local one is P^-1 D P: a 90 degree turn
+// about P^-1 (1, 0, 0) = (0, -1, 0) (rotating x by -90 about z).
+TEST(RotateGizmo, WorldTurnBecomesTheLocalRotationUnderTheParent) {
+  const glm::quat parent = glm::angleAxis(kPi / 2, glm::vec3(0, 0, 1));
+  const glm::quat delta = glm::angleAxis(kPi / 2, glm::vec3(1, 0, 0));
+  const glm::quat local = localRotationAfterWorldTurn(parent, glm::quat(1, 0, 0, 0), delta);
+  EXPECT_SAME_ROTATION(local, glm::angleAxis(kPi / 2, glm::vec3(0, -1, 0)), 1e-6f);
+  EXPECT_SAME_ROTATION(parent * local, delta * parent, 1e-6f);
+  // A root (identity parent) with a start rotation: the turn is applied on the world side.
+  const glm::quat start = glm::angleAxis(0.3f, glm::vec3(0, 1, 0));
+  EXPECT_SAME_ROTATION(localRotationAfterWorldTurn(glm::quat(1, 0, 0, 0), start, delta), delta * start, 1e-6f);
+}
+
+}  // namespace
+}  // namespace kinema::test
