@@ -42,26 +42,7 @@ std::vector<IkTargetReport> solveIkPosing(const IkPosingInput& in, Pose& pose) {
   if (!jobs.empty()) {
     reports.resize(jobs.size());
     std::vector<bool> usable(jobs.size(), true);
-    for (int sweep = 0; sweep < kIkSweeps; ++sweep) {
-      for (size_t k = 0; k < jobs.size(); ++k) {
-        IkTargetReport& report = reports[k];
-        report.target = jobs[k].index;
-        if (!usable[k]) continue;
-        IkProblem problem;
-        problem.skeleton = &skeleton;
-        problem.pose = &pose;
-        problem.rig = &rig;
-        problem.targets = {jobs[k].target->resolved(skeleton)};
-        const auto start = std::chrono::steady_clock::now();
-        const IkResult result = solveIk(jobs[k].target->solver, problem, in.settings);
-        report.milliseconds +=
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        if (!result.message.empty()) {
-          usable[k] = false;  // an unusable target (a two-bone one on a longer chain...) is skipped
-          continue;
-        }
-        report.iterations += result.iterations;
-      }
+    auto measure = [&] {
       computeWorld(skeleton, pose, world);
       bool all = true;
       for (size_t k = 0; k < jobs.size(); ++k) {
@@ -70,8 +51,52 @@ std::vector<IkTargetReport> solveIkPosing(const IkPosingInput& in, Pose& pose) {
         reports[k].converged = usable[k] && reports[k].error <= in.settings.tolerance;
         if (usable[k] && !reports[k].converged) all = false;
       }
-      // One target alone gains nothing from a second sweep.
-      if (all || jobs.size() == 1) break;
+      return all;
+    };
+    // First each target with its own solver, in order.
+    for (size_t k = 0; k < jobs.size(); ++k) {
+      IkTargetReport& report = reports[k];
+      report.target = jobs[k].index;
+      IkProblem problem;
+      problem.skeleton = &skeleton;
+      problem.pose = &pose;
+      problem.rig = &rig;
+      problem.targets = {jobs[k].target->resolved(skeleton)};
+      const auto start = std::chrono::steady_clock::now();
+      const IkResult result = solveIk(jobs[k].target->solver, problem, in.settings);
+      report.milliseconds += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      if (!result.message.empty()) {
+        usable[k] = false;  // an unusable target (two-bone on a longer chain...) is skipped
+        continue;
+      }
+      report.iterations += result.iterations;
+    }
+    if (!measure() && jobs.size() > 1) {
+      // Overlapping chains (a pinned elbow inside the dragged hand's chain) fight when
+      // solved one after the other: solve the usable targets together with damped least
+      // squares, which takes several effectors and the limits.
+      IkProblem problem;
+      problem.skeleton = &skeleton;
+      problem.pose = &pose;
+      problem.rig = &rig;
+      std::vector<size_t> together;
+      for (size_t k = 0; k < jobs.size(); ++k) {
+        if (!usable[k]) continue;
+        IkTarget t = jobs[k].target->resolved(skeleton);
+        if (t.root < 0) t.root = ikRootOf(skeleton, t, jobs[k].target->solver == IkSolver::TwoBone);
+        problem.targets.push_back(t);
+        together.push_back(k);
+      }
+      IkSettings settings = in.settings;
+      settings.maxIterations = std::max(settings.maxIterations, kIkJointIterations);
+      const auto start = std::chrono::steady_clock::now();
+      const IkResult result = solveIk(IkSolver::JacobianDls, problem, settings);
+      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      for (size_t k : together) {
+        reports[k].iterations += result.iterations;
+        reports[k].milliseconds += ms / static_cast<double>(together.size());
+      }
+      measure();
     }
   }
 

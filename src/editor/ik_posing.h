@@ -8,13 +8,15 @@ namespace kinema {
 
 // IK posing on the document. The rule every solve follows:
 //  * the driven target (the one being edited or dragged; also the auto-IK temporary
-//    target) and every active *pinned* target are solved, in a stable order: the driven
-//    one first, then pinned ones in list order, swept up to kIkSweeps times until all are
-//    within tolerance; each target with its own solver, joint limits respected;
+//    target) and every active *pinned* target are solved, in a stable order: the
+//    temporary one, the driven one, then pinned ones in list order, each with its own
+//    solver, joint limits respected. When several are solved and that leaves one off
+//    target (overlapping chains), they are solved once more all together by damped least
+//    squares (up to kIkJointIterations steps);
 //  * every other active (unpinned) target then follows its effector (its position is set
 //    to where the effector ended), so FK edits and other drags carry it along.
 // So a pinned target keeps its effector where it is while other targets move.
-constexpr int kIkSweeps = 4;
+constexpr int kIkJointIterations = 200;
 
 struct IkPosingInput {
   const Skeleton* skeleton = nullptr;

@@ -318,6 +318,55 @@ bool readIk(Reader& r, const Json& root, Scene& scene) {
   return !ik || readIkObject(r, *ik, "ik", scene);
 }
 
+// ---- the editor's working pose (optional top-level "pose" key) ----
+// [{"joint": NAME, "translation": [3], "rotation": [x, y, z, w], "scale": [3]}, ...]; a
+// member or a joint left out keeps its rest value.
+bool readPose(Reader& r, const Json& root, Scene& scene) {
+  const Json* list = r.member(root, "", "pose", false);
+  if (!list) return true;
+  if (!list->is_array()) return r.fail("pose", "expected an array");
+  const Skeleton& s = scene.skeleton;
+  Pose pose = Pose::rest(s);
+  std::vector<bool> seen(s.size(), false);
+  for (size_t i = 0; i < list->size(); ++i) {
+    const std::string p = "pose[" + std::to_string(i) + "]";
+    const Json& j = (*list)[i];
+    if (!j.is_object()) return r.fail(p, "expected an object");
+    int joint = -1;
+    if (!readJointName(r, j, p, "joint", s, true, joint)) return false;
+    if (seen[joint]) return r.fail(p + ".joint", "joint '" + s.names[joint] + "' is listed twice");
+    seen[joint] = true;
+    Transform& t = pose.local[joint];
+    const Json* v;
+    if ((v = r.member(j, p, "translation", false)) && !r.floats(*v, p + ".translation", 3, &t.translation.x))
+      return false;
+    if ((v = r.member(j, p, "rotation", false))) {
+      float q[4];
+      if (!r.floats(*v, p + ".rotation", 4, q)) return false;
+      if (q[0] == 0 && q[1] == 0 && q[2] == 0 && q[3] == 0) return r.fail(p + ".rotation", "zero quaternion");
+      t.rotation = normalizeIfNeeded(glm::quat(q[3], q[0], q[1], q[2]));
+    }
+    if ((v = r.member(j, p, "scale", false)) && !r.floats(*v, p + ".scale", 3, &t.scale.x)) return false;
+  }
+  scene.pose = std::move(pose);
+  return true;
+}
+
+Json poseToJson(const Scene& scene) {
+  Json list = Json::array();
+  for (int i = 0; i < scene.pose.size(); ++i) {
+    const Transform& t = scene.pose.local[i];
+    Json j;
+    j["joint"] = scene.skeleton.names[i];
+    j["translation"] = vec(&t.translation.x, 3);
+    const float q[4] = {t.rotation.x, t.rotation.y, t.rotation.z, t.rotation.w};
+    j["rotation"] = vec(q, 4);
+    j["scale"] = vec(&t.scale.x, 3);
+    list.push_back(std::move(j));
+  }
+  return list;
+}
+
 Json degrees(const float* v, int n) {
   float d[3];
   for (int i = 0; i < n; ++i) d[i] = v[i] / kDeg;
@@ -1085,6 +1134,8 @@ std::string toKinemaJson(const Scene& scene) {
     clips.push_back(std::move(c));
   }
   root["clips"] = std::move(clips);
+  // Optional: the editor's working pose; files without one load as the rest pose.
+  if (!scene.pose.local.empty()) root["pose"] = poseToJson(scene);
   if (!scene.ik.empty()) root["ik"] = ikToJson(scene);  // optional: files without IK data stay as they were
   sceneAssetsToJson(scene, root);  // optional too: only scenes with meshes (glTF) have them
   return collapseNumberArrays(root.dump(1, '\t')) + "\n";
@@ -1124,6 +1175,7 @@ Result<Scene> parseKinemaJson(const std::string& text, const std::string& source
   if (!readSkeleton(r, root, scene.skeleton) || !readClips(r, root, scene))
     return Result<Scene>::failure(r.error());
   if (!readIk(r, root, scene)) return Result<Scene>::failure(r.error());
+  if (!readPose(r, root, scene)) return Result<Scene>::failure(r.error());
   if (!readSceneAssets(r, root, scene)) return Result<Scene>::failure(r.error());
   const std::string bad = scene.skeleton.validate();
   if (!bad.empty()) return Result<Scene>::failure(oneLine(source + ": skeleton: " + bad));
@@ -1171,6 +1223,10 @@ std::string saveKinemaFile(const std::string& path, const Scene& scene) {
   if (bad.empty() && !scene.ik.empty()) {
     bad = scene.ik.validate(scene.skeleton);
     if (!bad.empty()) bad = "ik: " + bad;
+  }
+  if (bad.empty() && !scene.pose.local.empty()) {
+    bad = scene.pose.validate(scene.skeleton);
+    if (!bad.empty()) bad = "pose: " + bad;
   }
   if (bad.empty()) bad = sceneAssetsError(scene);
   if (!bad.empty()) return oneLine(path + ": not saved: " + bad);
