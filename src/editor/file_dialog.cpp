@@ -110,7 +110,8 @@ bool drawFileDialog(FileDialogState& d, const std::vector<std::string>& recentFi
   ImGui::SameLine();
   ImGui::SetNextItemWidth(-1);
   if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-  bool accept = ImGui::InputText("##path", d.path, sizeof(d.path), ImGuiInputTextFlags_EnterReturnsTrue);
+  bool accept = ImGui::InputText("##path", d.path, sizeof(d.path),
+                                 ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
   if (!d.listingError.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", d.listingError.c_str());
 
   const float recentHeight = recentFiles.empty() || isSave(d.purpose) ? 0.0f : 96.0f;
