@@ -53,8 +53,7 @@ int runEdit(const EditOptions& o) {
   Result<Scene> loaded = loadSceneOrDefault(o.file);
   if (!loaded) return badInput(loaded.error());
   EditorState state;
-  state.scene = std::move(loaded.value());
-  state.path = o.file;
+  state.doc = Document(std::move(loaded.value()), o.file);
   options.frameCount = o.frameCount;
   options.screenshotPath = o.screenshot;
   options.dumpStatePath = o.dumpState;
@@ -72,7 +71,7 @@ int runEdit(const EditOptions& o) {
 int runDefault() {
   if (displayAvailable()) {
     EditorState state;
-    state.scene = loadSceneOrDefault("").value();
+    state.doc = Document(loadSceneOrDefault("").value());
     const EditorWindowResult result = runEditorWindow(state, EditorWindowOptions{});
     if (result.opened) return result.error.empty() ? kExitOk : badInput(result.error);
     std::cerr << "kinema: cannot open the editor window (" << result.error << "); rendering instead\n";

@@ -16,6 +16,7 @@
 #include "editor/imgui_backends.h"
 #include "editor/state_dump.h"
 #include "editor/viewport_overlay.h"
+#include "editor/viewport_controller.h"
 #include "editor/viewport_tools.h"
 #include "io/atomic_write.h"
 #include "io/image.h"
@@ -156,26 +157,25 @@ bool feedImGui(ImGuiIO& io, const InputEvent& e, FrameInputChanges& changed) {
   return true;
 }
 
-// The status line of the tools until the panels' status bar shows it: the running tool and
-// each IK target's last solve.
-void drawToolStatus(const EditorState& state) {
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(8, display.y - 8), ImGuiCond_Always, ImVec2(0, 1));
-  ImGui::SetNextWindowBgAlpha(0.35f);
-  ImGui::Begin("##toolstatus", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
-                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
-  ImGui::Text("%s%s%s", modalToolName(state.tool.mode), state.statusMessage.empty() ? "" : "  |  ",
-              state.statusMessage.c_str());
-  for (size_t i = 0; i < state.ikStatus.size(); ++i) {
-    const EditorIkStatus& s = state.ikStatus[i];
-    const int effector = i < state.scene.ik.targets.size() ? state.scene.ik.targets[i].effector : -1;
-    ImGui::Text("IK %s: %d it, error %.4f, %.3f ms%s",
-                effector >= 0 && effector < state.scene.skeleton.size() ? state.scene.skeleton.names[effector].c_str() : "auto",
-                s.iterations, s.error, s.milliseconds, s.converged ? "" : " (not reached)");
+// The View menu's requests (the same actions as the viewport's keys).
+void actOnViewRequests(EditorState& state, float aspect) {
+  EditorRequests& r = state.requests;
+  if (r.frameAll) ViewportController().frameAll(state.camera, jointBounds(state.world), aspect);
+  if (r.frameSelected)
+    frameSelected(state.camera, state.world, state.doc.selection.joints(), aspect,
+                  0.1f * std::max(jointBounds(state.world).radius(), 1e-3f));
+  if (r.toggleOrtho) toggleOrthographic(state.camera);
+  switch (r.viewPreset) {
+    case 1: applyViewPreset(state.camera, ViewPreset::Front); break;
+    case -1: applyViewPreset(state.camera, ViewPreset::Back); break;
+    case 3: applyViewPreset(state.camera, ViewPreset::Right); break;
+    case -3: applyViewPreset(state.camera, ViewPreset::Left); break;
+    case 7: applyViewPreset(state.camera, ViewPreset::Top); break;
+    case -7: applyViewPreset(state.camera, ViewPreset::Bottom); break;
+    default: break;
   }
-  if (state.view.autoIk) ImGui::TextDisabled("auto-IK on (Ctrl+I)");
-  ImGui::End();
+  r.frameAll = r.frameSelected = r.toggleOrtho = false;
+  r.viewPreset = 0;
 }
 
 }  // namespace
@@ -187,7 +187,7 @@ bool displayAvailable() {
 }
 
 std::string editorWindowTitle(const EditorState& state) {
-  return "Kinema - " + state.documentName() + (state.dirty ? "*" : "");
+  return "Kinema - " + documentTitle(state) + (state.doc.dirty() ? "*" : "");
 }
 
 EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions& o) {
@@ -248,6 +248,8 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     const std::string error = renderer.init();
     if (!error.empty()) result.error = error;
     ViewportTools tools;
+    SkeletonDrawList list;  // last frame's drawing: picking casts rays against it
+    OverlayDrawList overlay;
     evaluateEditorPose(state);
     int fbw = 0, fbh = 0, ww = 0, wh = 0;
     glfwGetFramebufferSize(window, &fbw, &fbh);
@@ -255,9 +257,13 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     size_t nextScripted = 0;
     const long long lastScriptFrame = o.script.empty() ? 0 : o.script.back().frame;
     double previous = glfwGetTime();
-    for (; error.empty() && !glfwWindowShouldClose(window); ++frame) {
+    for (; error.empty() && !state.panels.quitApproved; ++frame) {
       const auto frameStart = std::chrono::steady_clock::now();
       glfwPollEvents();
+      if (glfwWindowShouldClose(window)) {
+        glfwSetWindowShouldClose(window, GLFW_FALSE);
+        requestQuit(state);  // asks first when there are unsaved changes
+      }
       while (nextScripted < o.script.size() && o.script[nextScripted].frame <= frame)
         live.queue.push_back(o.script[nextScripted++]);
       const double now = glfwGetTime();
@@ -265,7 +271,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       previous = now;
       glfwGetWindowSize(window, &ww, &wh);
       glfwGetFramebufferSize(window, &fbw, &fbh);
-      const ViewportGeometry geometry = viewportGeometry(state.camera, state.orthographic, glm::vec2(ww, wh));
+      const ViewportView view = ViewportView::of(state.camera, glm::vec2(ww, wh));
 
       // Input: ImGui gets every event; the viewport tools get those ImGui does not want
       // (as of the previous frame, which is what the user saw).
@@ -273,11 +279,10 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       const bool mouseCaptured = io.WantCaptureMouse, keyboardCaptured = io.WantCaptureKeyboard;
       while (!live.queue.empty()) {
         if (!feedImGui(io, live.queue.front(), changed)) break;
-        tools.handle(state, live.queue.front(), geometry, mouseCaptured, keyboardCaptured);
+        tools.handle(state, live.queue.front(), view, list, mouseCaptured, keyboardCaptured);
         live.queue.pop_front();
       }
       advancePlayback(state, dt);
-      tools.update(state);
       evaluateEditorPose(state);
       const Bounds bounds = jointBounds(state.world);
 
@@ -286,14 +291,10 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       io.DisplayFramebufferScale = ImVec2(ww > 0 ? float(fbw) / ww : 1.0f, wh > 0 ? float(fbh) / wh : 1.0f);
       io.DeltaTime = static_cast<float>(std::max(dt, 1e-4));
       ImGui::NewFrame();
-      if (!o.emptyFrame) {
-        drawViewportOverlay(state, viewportGeometry(state.camera, state.orthographic, glm::vec2(ww, wh)));
-        drawJointListPanel(state);
-        drawTimelinePanel(state);
-        drawViewportHelp(state, io.Framerate);
-        drawToolStatus(state);
-      }
+      if (!o.emptyFrame) drawEditorPanels(state, io.Framerate);
       ImGui::Render();
+      evaluateEditorPose(state);  // the panels may have edited the document
+      actOnViewRequests(state, static_cast<float>(ww) / std::max(wh, 1));
 
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       if (o.emptyFrame) {
@@ -301,15 +302,16 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         glClearColor(0.235f, 0.235f, 0.235f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
       } else {
-        SkeletonDrawList list;
         SkeletonDrawJob job;
-        job.parents = &state.scene.skeleton.parents;
+        job.parents = &state.doc.skeleton().parents;
         job.world = &state.world;
         job.run(list);
         colorSelection(state, list);
         state.camera.fitClipPlanes(bounds.radius());
+        buildViewportOverlay(state, ViewportView::of(state.camera, glm::vec2(fbw, fbh)), tools, overlay);
         FrameDescription description;
         description.skeleton = &list;
+        description.overlay = &overlay;
         description.camera = state.camera;
         description.width = fbw;
         description.height = fbh;
@@ -321,7 +323,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
 
       const bool scriptDone = o.replay && o.frameCount <= 0 && nextScripted >= o.script.size() && live.queue.empty() &&
                               frame >= lastScriptFrame + 2;
-      const bool last = (o.frameCount > 0 && frame >= o.frameCount) || scriptDone || state.requests.quit;
+      const bool last = (o.frameCount > 0 && frame >= o.frameCount) || scriptDone || state.panels.quitApproved;
       if (last && !o.screenshotPath.empty()) {
         // Read the back buffer before swapping: its contents are undefined afterwards.
         Image shot(fbw, fbh);

@@ -159,7 +159,7 @@ void drawMainMenuBar(EditorState& state) {
     viewItem(state, "Top", "Numpad 7", 7);
     viewItem(state, "Bottom", "Ctrl+Numpad 7", -7);
     ImGui::Separator();
-    if (ImGui::MenuItem("Perspective / Orthographic", "Numpad 5", state.orthographic)) state.requests.toggleOrtho = true;
+    if (ImGui::MenuItem("Perspective / Orthographic", "Numpad 5", state.camera.orthographic)) state.requests.toggleOrtho = true;
     ImGui::Separator();
     if (ImGui::MenuItem("Frame Selected", "F", false, !doc.selection.empty())) state.requests.frameSelected = true;
     if (ImGui::MenuItem("Frame All", "Home")) state.requests.frameAll = true;

@@ -2,58 +2,67 @@
 
 #include <nlohmann/json.hpp>
 
+#include "ik/ik_solver.h"
+
 namespace kinema {
 
 namespace {
 using json = nlohmann::json;
 json vec(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
 json jointName(const EditorState& s, int j) {
-  return j >= 0 && j < s.scene.skeleton.size() ? json(s.scene.skeleton.names[j]) : json(nullptr);
+  return j >= 0 && j < s.doc.skeleton().size() ? json(s.doc.skeleton().names[j]) : json(nullptr);
 }
 }  // namespace
 
 std::string editorStateJson(const EditorState& s, int windowWidth, int windowHeight, long long frames) {
   json out;
-  out["path"] = s.path;
-  out["dirty"] = s.dirty;
-  out["undo_depth"] = s.undoDepth;
+  const Document& doc = s.doc;
+  out["path"] = doc.path();
+  out["dirty"] = doc.dirty();
+  out["undo_depth"] = doc.historyPosition();
+  out["redo_depth"] = static_cast<int>(doc.historyLabels().size()) - doc.historyPosition();
   out["frames"] = frames;
   out["window"] = {{"width", windowWidth}, {"height", windowHeight}};
   out["tool"] = modalToolName(s.tool.mode);
   json selection = json::array();
-  for (int j : s.selection) selection.push_back(jointName(s, j));
+  for (int j : doc.selection.joints()) selection.push_back(jointName(s, j));
   out["selection"] = selection;
-  out["active"] = jointName(s, s.activeJoint);
+  out["active"] = jointName(s, doc.selection.active());
   out["hovered"] = jointName(s, s.hoveredJoint);
   out["auto_ik"] = s.view.autoIk;
   const OrbitCamera& c = s.camera;
   out["camera"] = {{"azimuth", c.azimuthDeg},   {"elevation", c.elevationDeg}, {"distance", c.distance},
-                   {"target", vec(c.target)},   {"fov_y", c.fovYDeg},          {"orthographic", s.orthographic},
+                   {"target", vec(c.target)},   {"fov_y", c.fovYDeg},          {"orthographic", c.orthographic},
                    {"eye", vec(c.eye())}};
   json joints = json::array();
-  for (int j = 0; j < s.scene.skeleton.size(); ++j) {
+  for (int j = 0; j < doc.skeleton().size(); ++j) {
     json e;
-    e["name"] = s.scene.skeleton.names[j];
-    e["parent"] = s.scene.skeleton.parents[j];
-    if (j < s.pose.size()) {
-      const glm::quat& q = s.pose.local[j].rotation;
+    e["name"] = doc.skeleton().names[j];
+    e["parent"] = doc.skeleton().parents[j];
+    if (j < doc.pose().size()) {
+      const glm::quat& q = doc.pose().local[j].rotation;
       e["rotation"] = json::array({q.x, q.y, q.z, q.w});
-      e["translation"] = vec(s.pose.local[j].translation);
+      e["translation"] = vec(doc.pose().local[j].translation);
     }
     if (j < static_cast<int>(s.world.size())) e["world_position"] = vec(glm::vec3(s.world[j][3]));
     joints.push_back(e);
   }
   out["joints"] = joints;
   json targets = json::array();
-  for (size_t i = 0; i < s.scene.ik.targets.size(); ++i) {
-    const IkTarget& t = s.scene.ik.targets[i];
-    json e = {{"effector", jointName(s, t.effector)}, {"root", jointName(s, t.root)}, {"position", vec(t.position)}};
-    if (i < s.ikStatus.size()) {
-      e["iterations"] = s.ikStatus[i].iterations;
-      e["error"] = s.ikStatus[i].error;
-      e["milliseconds"] = s.ikStatus[i].milliseconds;
-      e["converged"] = s.ikStatus[i].converged;
-    }
+  for (size_t i = 0; i < doc.ikTargets().size(); ++i) {
+    const IkTarget& t = doc.ikTargets()[i].target;
+    const IkTarget resolved = doc.ikTargets()[i].resolved(doc.skeleton());
+    json e = {{"effector", jointName(s, t.effector)},
+              {"root", jointName(s, resolved.root)},
+              {"solver", toString(doc.ikTargets()[i].solver)},
+              {"position", vec(t.position)}};
+    for (const IkTargetReport& r : doc.lastIkReports())
+      if (r.target == static_cast<int>(i)) {
+        e["iterations"] = r.iterations;
+        e["error"] = r.error;
+        e["milliseconds"] = r.milliseconds;
+        e["converged"] = r.converged;
+      }
     targets.push_back(e);
   }
   out["ik_targets"] = targets;

@@ -120,7 +120,9 @@ class EditorE2e : public ::testing::Test {
     const std::string scriptPath = dir + "/" + name + ".jsonl", dump = dir + "/" + name + ".json";
     std::ofstream(scriptPath) << script.text();
     std::string out, err;
-    const int rc = runCommand(kXvfb + "env " + kSoftware + KINEMA_BINARY + " edit --script " + scriptPath +
+    // Recent files and recovery files go to the test's folder, not the user's.
+    const std::string xdg = "XDG_STATE_HOME=" + dir + " XDG_CONFIG_HOME=" + dir + " ";
+    const int rc = runCommand(kXvfb + "env " + xdg + kSoftware + KINEMA_BINARY + " edit --script " + scriptPath +
                                   " --dump-state " + dump + " --screenshot " + shotDir() + "/" + name + ".png",
                               &out, &err);
     EXPECT_EQ(rc, 0) << err;
@@ -195,8 +197,9 @@ TEST_F(EditorE2e, BoxSelectTakesTheJointsInsideTheBox) {
 
 TEST_F(EditorE2e, RWithTheMouseRotatesTheForearmByTheAngleSwept) {
   // Mouse from 100 px right of the elbow to 100 px above it: a quarter turn counter-clockwise
-  // on screen, i.e. +90 degrees about the view axis (+Z in the front view). The forearm,
-  // along +X (length 0.26), then points up: Hand.L = elbow + (0, 0.26, 0).
+  // on screen, i.e. +90 degrees about the line from the elbow to the eye (it projects onto
+  // the elbow's pixel, so the bone follows the cursor). Rodrigues with cos = 0, sin = 1 takes
+  // the forearm f = (0.26, 0, 0) to (u.f) u + u x f.
   const glm::dvec2 p = pixelOf("LowerArm.L");
   Script s;
   s.click(midpoint("LowerArm.L", "Hand.L")).move(p + glm::dvec2(100, 0)).key("R");
@@ -204,7 +207,8 @@ TEST_F(EditorE2e, RWithTheMouseRotatesTheForearmByTheAngleSwept) {
   s.down().up();
   json d = run(s, "rotate_r_mouse");
   const glm::dvec3 elbow = joint(front_, "LowerArm.L");
-  expectNear(joint(d, "Hand.L"), elbow + glm::dvec3(0, 0.26, 0), 2e-3, "Hand.L after R + 90 degrees");
+  const glm::dvec3 u = glm::normalize(camera().eye - elbow), f(0.26, 0, 0);
+  expectNear(joint(d, "Hand.L"), elbow + glm::dot(u, f) * u + glm::cross(u, f), 2e-3, "Hand.L after R + 90 degrees");
   expectNear(joint(d, "LowerArm.L"), elbow, 1e-5, "the elbow stays");
   EXPECT_EQ(int(d["undo_depth"]), 1);
   EXPECT_TRUE(bool(d["dirty"]));
@@ -233,15 +237,18 @@ TEST_F(EditorE2e, RThenAxisKeysConstrainAndTypedDegreesAreExact) {
 }
 
 TEST_F(EditorE2e, GizmoRingDragRotatesAboutItsAxis) {
-  // In the front view the Z ring (radius 70 px) is a circle around the joint; X and Y are
-  // edge-on lines. Press on the Z ring at 45 degrees, drag along it to 135: +90 about Z.
+  // In the front view the Z ring (radius 80 px, RotateGizmo's default) is a circle around
+  // the joint; X and Y are edge-on lines. Press on the Z ring at 240 degrees (its lower
+  // left half faces the eye, which is below and left of the elbow; only that half grabs),
+  // sweep to 330: +90 degrees about Z, the forearm points up.
   const glm::dvec2 p = pixelOf("LowerArm.L");
   Script s;
   s.click(midpoint("LowerArm.L", "Hand.L"));
-  s.move(p + 70.0 * glm::dvec2(std::cos(M_PI / 4), -std::sin(M_PI / 4))).down();
+  const double a0 = 240 * M_PI / 180;
+  s.move(p + 80.0 * glm::dvec2(std::cos(a0), -std::sin(a0))).down();
   for (int k = 1; k <= 8; ++k) {
-    const double a = M_PI / 4 + k * M_PI / 16;
-    s.move(p + 70.0 * glm::dvec2(std::cos(a), -std::sin(a)));
+    const double a = a0 + k * M_PI / 16;
+    s.move(p + 80.0 * glm::dvec2(std::cos(a), -std::sin(a)));
   }
   s.up();
   json d = run(s, "gizmo_ring_drag");
@@ -258,8 +265,10 @@ TEST_F(EditorE2e, GMovesTheRootInTheViewPlaneAndAlongAnAxis) {
   json d = run(Script().move(m).key("G").path(m, m + glm::dvec2(100, 0)).down().up(), "grab_root");
   expectNear(joint(d, "Hips"), hips + glm::dvec3(100 * upp, 0, 0), 1e-4, "G 100 px right");
   expectNear(joint(d, "Hand.L") - joint(d, "Hips"), joint(front_, "Hand.L") - hips, 1e-5, "the body moves along");
-  // G Y: only the vertical part of the mouse move counts.
-  d = run(Script().move(m).key("G").key("Y").path(m, m + glm::dvec2(40, -50)).key("ENTER"), "grab_root_y");
+  // G Y from below the hips: along the vertical line through them, which lies in the view
+  // plane at their depth, so 50 px up is 50 * upp.
+  const glm::dvec2 below = pixelOf("Hips") + glm::dvec2(0, 60);
+  d = run(Script().move(below).key("G").key("Y").path(below, below + glm::dvec2(0, -50)).key("ENTER"), "grab_root_y");
   expectNear(joint(d, "Hips"), hips + glm::dvec3(0, 50 * upp, 0), 1e-4, "G Y 50 px up");
 }
 
@@ -293,10 +302,11 @@ TEST_F(EditorE2e, DraggingTheHandsIkTargetMovesTheHandThereAndKeepsBoneLengths) 
   expectNear(joint(d, "Hand.L"), expected, 2e-3, "the hand reaches the target");
   EXPECT_LT(double(d["ik_targets"][0]["error"]), 2e-3);
   expectNear(joint(d, "UpperArm.L"), joint(front_, "UpperArm.L"), 1e-5, "the IK root stays");
+  EXPECT_EQ(d["ik_targets"][0]["solver"], "two-bone");
   for (auto [a, b] : {std::pair{"UpperArm.L", "LowerArm.L"}, {"LowerArm.L", "Hand.L"}, {"Hand.L", "Fingertip.L"}})
     EXPECT_NEAR(glm::length(joint(d, b) - joint(d, a)), glm::length(joint(front_, b) - joint(front_, a)), 1e-4)
         << a << "-" << b;
-  EXPECT_EQ(int(d["undo_depth"]), 1);
+  EXPECT_EQ(int(d["undo_depth"]), 2);  // adding the target, then the drag
   // Esc during the drag puts the target and the arm back.
   d = run(Script()
               .click(midpoint("Hand.L", "Fingertip.L"))
@@ -328,7 +338,7 @@ TEST_F(EditorE2e, CameraKeysWheelAndMiddleDragChangeTheView) {
   d = run(Script().key("KP_3"), "camera_right");
   EXPECT_NEAR(double(d["camera"]["azimuth"]), 90.0, 1e-4);
   d = run(Script().keyDown("LEFT_CONTROL").key("KP_7").keyUp("LEFT_CONTROL").key("KP_5"), "camera_bottom_ortho");
-  EXPECT_NEAR(double(d["camera"]["elevation"]), -89.9, 1e-3);
+  EXPECT_NEAR(double(d["camera"]["elevation"]), -90.0, 1e-3);
   EXPECT_TRUE(bool(d["camera"]["orthographic"]));
   // Middle drag 100 px right: turntable orbit of 0.4 degrees per pixel, to the right.
   const glm::dvec2 m(900, 500);
@@ -360,7 +370,7 @@ TEST_F(EditorE2e, XdotoolClickSelectsTheHandThroughTheXServer) {
   char move[64];
   std::snprintf(move, sizeof move, "%d %d", int(std::lround(hand.x)), int(std::lround(hand.y)));
   std::ofstream(sh) << "set -e\n"
-                    << "env " << kSoftware << KINEMA_BINARY << " edit --frame-count 100000 --dump-state " << dump
+                    << "env XDG_STATE_HOME=" << dir_ << " XDG_CONFIG_HOME=" << dir_ << " " << kSoftware << KINEMA_BINARY << " edit --frame-count 100000 --dump-state " << dump
                     << " --screenshot " << shotDir() << "/xdotool.png & pid=$!\n"
                     << "for i in $(seq 100); do w=$(xdotool search --name 'Kinema - ' | head -1) && [ -n \"$w\" ] && break; sleep 0.1; done\n"
                     << "xdotool windowfocus --sync $w || true\n"

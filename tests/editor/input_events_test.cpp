@@ -5,6 +5,7 @@
 #include "core/default_character.h"
 #include "editor/input_events.h"
 #include "editor/viewport_tools.h"
+#include "editor/document.h"
 #include "test_support.h"
 
 namespace kinema::test {
@@ -69,26 +70,36 @@ TEST(InputScript, KeyNamesRoundTripThroughGlfwCodes) {
 // the point (0, 1, 0), 35 degrees vertical field in 800x600 pixels.
 struct FrontView {
   EditorState state;
-  ViewportGeometry g;
+  ViewportView view;
+  SkeletonDrawList list;
   ViewportTools tools;
   FrontView() {
-    state.scene.skeleton = makeDefaultCharacter();
-    evaluateEditorPose(state);
+    Scene scene;
+    scene.skeleton = makeDefaultCharacter();
+    state.doc = Document(scene);
     state.camera.azimuthDeg = 0;
     state.camera.elevationDeg = 0;
     state.camera.distance = 5;
     state.camera.target = glm::vec3(0, 1, 0);
     state.camera.fovYDeg = 35;
-    g = viewportGeometry(state.camera, false, glm::vec2(800, 600));
+    view = ViewportView::of(state.camera, glm::vec2(800, 600));
+    refresh();
   }
+  void refresh() {
+    evaluateEditorPose(state);
+    SkeletonDrawJob job;
+    job.parents = &state.doc.skeleton().parents;
+    job.world = &state.world;
+    job.run(list);
+  }
+  int joint(const char* name) const { return state.doc.skeleton().find(name); }
+  glm::vec3 position(const char* name) const { return glm::vec3(state.world[joint(name)][3]); }
   // Pixel of a world point by hand: focal length 300 / tan(17.5 deg) pixels at depth 5 - z.
   glm::vec2 pixel(glm::vec3 p) const {
     const float f = 300.0f / std::tan(glm::radians(17.5f));
     return glm::vec2(400 + f * p.x / (5 - p.z), 300 - f * (p.y - 1) / (5 - p.z));
   }
-  glm::vec2 pixelOf(const char* name) const {
-    return pixel(glm::vec3(state.world[state.scene.skeleton.find(name)][3]));
-  }
+  glm::vec2 pixelOf(const char* name) const { return pixel(position(name)); }
   void send(InputEventType type, float x = 0, float y = 0, int key = -1, int button = 0) {
     InputEvent e;
     e.type = type;
@@ -96,8 +107,8 @@ struct FrontView {
     e.y = y;
     e.key = key;
     e.button = button;
-    tools.handle(state, e, g, false, false);
-    evaluateEditorPose(state);
+    tools.handle(state, e, view, list, false, false);
+    refresh();
   }
   void move(glm::vec2 p) { send(InputEventType::MouseMove, p.x, p.y); }
   void click(glm::vec2 p) {
@@ -111,23 +122,13 @@ struct FrontView {
   }
 };
 
-TEST(ViewportTools, ProjectionMatchesAHandPinhole) {
-  FrontView v;
-  glm::vec2 p;
-  ASSERT_TRUE(v.g.toScreen(glm::vec3(0.71f, 1.45f, 0.0f), p));
-  const glm::vec2 q = v.pixel(glm::vec3(0.71f, 1.45f, 0.0f));
-  EXPECT_NEAR(p.x, q.x, 1e-2f);
-  EXPECT_NEAR(p.y, q.y, 1e-2f);
-  // At depth 5 one pixel is 2 * 5 * tan(17.5 deg) / 600 units.
-  EXPECT_NEAR(v.g.unitsPerPixel(glm::vec3(0.3f, 0.2f, 0.0f)), 10 * std::tan(glm::radians(17.5f)) / 600, 1e-6);
-}
-
-TEST(ViewportTools, PickingPrefersJointsAndBonesPickTheirHead) {
+TEST(ViewportTools, ClickOnABoneSelectsItsHeadJoint) {
   FrontView v;
   const glm::vec2 mid = (v.pixelOf("Hand.L") + v.pixelOf("Fingertip.L")) * 0.5f;
-  EXPECT_EQ(pickJointOrBone(v.state, v.g, mid), v.state.scene.skeleton.find("Hand.L"));
-  EXPECT_EQ(pickJointOrBone(v.state, v.g, v.pixelOf("Fingertip.L")), v.state.scene.skeleton.find("Fingertip.L"));
-  EXPECT_EQ(pickJointOrBone(v.state, v.g, mid + glm::vec2(0, 40)), -1);
+  v.click(mid);
+  EXPECT_EQ(v.state.doc.selection.joints(), std::vector<int>{v.joint("Hand.L")});
+  v.click(mid + glm::vec2(0, 120));  // nothing there (beyond the gizmo): a click clears
+  EXPECT_TRUE(v.state.doc.selection.empty());
 }
 
 TEST(ViewportTools, BoxSelectAndShiftClick) {
@@ -139,62 +140,81 @@ TEST(ViewportTools, BoxSelectAndShiftClick) {
   EXPECT_EQ(v.state.tool.mode, ModalTool::BoxSelect);
   v.move(b);
   v.send(InputEventType::ButtonUp);
-  const Skeleton& s = v.state.scene.skeleton;
-  EXPECT_EQ(v.state.selection, (std::vector<int>{s.find("LowerArm.L"), s.find("Hand.L"), s.find("Fingertip.L")}));
+  EXPECT_EQ(v.state.doc.selection.joints(),
+            (std::vector<int>{v.joint("LowerArm.L"), v.joint("Hand.L"), v.joint("Fingertip.L")}));
   v.send(InputEventType::KeyDown, 0, 0, GLFW_KEY_LEFT_SHIFT);
-  v.click(v.pixelOf("Hand.L"));  // Shift-click on a selected joint removes it
+  v.click(v.pixelOf("LowerArm.R"));  // Shift-click adds
   v.send(InputEventType::KeyUp, 0, 0, GLFW_KEY_LEFT_SHIFT);
-  EXPECT_EQ(v.state.selection, (std::vector<int>{s.find("LowerArm.L"), s.find("Fingertip.L")}));
+  EXPECT_TRUE(v.state.doc.selection.isSelected(v.joint("LowerArm.R")));
+  EXPECT_EQ(v.state.doc.selection.joints().size(), 4u);
 }
 
-TEST(ViewportTools, RotateSweptAngleUndoAndRedo) {
+TEST(ViewportTools, RSweepRotatesTheForearmAndIsOneUndoStep) {
   FrontView v;
-  const Skeleton& s = v.state.scene.skeleton;
-  const int elbow = s.find("LowerArm.L"), hand = s.find("Hand.L");
   const glm::vec2 p = v.pixelOf("LowerArm.L");
   v.click((p + v.pixelOf("Hand.L")) * 0.5f);
-  ASSERT_EQ(v.state.activeJoint, elbow);
+  ASSERT_EQ(v.state.doc.selection.active(), v.joint("LowerArm.L"));
   v.move(p + glm::vec2(0, -80));  // straight above the elbow
   v.key(GLFW_KEY_R);
   EXPECT_EQ(v.state.tool.mode, ModalTool::Rotate);
   v.move(p + glm::vec2(-80, -80));
-  v.move(p + glm::vec2(-80, 0));  // a quarter turn counter-clockwise: the forearm points up
+  v.move(p + glm::vec2(-80, 0));  // a quarter turn counter-clockwise on screen
   v.send(InputEventType::ButtonDown);
   v.send(InputEventType::ButtonUp);
-  const glm::vec3 e(v.state.world[elbow][3]);
-  EXPECT_VEC3_NEAR(glm::vec3(v.state.world[hand][3]), e + glm::vec3(0, 0.26f, 0), 1e-4f);
-  EXPECT_EQ(v.state.undoDepth, 1);
-  v.send(InputEventType::KeyDown, 0, 0, GLFW_KEY_LEFT_CONTROL);
-  v.key(GLFW_KEY_Z);
-  EXPECT_VEC3_NEAR(glm::vec3(v.state.world[hand][3]), glm::vec3(0.71f, 1.45f, 0), 1e-5f);
-  v.send(InputEventType::KeyDown, 0, 0, GLFW_KEY_LEFT_SHIFT);
-  v.key(GLFW_KEY_Z);
-  EXPECT_VEC3_NEAR(glm::vec3(v.state.world[hand][3]), e + glm::vec3(0, 0.26f, 0), 1e-4f);
+  // Free R turns about the line from the elbow to the eye (it projects to the elbow's pixel,
+  // so the bone follows the cursor): +90 degrees about u takes the forearm f = (0.26, 0, 0)
+  // to (u.f) u + u x f (Rodrigues with cos = 0, sin = 1).
+  const glm::vec3 e = v.position("LowerArm.L");
+  const glm::vec3 u = glm::normalize(glm::vec3(0, 1, 5) - e), f(0.26f, 0, 0);
+  EXPECT_VEC3_NEAR(v.position("Hand.L"), e + glm::dot(u, f) * u + glm::cross(u, f), 1e-4f);
+  EXPECT_EQ(v.state.doc.historyPosition(), 1);
+  ASSERT_TRUE(v.state.doc.undo());
+  v.refresh();
+  EXPECT_VEC3_NEAR(v.position("Hand.L"), glm::vec3(0.71f, 1.45f, 0), 1e-5f);
 }
 
-TEST(ViewportTools, ViewPresetsAndFrameSelected) {
+TEST(ViewportTools, RThenZAndTypedDegreesAndEscapeCancels) {
   FrontView v;
-  setViewPreset(v.state, 3, false);
+  v.click((v.pixelOf("LowerArm.L") + v.pixelOf("Hand.L")) * 0.5f);
+  v.key(GLFW_KEY_R);
+  v.key(GLFW_KEY_Z);
+  EXPECT_EQ(v.state.tool.axis, AxisConstraint::Z);
+  v.key(GLFW_KEY_3);
+  v.key(GLFW_KEY_0);
+  v.key(GLFW_KEY_ENTER);
+  const float c = std::cos(glm::radians(30.0f)), s = std::sin(glm::radians(30.0f));
+  EXPECT_VEC3_NEAR(v.position("Hand.L"), v.position("LowerArm.L") + 0.26f * glm::vec3(c, s, 0), 1e-5f);
+  const glm::vec3 before = v.position("Hand.L");
+  v.key(GLFW_KEY_R);
+  v.key(GLFW_KEY_9);
+  v.key(GLFW_KEY_ESCAPE);
+  EXPECT_VEC3_NEAR(v.position("Hand.L"), before, 1e-6f);
+  EXPECT_EQ(v.state.doc.historyPosition(), 1);
+  EXPECT_EQ(v.state.tool.mode, ModalTool::None);
+}
+
+TEST(ViewportTools, GMovesTheRootWithTheCursorInTheViewPlane) {
+  FrontView v;
+  const glm::vec2 m(600, 450);
+  v.move(m);
+  v.key(GLFW_KEY_G);
+  v.move(m + glm::vec2(60, 0));
+  v.key(GLFW_KEY_ENTER);
+  // 60 px at the hips' depth (5 from the eye): 60 * 10 tan(17.5 deg) / 600 units along +X.
+  EXPECT_VEC3_NEAR(v.position("Hips"), glm::vec3(60 * 10 * std::tan(glm::radians(17.5f)) / 600, 0.95f, 0), 1e-5f);
+}
+
+TEST(ViewportTools, CameraKeys) {
+  FrontView v;
+  v.key(GLFW_KEY_KP_3);
   EXPECT_FLOAT_EQ(v.state.camera.azimuthDeg, 90.0f);
-  setViewPreset(v.state, 1, true);
+  v.key(GLFW_KEY_KP_5);
+  EXPECT_TRUE(v.state.camera.orthographic);
+  v.send(InputEventType::KeyDown, 0, 0, GLFW_KEY_LEFT_CONTROL);
+  v.key(GLFW_KEY_KP_1);
   EXPECT_FLOAT_EQ(v.state.camera.azimuthDeg, 180.0f);
-  setSelection(v.state, {v.state.scene.skeleton.find("Head")});
-  frameSelection(v.state, 800.0f / 600.0f, false);
-  EXPECT_VEC3_NEAR(v.state.camera.target, glm::vec3(0, 1.6f, 0.01f), 1e-5f);
-}
-
-TEST(ViewportTools, PasteFlippedMirrorsOntoTheOtherSide) {
-  FrontView v;
-  const Skeleton& s = v.state.scene.skeleton;
-  const int l = s.find("LowerArm.L"), r = s.find("LowerArm.R");
-  v.state.pose.local[l].rotation = glm::angleAxis(0.5f, glm::normalize(glm::vec3(1, 2, 3)));
-  setSelection(v.state, {l});
-  copySelectedPose(v.state);
-  pastePose(v.state, true);
-  // Mirroring across x = 0 turns an axis (x, y, z) into (x, -y, -z) for the same angle.
-  const glm::quat m = v.state.pose.local[r].rotation;
-  EXPECT_NEAR(glm::angle(m), 0.5f, 1e-5f);
-  EXPECT_VEC3_NEAR(glm::axis(m), glm::normalize(glm::vec3(1, -2, -3)), 1e-5f);
+  v.key(GLFW_KEY_I);
+  EXPECT_TRUE(v.state.view.autoIk);
 }
 
 }  // namespace
