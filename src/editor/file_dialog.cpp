@@ -144,7 +144,8 @@ bool drawFileDialog(FileDialogState& d, const std::vector<std::string>& recentFi
   }
   if (ImGui::Button(isSave(d.purpose) ? "Save" : "Open", ImVec2(120, 0))) accept = true;
   ImGui::SameLine();
-  if (ImGui::Button("Cancel", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+  const bool escape = d.confirmOverwrite.empty() && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
+  if (ImGui::Button("Cancel", ImVec2(120, 0)) || escape) {
     ImGui::CloseCurrentPopup();
     d.visible = false;
   }
@@ -175,7 +176,7 @@ bool drawFileDialog(FileDialogState& d, const std::vector<std::string>& recentFi
       ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
-    if (ImGui::Button("Cancel", ImVec2(120, 0))) {
+    if (ImGui::Button("Cancel", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
       d.confirmOverwrite.clear();
       ImGui::CloseCurrentPopup();
     }

@@ -44,6 +44,7 @@ void rotationSection(EditorState& state, int joint) {
     } else {
       const glm::vec3 e = glm::degrees(quatToEuler(q, p.eulerOrder));
       degrees[0] = e.x, degrees[1] = e.y, degrees[2] = e.z;
+      for (float& d : degrees) d += 0.0f;  // -0 shows as 0
     }
     const bool changed = ImGui::DragFloat3("Rotation", degrees, 0.5f, 0.0f, 0.0f, "%.2f");
     for (int k = 0; k < 3; ++k) p.heldEuler[k] = degrees[k];

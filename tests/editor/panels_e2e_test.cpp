@@ -5,6 +5,8 @@
 // (x, y, z, w) = (0, 0, sin(A/2), cos(A/2)); mirroring across X = 0 negates y and z).
 // Pixel positions come from the fixed layout (src/editor/panel_layout.h) at 1280x720 and
 // ImGui 1.86's default font: 17 px per outliner row, menus 17 px per item.
+#include <nlohmann/json.hpp>
+
 #include <csignal>
 #include <cmath>
 #include <fstream>
@@ -115,6 +117,22 @@ class PanelsE2e : public ::testing::Test {
     std::string out, err;
     const int rc = runCommand(kXvfb + command(script, name, file), &out, &err);
     EXPECT_EQ(rc, 0) << err;
+  }
+  // run() plus --dump-state: the editor's state at exit as JSON.
+  nlohmann::json runAndDump(const Script& script, const std::string& name) {
+    std::string out, err;
+    const std::string dump = dir_ + "/" + name + ".json";
+    const int rc = runCommand(kXvfb + command(script, name, "") + " --dump-state " + dump, &out, &err);
+    EXPECT_EQ(rc, 0) << err;
+    nlohmann::json j = nlohmann::json::parse(readFile(dump), nullptr, false);
+    EXPECT_TRUE(j.is_object()) << dump;
+    return j.is_object() ? j : nlohmann::json::object();
+  }
+  static glm::dquat dumpedRotation(const nlohmann::json& d, const std::string& joint) {
+    for (const nlohmann::json& j : d["joints"])
+      if (j["name"] == joint) return glm::dquat(j["rotation"][3], j["rotation"][0], j["rotation"][1], j["rotation"][2]);
+    ADD_FAILURE() << "no joint " << joint;
+    return glm::dquat(NAN, NAN, NAN, NAN);
   }
   Scene saved(const std::string& path) {
     Result<Scene> scene = loadKinemaFile(path);
@@ -251,6 +269,55 @@ TEST_F(PanelsE2e, OpenBvhAndGltfThroughTheFileMenu) {
     EXPECT_EQ(saved(dir_ + "/opened.kinema").skeleton.names, original->skeleton.names) << file;
     std::remove((dir_ + "/opened.kinema").c_str());
   }
+}
+
+TEST_F(PanelsE2e, OpenErrorsShowInThePopupAndTheEditorCarriesOn) {
+  writeFile(dir_ + "/broken.bvh", "HIERARCHY\nROOT Hips\n{\n  OFFSET 0 zero 0\n");
+  Script s;
+  s.key("O", "\"ctrl\"").wait(2).type(dir_ + "/missing.bvh").key("ENTER").wait(3);
+  s.key("ESCAPE").wait(2);  // closes the first error
+  s.key("O", "\"ctrl\"").wait(2).type(dir_ + "/broken.bvh").key("ENTER").wait(3);
+  const nlohmann::json d = runAndDump(s, "open_errors");
+  // The missing file's error was dismissed; the broken file's error waits in the popup,
+  // naming the file; the default character is still open and unchanged.
+  ASSERT_EQ(d["errors"].size(), 1u) << d["errors"];
+  const std::string error = d["errors"][0];
+  EXPECT_NE(error.find("broken.bvh"), std::string::npos) << error;
+  EXPECT_EQ(d["path"], "");
+  EXPECT_EQ(d["dirty"], false);
+  bool hasHips = false;
+  for (const nlohmann::json& j : d["joints"]) hasHips = hasHips || j["name"] == "Hips";
+  EXPECT_TRUE(hasHips);
+}
+
+TEST_F(PanelsE2e, NewAsksBeforeDiscardingUnsavedChanges) {
+  // Dirty: Ctrl+N opens "Discard unsaved changes?"; Esc cancels and the edit stays.
+  Script dirty;
+  dirty.select(kUpperArmL).euler(2, 40.0).key("N", "\"ctrl\"").wait(3);
+  run(dirty, "discard_question");  // the modal, for the eye
+  dirty.key("ESCAPE").wait(2);
+  const nlohmann::json kept = runAndDump(dirty, "discard_cancelled");
+  EXPECT_EQ(kept["dirty"], true);
+  EXPECT_ROTATION(dumpedRotation(kept, "UpperArm.L"), rotZ(40.0));
+  // Clean (just saved): Ctrl+N starts the new document at once.
+  Script clean;
+  clean.select(kUpperArmL).euler(2, 40.0).saveAs(dir_ + "/kept.kinema").key("N", "\"ctrl\"").wait(3);
+  const nlohmann::json fresh = runAndDump(clean, "new_after_save");
+  EXPECT_EQ(fresh["path"], "");
+  EXPECT_EQ(fresh["dirty"], false);
+  EXPECT_ROTATION(dumpedRotation(fresh, "UpperArm.L"), glm::dquat(1, 0, 0, 0));
+}
+
+TEST_F(PanelsE2e, SaveAsAsksBeforeReplacingAFile) {
+  writeFile(dir_ + "/taken.kinema", "keep me");
+  Script s;
+  s.select(kUpperArmL).euler(2, 40.0).saveAs(dir_ + "/taken.kinema");
+  run(s, "replace_question");  // "Replace file?" is showing
+  EXPECT_EQ(readFile(dir_ + "/taken.kinema"), "keep me");
+  s.key("ESCAPE").wait(2).key("ESCAPE").wait(2);  // no, then close the dialog
+  const nlohmann::json d = runAndDump(s, "replace_declined");
+  EXPECT_EQ(readFile(dir_ + "/taken.kinema"), "keep me");
+  EXPECT_EQ(d["dirty"], true);
 }
 
 TEST_F(PanelsE2e, KillDashNineThenRestartOffersTheRecoveryFile) {
