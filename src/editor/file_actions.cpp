@@ -13,7 +13,7 @@ namespace {
 // skeleton is reset.
 void replaceDocument(EditorState& state, Document doc) {
   state.doc = std::move(doc);
-  state.tool = ToolState{};
+  state.tool = ToolState{};  // a running tool refers to the old skeleton
   state.hoveredJoint = -1;
   state.hoveredIkTarget = -1;
   state.clip = 0;

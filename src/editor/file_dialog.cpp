@@ -110,7 +110,8 @@ bool drawFileDialog(FileDialogState& d, const std::vector<std::string>& recentFi
   ImGui::SameLine();
   ImGui::SetNextItemWidth(-1);
   if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-  bool accept = ImGui::InputText("##path", d.path, sizeof(d.path), ImGuiInputTextFlags_EnterReturnsTrue);
+  bool accept = ImGui::InputText("##path", d.path, sizeof(d.path),
+                                 ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
   if (!d.listingError.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", d.listingError.c_str());
 
   const float recentHeight = recentFiles.empty() || isSave(d.purpose) ? 0.0f : 96.0f;
@@ -143,7 +144,8 @@ bool drawFileDialog(FileDialogState& d, const std::vector<std::string>& recentFi
   }
   if (ImGui::Button(isSave(d.purpose) ? "Save" : "Open", ImVec2(120, 0))) accept = true;
   ImGui::SameLine();
-  if (ImGui::Button("Cancel", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+  const bool escape = d.confirmOverwrite.empty() && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
+  if (ImGui::Button("Cancel", ImVec2(120, 0)) || escape) {
     ImGui::CloseCurrentPopup();
     d.visible = false;
   }
@@ -174,7 +176,7 @@ bool drawFileDialog(FileDialogState& d, const std::vector<std::string>& recentFi
       ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
-    if (ImGui::Button("Cancel", ImVec2(120, 0))) {
+    if (ImGui::Button("Cancel", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
       d.confirmOverwrite.clear();
       ImGui::CloseCurrentPopup();
     }

@@ -125,7 +125,7 @@ void targetSettings(EditorState& state, int t) {
   // How the last solve went (Document::lastIkReports, also in the status bar).
   for (const IkTargetReport& report : doc.lastIkReports())
     if (report.target == t)
-      ImGui::TextDisabled("%s: %d iterations, error %.2e, %.2f ms", report.converged ? "reached" : "not reached",
+      ImGui::TextDisabled("%s: %d it, error %.1e, %.2f ms", report.converged ? "reached" : "missed",
                           report.iterations, report.error, report.milliseconds);
 }
 
@@ -170,6 +170,19 @@ void drawIkTargetsPanel(EditorState& state) {
     }
     if (targets.empty()) ImGui::TextDisabled("no targets: select a joint, then Add");
     ImGui::EndListBox();
+  }
+  // The document solves every target with one tolerance and iteration cap (not undo steps).
+  if (ImGui::TreeNode("Solver limits (all targets)")) {
+    ImGui::PushItemWidth(-110);
+    float tolerance = doc.ikSettings.tolerance;
+    if (ImGui::DragFloat("Tolerance", &tolerance, 1e-5f, 1e-6f, 1.0f, "%.6f", ImGuiSliderFlags_Logarithmic) &&
+        tolerance > 0.0f)
+      doc.ikSettings.tolerance = tolerance;
+    int iterations = doc.ikSettings.maxIterations;
+    if (ImGui::InputInt("Iterations", &iterations) && iterations >= 1 && iterations <= 100000)
+      doc.ikSettings.maxIterations = iterations;
+    ImGui::PopItemWidth();
+    ImGui::TreePop();
   }
   if (p.selectedIkTarget >= 0 && p.selectedIkTarget < static_cast<int>(targets.size())) {
     ImGui::Separator();

@@ -32,15 +32,25 @@ std::vector<OutlinerRow> outlinerRows(const Skeleton& skeleton, const std::strin
       if (keep[i] && skeleton.parents[i] >= 0) keep[skeleton.parents[i]] = 1;
     }
   }
-  // hidden[i]: some ancestor of i is collapsed (ignored while searching).
-  std::vector<char> hidden(n, 0);
+  // Depth-first order, so every joint sits under its parent even when the skeleton lists a
+  // parent's later children after other subtrees. An explicit stack: no recursion depth
+  // that a file controls.
+  std::vector<std::vector<int>> children(n);
+  std::vector<int> stack;
+  for (int i = n - 1; i >= 0; --i) {
+    if (skeleton.parents[i] >= 0) children[skeleton.parents[i]].push_back(i);
+    else stack.push_back(i);
+  }
   std::vector<OutlinerRow> rows;
-  for (int i = 0; i < n; ++i) {
-    const int p = skeleton.parents[i];
-    if (search.empty() && p >= 0)
-      hidden[i] = hidden[p] || (p < static_cast<int>(collapsed.size()) && collapsed[p]);
-    if (!keep[i] || hidden[i]) continue;
+  while (!stack.empty()) {
+    const int i = stack.back();
+    stack.pop_back();
+    if (!keep[i]) continue;
     rows.push_back({i, depth[i], hasChildren[i] != 0, search.empty() || matches[i] != 0});
+    // A collapsed joint hides its subtree, except while searching (matches stay reachable).
+    if (search.empty() && i < static_cast<int>(collapsed.size()) && collapsed[i]) continue;
+    // children[i] was filled from the highest index down: pushing it as is pops the lowest first.
+    for (int c : children[i]) stack.push_back(c);
   }
   return rows;
 }

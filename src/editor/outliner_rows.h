@@ -14,7 +14,8 @@ struct OutlinerRow {
   bool matches = false;  // the joint's own name matches the search (ancestors shown for context do not)
 };
 
-// The outliner's rows in skeleton order (parents before children, so one forward pass).
+// The outliner's rows in depth-first order (each joint right under its parent's subtree
+// line, siblings in skeleton order).
 // `search` keeps the joints whose names contain it (case-insensitive) plus their
 // ancestors; an empty search keeps everything. `collapsed` (indexed by joint, may be
 // shorter than the skeleton) hides a joint's descendants, except while searching, where

@@ -4,7 +4,9 @@
 // it is released after an edit, dropped when nothing changed).
 #include <imgui.h>
 
+#include <cctype>
 #include <cstdio>
+#include <string>
 
 #include "editor/editor_panels.h"
 #include "editor/panel_drag.h"
@@ -42,15 +44,18 @@ void rotationSection(EditorState& state, int joint) {
     } else {
       const glm::vec3 e = glm::degrees(quatToEuler(q, p.eulerOrder));
       degrees[0] = e.x, degrees[1] = e.y, degrees[2] = e.z;
+      for (float& d : degrees) d += 0.0f;  // -0 shows as 0
     }
-    const bool changed = ImGui::DragFloat3("Rotation", degrees, 0.5f, 0.0f, 0.0f, "%.2f deg");
+    const bool changed = ImGui::DragFloat3("Rotation", degrees, 0.5f, 0.0f, 0.0f, "%.2f");
     for (int k = 0; k < 3; ++k) p.heldEuler[k] = degrees[k];
     p.heldJoint = joint;
     const glm::vec3 radians = glm::radians(glm::vec3(degrees[0], degrees[1], degrees[2]));
     dragAsOneStep(
         state, changed, [&] { return beginRotateDrag(doc, joint); },
         [&] { return updateRotateDrag(doc, joint, eulerToQuat(radians, p.eulerOrder)); });
-    ImGui::TextDisabled("degrees about X, Y, Z; R = %s", p.eulerOrder == EulerOrder::XYZ ? "Rx*Ry*Rz" : toString(p.eulerOrder));
+    const std::string order = toString(p.eulerOrder);
+    ImGui::TextDisabled("degrees about X, Y, Z; R = R%c R%c R%c", std::tolower(order[0]), std::tolower(order[1]),
+                        std::tolower(order[2]));
   } else {
     // x, y, z, w as files write them; applied (normalised) when the field is left.
     float* typed = p.typedQuaternion;

@@ -80,12 +80,13 @@ void recoveryModal(EditorState& state) {
   ImGui::Text("Recover unsaved work from %s?", localTime(session.time).c_str());
   ImGui::TextDisabled("%s", session.originalPath.empty() ? "(a new document)" : session.originalPath.c_str());
   ImGui::TextDisabled("autosave: %s", session.recoveryPath.c_str());
-  if (ImGui::Button("Recover", ImVec2(110, 0))) {
+  ImGui::TextDisabled("Enter recovers, Esc discards");
+  if (ImGui::Button("Recover", ImVec2(110, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false)) {
     ImGui::CloseCurrentPopup();
     acceptRecovery(state);
   }
   ImGui::SameLine();
-  if (ImGui::Button("Discard", ImVec2(110, 0))) {
+  if (ImGui::Button("Discard", ImVec2(110, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
     ImGui::CloseCurrentPopup();
     declineRecovery(state);
   }
@@ -102,8 +103,11 @@ void errorPopup(EditorState& state) {
   ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", p.errors.front().c_str());
   ImGui::PopTextWrapPos();
   if (p.errors.size() > 1) ImGui::TextDisabled("(%d more)", static_cast<int>(p.errors.size() - 1));
-  if (ImGui::Button("OK", ImVec2(110, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter)) ||
-      ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+  // Keys count from the frame after it appears: the Enter that confirmed a file dialog must
+  // not also dismiss the error it caused.
+  const bool key = !ImGui::IsWindowAppearing() && (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) ||
+                                                   ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false));
+  if (ImGui::Button("OK", ImVec2(110, 0)) || key) {
     p.errors.erase(p.errors.begin());
     ImGui::CloseCurrentPopup();
   }

@@ -32,6 +32,8 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
   out["active"] = jointName(s, doc.selection.active());
   out["hovered"] = jointName(s, s.hoveredJoint);
   out["auto_ik"] = s.view.autoIk;
+  out["errors"] = s.panels.errors;  // waiting in the error popup, oldest first
+  out["status"] = s.statusMessage;
   const OrbitCamera& c = s.camera;
   out["camera"] = {{"azimuth", c.azimuthDeg},   {"elevation", c.elevationDeg}, {"distance", c.distance},
                    {"target", vec(c.target)},   {"fov_y", c.fovYDeg},          {"orthographic", c.orthographic},

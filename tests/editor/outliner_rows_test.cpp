@@ -58,6 +58,21 @@ TEST(OutlinerRows, CollapsedJointHidesItsDescendantsButNotWhileSearching) {
   EXPECT_EQ(joints(outlinerRows(tree(), "", std::vector<bool>{false, true})), (std::vector<int>{0, 1, 6}));
 }
 
+TEST(OutlinerRows, RowsAreDepthFirstWhateverTheSkeletonOrder) {
+  // Breadth-first joint order (as BVH-free files may list it): a, b, a1, b1, a2.
+  Skeleton s;
+  const int a = s.addJoint("a", -1, Transform{});
+  const int b = s.addJoint("b", -1, Transform{});
+  const int a1 = s.addJoint("a1", a, Transform{});
+  s.addJoint("b1", b, Transform{});
+  s.addJoint("a2", a1, Transform{});
+  EXPECT_EQ(joints(outlinerRows(s, "", {})), (std::vector<int>{0, 2, 4, 1, 3}));
+  std::vector<int> depths;
+  for (const OutlinerRow& r : outlinerRows(s, "", {})) depths.push_back(r.depth);
+  EXPECT_EQ(depths, (std::vector<int>{0, 1, 2, 0, 1}));
+  EXPECT_EQ(joints(outlinerRows(s, "2", {})), (std::vector<int>{0, 2, 4}));
+}
+
 TEST(OutlinerRows, ContainsIgnoringCase) {
   EXPECT_TRUE(containsIgnoringCase("LeftForeArm", "forearm"));
   EXPECT_TRUE(containsIgnoringCase("abc", ""));
