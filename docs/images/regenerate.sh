@@ -11,3 +11,11 @@ xvfb-run -a -s "-screen 0 1280x800x24" "$kinema" edit "$bvh" --frame-count 5 --s
 "$kinema" render "$bvh" --frame 240 --select LeftArm --size 960x540 --out "$root/docs/images/render_cmu_frame240.png"
 "$kinema" render ../shared/data/gltf/CesiumMan.glb --time 1 --bones xray --size 960x540 --out "$root/docs/images/skinned_cesium_man.png"
 "$kinema" render ../shared/data/gltf/Fox.glb --clip 2 --time 0.6 --camera 60,15 --size 960x540 --out "$root/docs/images/skinned_fox.png"
+# The editor's FK gizmo and IK drag, posed by replaying recorded input (kinema edit --script);
+# XDG folders point away from the user's recent files and recovery files.
+tmp=$(mktemp -d)
+for shot in editor_fk_gizmo editor_ik_drag; do
+  XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp xvfb-run -a -s "-screen 0 1280x800x24" "$kinema" edit \
+    --script "$root/docs/images/$shot.jsonl" --frame-count 40 --screenshot "$root/docs/images/$shot.png"
+done
+rm -rf "$tmp"

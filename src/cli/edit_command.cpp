@@ -1,42 +1,77 @@
 #include "cli/edit_command.h"
 
+#include <cmath>
+#include <cstdio>
 #include <iostream>
 
 #include "cli/command_line.h"
 #include "cli/render_command.h"
 #include "editor/editor_window.h"
+#include "editor/input_events.h"
 
 namespace kinema::cli {
 
 CLI::App* addEditCommand(CLI::App& app, EditOptions& o) {
   CLI::App* cmd = app.add_subcommand("edit", "Open the editor window on a file (default: the default character)");
-  cmd->add_option("file", o.file, "A .bvh or .kinema file");
-  CLI::Option* count = cmd->add_option("--frame-count", o.frameCount, "Draw N frames, then quit (for tests)");
-  cmd->add_option("--screenshot", o.screenshot, "With --frame-count: write the last frame to this PNG")->needs(count);
+  cmd->add_option("file", o.file, "A .bvh, .kinema, .gltf or .glb file");
+  cmd->add_option("--frame-count", o.frameCount, "Draw N frames, then quit (for tests)");
+  cmd->add_option("--screenshot", o.screenshot, "Write the last frame to this PNG (with --frame-count or --script)");
+  cmd->add_option("--script", o.script,
+                  "Replay input events from this file (JSON lines or array, see docs/cli.md) at 1/60 s per frame");
+  cmd->add_option("--dump-state", o.dumpState, "On exit, write the editor's state as JSON to this file");
+  cmd->add_option("--size", o.size, "Window size WxH in pixels (default 1280x720)");
+  cmd->add_flag("--report-frame-times", o.reportFrameTimes, "Print mean and median frame times (ms) on stderr at exit");
+  cmd->add_flag("--empty-frame", o.emptyFrame, "Draw only an empty ImGui frame (baseline for --report-frame-times)");
   return cmd;
 }
 
 int runEdit(const EditOptions& o) {
   if (o.frameCount < 0) return badInput("--frame-count must not be negative");
+  EditorWindowOptions options;
+  options.width = o.width;
+  options.height = o.height;
+  if (!o.size.empty()) {
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(o.size.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x') {
+      std::cerr << "kinema edit: --size takes WxH, e.g. 1280x720; see --help\n";
+      return kExitUsage;
+    }
+    if (w < 1 || h < 1 || w > 16384 || h > 16384)
+      return badInput("--size " + o.size + ": width and height must be whole numbers from 1 to 16384");
+    options.width = w;
+    options.height = h;
+  }
+  if (!o.screenshot.empty() && o.frameCount == 0 && o.script.empty())
+    return badInput("--screenshot needs --frame-count or --script (the frame to capture)");
+  if (!o.script.empty()) {
+    Result<std::vector<InputEvent>> script = loadInputScript(o.script);
+    if (!script) return badInput(script.error());
+    options.script = std::move(script.value());
+    options.replay = true;
+  }
   Result<Scene> loaded = loadSceneOrDefault(o.file);
   if (!loaded) return badInput(loaded.error());
   EditorState state;
-  state.scene = std::move(loaded.value());
-  EditorWindowOptions options;
+  state.doc = Document(std::move(loaded.value()), o.file);
   options.frameCount = o.frameCount;
   options.screenshotPath = o.screenshot;
-  options.width = o.width;
-  options.height = o.height;
+  options.dumpStatePath = o.dumpState;
+  options.reportFrameTimes = o.reportFrameTimes;
+  options.emptyFrame = o.emptyFrame;
   const EditorWindowResult result = runEditorWindow(state, options);
   if (!result.opened) return badInput("cannot open the editor window: " + result.error + " (kinema render works without one)");
   if (!result.error.empty()) return badInput(result.error);
+  if (o.reportFrameTimes)
+    std::fprintf(stderr, "frame times over %lld frames (first tenth left out): mean %.2f ms, median %.2f ms\n",
+                 result.frames, result.meanFrameMs, result.medianFrameMs);
   return kExitOk;
 }
 
 int runDefault() {
   if (displayAvailable()) {
     EditorState state;
-    state.scene = loadSceneOrDefault("").value();
+    state.doc = Document(loadSceneOrDefault("").value());
     const EditorWindowResult result = runEditorWindow(state, EditorWindowOptions{});
     if (result.opened) return result.error.empty() ? kExitOk : badInput(result.error);
     std::cerr << "kinema: cannot open the editor window (" << result.error << "); rendering instead\n";

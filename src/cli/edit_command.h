@@ -3,11 +3,17 @@
 
 namespace kinema::cli {
 
-// `kinema edit [FILE] [--frame-count N --screenshot PATH]`
+// `kinema edit [FILE] [--frame-count N] [--screenshot PATH] [--script FILE] [--dump-state FILE]
+//  [--size WxH] [--report-frame-times]`
 struct EditOptions {
   std::string file;
   long long frameCount = 0;
   std::string screenshot;
+  std::string script;
+  std::string dumpState;
+  std::string size;
+  bool reportFrameTimes = false;
+  bool emptyFrame = false;
   int width = 1280, height = 720;
 };
 

@@ -1,37 +1,106 @@
 #pragma once
+#include <string>
+#include <utility>
 #include <vector>
 
+#include "core/pose.h"
+#include "editor/document.h"
+#include "editor/panel_state.h"
 #include "io/scene.h"
 #include "render/camera.h"
 
 namespace kinema {
 
+// The modal tool the viewport is in (Blender pose mode). Only one runs at a time; input
+// goes to it until it is confirmed or cancelled.
+enum class ModalTool {
+  None,
+  Rotate,      // R: rotate the selection with the mouse
+  Grab,        // G: move the root joint
+  BoxSelect,   // left drag on empty space
+  IkDrag,      // dragging an IK target handle (or a joint with auto-IK)
+  GizmoDrag,   // dragging a ring of the rotate gizmo
+  Navigate,    // orbit / pan with the mouse
+};
+
+// An axis a modal tool is constrained to (X/Y/Z pressed during R, G or an IK drag).
+enum class AxisConstraint { None, X, Y, Z };
+
+const char* modalToolName(ModalTool tool);  // "none", "rotate", ... (for --dump-state)
+
+// What the running tool needs between frames. Cleared when the tool ends.
+struct ToolState {
+  ModalTool mode = ModalTool::None;
+  AxisConstraint axis = AxisConstraint::None;
+  bool localAxes = false;   // the constraint axis is the joint's own (press the axis key twice)
+  glm::vec2 startMouse{0}, mouse{0};  // window pixels, origin top left
+  int ring = -1;            // GizmoDrag: the GizmoPart (rotate_gizmo.h) as an int
+  int ikTarget = -1;        // IkDrag: the target's index in doc.ikTargets(); -1 = auto-IK
+  std::string typed;        // numbers typed during R (degrees)
+  glm::vec3 startPoint{0.0f};  // Grab / IkDrag: where the dragged point was at the start
+};
+
+// Display switches of the viewport (panels and menus toggle them).
+struct ViewOptions {
+  bool showGrid = true;
+  bool xrayBones = false;   // bones drawn over everything
+  bool showLimits = true;   // joint-limit cones and arcs of the selection
+  bool showGizmo = true;
+  bool localGizmo = false;  // the gizmo's rings turn with the joint (else world axes)
+  bool autoIk = false;      // dragging a joint moves it by IK up the chain
+  int autoIkChainLength = 2;
+};
+
+// Requests the panels raise; the window acts on them between frames (dialogs, files,
+// camera moves) and clears them.
+struct EditorRequests {
+  bool newFile = false, open = false, save = false, saveAs = false, exportFile = false, quit = false;
+  std::string path;          // open / save-as / export target chosen in a dialog
+  bool frameSelected = false, frameAll = false;
+  int viewPreset = 0;        // 0 none, 1 front, 3 side (right), 7 top; negative = the opposite
+  bool toggleOrtho = false;
+  bool undo = false, redo = false;
+  bool copyPose = false, pastePose = false, pasteFlipped = false;
+  bool clearRotation = false, resetPose = false;
+};
+
 // Everything the editor shows and edits, owned by the caller (no globals). Panels read and
-// write it; evaluateEditorPose() turns it into world transforms. Later editor features
-// (undo, gizmos, keyframing) add their state here.
+// write it; the window turns input into edits of it and evaluateEditorPose() into world
+// transforms.
 struct EditorState {
-  Scene scene;
+  Document doc;        // the scene being edited: pose, IK targets, selection, history, path, dirty
+  PanelState panels;   // the panels' own state: dialogs, buffers, clipboard, autosave (editor_panels.h)
+
+  // --- Playback (files with motion) ---
   int clip = 0;            // the clip the timeline plays, when the scene has clips
   double time = 0.0;       // seconds
   bool playing = false;
   bool loop = true;        // playback wraps at the clip's end (sampling itself always clamps)
-  int selectedJoint = -1;  // -1: nothing selected
-  OrbitCamera camera;
-  bool showGrid = true;
+  bool sampleClip = false; // the timeline moved: the next evaluate poses the document at `time`
 
-  // Derived each frame from the fields above.
-  Pose pose;
+  // --- Viewport ---
+  OrbitCamera camera;      // camera.orthographic: numpad 5
+  ViewOptions view;
+  ToolState tool;
+  int hoveredJoint = -1;   // under the mouse (drawn highlighted)
+  int hoveredIkTarget = -1;
+  EditorRequests requests;
+  std::string statusMessage;  // one line for the status bar (errors included)
+
+  // Derived each frame from the fields above: the document's pose, or the clip while it plays.
   std::vector<glm::mat4> world;
+  bool wasPlaying = false;  // playback stopped since the last evaluate: the document takes the frame
 
-  bool hasMotion() const { return clip >= 0 && clip < static_cast<int>(scene.clips.size()); }
+  bool hasMotion() const { return clip >= 0 && clip < static_cast<int>(doc.scene().clips.size()); }
   double duration() const;       // the clip's length in seconds, 0 without motion
   double frameTime() const;      // the clip's frame time, or 1/30 s
   long long frameCount() const;  // frames on the clip's grid, at least 1
 };
 
-// Samples the current clip at state.time into state.pose and runs FK into state.world.
+// state.world: the clip sampled at state.time while it plays (the document is not edited by
+// playback), else the document's pose. When the timeline moved (sampleClip), the document's
+// pose becomes that frame (one undo step).
 void evaluateEditorPose(EditorState& state);
 // Advances playback by dt seconds (wrapping or stopping at the end).
 void advancePlayback(EditorState& state, double dt);
-
 }  // namespace kinema

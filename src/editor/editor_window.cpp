@@ -5,11 +5,20 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdlib>
+#include <deque>
+#include <iostream>
+#include <numeric>
 
 #include "editor/editor_panels.h"
 #include "editor/imgui_backends.h"
+#include "editor/state_dump.h"
+#include "editor/viewport_overlay.h"
 #include "editor/viewport_controller.h"
+#include "editor/viewport_tools.h"
+#include "io/atomic_write.h"
 #include "io/image.h"
 #include "render/mesh_renderer.h"
 #include "render/skeleton_renderer.h"
@@ -39,29 +48,136 @@ GLFWwindow* createWindow(const EditorWindowOptions& o, const std::string& title,
   return glfwCreateWindow(o.width, o.height, title.c_str(), nullptr, nullptr);
 }
 
-void handleViewportInput(EditorState& state, const ViewportController& controller, const Bounds& bounds,
-                         glm::vec2 windowSize) {
-  const ImGuiIO& io = ImGui::GetIO();
-  const float aspect = windowSize.y > 0 ? windowSize.x / windowSize.y : 1.0f;
-  if (!io.WantCaptureMouse) {
-    const glm::vec2 delta(io.MouseDelta.x, io.MouseDelta.y);
-    const bool navigate = ImGui::IsMouseDown(ImGuiMouseButton_Middle) || (io.KeyAlt && ImGui::IsMouseDown(ImGuiMouseButton_Left));
-    if (navigate && (delta.x != 0 || delta.y != 0)) {
-      if (io.KeyShift) controller.pan(state.camera, delta, windowSize.y);
-      else controller.orbit(state.camera, delta);
-    }
-    if (io.MouseWheel != 0) controller.zoom(state.camera, io.MouseWheel);
-    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !io.KeyAlt) {
-      const glm::mat4 vp = state.camera.projection(aspect) * state.camera.view();
-      state.selectedJoint = pickJoint(state.world, vp, windowSize, glm::vec2(io.MousePos.x, io.MousePos.y), 12.0f);
-    }
+// Live GLFW callbacks only queue events; the frame loop hands them to the same handler as
+// replayed ones. The queue lives in the window's user pointer.
+struct LiveInput {
+  std::deque<InputEvent> queue;
+  bool ignore = false;  // --script replay: the real pointer and keyboard must not interfere
+};
+LiveInput* liveInput(GLFWwindow* w) { return static_cast<LiveInput*>(glfwGetWindowUserPointer(w)); }
+void onCursor(GLFWwindow* w, double x, double y) {
+  InputEvent e;
+  e.type = InputEventType::MouseMove;
+  e.x = static_cast<float>(x);
+  e.y = static_cast<float>(y);
+  if (!liveInput(w)->ignore) liveInput(w)->queue.push_back(e);
+}
+void onButton(GLFWwindow* w, int button, int action, int mods) {
+  InputEvent e;
+  e.type = action == GLFW_PRESS ? InputEventType::ButtonDown : InputEventType::ButtonUp;
+  e.button = button;
+  e.mods = mods;
+  double x = 0, y = 0;
+  glfwGetCursorPos(w, &x, &y);
+  e.x = static_cast<float>(x);
+  e.y = static_cast<float>(y);
+  if (!liveInput(w)->ignore) liveInput(w)->queue.push_back(e);
+}
+void onScroll(GLFWwindow* w, double dx, double dy) {
+  InputEvent e;
+  e.type = InputEventType::Scroll;
+  e.x = static_cast<float>(dx);
+  e.y = static_cast<float>(dy);
+  if (!liveInput(w)->ignore) liveInput(w)->queue.push_back(e);
+}
+void onKey(GLFWwindow* w, int key, int, int action, int mods) {
+  if (action == GLFW_REPEAT || key < 0) return;
+  InputEvent e;
+  e.type = action == GLFW_PRESS ? InputEventType::KeyDown : InputEventType::KeyUp;
+  e.key = key;
+  e.mods = mods;
+  if (!liveInput(w)->ignore) liveInput(w)->queue.push_back(e);
+}
+void onChar(GLFWwindow* w, unsigned int c) {
+  InputEvent e;
+  e.type = InputEventType::Text;
+  if (c < 0x80) {
+    e.text = std::string(1, static_cast<char>(c));
+  } else if (c < 0x800) {
+    e.text = {char(0xC0 | (c >> 6)), char(0x80 | (c & 0x3F))};
+  } else if (c < 0x10000) {
+    e.text = {char(0xE0 | (c >> 12)), char(0x80 | ((c >> 6) & 0x3F)), char(0x80 | (c & 0x3F))};
+  } else {
+    e.text = {char(0xF0 | (c >> 18)), char(0x80 | ((c >> 12) & 0x3F)), char(0x80 | ((c >> 6) & 0x3F)), char(0x80 | (c & 0x3F))};
   }
-  if (!io.WantCaptureKeyboard) {
-    // ImGui 1.86 indexes keys by the platform's codes (GLFW's here).
-    if (ImGui::IsKeyPressed(GLFW_KEY_HOME) || ImGui::IsKeyPressed(GLFW_KEY_F)) controller.frameAll(state.camera, bounds, aspect);
-    if (ImGui::IsKeyPressed(GLFW_KEY_SPACE) && state.hasMotion()) state.playing = !state.playing;
-    if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE)) state.selectedJoint = -1;
+  if (!liveInput(w)->ignore) liveInput(w)->queue.push_back(e);
+}
+
+const char* getClipboard(void* user) { return glfwGetClipboardString(static_cast<GLFWwindow*>(user)); }
+void setClipboard(void* user, const char* text) { glfwSetClipboardString(static_cast<GLFWwindow*>(user), text); }
+
+// ImGui 1.86 reads keys through io.KeyMap into io.KeysDown, indexed by GLFW key codes.
+void mapImGuiKeys(ImGuiIO& io) {
+  const std::pair<ImGuiKey, int> keys[] = {
+      {ImGuiKey_Tab, GLFW_KEY_TAB},       {ImGuiKey_LeftArrow, GLFW_KEY_LEFT},  {ImGuiKey_RightArrow, GLFW_KEY_RIGHT},
+      {ImGuiKey_UpArrow, GLFW_KEY_UP},    {ImGuiKey_DownArrow, GLFW_KEY_DOWN},  {ImGuiKey_PageUp, GLFW_KEY_PAGE_UP},
+      {ImGuiKey_PageDown, GLFW_KEY_PAGE_DOWN}, {ImGuiKey_Home, GLFW_KEY_HOME}, {ImGuiKey_End, GLFW_KEY_END},
+      {ImGuiKey_Insert, GLFW_KEY_INSERT}, {ImGuiKey_Delete, GLFW_KEY_DELETE},  {ImGuiKey_Backspace, GLFW_KEY_BACKSPACE},
+      {ImGuiKey_Space, GLFW_KEY_SPACE},   {ImGuiKey_Enter, GLFW_KEY_ENTER},    {ImGuiKey_Escape, GLFW_KEY_ESCAPE},
+      {ImGuiKey_KeyPadEnter, GLFW_KEY_KP_ENTER}, {ImGuiKey_A, GLFW_KEY_A}, {ImGuiKey_C, GLFW_KEY_C},
+      {ImGuiKey_V, GLFW_KEY_V}, {ImGuiKey_X, GLFW_KEY_X}, {ImGuiKey_Y, GLFW_KEY_Y}, {ImGuiKey_Z, GLFW_KEY_Z},
+  };
+  for (const auto& [imguiKey, glfwKey] : keys) io.KeyMap[imguiKey] = glfwKey;
+}
+
+// Feeds one event to ImGui's IO. Returns false (and changes nothing) when the event would
+// undo a change made earlier in this frame (a press and release of the same button): ImGui
+// 1.86 samples state once per frame, so such events wait for the next frame.
+struct FrameInputChanges {
+  bool button[5] = {};
+  std::vector<int> keys;
+};
+bool feedImGui(ImGuiIO& io, const InputEvent& e, FrameInputChanges& changed) {
+  switch (e.type) {
+    case InputEventType::MouseMove: io.MousePos = ImVec2(e.x, e.y); break;
+    case InputEventType::ButtonDown:
+    case InputEventType::ButtonUp:
+      if (e.button >= 0 && e.button < 5) {
+        if (changed.button[e.button]) return false;
+        changed.button[e.button] = true;
+        io.MouseDown[e.button] = e.type == InputEventType::ButtonDown;
+      }
+      break;
+    case InputEventType::Scroll:
+      io.MouseWheelH += e.x;
+      io.MouseWheel += e.y;
+      break;
+    case InputEventType::KeyDown:
+    case InputEventType::KeyUp:
+      if (e.key >= 0 && e.key < IM_ARRAYSIZE(io.KeysDown)) {
+        if (std::find(changed.keys.begin(), changed.keys.end(), e.key) != changed.keys.end()) return false;
+        changed.keys.push_back(e.key);
+        io.KeysDown[e.key] = e.type == InputEventType::KeyDown;
+      }
+      io.KeyCtrl = io.KeysDown[GLFW_KEY_LEFT_CONTROL] || io.KeysDown[GLFW_KEY_RIGHT_CONTROL] || (e.mods & kModCtrl);
+      io.KeyShift = io.KeysDown[GLFW_KEY_LEFT_SHIFT] || io.KeysDown[GLFW_KEY_RIGHT_SHIFT] || (e.mods & kModShift);
+      io.KeyAlt = io.KeysDown[GLFW_KEY_LEFT_ALT] || io.KeysDown[GLFW_KEY_RIGHT_ALT] || (e.mods & kModAlt);
+      io.KeySuper = io.KeysDown[GLFW_KEY_LEFT_SUPER] || io.KeysDown[GLFW_KEY_RIGHT_SUPER] || (e.mods & kModSuper);
+      break;
+    case InputEventType::Text: io.AddInputCharactersUTF8(e.text.c_str()); break;
   }
+  return true;
+}
+
+// The View menu's requests (the same actions as the viewport's keys).
+void actOnViewRequests(EditorState& state, float aspect) {
+  EditorRequests& r = state.requests;
+  if (r.frameAll) ViewportController().frameAll(state.camera, jointBounds(state.world), aspect);
+  if (r.frameSelected)
+    frameSelected(state.camera, state.world, state.doc.selection.joints(), aspect,
+                  0.1f * std::max(jointBounds(state.world).radius(), 1e-3f));
+  if (r.toggleOrtho) toggleOrthographic(state.camera);
+  switch (r.viewPreset) {
+    case 1: applyViewPreset(state.camera, ViewPreset::Front); break;
+    case -1: applyViewPreset(state.camera, ViewPreset::Back); break;
+    case 3: applyViewPreset(state.camera, ViewPreset::Right); break;
+    case -3: applyViewPreset(state.camera, ViewPreset::Left); break;
+    case 7: applyViewPreset(state.camera, ViewPreset::Top); break;
+    case -7: applyViewPreset(state.camera, ViewPreset::Bottom); break;
+    default: break;
+  }
+  r.frameAll = r.frameSelected = r.toggleOrtho = false;
+  r.viewPreset = 0;
 }
 
 }  // namespace
@@ -70,6 +186,10 @@ bool displayAvailable() {
   const char* x = std::getenv("DISPLAY");
   const char* wayland = std::getenv("WAYLAND_DISPLAY");
   return (x && *x) || (wayland && *wayland);
+}
+
+std::string editorWindowTitle(const EditorState& state) {
+  return "Kinema - " + documentTitle(state) + (state.doc.dirty() ? "*" : "");
 }
 
 EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions& o) {
@@ -83,7 +203,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     result.error = "cannot start GLFW: " + lastGlfwError();
     return result;
   }
-  const std::string title = "Kinema - " + state.scene.source;
+  std::string title = editorWindowTitle(state);
   GLFWwindow* window = createWindow(o, title, 4);
   if (!window) window = createWindow(o, title, 0);  // no multisampled visual: draw without MSAA
   if (!window) {
@@ -100,35 +220,55 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     return result;
   }
   result.opened = true;
-  glfwSwapInterval(1);
+  glfwSwapInterval(o.replay || o.reportFrameTimes ? 0 : 1);
+
+  LiveInput live;
+  live.ignore = o.replay;
+  glfwSetWindowUserPointer(window, &live);
+  glfwSetCursorPosCallback(window, onCursor);
+  glfwSetMouseButtonCallback(window, onButton);
+  glfwSetScrollCallback(window, onScroll);
+  glfwSetKeyCallback(window, onKey);
+  glfwSetCharCallback(window, onChar);
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
-  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini dropped in the user's folder
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // no imgui.ini dropped in the user's folder
+  io.BackendPlatformName = "kinema_input_events";
+  io.SetClipboardTextFn = setClipboard;
+  io.GetClipboardTextFn = getClipboard;
+  io.ClipboardUserData = window;
+  mapImGuiKeys(io);
   ImGui::StyleColorsDark();
   imguiBackendsInit(window);
 
+  std::vector<double> frameMs;
+  long long frame = 1;
   {
     SkeletonRenderer renderer;
     std::string error = renderer.init();
-    MeshRenderer meshes;  // the scene's meshes, uploaded once, skinned each frame on the GPU
+    // The document's meshes, skinned on the GPU each frame; uploaded again when a file is
+    // opened (edits never change meshes).
+    MeshRenderer meshes;
     if (error.empty()) error = meshes.init();
-    if (error.empty() && !state.scene.meshInstances.empty()) error = meshes.upload(state.scene);
-    const std::vector<char> skinJoints = skinJointMask(state.scene);
-    if (!error.empty()) result.error = error;
-    ViewportController controller;
-    evaluateEditorPose(state);
-    int fbw = 0, fbh = 0;
-    glfwGetFramebufferSize(window, &fbw, &fbh);
-    // How far the body reaches past the joints (a head above the neck joint), measured once at
-    // the first pose, so framing and the grid take in the mesh without reading it back each frame.
-    glm::vec3 meshReach(0.0f);
-    if (!meshes.empty()) {
-      MeshFrame first;
-      first.world = &state.world;
-      const Bounds body = meshes.deformedBounds(first), joints = jointBounds(state.world);
-      if (!body.empty && !joints.empty) meshReach = glm::max(glm::max(joints.min - body.min, body.max - joints.max), glm::vec3(0.0f));
-    }
+    std::vector<char> skinJoints;  // bones only between skin joints (skinJointMask)
+    glm::vec3 meshReach(0.0f);     // how far the body reaches past the joints (a head above the neck)
+    auto uploadMeshes = [&]() -> std::string {
+      const Scene& scene = state.doc.scene();
+      skinJoints = skinJointMask(scene);
+      meshReach = glm::vec3(0.0f);
+      const std::string failed = meshes.upload(scene);
+      if (!failed.empty() || meshes.empty()) return failed;
+      // Measured once per upload at the current pose, so framing and the grid take in the
+      // body without reading vertices back every frame.
+      MeshFrame now;
+      now.world = &state.world;
+      const Bounds body = meshes.deformedBounds(now), joints = jointBounds(state.world);
+      if (!body.empty && !joints.empty)
+        meshReach = glm::max(glm::max(joints.min - body.min, body.max - joints.max), glm::vec3(0.0f));
+      return {};
+    };
     auto viewBounds = [&state, &meshReach]() {
       Bounds b = jointBounds(state.world);
       if (!b.empty) {
@@ -137,54 +277,97 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       }
       return b;
     };
+    if (!error.empty()) result.error = error;
+    ViewportTools tools;
+    SkeletonDrawList list;  // last frame's drawing: picking casts rays against it
+    OverlayDrawList overlay;
+    evaluateEditorPose(state);
+    int fbw = 0, fbh = 0, ww = 0, wh = 0;
+    glfwGetFramebufferSize(window, &fbw, &fbh);
+    if (error.empty()) error = uploadMeshes();
     state.camera = defaultCamera(viewBounds(), fbh > 0 ? float(fbw) / float(fbh) : 1.0f);
+    size_t nextScripted = 0;
+    const long long lastScriptFrame = o.script.empty() ? 0 : o.script.back().frame;
     double previous = glfwGetTime();
-    for (long long frame = 1; error.empty() && !glfwWindowShouldClose(window); ++frame) {
+    for (; error.empty() && !state.panels.quitApproved; ++frame) {
+      const auto frameStart = std::chrono::steady_clock::now();
       glfwPollEvents();
+      if (glfwWindowShouldClose(window)) {
+        glfwSetWindowShouldClose(window, GLFW_FALSE);
+        requestQuit(state);  // asks first when there are unsaved changes
+      }
+      while (nextScripted < o.script.size() && o.script[nextScripted].frame <= frame)
+        live.queue.push_back(o.script[nextScripted++]);
       const double now = glfwGetTime();
-      advancePlayback(state, now - previous);
+      const double dt = o.replay ? 1.0 / 60.0 : now - previous;
       previous = now;
+      glfwGetWindowSize(window, &ww, &wh);
+      glfwGetFramebufferSize(window, &fbw, &fbh);
+      const ViewportView view = ViewportView::of(state.camera, glm::vec2(ww, wh));
+
+      // Input: ImGui gets every event; the viewport tools get those ImGui does not want
+      // (as of the previous frame, which is what the user saw).
+      FrameInputChanges changed;
+      const bool mouseCaptured = io.WantCaptureMouse, keyboardCaptured = io.WantCaptureKeyboard;
+      while (!live.queue.empty()) {
+        if (!feedImGui(io, live.queue.front(), changed)) break;
+        tools.handle(state, live.queue.front(), view, list, mouseCaptured, keyboardCaptured);
+        live.queue.pop_front();
+      }
+      advancePlayback(state, dt);
       evaluateEditorPose(state);
       const Bounds bounds = viewBounds();
 
       imguiBackendsNewFrame();
+      io.DisplaySize = ImVec2(float(ww), float(wh));
+      io.DisplayFramebufferScale = ImVec2(ww > 0 ? float(fbw) / ww : 1.0f, wh > 0 ? float(fbh) / wh : 1.0f);
+      io.DeltaTime = static_cast<float>(std::max(dt, 1e-4));
       ImGui::NewFrame();
-      int ww = 0, wh = 0;
-      glfwGetWindowSize(window, &ww, &wh);
-      handleViewportInput(state, controller, bounds, glm::vec2(ww, wh));
-      drawJointListPanel(state);
-      drawTimelinePanel(state);
-      drawViewportHelp(state, ImGui::GetIO().Framerate);
+      if (!o.emptyFrame) drawEditorPanels(state, io.Framerate);
       ImGui::Render();
+      evaluateEditorPose(state);  // the panels may have edited the document
+      actOnViewRequests(state, static_cast<float>(ww) / std::max(wh, 1));
 
-      glfwGetFramebufferSize(window, &fbw, &fbh);
-      SkeletonDrawList list;
-      SkeletonDrawJob job;
-      job.parents = &state.scene.skeleton.parents;
-      job.world = &state.world;
-      job.selectedJoint = state.selectedJoint;
-      job.shownJoints = &skinJoints;
-      job.run(list);
-      MeshDraw meshDraw;
-      meshDraw.renderer = &meshes;
-      meshDraw.frame.world = &state.world;
-      std::vector<std::vector<float>> morphWeights;  // animated blend shapes at the playhead
-      if (!meshes.empty()) morphWeights = sampleMorphWeights(state.scene, state.hasMotion() ? state.clip : -1, state.time);
-      meshDraw.frame.morphWeights = &morphWeights;
-      state.camera.fitClipPlanes(bounds.radius());
-      FrameDescription description;
-      description.skeleton = &list;
-      description.camera = state.camera;
-      description.width = fbw;
-      description.height = fbh;
-      description.sceneRadius = bounds.radius();
-      description.showGrid = state.showGrid;
-      description.meshes = meshes.empty() ? nullptr : &meshDraw;
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
-      renderer.draw(description);
+      if (o.emptyFrame) {
+        glViewport(0, 0, fbw, fbh);
+        glClearColor(0.235f, 0.235f, 0.235f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+      } else {
+        if (meshes.needsUpload(state.doc.scene())) {
+          const std::string failed = uploadMeshes();
+          if (!failed.empty()) state.statusMessage = failed;
+        }
+        SkeletonDrawJob job;
+        job.parents = &state.doc.skeleton().parents;
+        job.world = &state.world;
+        job.shownJoints = &skinJoints;
+        job.run(list);
+        MeshDraw meshDraw;
+        meshDraw.renderer = &meshes;
+        meshDraw.frame.world = &state.world;
+        std::vector<std::vector<float>> morphWeights;  // animated blend shapes at the playhead
+        if (!meshes.empty()) morphWeights = sampleMorphWeights(state.doc.scene(), state.hasMotion() ? state.clip : -1, state.time);
+        meshDraw.frame.morphWeights = &morphWeights;
+        colorSelection(state, list);
+        state.camera.fitClipPlanes(bounds.radius());
+        buildViewportOverlay(state, ViewportView::of(state.camera, glm::vec2(fbw, fbh)), tools, overlay);
+        FrameDescription description;
+        description.skeleton = &list;
+        description.overlay = &overlay;
+        description.camera = state.camera;
+        description.width = fbw;
+        description.height = fbh;
+        description.sceneRadius = bounds.radius();
+        description.showGrid = state.view.showGrid;
+        description.meshes = meshes.empty() ? nullptr : &meshDraw;
+        renderer.draw(description);
+      }
       imguiBackendsRenderDrawData(ImGui::GetDrawData());
 
-      const bool last = o.frameCount > 0 && frame >= o.frameCount;
+      const bool scriptDone = o.replay && o.frameCount <= 0 && nextScripted >= o.script.size() && live.queue.empty() &&
+                              frame >= lastScriptFrame + 2;
+      const bool last = (o.frameCount > 0 && frame >= o.frameCount) || scriptDone || state.panels.quitApproved;
       if (last && !o.screenshotPath.empty()) {
         // Read the back buffer before swapping: its contents are undefined afterwards.
         Image shot(fbw, fbh);
@@ -196,8 +379,29 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         result.error = savePng(o.screenshotPath, shot);
       }
       glfwSwapBuffers(window);
+      if (o.reportFrameTimes) {
+        glFinish();
+        frameMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count());
+      }
+      const std::string newTitle = editorWindowTitle(state);
+      if (newTitle != title) {
+        title = newTitle;
+        glfwSetWindowTitle(window, title.c_str());
+      }
       if (last) break;
     }
+    result.frames = frame;
+    if (!o.dumpStatePath.empty()) {
+      const std::string dumpError = writeFileAtomically(o.dumpStatePath, editorStateJson(state, ww, wh, frame));
+      if (result.error.empty()) result.error = dumpError;
+    }
+  }
+  if (!frameMs.empty()) {
+    // The first frames compile shaders and upload meshes: leave out the first tenth.
+    std::vector<double> t(frameMs.begin() + frameMs.size() / 10, frameMs.end());
+    result.meanFrameMs = std::accumulate(t.begin(), t.end(), 0.0) / t.size();
+    std::nth_element(t.begin(), t.begin() + t.size() / 2, t.end());
+    result.medianFrameMs = t[t.size() / 2];
   }
   imguiBackendsShutdown();
   ImGui::DestroyContext();

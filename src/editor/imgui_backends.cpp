@@ -2,21 +2,14 @@
 
 #include <imgui.h>
 
-#include "imgui_impl_glfw.h"
 #include "imgui_impl_opengl3.h"
 
 namespace kinema {
-void imguiBackendsInit(GLFWwindow* window) {
-  ImGui_ImplGlfw_InitForOpenGL(window, true);
-  ImGui_ImplOpenGL3_Init("#version 330 core");
-}
-void imguiBackendsNewFrame() {
-  ImGui_ImplOpenGL3_NewFrame();
-  ImGui_ImplGlfw_NewFrame();
-}
+// The platform side (mouse, keys, display size, time) is the editor's own input layer
+// (input_events.h, editor_window.cpp): ImGui's GLFW backend would read the live mouse
+// each frame and override replayed --script events.
+void imguiBackendsInit(GLFWwindow*) { ImGui_ImplOpenGL3_Init("#version 330 core"); }
+void imguiBackendsNewFrame() { ImGui_ImplOpenGL3_NewFrame(); }
 void imguiBackendsRenderDrawData(ImDrawData* data) { ImGui_ImplOpenGL3_RenderDrawData(data); }
-void imguiBackendsShutdown() {
-  ImGui_ImplOpenGL3_Shutdown();
-  ImGui_ImplGlfw_Shutdown();
-}
+void imguiBackendsShutdown() { ImGui_ImplOpenGL3_Shutdown(); }
 }  // namespace kinema

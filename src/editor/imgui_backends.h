@@ -1,5 +1,5 @@
 #pragma once
-// Dear ImGui's GLFW + OpenGL 3 backends (Debian's sources, compiled against glad), behind
+// Dear ImGui's OpenGL 3 backend (Debian's sources, compiled against glad), behind
 // four calls so the rest of the editor never includes backend headers.
 struct GLFWwindow;
 struct ImDrawData;

@@ -24,6 +24,7 @@ void drawTimelinePanel(EditorState& state) {
   if (ImGui::SliderInt("##frame", &frame, 0, static_cast<int>(last), "frame %d")) {
     state.time = frame * state.frameTime();
     state.playing = false;
+    state.sampleClip = true;
   }
   ImGui::SameLine();
   ImGui::Text("%.2f / %.2f s", state.time, state.duration());
@@ -37,7 +38,7 @@ void drawViewportHelp(const EditorState& state, float fps) {
   ImGui::Begin("##help", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
-  ImGui::Text("%s", state.scene.source.c_str());
+  ImGui::Text("%s", state.doc.scene().source.c_str());
   ImGui::TextDisabled("orbit: middle drag / Alt+left   pan: Shift+middle");
   ImGui::TextDisabled("zoom: wheel   frame all: Home / F   select: left click");
   ImGui::TextDisabled("%.0f fps", fps);

@@ -113,6 +113,7 @@ void MeshRenderer::release() {
   }
   primitives_.clear();
   primitivesOfMesh_.clear();
+  uploadKey_.clear();
   if (!textures_.empty()) glDeleteTextures(static_cast<GLsizei>(textures_.size()), textures_.data());
   textures_.clear();
   scene_ = nullptr;
@@ -189,10 +190,22 @@ std::string MeshRenderer::init() {
   return {};
 }
 
+std::vector<const void*> MeshRenderer::keyOf(const Scene& scene) {
+  // A scene replaced by another (moved or copied in) has new array buffers; sizes catch the rest.
+  return {&scene,
+          scene.meshes.data(), reinterpret_cast<const void*>(scene.meshes.size()),
+          scene.skins.data(), reinterpret_cast<const void*>(scene.skins.size()),
+          scene.meshInstances.data(), reinterpret_cast<const void*>(scene.meshInstances.size()),
+          scene.images.data(), reinterpret_cast<const void*>(scene.images.size())};
+}
+
+bool MeshRenderer::needsUpload(const Scene& scene) const { return keyOf(scene) != uploadKey_; }
+
 std::string MeshRenderer::upload(const Scene& scene) {
   release();
   warnings_.clear();
   scene_ = &scene;
+  uploadKey_ = keyOf(scene);
   primitivesOfMesh_.resize(scene.meshes.size());
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const Mesh& mesh = scene.meshes[m];
@@ -330,6 +343,7 @@ std::string MeshRenderer::upload(const Scene& scene) {
     const std::string error = scene.source + ": " + std::to_string(slots) + " skin joints in all, more than the " +
                               std::to_string(maxTexels / kJointTexels) + " this OpenGL driver can skin";
     release();
+    uploadKey_ = keyOf(scene);  // tried: not again every frame
     return error;
   }
   for (const GpuPrimitive& p : primitives_)
@@ -338,6 +352,7 @@ std::string MeshRenderer::upload(const Scene& scene) {
                                 std::to_string(p.primitive) + " has more morph target data than this OpenGL driver's " +
                                 std::to_string(maxTexels) + "-texel texture buffers hold";
       release();
+      uploadKey_ = keyOf(scene);
       return error;
     }
   const GLenum status = glGetError();

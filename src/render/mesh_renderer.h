@@ -44,6 +44,9 @@ class MeshRenderer {
   // again when its meshes or skins change (draws skip what no longer matches, never crash).
   std::string upload(const Scene& scene);
   bool empty() const { return primitives_.empty(); }
+  // True when `scene` is not the scene last uploaded (another object, or the same object
+  // given other meshes, skins or images since: a file opened into it).
+  bool needsUpload(const Scene& scene) const;
 
   // Draws every mesh instance into the bound framebuffer (depth test on, both faces lit).
   void draw(const MeshFrame& frame, const glm::mat4& viewProjection, const glm::mat4& view);
@@ -87,6 +90,9 @@ class MeshRenderer {
   std::vector<float> jointScratch_;
   std::vector<glm::mat4> skinScratch_;
   std::vector<std::string> warnings_;
+  // What upload() saw: the scene's address and its mesh, skin, instance and image arrays.
+  std::vector<const void*> uploadKey_;
+  static std::vector<const void*> keyOf(const Scene& scene);
 };
 
 // A FrameDescription's mesh pass: the renderer holding the uploaded scene and this frame's pose.

@@ -67,7 +67,8 @@ TEST(PickJoint, FindsTheNearestJointOnScreenWithinTheRadius) {
 
 TEST(EditorState, PlaybackWrapsWhenLoopingAndStopsOtherwise) {
   EditorState s;
-  s.scene.skeleton.addJoint("Root", -1, Transform{});
+  Scene scene;
+  scene.skeleton.addJoint("Root", -1, Transform{});
   Clip clip;
   Channel ch;
   ch.joint = 0;
@@ -76,7 +77,8 @@ TEST(EditorState, PlaybackWrapsWhenLoopingAndStopsOtherwise) {
   ch.values = {glm::vec4(0), glm::vec4(4, 0, 0, 0)};
   clip.channels.push_back(ch);
   clip.frameTime = 0.5;
-  s.scene.clips.push_back(clip);
+  scene.clips.push_back(clip);
+  s.doc = Document(scene);
   EXPECT_EQ(s.frameCount(), 5);
   s.playing = true;
   s.time = 1.5;
@@ -87,20 +89,46 @@ TEST(EditorState, PlaybackWrapsWhenLoopingAndStopsOtherwise) {
   EXPECT_NEAR(s.time, 2.0, 1e-12);
   EXPECT_FALSE(s.playing);
   s.time = 1.0;
+  s.sampleClip = true;  // the timeline moved while stopped: the document takes that frame
   evaluateEditorPose(s);
   EXPECT_VEC3_NEAR(glm::vec3(s.world[0][3]), glm::vec3(2, 0, 0), 1e-6f);
 }
 
+TEST(EditorPlayback, PausingHandsTheFrameToTheDocument) {
+  // A root moving 1 unit per second along X: after playing to t = 1.5 and pausing, the
+  // document's pose (what edits start from) is that frame, as one undo step.
+  Scene scene;
+  scene.skeleton.addJoint("Root", -1, Transform{});
+  Clip clip;
+  clip.channels.push_back(Channel{0, ChannelTarget::Translation, Interpolation::Linear, {0.0f, 4.0f},
+                                  {glm::vec4(0), glm::vec4(4, 0, 0, 0)}});
+  scene.clips.push_back(clip);
+  EditorState s;
+  s.doc = Document(scene);
+  s.playing = true;
+  evaluateEditorPose(s);
+  advancePlayback(s, 1.5);
+  evaluateEditorPose(s);
+  EXPECT_VEC3_NEAR(glm::vec3(s.world[0][3]), glm::vec3(1.5f, 0, 0), 1e-6f);
+  EXPECT_VEC3_NEAR(s.doc.pose().local[0].translation, glm::vec3(0.0f), 1e-6f);  // playback only shows
+  s.playing = false;
+  evaluateEditorPose(s);
+  EXPECT_VEC3_NEAR(s.doc.pose().local[0].translation, glm::vec3(1.5f, 0, 0), 1e-6f);
+  EXPECT_EQ(s.doc.historyPosition(), 1);
+}
+
 TEST(EditorPlayback, LoopsOverTheClipsPlaybackRange) {
   EditorState s;
-  s.scene.skeleton.addJoint("Root", -1, Transform{});
+  Scene scene;
+  scene.skeleton.addJoint("Root", -1, Transform{});
   Clip clip;
   clip.channels.push_back(Channel{0, ChannelTarget::Translation, Interpolation::Linear, {0.0f, 4.0f},
                                   {glm::vec4(0), glm::vec4(4, 0, 0, 0)}});
   clip.hasRange = true;  // play 1 s .. 3 s of a 4 s clip, as Blender's start/end frames do
   clip.rangeStart = 1.0f;
   clip.rangeEnd = 3.0f;
-  s.scene.clips.push_back(clip);
+  scene.clips.push_back(clip);
+  s.doc = Document(scene);
   s.playing = true;
   s.time = 0.0;
   advancePlayback(s, 0.25);

@@ -1,0 +1,37 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "core/result.h"
+
+namespace kinema {
+
+// One input event, as the window's GLFW callbacks report it or as a --script file replays
+// it. Both paths feed the same handler, so scripted tests exercise the real input code.
+enum class InputEventType { MouseMove, ButtonDown, ButtonUp, KeyDown, KeyUp, Scroll, Text };
+
+// Modifier bits, the same values as GLFW's GLFW_MOD_*.
+enum InputMods : int { kModShift = 1, kModCtrl = 2, kModAlt = 4, kModSuper = 8 };
+
+struct InputEvent {
+  long long frame = 0;  // the frame it is handled in (scripts); 0 for live events
+  InputEventType type = InputEventType::MouseMove;
+  float x = 0, y = 0;   // mouse position in window pixels (origin top left); scroll offsets
+  int button = 0;       // 0 left, 1 right, 2 middle (GLFW's numbering)
+  int key = -1;         // GLFW key code; see keyCodeFromName
+  int mods = 0;         // InputMods bits
+  std::string text;     // Text: UTF-8 characters typed
+};
+
+const char* toString(InputEventType type);  // "mouse_move", "button_down", ...
+// GLFW key names without the GLFW_KEY_ prefix ("R", "LEFT_SHIFT", "KP_1", "ESCAPE") <-> codes.
+int keyCodeFromName(const std::string& name);  // -1 when unknown
+std::string keyNameFromCode(int code);         // "" when unknown
+
+// Parses a script: a JSON array of events, or one JSON event object per line (blank lines
+// and lines starting with # or // are skipped). See docs/cli.md for the fields. Events come
+// back sorted by frame (stable). Errors name `source`, the event (and line) and the field.
+Result<std::vector<InputEvent>> parseInputScript(const std::string& text, const std::string& source);
+Result<std::vector<InputEvent>> loadInputScript(const std::string& path);
+
+}  // namespace kinema

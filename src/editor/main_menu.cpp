@@ -1,0 +1,194 @@
+// The main menu bar (Blender's header menus reduced to pose mode) and the Ctrl shortcuts of
+// its File and Edit items. Viewport keys (numpad views, F, Home, Alt+R, R/G) belong to the
+// window's input layer; the menu shows them and raises the same requests.
+#include <imgui.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include "editor/editor_panels.h"
+#include "editor/pose_edits.h"
+
+namespace kinema {
+
+namespace {
+
+void undo(EditorState& state) {
+  if (state.doc.dragging()) return;
+  if (state.doc.undo()) state.statusMessage = "Undo";
+}
+void redo(EditorState& state) {
+  if (state.doc.dragging()) return;
+  if (state.doc.redo()) state.statusMessage = "Redo";
+}
+
+void copySelection(EditorState& state) {
+  const std::vector<int>& joints = state.doc.selection.joints();
+  if (joints.empty()) {
+    showEditorError(state, "Copy Pose: select the joints to copy first");
+    return;
+  }
+  state.panels.clipboard = copyPose(state.doc, joints);
+  state.statusMessage = "Copied the pose of " + std::to_string(joints.size()) + " joint(s)";
+}
+
+void paste(EditorState& state, bool flipped) {
+  if (state.panels.clipboard.empty()) {
+    showEditorError(state, "Paste Pose: copy a pose first (Edit > Copy Pose)");
+    return;
+  }
+  showEditorError(state, pastePose(state.doc, state.panels.clipboard, flipped));
+}
+
+void clearRotation(EditorState& state) {
+  showEditorError(state, clearRotations(state.doc, state.doc.selection.joints()));
+}
+
+void addIkTargetToActive(EditorState& state) {
+  const int joint = state.doc.selection.active();
+  if (joint < 0) {
+    showEditorError(state, "Add IK Target: select the effector joint first");
+    return;
+  }
+  int index = -1;
+  const IkSolver solver = state.panels.ikChainLength == 2 ? IkSolver::TwoBone : IkSolver::JacobianDls;
+  if (const std::string error = addIkTargetAtEffector(state.doc, joint, state.panels.ikChainLength, solver, &index);
+      !error.empty()) {
+    showEditorError(state, error);
+    return;
+  }
+  state.panels.selectedIkTarget = index;
+}
+
+// The IK target the Pose menu acts on: the one selected in the IK panel, else the first on
+// the active joint.
+int currentIkTarget(const EditorState& state) {
+  const auto& targets = state.doc.ikTargets();
+  const int chosen = state.panels.selectedIkTarget;
+  if (chosen >= 0 && chosen < static_cast<int>(targets.size())) return chosen;
+  for (size_t i = 0; i < targets.size(); ++i)
+    if (targets[i].target.effector == state.doc.selection.active()) return static_cast<int>(i);
+  return -1;
+}
+
+void removeCurrentIkTarget(EditorState& state) {
+  const int t = currentIkTarget(state);
+  if (t < 0) return;
+  showEditorError(state, removeIkTarget(state.doc, t));
+  state.panels.selectedIkTarget = -1;
+}
+
+void togglePin(EditorState& state) {
+  const int t = currentIkTarget(state);
+  if (t < 0) return;
+  PoseIkTarget settings = state.doc.ikTargets()[t];
+  settings.pinned = !settings.pinned;
+  showEditorError(state, setIkTarget(state.doc, t, settings));
+}
+
+// Ctrl shortcuts of the File and Edit menus; not while a text field has the keyboard.
+void handleMenuShortcuts(EditorState& state) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (!io.WantTextInput && ImGui::IsKeyPressed(GLFW_KEY_F1, false)) state.panels.showHelp = !state.panels.showHelp;
+  if (io.WantTextInput || !io.KeyCtrl || io.KeyAlt || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) return;
+  const auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
+  const bool shift = io.KeyShift;
+  if (pressed(GLFW_KEY_N)) requestNewDocument(state);
+  else if (pressed(GLFW_KEY_O)) requestOpenDialog(state);
+  else if (pressed(GLFW_KEY_S)) shift ? requestSaveAs(state) : requestSave(state);
+  else if (pressed(GLFW_KEY_Q)) requestQuit(state);
+  else if (pressed(GLFW_KEY_Z)) shift ? redo(state) : undo(state);
+  else if (pressed(GLFW_KEY_Y)) redo(state);
+  else if (pressed(GLFW_KEY_C)) copySelection(state);
+  else if (pressed(GLFW_KEY_V)) paste(state, shift);
+}
+
+void viewItem(EditorState& state, const char* label, const char* shortcut, int preset) {
+  if (ImGui::MenuItem(label, shortcut)) state.requests.viewPreset = preset;
+}
+
+}  // namespace
+
+void drawMainMenuBar(EditorState& state) {
+  handleMenuShortcuts(state);
+  if (!ImGui::BeginMainMenuBar()) return;
+  Document& doc = state.doc;
+  PanelState& p = state.panels;
+  if (ImGui::BeginMenu("File")) {
+    if (ImGui::MenuItem("New", "Ctrl+N")) requestNewDocument(state);
+    if (ImGui::MenuItem("Open...", "Ctrl+O")) requestOpenDialog(state);
+    if (ImGui::BeginMenu("Open Recent", !p.recent.entries().empty())) {
+      for (const std::string& path : p.recent.entries())
+        if (ImGui::MenuItem(path.c_str())) requestOpenPath(state, path);
+      ImGui::EndMenu();
+    }
+    ImGui::Separator();
+    if (ImGui::MenuItem("Save", "Ctrl+S")) requestSave(state);
+    if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) requestSaveAs(state);
+    if (ImGui::BeginMenu("Export")) {
+      if (ImGui::MenuItem("glTF (.gltf)...")) requestExport(state, FileDialogPurpose::ExportGltf);
+      if (ImGui::MenuItem("GLB (.glb)...")) requestExport(state, FileDialogPurpose::ExportGlb);
+      if (ImGui::MenuItem("BVH (.bvh)...")) requestExport(state, FileDialogPurpose::ExportBvh);
+      ImGui::EndMenu();
+    }
+    ImGui::Separator();
+    if (ImGui::MenuItem("Quit", "Ctrl+Q")) requestQuit(state);
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Edit")) {
+    const bool idle = !doc.dragging();
+    if (ImGui::MenuItem("Undo", "Ctrl+Z", false, idle && doc.canUndo())) undo(state);
+    if (ImGui::MenuItem("Redo", "Ctrl+Shift+Z", false, idle && doc.canRedo())) redo(state);
+    ImGui::Separator();
+    const bool selected = !doc.selection.empty();
+    if (ImGui::MenuItem("Copy Pose", "Ctrl+C", false, selected)) copySelection(state);
+    if (ImGui::MenuItem("Paste Pose", "Ctrl+V", false, !p.clipboard.empty())) paste(state, false);
+    if (ImGui::MenuItem("Paste Flipped", "Ctrl+Shift+V", false, !p.clipboard.empty())) paste(state, true);
+    ImGui::Separator();
+    if (ImGui::MenuItem("Clear Rotation", "Alt+R", false, selected)) clearRotation(state);
+    if (ImGui::MenuItem("Reset to Rest Pose")) showEditorError(state, resetToRestPose(doc));
+    ImGui::Separator();
+    ImGui::MenuItem("X-Mirror", nullptr, &doc.xMirror);
+    ImGui::MenuItem("Auto IK", nullptr, &state.view.autoIk);
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("View")) {
+    viewItem(state, "Front", "Numpad 1", 1);
+    viewItem(state, "Back", "Ctrl+Numpad 1", -1);
+    viewItem(state, "Right", "Numpad 3", 3);
+    viewItem(state, "Left", "Ctrl+Numpad 3", -3);
+    viewItem(state, "Top", "Numpad 7", 7);
+    viewItem(state, "Bottom", "Ctrl+Numpad 7", -7);
+    ImGui::Separator();
+    if (ImGui::MenuItem("Perspective / Orthographic", "Numpad 5", state.camera.orthographic)) state.requests.toggleOrtho = true;
+    ImGui::Separator();
+    if (ImGui::MenuItem("Frame Selected", "F", false, !doc.selection.empty())) state.requests.frameSelected = true;
+    if (ImGui::MenuItem("Frame All", "Home")) state.requests.frameAll = true;
+    ImGui::Separator();
+    if (ImGui::MenuItem("Bones: Solid", nullptr, !state.view.xrayBones)) state.view.xrayBones = false;
+    if (ImGui::MenuItem("Bones: X-Ray", nullptr, state.view.xrayBones)) state.view.xrayBones = true;
+    ImGui::MenuItem("Show Limits", nullptr, &state.view.showLimits);
+    ImGui::MenuItem("Show Grid", nullptr, &state.view.showGrid);
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Pose")) {
+    if (ImGui::MenuItem("Add IK Target to Selected", nullptr, false, doc.selection.active() >= 0)) addIkTargetToActive(state);
+    const int t = currentIkTarget(state);
+    if (ImGui::MenuItem("Remove IK Target", nullptr, false, t >= 0)) removeCurrentIkTarget(state);
+    const bool pinned = t >= 0 && doc.ikTargets()[t].pinned;
+    if (ImGui::MenuItem("Pin IK Target", nullptr, pinned, t >= 0)) togglePin(state);
+    ImGui::SetNextItemWidth(80);
+    ImGui::SliderInt("Chain length", &p.ikChainLength, 1, 8);
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Help")) {
+    if (ImGui::MenuItem("Controls", "F1", p.showHelp)) p.showHelp = !p.showHelp;
+    ImGui::EndMenu();
+  }
+  // The file's name and a dirty marker at the right end of the bar.
+  const std::string name = documentTitle(state) + (doc.dirty() ? " *" : "");
+  ImGui::SameLine(ImGui::GetWindowWidth() - ImGui::CalcTextSize(name.c_str()).x - 12);
+  ImGui::TextDisabled("%s", name.c_str());
+  ImGui::EndMainMenuBar();
+}
+
+}  // namespace kinema

@@ -1,0 +1,42 @@
+#pragma once
+#include <imgui.h>
+
+namespace kinema {
+
+// The editor's fixed panel layout (pixels, origin top left): outliner and history on the
+// left, properties and IK targets on the right, the status bar along the bottom, the
+// viewport in between. Fixed so that the layout is the same in every session and scripted
+// tests can click into it.
+struct PanelRect {
+  float x, y, w, h;
+};
+
+constexpr float kMenuBarHeight = 19.0f;  // ImGui 1.86's default font and frame padding
+constexpr float kStatusBarHeight = 24.0f;
+constexpr float kLeftColumnWidth = 250.0f;
+constexpr float kRightColumnWidth = 310.0f;
+constexpr float kOutlinerIndent = 12.0f;
+constexpr ImGuiWindowFlags kPanelFlags =
+    ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
+
+inline float panelAreaHeight(ImVec2 display) { return display.y - kMenuBarHeight - kStatusBarHeight; }
+
+inline PanelRect outlinerRect(ImVec2 display) {
+  return {0.0f, kMenuBarHeight, kLeftColumnWidth, panelAreaHeight(display) * 0.62f};
+}
+inline PanelRect historyRect(ImVec2 display) {
+  const PanelRect o = outlinerRect(display);
+  return {0.0f, o.y + o.h, kLeftColumnWidth, panelAreaHeight(display) - o.h};
+}
+inline PanelRect propertiesRect(ImVec2 display) {
+  return {display.x - kRightColumnWidth, kMenuBarHeight, kRightColumnWidth, panelAreaHeight(display) * 0.55f};
+}
+inline PanelRect ikTargetsRect(ImVec2 display) {
+  const PanelRect pr = propertiesRect(display);
+  return {pr.x, pr.y + pr.h, kRightColumnWidth, panelAreaHeight(display) - pr.h};
+}
+inline PanelRect statusBarRect(ImVec2 display) {
+  return {0.0f, display.y - kStatusBarHeight, display.x, kStatusBarHeight};
+}
+
+}  // namespace kinema

@@ -1,0 +1,76 @@
+#include "editor/state_dump.h"
+
+#include <nlohmann/json.hpp>
+
+#include "editor/editor_window.h"
+#include "ik/ik_solver.h"
+
+namespace kinema {
+
+namespace {
+using json = nlohmann::json;
+json vec(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
+json jointName(const EditorState& s, int j) {
+  return j >= 0 && j < s.doc.skeleton().size() ? json(s.doc.skeleton().names[j]) : json(nullptr);
+}
+}  // namespace
+
+std::string editorStateJson(const EditorState& s, int windowWidth, int windowHeight, long long frames) {
+  json out;
+  const Document& doc = s.doc;
+  out["title"] = editorWindowTitle(s);
+  out["path"] = doc.path();
+  out["dirty"] = doc.dirty();
+  out["undo_depth"] = doc.historyPosition();
+  out["redo_depth"] = static_cast<int>(doc.historyLabels().size()) - doc.historyPosition();
+  out["frames"] = frames;
+  out["window"] = {{"width", windowWidth}, {"height", windowHeight}};
+  out["tool"] = modalToolName(s.tool.mode);
+  json selection = json::array();
+  for (int j : doc.selection.joints()) selection.push_back(jointName(s, j));
+  out["selection"] = selection;
+  out["active"] = jointName(s, doc.selection.active());
+  out["hovered"] = jointName(s, s.hoveredJoint);
+  out["auto_ik"] = s.view.autoIk;
+  out["errors"] = s.panels.errors;  // waiting in the error popup, oldest first
+  out["status"] = s.statusMessage;
+  const OrbitCamera& c = s.camera;
+  out["camera"] = {{"azimuth", c.azimuthDeg},   {"elevation", c.elevationDeg}, {"distance", c.distance},
+                   {"target", vec(c.target)},   {"fov_y", c.fovYDeg},          {"orthographic", c.orthographic},
+                   {"eye", vec(c.eye())}};
+  json joints = json::array();
+  for (int j = 0; j < doc.skeleton().size(); ++j) {
+    json e;
+    e["name"] = doc.skeleton().names[j];
+    e["parent"] = doc.skeleton().parents[j];
+    if (j < doc.pose().size()) {
+      const glm::quat& q = doc.pose().local[j].rotation;
+      e["rotation"] = json::array({q.x, q.y, q.z, q.w});
+      e["translation"] = vec(doc.pose().local[j].translation);
+    }
+    if (j < static_cast<int>(s.world.size())) e["world_position"] = vec(glm::vec3(s.world[j][3]));
+    joints.push_back(e);
+  }
+  out["joints"] = joints;
+  json targets = json::array();
+  for (size_t i = 0; i < doc.ikTargets().size(); ++i) {
+    const IkTarget& t = doc.ikTargets()[i].target;
+    const IkTarget resolved = doc.ikTargets()[i].resolved(doc.skeleton());
+    json e = {{"effector", jointName(s, t.effector)},
+              {"root", jointName(s, resolved.root)},
+              {"solver", toString(doc.ikTargets()[i].solver)},
+              {"position", vec(t.position)}};
+    for (const IkTargetReport& r : doc.lastIkReports())
+      if (r.target == static_cast<int>(i)) {
+        e["iterations"] = r.iterations;
+        e["error"] = r.error;
+        e["milliseconds"] = r.milliseconds;
+        e["converged"] = r.converged;
+      }
+    targets.push_back(e);
+  }
+  out["ik_targets"] = targets;
+  return out.dump(1) + "\n";
+}
+
+}  // namespace kinema

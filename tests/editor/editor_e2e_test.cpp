@@ -1,0 +1,400 @@
+// End-to-end tests of the editor window: the real `kinema edit` under xvfb-run with Mesa's
+// llvmpipe, driven by --script replay (and once by xdotool, through the X server), checked
+// in --dump-state. Expected values are derived by hand from the pixels the script moves:
+// the test projects joints itself (its own pinhole camera from the dumped eye/target/fov).
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "io/image.h"
+#include "test_support.h"
+
+namespace kinema::test {
+namespace {
+
+using json = nlohmann::json;
+
+const std::string kSoftware =
+    "LIBGL_ALWAYS_SOFTWARE=1 MESA_GL_VERSION_OVERRIDE=3.3 ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 ";
+const std::string kXvfb = "xvfb-run -a -s '-screen 0 1280x800x24' ";
+constexpr double kW = 1280, kH = 720;  // the editor's default window size
+
+std::string shotDir() {
+  const std::string dir = std::string(KINEMA_BUILD_DIR) + "/editor_e2e";
+  runCommand("mkdir -p '" + dir + "'");
+  return dir;
+}
+
+json readJson(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  json j = json::parse(s.str(), nullptr, false);
+  EXPECT_FALSE(j.is_discarded()) << path << " is not JSON: " << s.str().substr(0, 200);
+  return j;
+}
+
+glm::dvec3 vec3(const json& a) { return a.is_array() && a.size() == 3 ? glm::dvec3(a[0], a[1], a[2]) : glm::dvec3(NAN); }
+
+// A pinhole camera rebuilt from the dump: eye, target, vertical field of view, Y up.
+struct TestCamera {
+  glm::dvec3 eye, target;
+  double fovY = 0.6;
+  glm::dvec3 f, r, u;
+  explicit TestCamera(const json& c) {
+    eye = vec3(c["eye"]);
+    target = vec3(c["target"]);
+    fovY = double(c["fov_y"]) * M_PI / 180.0;
+    f = glm::normalize(target - eye);
+    r = glm::normalize(glm::cross(f, glm::dvec3(0, 1, 0)));
+    u = glm::cross(r, f);
+  }
+  double depth(glm::dvec3 p) const { return glm::dot(p - eye, f); }
+  glm::dvec2 pixel(glm::dvec3 p) const {
+    const glm::dvec3 d = p - eye;
+    const double t = std::tan(fovY / 2), z = glm::dot(d, f);
+    const double nx = glm::dot(d, r) / (z * t * kW / kH), ny = glm::dot(d, u) / (z * t);
+    return {(nx + 1) / 2 * kW, (1 - ny) / 2 * kH};
+  }
+  // World units per pixel on the plane facing the camera at p's depth.
+  double unitsPerPixel(glm::dvec3 p) const { return 2 * depth(p) * std::tan(fovY / 2) / kH; }
+};
+
+// Events one per frame from frame 3 (frames 1-2 set the front view and frame everything).
+class Script {
+ public:
+  Script() { lines_ = "{\"frame\":1,\"type\":\"key\",\"key\":\"KP_1\"}\n{\"frame\":2,\"type\":\"key\",\"key\":\"HOME\"}\n"; }
+  Script& move(glm::dvec2 p) { return add("\"type\":\"mouse_move\",\"x\":" + num(p.x) + ",\"y\":" + num(p.y)); }
+  Script& down(const char* button = "left") { return add(std::string("\"type\":\"button_down\",\"button\":\"") + button + "\""); }
+  Script& up(const char* button = "left") { return add(std::string("\"type\":\"button_up\",\"button\":\"") + button + "\""); }
+  Script& click(glm::dvec2 p) { return move(p).down().up(); }
+  Script& key(const char* name) { return add(std::string("\"type\":\"key\",\"key\":\"") + name + "\""); }
+  Script& keyDown(const char* name) { return add(std::string("\"type\":\"key_down\",\"key\":\"") + name + "\""); }
+  Script& keyUp(const char* name) { return add(std::string("\"type\":\"key_up\",\"key\":\"") + name + "\""); }
+  Script& scroll(double y) { return add("\"type\":\"scroll\",\"y\":" + num(y)); }
+  // Mouse path in `steps` straight moves from the current position `a` to `b`.
+  Script& path(glm::dvec2 a, glm::dvec2 b, int steps = 6) {
+    for (int i = 1; i <= steps; ++i) move(a + (b - a) * (double(i) / steps));
+    return *this;
+  }
+  const std::string& text() const { return lines_; }
+
+ private:
+  static std::string num(double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.3f", v);
+    return b;
+  }
+  Script& add(const std::string& body) {
+    lines_ += "{\"frame\":" + std::to_string(frame_++) + "," + body + "}\n";
+    return *this;
+  }
+  std::string lines_;
+  long long frame_ = 3;
+};
+
+class EditorE2e : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    if (runCommand("command -v xvfb-run") != 0) return;
+    // The front view framed on the default character: the camera every script starts from.
+    const std::string dir = makeTempDir();
+    json d = runScript(dir, Script(), "front");
+    if (d.is_object()) front_ = d;
+    runCommand("rm -rf '" + dir + "'");
+  }
+  void SetUp() override {
+    if (runCommand("command -v xvfb-run") != 0) GTEST_SKIP() << "SKIPPED: xvfb-run is not installed";
+    ASSERT_TRUE(front_.is_object()) << "the front-view run failed";
+    dir_ = makeTempDir();
+  }
+  void TearDown() override {
+    if (!dir_.empty()) runCommand("rm -rf '" + dir_ + "'");
+  }
+
+  // Runs the script on the default character; the last frame goes to the build dir as
+  // editor_e2e/NAME.png. Returns the dumped state.
+  static json runScript(const std::string& dir, const Script& script, const std::string& name) {
+    const std::string scriptPath = dir + "/" + name + ".jsonl", dump = dir + "/" + name + ".json";
+    std::ofstream(scriptPath) << script.text();
+    std::string out, err;
+    // Recent files and recovery files go to the test's folder, not the user's.
+    const std::string xdg = "XDG_STATE_HOME=" + dir + " XDG_CONFIG_HOME=" + dir + " ";
+    const int rc = runCommand(kXvfb + "env " + xdg + kSoftware + KINEMA_BINARY + " edit --script " + scriptPath +
+                                  " --dump-state " + dump + " --screenshot " + shotDir() + "/" + name + ".png",
+                              &out, &err);
+    EXPECT_EQ(rc, 0) << err;
+    return rc == 0 ? readJson(dump) : json();
+  }
+  json run(const Script& script, const std::string& name) { return runScript(dir_, script, name); }
+
+  static glm::dvec3 joint(const json& d, const std::string& name, const char* field = "world_position") {
+    for (const json& j : d["joints"])
+      if (j["name"] == name) return vec3(j[field]);
+    ADD_FAILURE() << "no joint " << name;
+    return glm::dvec3(NAN);
+  }
+  static glm::dquat rotation(const json& d, const std::string& name) {
+    for (const json& j : d["joints"])
+      if (j["name"] == name) return glm::dquat(j["rotation"][3], j["rotation"][0], j["rotation"][1], j["rotation"][2]);
+    return glm::dquat(NAN, NAN, NAN, NAN);
+  }
+  static std::vector<std::string> selection(const json& d) { return d["selection"].get<std::vector<std::string>>(); }
+  TestCamera camera() const { return TestCamera(front_["camera"]); }
+  glm::dvec2 pixelOf(const std::string& name) const { return camera().pixel(joint(front_, name)); }
+  glm::dvec2 midpoint(const std::string& a, const std::string& b) const { return (pixelOf(a) + pixelOf(b)) * 0.5; }
+
+  static inline json front_;
+  std::string dir_;
+};
+
+void expectNear(glm::dvec3 a, glm::dvec3 b, double tol, const std::string& what) {
+  EXPECT_LE(glm::length(a - b), tol) << what << ": (" << a.x << ", " << a.y << ", " << a.z << ") vs (" << b.x << ", "
+                                     << b.y << ", " << b.z << ")";
+}
+
+TEST_F(EditorE2e, FrontViewFramesTheCharacter) {
+  // Numpad 1 looks from +Z; the T-posed arms span x = -0.89..0.89 in the middle of the view.
+  EXPECT_NEAR(double(front_["camera"]["azimuth"]), 0.0, 1e-6);
+  EXPECT_NEAR(double(front_["camera"]["elevation"]), 0.0, 1e-6);
+  const glm::dvec2 l = pixelOf("Fingertip.L"), r = pixelOf("Fingertip.R");
+  EXPECT_GT(l.x, kW / 2 + 100);
+  EXPECT_LT(r.x, kW / 2 - 100);
+  EXPECT_NEAR(l.y, r.y, 0.5);
+}
+
+TEST_F(EditorE2e, ClickSelectsTheHandAndShiftClickAdds) {
+  // The hand's bone runs from Hand.L to Fingertip.L: a click on its middle selects the hand.
+  json d = run(Script().click(midpoint("Hand.L", "Fingertip.L")), "click_select_hand");
+  EXPECT_EQ(selection(d), std::vector<std::string>{"Hand.L"});
+  EXPECT_EQ(d["active"], "Hand.L");
+  d = run(Script()
+              .click(midpoint("Hand.L", "Fingertip.L"))
+              .keyDown("LEFT_SHIFT")
+              .click(pixelOf("LowerArm.R"))
+              .keyUp("LEFT_SHIFT"),
+          "shift_click");
+  EXPECT_EQ(selection(d), (std::vector<std::string>{"Hand.L", "LowerArm.R"}));
+  // A click on empty space (well below the arm, beside the legs) clears the selection.
+  const glm::dvec2 empty = pixelOf("Hand.L") + glm::dvec2(0, 120);
+  d = run(Script().click(midpoint("Hand.L", "Fingertip.L")).click(empty), "click_empty");
+  EXPECT_TRUE(selection(d).empty());
+}
+
+TEST_F(EditorE2e, ScriptedClicksReachThePanelsAndNotTheViewport) {
+  // The outliner (fixed layout, left column) lists Head on its sixth row: a click there
+  // selects it through ImGui. Then a drag that starts on the History panel (empty there)
+  // and ends in the viewport past the left hand: had the viewport seen the press, it would
+  // have box-selected most of the skeleton.
+  const glm::dvec2 panel(120, 600), past = pixelOf("Fingertip.L") + glm::dvec2(20, 20);
+  json d = run(Script().click({104, 161}).move(panel).down().path(panel, past).up(), "click_outliner");
+  EXPECT_EQ(selection(d), std::vector<std::string>{"Head"});
+  EXPECT_EQ(d["title"], "Kinema - untitled");
+}
+
+TEST_F(EditorE2e, HoverHighlightsTheJointUnderTheMouse) {
+  json d = run(Script().move(pixelOf("Head")), "hover");
+  EXPECT_EQ(d["hovered"], "Head");
+  EXPECT_TRUE(selection(d).empty());
+}
+
+TEST_F(EditorE2e, BoxSelectTakesTheJointsInsideTheBox) {
+  const glm::dvec2 a = pixelOf("LowerArm.L") + glm::dvec2(-15, -25), b = pixelOf("Fingertip.L") + glm::dvec2(15, 25);
+  json d = run(Script().move(a).down().path(a, b).up(), "box_select");
+  EXPECT_EQ(selection(d), (std::vector<std::string>{"LowerArm.L", "Hand.L", "Fingertip.L"}));
+}
+
+TEST_F(EditorE2e, RWithTheMouseRotatesTheForearmByTheAngleSwept) {
+  // Mouse from 100 px right of the elbow to 100 px above it: a quarter turn counter-clockwise
+  // on screen, i.e. +90 degrees about the line from the elbow to the eye (it projects onto
+  // the elbow's pixel, so the bone follows the cursor). Rodrigues with cos = 0, sin = 1 takes
+  // the forearm f = (0.26, 0, 0) to (u.f) u + u x f.
+  const glm::dvec2 p = pixelOf("LowerArm.L");
+  Script s;
+  s.click(midpoint("LowerArm.L", "Hand.L")).move(p + glm::dvec2(100, 0)).key("R");
+  for (int k = 1; k <= 9; ++k) s.move(p + 100.0 * glm::dvec2(std::cos(k * M_PI / 18), -std::sin(k * M_PI / 18)));
+  s.down().up();
+  json d = run(s, "rotate_r_mouse");
+  const glm::dvec3 elbow = joint(front_, "LowerArm.L");
+  const glm::dvec3 u = glm::normalize(camera().eye - elbow), f(0.26, 0, 0);
+  expectNear(joint(d, "Hand.L"), elbow + glm::dot(u, f) * u + glm::cross(u, f), 2e-3, "Hand.L after R + 90 degrees");
+  expectNear(joint(d, "LowerArm.L"), elbow, 1e-5, "the elbow stays");
+  EXPECT_EQ(int(d["undo_depth"]), 1);
+  EXPECT_TRUE(bool(d["dirty"]));
+  EXPECT_EQ(d["title"], "Kinema - untitled*");  // the dirty marker
+}
+
+TEST_F(EditorE2e, RThenAxisKeysConstrainAndTypedDegreesAreExact) {
+  // R Z 45 Enter: 45 degrees about world Z.
+  json d = run(Script().click(midpoint("LowerArm.L", "Hand.L")).key("R").key("Z").key("4").key("5").key("ENTER"),
+               "rotate_r_z45");
+  const glm::dvec3 elbow = joint(front_, "LowerArm.L");
+  const double c = std::cos(M_PI / 4), s = std::sin(M_PI / 4);
+  expectNear(joint(d, "Hand.L"), elbow + 0.26 * glm::dvec3(c, s, 0), 1e-4, "R Z 45");
+  // R X 90: the forearm turns about its own length (X): the hand stays, the local rotation
+  // is 90 degrees about X = (sin 45, 0, 0, cos 45).
+  d = run(Script().click(midpoint("LowerArm.L", "Hand.L")).key("R").key("X").key("9").key("0").key("ENTER"),
+          "rotate_r_x90");
+  expectNear(joint(d, "Hand.L"), joint(front_, "Hand.L"), 1e-4, "R X 90");
+  const glm::dquat q = rotation(d, "LowerArm.L");
+  EXPECT_NEAR(std::abs(q.x), s, 1e-4);
+  EXPECT_NEAR(std::abs(q.w), c, 1e-4);
+  EXPECT_NEAR(q.y, 0, 1e-5);
+  // Esc cancels: nothing changes, nothing to undo.
+  d = run(Script().click(midpoint("LowerArm.L", "Hand.L")).key("R").key("9").key("0").key("ESCAPE"), "rotate_cancel");
+  expectNear(joint(d, "Hand.L"), joint(front_, "Hand.L"), 1e-6, "cancelled");
+  EXPECT_EQ(int(d["undo_depth"]), 0);
+}
+
+TEST_F(EditorE2e, GizmoRingDragRotatesAboutItsAxis) {
+  // In the front view the Z ring (radius 80 px, RotateGizmo's default) is a circle around
+  // the joint; X and Y are edge-on lines. Press on the Z ring at 240 degrees (its lower
+  // left half faces the eye, which is below and left of the elbow; only that half grabs),
+  // sweep to 330: +90 degrees about Z, the forearm points up.
+  const glm::dvec2 p = pixelOf("LowerArm.L");
+  Script s;
+  s.click(midpoint("LowerArm.L", "Hand.L"));
+  const double a0 = 240 * M_PI / 180;
+  s.move(p + 80.0 * glm::dvec2(std::cos(a0), -std::sin(a0))).down();
+  for (int k = 1; k <= 8; ++k) {
+    const double a = a0 + k * M_PI / 16;
+    s.move(p + 80.0 * glm::dvec2(std::cos(a), -std::sin(a)));
+  }
+  s.up();
+  json d = run(s, "gizmo_ring_drag");
+  const glm::dvec3 elbow = joint(front_, "LowerArm.L");
+  expectNear(joint(d, "Hand.L"), elbow + glm::dvec3(0, 0.26, 0), 2e-3, "Hand.L after the Z ring's quarter turn");
+  EXPECT_EQ(int(d["undo_depth"]), 1);
+}
+
+TEST_F(EditorE2e, GMovesTheRootInTheViewPlaneAndAlongAnAxis) {
+  // 100 px right at the hips' depth is 100 * (2 depth tan(fov/2) / 720) world units along +X.
+  const glm::dvec3 hips = joint(front_, "Hips");
+  const double upp = camera().unitsPerPixel(hips);
+  const glm::dvec2 m = pixelOf("Hips") + glm::dvec2(250, 60);
+  json d = run(Script().move(m).key("G").path(m, m + glm::dvec2(100, 0)).down().up(), "grab_root");
+  expectNear(joint(d, "Hips"), hips + glm::dvec3(100 * upp, 0, 0), 1e-4, "G 100 px right");
+  expectNear(joint(d, "Hand.L") - joint(d, "Hips"), joint(front_, "Hand.L") - hips, 1e-5, "the body moves along");
+  // G Y from below the hips: along the vertical line through them, which lies in the view
+  // plane at their depth, so 50 px up is 50 * upp.
+  const glm::dvec2 below = pixelOf("Hips") + glm::dvec2(0, 60);
+  d = run(Script().move(below).key("G").key("Y").path(below, below + glm::dvec2(0, -50)).key("ENTER"), "grab_root_y");
+  expectNear(joint(d, "Hips"), hips + glm::dvec3(0, 50 * upp, 0), 1e-4, "G Y 50 px up");
+}
+
+TEST_F(EditorE2e, AltRClearsTheRotation) {
+  json d = run(Script()
+                   .click(midpoint("LowerArm.L", "Hand.L"))
+                   .key("R").key("Z").key("3").key("0").key("ENTER")
+                   .keyDown("LEFT_ALT").key("R").keyUp("LEFT_ALT"),
+               "alt_r");
+  const glm::dquat q = rotation(d, "LowerArm.L");
+  EXPECT_NEAR(std::abs(q.w), 1.0, 1e-6);
+  expectNear(joint(d, "Hand.L"), joint(front_, "Hand.L"), 1e-5, "cleared");
+  EXPECT_EQ(int(d["undo_depth"]), 2);
+}
+
+TEST_F(EditorE2e, DraggingTheHandsIkTargetMovesTheHandThereAndKeepsBoneLengths) {
+  // Shift+I adds a target on the selected hand (two bones up: root UpperArm.L). Dragging its
+  // handle 60 px left and 80 px down at the hand's depth puts it at hand + upp * (-60, -80, 0).
+  const glm::dvec3 hand = joint(front_, "Hand.L");
+  const double upp = camera().unitsPerPixel(hand);
+  const glm::dvec2 h = pixelOf("Hand.L");
+  json d = run(Script()
+                   .click(midpoint("Hand.L", "Fingertip.L"))
+                   .keyDown("LEFT_SHIFT").key("I").keyUp("LEFT_SHIFT")
+                   .move(h).down().path(h, h + glm::dvec2(-60, 80), 10).up(),
+               "ik_target_drag");
+  const glm::dvec3 expected = hand + upp * glm::dvec3(-60, -80, 0);
+  ASSERT_EQ(d["ik_targets"].size(), 1u);
+  EXPECT_EQ(d["ik_targets"][0]["effector"], "Hand.L");
+  expectNear(vec3(d["ik_targets"][0]["position"]), expected, 1e-4, "the dropped target");
+  expectNear(joint(d, "Hand.L"), expected, 2e-3, "the hand reaches the target");
+  EXPECT_LT(double(d["ik_targets"][0]["error"]), 2e-3);
+  expectNear(joint(d, "UpperArm.L"), joint(front_, "UpperArm.L"), 1e-5, "the IK root stays");
+  EXPECT_EQ(d["ik_targets"][0]["solver"], "two-bone");
+  for (auto [a, b] : {std::pair{"UpperArm.L", "LowerArm.L"}, {"LowerArm.L", "Hand.L"}, {"Hand.L", "Fingertip.L"}})
+    EXPECT_NEAR(glm::length(joint(d, b) - joint(d, a)), glm::length(joint(front_, b) - joint(front_, a)), 1e-4)
+        << a << "-" << b;
+  EXPECT_EQ(int(d["undo_depth"]), 2);  // adding the target, then the drag
+  // Esc during the drag puts the target and the arm back.
+  d = run(Script()
+              .click(midpoint("Hand.L", "Fingertip.L"))
+              .keyDown("LEFT_SHIFT").key("I").keyUp("LEFT_SHIFT")
+              .move(h).down().path(h, h + glm::dvec2(-60, 80), 4).key("ESCAPE").up(),
+          "ik_target_cancel");
+  expectNear(vec3(d["ik_targets"][0]["position"]), hand, 1e-5, "cancelled target");
+  expectNear(joint(d, "Hand.L"), hand, 1e-5, "cancelled hand");
+}
+
+TEST_F(EditorE2e, AutoIkDragsAJointDirectly) {
+  const glm::dvec3 hand = joint(front_, "Hand.L");
+  const double upp = camera().unitsPerPixel(hand);
+  const glm::dvec2 h = pixelOf("Hand.L");
+  json d = run(Script()
+                   .keyDown("LEFT_CONTROL").key("I").keyUp("LEFT_CONTROL")
+                   .move(h).down().path(h, h + glm::dvec2(-50, 70), 8).up(),
+               "auto_ik");
+  EXPECT_TRUE(bool(d["auto_ik"]));
+  expectNear(joint(d, "Hand.L"), hand + upp * glm::dvec3(-50, -70, 0), 2e-3, "auto-IK hand");
+  expectNear(joint(d, "UpperArm.L"), joint(front_, "UpperArm.L"), 1e-5, "chain root stays");
+  EXPECT_NEAR(glm::length(joint(d, "Hand.L") - joint(d, "LowerArm.L")), 0.26, 1e-4);
+}
+
+TEST_F(EditorE2e, CameraKeysWheelAndMiddleDragChangeTheView) {
+  const double d0 = front_["camera"]["distance"];
+  json d = run(Script().scroll(2), "camera_zoom");
+  EXPECT_NEAR(double(d["camera"]["distance"]), d0 / (1.2 * 1.2), 1e-4);
+  d = run(Script().key("KP_3"), "camera_right");
+  EXPECT_NEAR(double(d["camera"]["azimuth"]), 90.0, 1e-4);
+  d = run(Script().keyDown("LEFT_CONTROL").key("KP_7").keyUp("LEFT_CONTROL").key("KP_5"), "camera_bottom_ortho");
+  EXPECT_NEAR(double(d["camera"]["elevation"]), -90.0, 1e-3);
+  EXPECT_TRUE(bool(d["camera"]["orthographic"]));
+  // Middle drag 100 px right: turntable orbit of 0.4 degrees per pixel, to the right.
+  const glm::dvec2 m(900, 500);
+  d = run(Script().move(m).down("middle").path(m, m + glm::dvec2(100, 0)).up("middle"), "camera_orbit");
+  EXPECT_NEAR(double(d["camera"]["azimuth"]), -40.0, 1e-3);
+  // F frames the selected hand: the view centres on it.
+  d = run(Script().click(midpoint("Hand.L", "Fingertip.L")).key("F"), "camera_frame_selected");
+  expectNear(vec3(d["camera"]["target"]), joint(front_, "Hand.L"), 1e-4, "F centres the hand");
+  EXPECT_LT(double(d["camera"]["distance"]), d0 / 2);
+}
+
+TEST_F(EditorE2e, CtrlZRestoresThePoseAndCtrlShiftZRedoes) {
+  Script s;
+  s.click(midpoint("LowerArm.L", "Hand.L")).key("R").key("Z").key("9").key("0").key("ENTER");
+  s.keyDown("LEFT_CONTROL").key("Z").keyUp("LEFT_CONTROL");
+  json d = run(s, "undo");
+  expectNear(joint(d, "Hand.L"), joint(front_, "Hand.L"), 1e-6, "undone");
+  EXPECT_EQ(int(d["undo_depth"]), 0);
+  s.keyDown("LEFT_CONTROL").keyDown("LEFT_SHIFT").key("Z").keyUp("LEFT_SHIFT").keyUp("LEFT_CONTROL");
+  d = run(s, "redo");
+  expectNear(joint(d, "Hand.L"), joint(front_, "LowerArm.L") + glm::dvec3(0, 0.26, 0), 1e-4, "redone");
+}
+
+TEST_F(EditorE2e, XdotoolClickSelectsTheHandThroughTheXServer) {
+  if (runCommand("command -v xdotool") != 0) GTEST_SKIP() << "SKIPPED: xdotool is not installed";
+  // A real user's path: X events from the server, GLFW callbacks, the same handler.
+  const glm::dvec2 hand = midpoint("Hand.L", "Fingertip.L");
+  const std::string dump = dir_ + "/xdotool.json", sh = dir_ + "/drive.sh";
+  char move[64];
+  std::snprintf(move, sizeof move, "%d %d", int(std::lround(hand.x)), int(std::lround(hand.y)));
+  std::ofstream(sh) << "set -e\n"
+                    << "env XDG_STATE_HOME=" << dir_ << " XDG_CONFIG_HOME=" << dir_ << " " << kSoftware << KINEMA_BINARY << " edit --frame-count 100000 --dump-state " << dump
+                    << " --screenshot " << shotDir() << "/xdotool.png & pid=$!\n"
+                    << "for i in $(seq 100); do w=$(xdotool search --name 'Kinema - ' | head -1) && [ -n \"$w\" ] && break; sleep 0.1; done\n"
+                    << "xdotool windowfocus --sync $w || true\n"
+                    << "sleep 0.5\nxdotool key --window $w KP_1 Home\nsleep 0.5\n"
+                    << "xdotool mousemove --window $w " << move << "\nsleep 0.3\nxdotool click 1\nsleep 0.5\n"
+                    << "xdotool key --window $w ctrl+q\nwait $pid\n";
+  std::string out, err;
+  ASSERT_EQ(runCommand(kXvfb + "sh " + sh, &out, &err), 0) << err;
+  json d = readJson(dump);
+  EXPECT_EQ(selection(d), std::vector<std::string>{"Hand.L"});
+  EXPECT_NEAR(double(d["camera"]["azimuth"]), 0.0, 1e-6);
+}
+
+}  // namespace
+}  // namespace kinema::test
