@@ -8,10 +8,12 @@
 #include <nlohmann/json.hpp>
 
 #include <csignal>
+#include <filesystem>
 #include <cmath>
 #include <fstream>
 #include <thread>
 
+#include "anim/sampling.h"
 #include "io/kinema_file.h"
 #include "io/scene.h"
 #include "test_support.h"
@@ -33,7 +35,8 @@ const glm::dvec2 kEulerField[3] = {{1007, 122}, {1069, 122}, {1131, 122}};  // X
 glm::dvec2 historyRow(int k) { return {120.0, 472.0 + 17.0 * k}; }  // 0 = "(original)"
 const glm::dvec2 kFileMenu{25, 9}, kEditMenu{69, 9}, kPoseMenu{157, 9};
 glm::dvec2 menuItem(glm::dvec2 menu, double y) { return {menu.x + 40, y}; }
-constexpr double kFileOpenY = 50, kEditResetY = 144, kPoseAddIkY = 33;
+constexpr double kFileOpenY = 50, kFileRecentY = 67, kFileExportY = 122, kEditResetY = 144, kPoseAddIkY = 33;
+constexpr double kSubmenuX = 250, kExportGlbY = 139, kExportBvhY = 156;  // File > Export > ...
 
 // One event per frame from frame 3; clicks and keys take two frames (down, up).
 class Script {
@@ -318,6 +321,54 @@ TEST_F(PanelsE2e, SaveAsAsksBeforeReplacingAFile) {
   const nlohmann::json d = runAndDump(s, "replace_declined");
   EXPECT_EQ(readFile(dir_ + "/taken.kinema"), "keep me");
   EXPECT_EQ(d["dirty"], true);
+}
+
+TEST_F(PanelsE2e, ExportGlbAndBvhThroughTheFileMenuCarryThePose) {
+  // No clips on the default character: the working pose goes out as a one-key clip.
+  const std::pair<double, std::string> formats[] = {{kExportGlbY, "/posed.glb"}, {kExportBvhY, "/posed.bvh"}};
+  for (const auto& [itemY, name] : formats) {
+    Script s;
+    s.select(kUpperArmL).euler(2, 40.0);
+    s.click(kFileMenu).wait(2).move(menuItem(kFileMenu, kFileExportY)).wait(3).move({kSubmenuX, kFileExportY}).wait(2);
+    s.click({kSubmenuX, itemY}).wait(3).type(dir_ + name).key("ENTER").wait(3);
+    const nlohmann::json d = runAndDump(s, "export_" + name.substr(name.size() - 3));
+    EXPECT_EQ(d["dirty"], true) << "exporting is not saving";
+    const Result<Scene> exported = loadScene(dir_ + name);
+    ASSERT_TRUE(exported.ok()) << exported.error();
+    ASSERT_FALSE(exported->clips.empty()) << name;
+    Pose pose = Pose::rest(exported->skeleton);
+    sampleClip(exported->clips[0], 0.0f, pose);
+    const int arm = exported->skeleton.find("UpperArm.L");
+    ASSERT_GE(arm, 0) << name;
+    EXPECT_ROTATION(glm::dquat(pose.local[arm].rotation), rotZ(40.0));
+    EXPECT_ROTATION(glm::dquat(pose.local[exported->skeleton.find("UpperArm.R")].rotation), glm::dquat(1, 0, 0, 0));
+  }
+}
+
+TEST_F(PanelsE2e, QuitClosesAtOnceWhenCleanAndAsksWhenDirty) {
+  // Events run to frame ~1000; a quit that goes through ends the run long before.
+  Script clean;
+  clean.key("Q", "\"ctrl\"").wait(1000).move({600, 400});
+  EXPECT_LT(runAndDump(clean, "quit_clean")["frames"].get<long long>(), 100);
+  Script dirty;
+  dirty.select(kUpperArmL).euler(2, 40.0).key("Q", "\"ctrl\"").wait(3).key("ESCAPE").wait(100).move({600, 400});
+  const nlohmann::json d = runAndDump(dirty, "quit_dirty");
+  EXPECT_GT(d["frames"].get<long long>(), 100);
+  EXPECT_EQ(d["dirty"], true);
+}
+
+TEST_F(PanelsE2e, OpenRecentReopensTheLastFile) {
+  KINEMA_REQUIRE_SHARED_DATA();
+  const std::string bvh = sharedDataDir() + "/bvh/games105_walk60.bvh";
+  Script open;
+  open.key("O", "\"ctrl\"").wait(2).type(bvh).key("ENTER").wait(3).key("N", "\"ctrl\"").wait(3);
+  EXPECT_EQ(runAndDump(open, "recent_first")["path"], "");  // New after Open: the list keeps the file
+  Script recent;
+  recent.click(kFileMenu).wait(2).move(menuItem(kFileMenu, kFileRecentY)).wait(3).move({kSubmenuX, kFileRecentY}).wait(2);
+  recent.click({kSubmenuX + 40, kFileRecentY}).wait(3);
+  const nlohmann::json d = runAndDump(recent, "recent_reopen");
+  EXPECT_EQ(std::filesystem::path(d["path"].get<std::string>()).lexically_normal(),
+            std::filesystem::path(bvh).lexically_normal());
 }
 
 TEST_F(PanelsE2e, KillDashNineThenRestartOffersTheRecoveryFile) {
