@@ -33,6 +33,9 @@ glm::dvec2 outlinerRow(int row) { return {150.0, 76.0 + 17.0 * row}; }
 const glm::dvec2 kSearchBox{120, 55};
 const glm::dvec2 kEulerField[3] = {{1007, 122}, {1069, 122}, {1131, 122}};  // X, Y, Z (degrees)
 glm::dvec2 historyRow(int k) { return {120.0, 472.0 + 17.0 * k}; }  // 0 = "(original)"
+const glm::dvec2 kRotationMode{1030, 99};
+glm::dvec2 rotationModeItem(int k) { return {1030.0, 123.0 + 17.0 * k}; }  // XYZ XZY YXZ YZX ZXY ZYX Quaternion
+const glm::dvec2 kQuaternionField[4] = {{1000, 122}, {1048, 122}, {1094, 122}, {1140, 122}};  // x y z w
 const glm::dvec2 kFileMenu{25, 9}, kEditMenu{69, 9}, kPoseMenu{157, 9};
 glm::dvec2 menuItem(glm::dvec2 menu, double y) { return {menu.x + 40, y}; }
 constexpr double kFileOpenY = 50, kFileRecentY = 67, kFileExportY = 122, kEditResetY = 144, kPoseAddIkY = 33;
@@ -181,6 +184,27 @@ TEST_F(PanelsE2e, EulerEntrySaveAsAndReopenRoundTripThePose) {
     EXPECT_ROTATION(glm::dquat(b.pose.local[j].rotation), glm::dquat(a.pose.local[j].rotation));
     EXPECT_LT(glm::length(b.pose.local[j].translation - a.pose.local[j].translation), 1e-6f);
   }
+}
+
+TEST_F(PanelsE2e, EulerOrderZxyAndQuaternionEntry) {
+  // ZXY: R = Rz * Rx * Ry. X 30 then Z 50 gives Rz(50) Rx(30).
+  Script zxy;
+  zxy.select(kUpperArmL).click(kRotationMode).wait(2).click(rotationModeItem(4)).wait(2);
+  zxy.euler(0, 30.0).euler(2, 50.0).saveAs(dir_ + "/zxy.kinema");
+  run(zxy, "euler_zxy");
+  EXPECT_ROTATION(rotation(saved(dir_ + "/zxy.kinema"), "UpperArm.L"), rotZ(50.0) * rotX(30.0));
+
+  // Quaternion (x, y, z, w) = (1, 0, 1, 0) typed: normalised on entry to (0.7071, 0, 0.7071, 0),
+  // a half turn about (1, 0, 1) / sqrt 2; one undo step.
+  Script quat;
+  quat.select(kHandR).click(kRotationMode).wait(2).click(rotationModeItem(6)).wait(2);
+  quat.click(kQuaternionField[0]).wait(1).type("1").click(kQuaternionField[3]).wait(1).type("0");
+  quat.click(kQuaternionField[2]).wait(1).type("1").key("ENTER").wait(2).saveAs(dir_ + "/quat.kinema");
+  const nlohmann::json d = runAndDump(quat, "quaternion_entry");
+  EXPECT_EQ(d["undo_depth"], 1);
+  const double h = std::sqrt(0.5);
+  EXPECT_ROTATION(rotation(saved(dir_ + "/quat.kinema"), "Hand.R"), glm::dquat(0, h, 0, h));
+  EXPECT_NEAR(glm::length(rotation(saved(dir_ + "/quat.kinema"), "Hand.R")), 1.0, 1e-6);
 }
 
 TEST_F(PanelsE2e, CtrlZUndoesOneEntryAndTheHistoryPanelJumps) {
