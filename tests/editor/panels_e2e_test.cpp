@@ -36,6 +36,7 @@ glm::dvec2 historyRow(int k) { return {120.0, 472.0 + 17.0 * k}; }  // 0 = "(ori
 const glm::dvec2 kRotationMode{1030, 99};
 glm::dvec2 rotationModeItem(int k) { return {1030.0, 123.0 + 17.0 * k}; }  // XYZ XZY YXZ YZX ZXY ZYX Quaternion
 const glm::dvec2 kQuaternionField[4] = {{1000, 122}, {1048, 122}, {1094, 122}, {1140, 122}};  // x y z w
+const glm::dvec2 kLimitEnabled{987, 202};  // the joint-limit checkbox (Euler mode)
 const glm::dvec2 kFileMenu{25, 9}, kEditMenu{69, 9}, kPoseMenu{157, 9};
 glm::dvec2 menuItem(glm::dvec2 menu, double y) { return {menu.x + 40, y}; }
 constexpr double kFileOpenY = 50, kFileRecentY = 67, kFileExportY = 122, kEditResetY = 144, kPoseAddIkY = 33;
@@ -205,6 +206,27 @@ TEST_F(PanelsE2e, EulerOrderZxyAndQuaternionEntry) {
   const double h = std::sqrt(0.5);
   EXPECT_ROTATION(rotation(saved(dir_ + "/quat.kinema"), "Hand.R"), glm::dquat(0, h, 0, h));
   EXPECT_NEAR(glm::length(rotation(saved(dir_ + "/quat.kinema"), "Hand.R")), 1.0, 1e-6);
+}
+
+TEST_F(PanelsE2e, JointLimitEnabledInThePropertiesIsSavedAndUndoable) {
+  Script s;
+  s.select(kLowerArmL).click(kLimitEnabled).wait(2).saveAs(dir_ + "/limited.kinema");
+  s.key("Z", "\"ctrl\"").wait(2).saveAs("unlimited.kinema");
+  run(s, "joint_limit");
+  const Scene limited = saved(dir_ + "/limited.kinema");
+  const JointLimit* limit = limited.ik.limitOf(limited.skeleton.find("LowerArm.L"));
+  ASSERT_NE(limit, nullptr);
+  // Enabling starts from a 45 degree cone with +-45 degrees of twist.
+  EXPECT_EQ(limit->type, JointLimitType::Cone);
+  EXPECT_NEAR(limit->coneAngle, M_PI / 4, 1e-5);
+  EXPECT_NEAR(limit->twistMin, -M_PI / 4, 1e-5);
+  EXPECT_NEAR(limit->twistMax, M_PI / 4, 1e-5);
+  for (int j = 0; j < limited.skeleton.size(); ++j)
+    if (limited.skeleton.names[j] != "LowerArm.L") {
+      EXPECT_EQ(limited.ik.limitOf(j), nullptr) << j;
+    }
+  const Scene undone = saved(dir_ + "/unlimited.kinema");
+  EXPECT_EQ(undone.ik.limitOf(undone.skeleton.find("LowerArm.L")), nullptr);
 }
 
 TEST_F(PanelsE2e, CtrlZUndoesOneEntryAndTheHistoryPanelJumps) {
