@@ -9,3 +9,11 @@ cd "$root"  # the editor shows the path it was given: keep it short
 bvh=../shared/data/bvh/cmu_01_01_first720.bvh
 xvfb-run -a -s "-screen 0 1280x800x24" "$kinema" edit "$bvh" --frame-count 5 --screenshot "$root/docs/images/editor.png"
 "$kinema" render "$bvh" --frame 240 --select LeftArm --size 960x540 --out "$root/docs/images/render_cmu_frame240.png"
+# The editor's FK gizmo and IK drag, posed by replaying recorded input (kinema edit --script);
+# XDG folders point away from the user's recent files and recovery files.
+tmp=$(mktemp -d)
+for shot in editor_fk_gizmo editor_ik_drag; do
+  XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp xvfb-run -a -s "-screen 0 1280x800x24" "$kinema" edit \
+    --script "$root/docs/images/$shot.jsonl" --frame-count 40 --screenshot "$root/docs/images/$shot.png"
+done
+rm -rf "$tmp"

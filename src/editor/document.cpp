@@ -46,6 +46,7 @@ Document::Document(Scene scene, std::string path) : scene_(std::move(scene)), pa
     targets_.push_back(p);
   }
   scene_.ik.targets.clear();  // targets_ hold them with their editor settings
+  loadedNames_ = scene_.skeleton.names;
 }
 
 std::vector<glm::mat4> Document::worldTransforms() const { return computeWorld(scene_.skeleton, pose_); }
@@ -56,6 +57,13 @@ Scene Document::sceneForSaving() const {
   // Solver, chain length, pinned and active are editor settings the file does not hold:
   // the chain length is saved as the root it resolves to.
   for (const PoseIkTarget& t : targets_) s.ik.targets.push_back(t.resolved(s.skeleton));
+  // glTF scenes report and export the file's node names: a renamed joint renames its node.
+  for (int j = 0; j < s.skeleton.size() && j < static_cast<int>(s.nodeOfJoint.size()); ++j) {
+    const int node = s.nodeOfJoint[j];
+    if (node >= 0 && node < static_cast<int>(s.nodeNames.size()) && j < static_cast<int>(loadedNames_.size()) &&
+        s.skeleton.names[j] != loadedNames_[j])
+      s.nodeNames[node] = s.skeleton.names[j];
+  }
   return s;
 }
 

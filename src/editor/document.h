@@ -49,7 +49,8 @@ class Document {
   const IkRig& rig() const { return scene_.ik; }  // limits (targets live in ikTargets())
   // World transforms of the working pose (FK each call).
   std::vector<glm::mat4> worldTransforms() const;
-  // The scene as it is saved: skeleton names, pose, limits and targets written back.
+  // The scene as it is saved: skeleton names (and the glTF node names of renamed
+  // joints), pose, limits and targets written back.
   Scene sceneForSaving() const;
 
   // The file this document was opened from or last saved to ("" for a new one).
@@ -122,6 +123,7 @@ class Document {
   void apply(const EditRecord& record, bool forward);
 
   Scene scene_;
+  std::vector<std::string> loadedNames_;  // joint names as loaded: renames update glTF node names
   Pose pose_;
   std::vector<PoseIkTarget> targets_;
   std::string path_;

@@ -92,6 +92,11 @@ std::string exportDocument(const Document& doc, const std::string& path, std::ve
   }
 }
 
+std::string documentTitle(const Document& doc) {
+  const std::string name = doc.path().empty() ? "untitled" : fs::path(doc.path()).filename().string();
+  return name + (doc.dirty() ? "*" : "") + " - Kinema";
+}
+
 std::string kinemaConfigDir() {
   const char* xdg = std::getenv("XDG_CONFIG_HOME");
   if (xdg && xdg[0] == '/') return std::string(xdg) + "/kinema";

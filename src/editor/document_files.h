@@ -25,6 +25,9 @@ std::string saveDocumentAs(Document& doc, const std::string& path);
 // dirty flag. `report` receives what the format could not hold.
 std::string exportDocument(const Document& doc, const std::string& path, std::vector<std::string>* report = nullptr);
 
+// The window title: the file's name (or "untitled"), a "*" when dirty, then " - Kinema".
+std::string documentTitle(const Document& doc);
+
 // $XDG_CONFIG_HOME/kinema (or ~/.config/kinema); "" when neither is known.
 std::string kinemaConfigDir();
 

@@ -87,6 +87,11 @@ std::vector<IkTargetReport> solveIkPosing(const IkPosingInput& in, Pose& pose) {
         problem.targets.push_back(t);
         together.push_back(k);
       }
+      // A chain inside another one (a pinned elbow under a dragged hand's chain) is moved
+      // by the outer chain's upper joints too, so in the joint solve it may use them.
+      for (IkTarget& t : problem.targets)
+        for (const IkTarget& o : problem.targets)
+          if (o.root < t.root && skeleton.isInSubtree(t.root, o.root)) t.root = o.root;
       IkSettings settings = in.settings;
       settings.maxIterations = std::max(settings.maxIterations, kIkJointIterations);
       const auto start = std::chrono::steady_clock::now();

@@ -12,7 +12,8 @@ namespace kinema {
 //    temporary one, the driven one, then pinned ones in list order, each with its own
 //    solver, joint limits respected. When several are solved and that leaves one off
 //    target (overlapping chains), they are solved once more all together by damped least
-//    squares (up to kIkJointIterations steps);
+//    squares (up to kIkJointIterations steps), where a chain whose root lies inside
+//    another target's chain extends up to that chain's root (the outer chain moves it anyway);
 //  * every other active (unpinned) target then follows its effector (its position is set
 //    to where the effector ended), so FK edits and other drags carry it along.
 // So a pinned target keeps its effector where it is while other targets move.

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "editor/editor_window.h"
 #include "ik/ik_solver.h"
 
 namespace kinema {
@@ -17,6 +18,7 @@ json jointName(const EditorState& s, int j) {
 std::string editorStateJson(const EditorState& s, int windowWidth, int windowHeight, long long frames) {
   json out;
   const Document& doc = s.doc;
+  out["title"] = editorWindowTitle(s);
   out["path"] = doc.path();
   out["dirty"] = doc.dirty();
   out["undo_depth"] = doc.historyPosition();

@@ -23,6 +23,10 @@ TEST(DocumentFiles, NewIsTheDefaultCharacterAtRest) {
   EXPECT_FALSE(doc.dirty());
   EXPECT_FALSE(canSaveInPlace(doc));
   EXPECT_NE(saveDocument(doc), "");  // needs Save As
+  EXPECT_EQ(documentTitle(doc), "untitled - Kinema");
+  ASSERT_EQ(setJointTranslation(doc, 0, glm::vec3(0, 1, 0)), "");
+  doc.setPath("/some/dir/walk.kinema");
+  EXPECT_EQ(documentTitle(doc), "walk.kinema* - Kinema");
 }
 
 TEST(DocumentFiles, SaveAsThenOpenKeepsThePoseNamesAndTargets) {
@@ -92,6 +96,25 @@ TEST(DocumentFiles, ExportWritesTheWorkingPoseAsAOneKeyClip) {
   }
   EXPECT_TRUE(doc.dirty());  // export is not a save
   EXPECT_NE(exportDocument(doc, dir + "/out.obj"), "");
+  fs::remove_all(dir);
+}
+
+TEST(DocumentFiles, RenamingAJointOfAGltfSceneRenamesItsNode) {
+  const std::string dir = test::makeTempDir();
+  Scene scene;
+  scene.skeleton.addJoint("root", -1, Transform{});
+  scene.skeleton.addJoint("arm", 0, Transform::fromTranslation({1, 0, 0}));
+  scene.nodeOfJoint = {1, 0};  // the file lists the arm first
+  scene.nodeNames = {"arm", "root"};
+  Document doc(scene, "");
+  ASSERT_EQ(renameJoint(doc, 1, "wing"), "");
+  const Scene saved = doc.sceneForSaving();
+  EXPECT_EQ(saved.nodeNames, (std::vector<std::string>{"wing", "root"}));
+  ASSERT_EQ(exportDocument(doc, dir + "/renamed.gltf"), "");
+  Result<Scene> back = loadScene(dir + "/renamed.gltf");
+  ASSERT_TRUE(back) << back.error();
+  EXPECT_GE(back->skeleton.find("wing"), 0);
+  EXPECT_EQ(back->skeleton.find("arm"), -1);
   fs::remove_all(dir);
 }
 

@@ -183,6 +183,17 @@ TEST_F(EditorE2e, ClickSelectsTheHandAndShiftClickAdds) {
   EXPECT_TRUE(selection(d).empty());
 }
 
+TEST_F(EditorE2e, ScriptedClicksReachThePanelsAndNotTheViewport) {
+  // The outliner (fixed layout, left column) lists Head on its sixth row: a click there
+  // selects it through ImGui. Then a drag that starts on the History panel (empty there)
+  // and ends in the viewport past the left hand: had the viewport seen the press, it would
+  // have box-selected most of the skeleton.
+  const glm::dvec2 panel(120, 600), past = pixelOf("Fingertip.L") + glm::dvec2(20, 20);
+  json d = run(Script().click({104, 161}).move(panel).down().path(panel, past).up(), "click_outliner");
+  EXPECT_EQ(selection(d), std::vector<std::string>{"Head"});
+  EXPECT_EQ(d["title"], "Kinema - untitled");
+}
+
 TEST_F(EditorE2e, HoverHighlightsTheJointUnderTheMouse) {
   json d = run(Script().move(pixelOf("Head")), "hover");
   EXPECT_EQ(d["hovered"], "Head");
@@ -212,6 +223,7 @@ TEST_F(EditorE2e, RWithTheMouseRotatesTheForearmByTheAngleSwept) {
   expectNear(joint(d, "LowerArm.L"), elbow, 1e-5, "the elbow stays");
   EXPECT_EQ(int(d["undo_depth"]), 1);
   EXPECT_TRUE(bool(d["dirty"]));
+  EXPECT_EQ(d["title"], "Kinema - untitled*");  // the dirty marker
 }
 
 TEST_F(EditorE2e, RThenAxisKeysConstrainAndTypedDegreesAreExact) {

@@ -62,7 +62,14 @@ TEST(RecoveryFile, OnlyFilesOfDeadProcessesAreOffered) {
   ASSERT_TRUE(s.has_value());
   EXPECT_EQ(s->pid, 999999999);
   EXPECT_EQ(s->originalPath, "");
+  // A corrupt sidecar: still offered (the .kinema is what matters), with a message.
+  test::writeFile(dir + "/recovery-999999999.json", "{\"original\": 3");
+  std::string message;
+  s = findRecoverableSession(dir, &message);
+  ASSERT_TRUE(s.has_value());
+  EXPECT_NE(message.find("recovery-999999999.json"), std::string::npos) << message;
   EXPECT_EQ(discardRecovery(*s), "");
+  EXPECT_FALSE(fs::exists(dir + "/recovery-999999999.json"));
   EXPECT_FALSE(fs::exists(dir + "/recovery-999999999.kinema"));
   EXPECT_FALSE(findRecoverableSession(dir).has_value());
   EXPECT_FALSE(findRecoverableSession(dir + "/missing").has_value());
