@@ -46,6 +46,11 @@ void openNow(EditorState& state, const std::string& path) {
   Result<Document> opened = openDocument(path);
   if (!opened) {
     showEditorError(state, opened.error());
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) {  // a recent file that went away leaves the list
+      state.panels.recent.remove(path);
+      state.panels.recent.save();
+    }
     return;
   }
   replaceDocument(state, std::move(opened.value()));
