@@ -37,6 +37,9 @@ const glm::dvec2 kRotationMode{1030, 99};
 glm::dvec2 rotationModeItem(int k) { return {1030.0, 123.0 + 17.0 * k}; }  // XYZ XZY YXZ YZX ZXY ZYX Quaternion
 const glm::dvec2 kQuaternionField[4] = {{1000, 122}, {1048, 122}, {1094, 122}, {1140, 122}};  // x y z w
 const glm::dvec2 kLimitEnabled{987, 202};  // the joint-limit checkbox (Euler mode)
+// IK Targets panel (with one target selected).
+const glm::dvec2 kIkAdd{1033, 427}, kIkChainPlus{1138, 574}, kIkPinned{987, 620}, kIkSolver{1060, 597};
+const glm::dvec2 kIkSolverFabrik{1030, 505}, kIkPositionX{1000, 643};  // the solver list opens upwards
 const glm::dvec2 kFileMenu{25, 9}, kEditMenu{69, 9}, kPoseMenu{157, 9};
 glm::dvec2 menuItem(glm::dvec2 menu, double y) { return {menu.x + 40, y}; }
 constexpr double kFileOpenY = 50, kFileRecentY = 67, kFileExportY = 122, kEditResetY = 144, kPoseAddIkY = 33;
@@ -303,6 +306,39 @@ TEST_F(PanelsE2e, AddIkTargetThroughThePoseMenuIsSaved) {
   glm::vec3 hand(0.0f);
   for (int j = t.effector; j >= 0; j = r.skeleton.parents[j]) hand += r.skeleton.rest[j].translation;
   EXPECT_LT(glm::length(t.position - hand), 1e-4f);
+}
+
+TEST_F(PanelsE2e, IkPanelSettingsAndTypedTargetPositionMoveTheChain) {
+  Script s;
+  s.select(kHandL).click(kIkAdd).wait(2).click(kIkChainPlus).wait(2).click(kIkPinned).wait(2);
+  s.click(kIkSolver).wait(2).click(kIkSolverFabrik).wait(2);
+  // Off the arm's line (a straight chain pulled along itself is the solvers' singular case).
+  s.doubleClick(kIkPositionX).wait(1).type("0.5").key("ENTER").wait(3);
+  s.doubleClick(kIkPositionX + glm::dvec2(48, 0)).wait(1).type("1.3").key("ENTER").wait(3);
+  const nlohmann::json d = runAndDump(s, "ik_panel");
+  ASSERT_EQ(d["ik_targets"].size(), 1u);
+  const nlohmann::json& t = d["ik_targets"][0];
+  EXPECT_EQ(t["effector"], "Hand.L");
+  EXPECT_EQ(t["chain_length"], 3);
+  EXPECT_EQ(t["root"], "Shoulder.L");  // three bones up from the hand
+  EXPECT_EQ(t["pinned"], true);
+  EXPECT_EQ(t["solver"], "fabrik");
+  EXPECT_EQ(d["undo_depth"], 6);  // add, chain, pin, solver, position x, position y: one step each
+  // The target moved to (0.5, 1.3, 0) (z as placed at the hand) and the hand followed.
+  const auto world = [&](const std::string& name) {
+    for (const nlohmann::json& j : d["joints"])
+      if (j["name"] == name) return glm::dvec3(j["world_position"][0], j["world_position"][1], j["world_position"][2]);
+    return glm::dvec3(NAN);
+  };
+  const glm::dvec3 target(t["position"][0], t["position"][1], t["position"][2]);
+  EXPECT_NEAR(target.x, 0.5, 1e-6);
+  EXPECT_NEAR(target.y, 1.3, 1e-6);
+  EXPECT_NEAR(target.z, 0.0, 1e-6);
+  EXPECT_LT(glm::length(world("Hand.L") - target), 2e-3);
+  // Bone lengths stay those of the default character (src/core/default_character.cpp puts
+  // the left arm's joints at x = 0.17, 0.45, 0.71 on one line).
+  EXPECT_NEAR(glm::length(world("Hand.L") - world("LowerArm.L")), 0.26, 1e-4);
+  EXPECT_NEAR(glm::length(world("LowerArm.L") - world("UpperArm.L")), 0.28, 1e-4);
 }
 
 TEST_F(PanelsE2e, OpenBvhAndGltfThroughTheFileMenu) {
