@@ -32,6 +32,8 @@ long long EditorState::frameCount() const {
 }
 
 void evaluateEditorPose(EditorState& state) {
+  if (state.wasPlaying && !state.playing) state.sampleClip = true;  // paused: edit from this frame
+  state.wasPlaying = state.playing;
   if (state.hasMotion() && state.sampleClip && !state.playing) {
     const std::string error = poseFromClip(state.doc, state.clip, state.time);
     if (!error.empty()) state.statusMessage = error;

@@ -89,6 +89,7 @@ struct EditorState {
 
   // Derived each frame from the fields above: the document's pose, or the clip while it plays.
   std::vector<glm::mat4> world;
+  bool wasPlaying = false;  // playback stopped since the last evaluate: the document takes the frame
 
   bool hasMotion() const { return clip >= 0 && clip < static_cast<int>(doc.scene().clips.size()); }
   double duration() const;       // the clip's length in seconds, 0 without motion

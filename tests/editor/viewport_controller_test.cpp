@@ -94,6 +94,29 @@ TEST(EditorState, PlaybackWrapsWhenLoopingAndStopsOtherwise) {
   EXPECT_VEC3_NEAR(glm::vec3(s.world[0][3]), glm::vec3(2, 0, 0), 1e-6f);
 }
 
+TEST(EditorPlayback, PausingHandsTheFrameToTheDocument) {
+  // A root moving 1 unit per second along X: after playing to t = 1.5 and pausing, the
+  // document's pose (what edits start from) is that frame, as one undo step.
+  Scene scene;
+  scene.skeleton.addJoint("Root", -1, Transform{});
+  Clip clip;
+  clip.channels.push_back(Channel{0, ChannelTarget::Translation, Interpolation::Linear, {0.0f, 4.0f},
+                                  {glm::vec4(0), glm::vec4(4, 0, 0, 0)}});
+  scene.clips.push_back(clip);
+  EditorState s;
+  s.doc = Document(scene);
+  s.playing = true;
+  evaluateEditorPose(s);
+  advancePlayback(s, 1.5);
+  evaluateEditorPose(s);
+  EXPECT_VEC3_NEAR(glm::vec3(s.world[0][3]), glm::vec3(1.5f, 0, 0), 1e-6f);
+  EXPECT_VEC3_NEAR(s.doc.pose().local[0].translation, glm::vec3(0.0f), 1e-6f);  // playback only shows
+  s.playing = false;
+  evaluateEditorPose(s);
+  EXPECT_VEC3_NEAR(s.doc.pose().local[0].translation, glm::vec3(1.5f, 0, 0), 1e-6f);
+  EXPECT_EQ(s.doc.historyPosition(), 1);
+}
+
 TEST(EditorPlayback, LoopsOverTheClipsPlaybackRange) {
   EditorState s;
   Scene scene;
