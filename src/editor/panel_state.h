@@ -50,6 +50,7 @@ struct PanelState {
   PendingFileAction pending = PendingFileAction::None;
   std::string pendingPath;
   bool askDiscard = false;  // OpenPopup on the next frame
+  bool resumeAfterSaveAs = false;  // "Save first" needed Save As: the action waits for it
 
   // Autosave and recovery
   std::optional<Autosaver> autosaver;

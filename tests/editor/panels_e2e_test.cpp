@@ -393,6 +393,18 @@ TEST_F(PanelsE2e, NewAsksBeforeDiscardingUnsavedChanges) {
   EXPECT_ROTATION(dumpedRotation(fresh, "UpperArm.L"), glm::dquat(1, 0, 0, 0));
 }
 
+TEST_F(PanelsE2e, SaveFirstSavesThroughSaveAsThenStartsTheNewDocument) {
+  Script s;
+  s.select(kUpperArmL).euler(2, 40.0).key("N", "\"ctrl\"").wait(3);
+  s.click({640, 386}).wait(3);  // "Save first" in the centred question
+  s.type(dir_ + "/first.kinema").key("ENTER").wait(3);
+  const nlohmann::json d = runAndDump(s, "save_first");
+  EXPECT_ROTATION(rotation(saved(dir_ + "/first.kinema"), "UpperArm.L"), rotZ(40.0));
+  EXPECT_EQ(d["path"], "");  // then New went on
+  EXPECT_EQ(d["dirty"], false);
+  EXPECT_ROTATION(dumpedRotation(d, "UpperArm.L"), glm::dquat(1, 0, 0, 0));
+}
+
 TEST_F(PanelsE2e, SaveAsAsksBeforeReplacingAFile) {
   writeFile(dir_ + "/taken.kinema", "keep me");
   Script s;
