@@ -59,6 +59,8 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
     json e = {{"effector", jointName(s, t.effector)},
               {"root", jointName(s, resolved.root)},
               {"solver", toString(doc.ikTargets()[i].solver)},
+              {"chain_length", doc.ikTargets()[i].chainLength},
+              {"pinned", doc.ikTargets()[i].pinned},
               {"position", vec(t.position)}};
     for (const IkTargetReport& r : doc.lastIkReports())
       if (r.target == static_cast<int>(i)) {
