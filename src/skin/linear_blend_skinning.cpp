@@ -34,6 +34,11 @@ struct alignas(64) NormalMatrix {
   float c[3][4];
 };
 
+// Which normals a loop computes: none, the blended skinning matrix applied to them (the
+// shared-similarity shortcut), or blended per-joint normal matrices. A template argument,
+// so each loop carries only its own case.
+enum class NormalMode { None, Blended, PerJoint };
+
 #if KINEMA_SKIN_SSE2
 
 // Stores the x, y, z lanes of v (a 16-byte store would overrun the last vertex).
@@ -68,7 +73,7 @@ inline __m128 finishNormal(__m128 n, bool normalize, __m128 scale) {
 // One loop for every stride; `Stride` > 0 fixes it at compile time so the influence loop
 // unrolls (strides 1..4 and 8 are the common ones), 0 reads it from `stride`.
 // normalMats == nullptr: normals use the blended skinning matrix (see sharedSimilarity).
-template <int Stride>
+template <int Stride, NormalMode Mode>
 void skinLoop(const LinearBlendSkinningJob& job, int stride, const JointMatrix* mats, const NormalMatrix* normalMats,
               float normalScale) {
   const int s = Stride > 0 ? Stride : stride;
@@ -81,7 +86,8 @@ void skinLoop(const LinearBlendSkinningJob& job, int stride, const JointMatrix* 
   float* nout = job.normals ? &job.outNormals[0].x : nullptr;
   const bool normalize = job.normalizeNormals;
   const __m128 scale = _mm_set1_ps(normalScale);
-  for (int v = 0; v < job.vertexCount; ++v, joints += step, weights += step) {
+  const int count = job.vertexCount;  // a local: the output stores could alias the job
+  for (int v = 0; v < count; ++v, joints += step, weights += step) {
     // The blended matrix sum_i w_i M_i, column by column.
     __m128 w = _mm_set1_ps(weights[0]);
     const JointMatrix* m = mats + static_cast<size_t>(joints[0]);
@@ -101,9 +107,9 @@ void skinLoop(const LinearBlendSkinningJob& job, int stride, const JointMatrix* 
     const __m128 r = _mm_add_ps(_mm_add_ps(_mm_mul_ps(c0, _mm_set1_ps(p[0])), _mm_mul_ps(c1, _mm_set1_ps(p[1]))),
                                 _mm_add_ps(_mm_mul_ps(c2, _mm_set1_ps(p[2])), c3));
     storeVec3(out + 3 * static_cast<size_t>(v), r);
-    if (!nin) continue;
+    if (Mode == NormalMode::None) continue;
     const float* n = nin + 3 * static_cast<size_t>(v);
-    if (normalMats) {
+    if (Mode == NormalMode::PerJoint) {
       w = _mm_set1_ps(weights[0]);
       const NormalMatrix* nm = normalMats + static_cast<size_t>(joints[0]);
       c0 = _mm_mul_ps(w, _mm_load_ps(nm->c[0]));
@@ -148,7 +154,7 @@ KINEMA_TARGET_AVX2 inline __m128 normalize3Avx2(__m128 v) {
   return _mm_and_ps(_mm_mul_ps(v, inv), _mm_cmp_ps(len2, _mm_set1_ps(1e-36f), _CMP_GT_OQ));
 }
 
-template <int Stride>
+template <int Stride, NormalMode Mode>
 KINEMA_TARGET_AVX2 void skinLoopAvx2(const LinearBlendSkinningJob& job, int stride, const JointMatrix* mats,
                                      const NormalMatrix* normalMats, float normalScale) {
   const int s = Stride > 0 ? Stride : stride;
@@ -161,7 +167,8 @@ KINEMA_TARGET_AVX2 void skinLoopAvx2(const LinearBlendSkinningJob& job, int stri
   float* nout = job.normals ? &job.outNormals[0].x : nullptr;
   const bool normalize = job.normalizeNormals;
   const __m128 scale = _mm_set1_ps(normalScale);
-  for (int v = 0; v < job.vertexCount; ++v, joints += step, weights += step) {
+  const int count = job.vertexCount;  // a local: the output stores could alias the job
+  for (int v = 0; v < count; ++v, joints += step, weights += step) {
     __m256 w = _mm256_broadcast_ss(weights);
     const float* m = mats[joints[0]].c[0];
     __m256 c01 = _mm256_mul_ps(w, _mm256_load_ps(m));
@@ -179,10 +186,10 @@ KINEMA_TARGET_AVX2 void skinLoopAvx2(const LinearBlendSkinningJob& job, int stri
         _mm_add_ps(_mm_add_ps(_mm_mul_ps(c0, _mm_broadcast_ss(p)), _mm_mul_ps(c1, _mm_broadcast_ss(p + 1))),
                    _mm_add_ps(_mm_mul_ps(c2, _mm_broadcast_ss(p + 2)), c3));
     storeVec3Avx2(out + 3 * static_cast<size_t>(v), r);
-    if (!nin) continue;
+    if (Mode == NormalMode::None) continue;
     const float* n = nin + 3 * static_cast<size_t>(v);
     __m128 n0 = c0, n1 = c1, n2 = c2;
-    if (normalMats) {
+    if (Mode == NormalMode::PerJoint) {
       w = _mm256_broadcast_ss(weights);
       const float* nm = normalMats[joints[0]].c[0];
       __m256 n01 = _mm256_mul_ps(w, _mm256_load_ps(nm));
@@ -210,7 +217,7 @@ bool cpuHasAvx2Fma() {
 
 #else  // Portable scalar loop for targets without SSE2 (same arithmetic, one lane at a time).
 
-template <int Stride>
+template <int Stride, NormalMode /*Mode: read at run time here*/>
 void skinLoop(const LinearBlendSkinningJob& job, int stride, const JointMatrix* /*aligned copy, unused*/,
               const NormalMatrix* normalMats, float normalScale) {
   const int s = Stride > 0 ? Stride : stride;
@@ -253,6 +260,47 @@ Scratch& scratch() {
   return s;
 }
 
+// The loop instantiations: strides 1..4 and 8 fixed at compile time, times the normal mode.
+struct Sse2Loop {
+  template <int Stride, NormalMode Mode>
+  static void run(const LinearBlendSkinningJob& job, int stride, const JointMatrix* mats, const NormalMatrix* nm,
+                  float normalScale) {
+    skinLoop<Stride, Mode>(job, stride, mats, nm, normalScale);
+  }
+};
+#if KINEMA_SKIN_AVX2
+struct Avx2Loop {
+  template <int Stride, NormalMode Mode>
+  static void run(const LinearBlendSkinningJob& job, int stride, const JointMatrix* mats, const NormalMatrix* nm,
+                  float normalScale) {
+    skinLoopAvx2<Stride, Mode>(job, stride, mats, nm, normalScale);
+  }
+};
+#endif
+
+template <class Loop, NormalMode Mode>
+void dispatchStride(const LinearBlendSkinningJob& job, const JointMatrix* mats, const NormalMatrix* nm,
+                    float normalScale) {
+  switch (job.influencesPerVertex) {
+    case 1: Loop::template run<1, Mode>(job, 1, mats, nm, normalScale); break;
+    case 2: Loop::template run<2, Mode>(job, 2, mats, nm, normalScale); break;
+    case 3: Loop::template run<3, Mode>(job, 3, mats, nm, normalScale); break;
+    case 4: Loop::template run<4, Mode>(job, 4, mats, nm, normalScale); break;
+    case 8: Loop::template run<8, Mode>(job, 8, mats, nm, normalScale); break;
+    default: Loop::template run<0, Mode>(job, job.influencesPerVertex, mats, nm, normalScale); break;
+  }
+}
+
+template <class Loop>
+void dispatch(const LinearBlendSkinningJob& job, NormalMode mode, const JointMatrix* mats, const NormalMatrix* nm,
+              float normalScale) {
+  switch (mode) {
+    case NormalMode::None: dispatchStride<Loop, NormalMode::None>(job, mats, nm, normalScale); break;
+    case NormalMode::Blended: dispatchStride<Loop, NormalMode::Blended>(job, mats, nm, normalScale); break;
+    case NormalMode::PerJoint: dispatchStride<Loop, NormalMode::PerJoint>(job, mats, nm, normalScale); break;
+  }
+}
+
 }  // namespace
 
 std::string LinearBlendSkinningJob::validate() const {
@@ -293,27 +341,14 @@ bool LinearBlendSkinningJob::run() const {
     normalScale = 1.0f / s2;
   }
   const JointMatrix* mats = sc.matrices.data();
+  const NormalMode mode = !normals ? NormalMode::None : normalMats ? NormalMode::PerJoint : NormalMode::Blended;
 #if KINEMA_SKIN_AVX2
   if (allowAvx2 && cpuHasAvx2Fma()) {
-    switch (influencesPerVertex) {
-      case 1: skinLoopAvx2<1>(*this, 1, mats, normalMats, normalScale); break;
-      case 2: skinLoopAvx2<2>(*this, 2, mats, normalMats, normalScale); break;
-      case 3: skinLoopAvx2<3>(*this, 3, mats, normalMats, normalScale); break;
-      case 4: skinLoopAvx2<4>(*this, 4, mats, normalMats, normalScale); break;
-      case 8: skinLoopAvx2<8>(*this, 8, mats, normalMats, normalScale); break;
-      default: skinLoopAvx2<0>(*this, influencesPerVertex, mats, normalMats, normalScale); break;
-    }
+    dispatch<Avx2Loop>(*this, mode, mats, normalMats, normalScale);
     return true;
   }
 #endif
-  switch (influencesPerVertex) {
-    case 1: skinLoop<1>(*this, 1, mats, normalMats, normalScale); break;
-    case 2: skinLoop<2>(*this, 2, mats, normalMats, normalScale); break;
-    case 3: skinLoop<3>(*this, 3, mats, normalMats, normalScale); break;
-    case 4: skinLoop<4>(*this, 4, mats, normalMats, normalScale); break;
-    case 8: skinLoop<8>(*this, 8, mats, normalMats, normalScale); break;
-    default: skinLoop<0>(*this, influencesPerVertex, mats, normalMats, normalScale); break;
-  }
+  dispatch<Sse2Loop>(*this, mode, mats, normalMats, normalScale);
   return true;
 }
 
