@@ -143,15 +143,60 @@ KINEMA_TARGET_AVX2 inline void storeVec3Avx2(float* out, __m128 v) {
   std::memcpy(out + 2, &z, sizeof z);
 }
 
-KINEMA_TARGET_AVX2 inline __m128 normalize3Avx2(__m128 v) {
-  const __m128 sq = _mm_mul_ps(v, v);
-  const __m128 len2 = _mm_add_ps(_mm_add_ps(_mm_permute_ps(sq, 0x00), _mm_permute_ps(sq, 0x55)),
-                                 _mm_permute_ps(sq, 0xAA));
-  const __m128 y = _mm_rsqrt_ps(len2);
+// Two normals (one per 128-bit lane) normalised at once: half the shuffles and Newton
+// steps per vertex. Same arithmetic as the SSE2 normalize3, with the step fused.
+KINEMA_TARGET_AVX2 inline __m256 normalize3x2(__m256 v) {
+  const __m256 sq = _mm256_mul_ps(v, v);
+  const __m256 len2 = _mm256_add_ps(_mm256_add_ps(_mm256_permute_ps(sq, 0x00), _mm256_permute_ps(sq, 0x55)),
+                                    _mm256_permute_ps(sq, 0xAA));
+  const __m256 y = _mm256_rsqrt_ps(len2);
   // One Newton step: y (3 - x y^2) / 2.
-  const __m128 inv = _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(0.5f), y),
-                                _mm_fnmadd_ps(_mm_mul_ps(len2, y), y, _mm_set1_ps(3.0f)));
-  return _mm_and_ps(_mm_mul_ps(v, inv), _mm_cmp_ps(len2, _mm_set1_ps(1e-36f), _CMP_GT_OQ));
+  const __m256 inv = _mm256_mul_ps(_mm256_mul_ps(_mm256_set1_ps(0.5f), y),
+                                   _mm256_fnmadd_ps(_mm256_mul_ps(len2, y), y, _mm256_set1_ps(3.0f)));
+  return _mm256_and_ps(_mm256_mul_ps(v, inv), _mm256_cmp_ps(len2, _mm256_set1_ps(1e-36f), _CMP_GT_OQ));
+}
+
+// Everything for vertex v but the normal's normalisation: stores the position, returns
+// the blended normal (unused for NormalMode::None).
+template <int Stride, NormalMode Mode>
+KINEMA_TARGET_AVX2 inline __m128 skinVertexAvx2(const float* in, float* out, const float* nin, const uint16_t* joints,
+                                                const float* weights, int s, size_t v, const JointMatrix* mats,
+                                                const NormalMatrix* normalMats) {
+  __m256 w = _mm256_broadcast_ss(weights);
+  const float* m = mats[joints[0]].c[0];
+  __m256 c01 = _mm256_mul_ps(w, _mm256_load_ps(m));
+  __m256 c23 = _mm256_mul_ps(w, _mm256_load_ps(m + 8));
+  for (int k = 1; k < s; ++k) {
+    w = _mm256_broadcast_ss(weights + k);
+    m = mats[joints[k]].c[0];
+    c01 = _mm256_fmadd_ps(w, _mm256_load_ps(m), c01);
+    c23 = _mm256_fmadd_ps(w, _mm256_load_ps(m + 8), c23);
+  }
+  const __m128 c0 = _mm256_castps256_ps128(c01), c1 = _mm256_extractf128_ps(c01, 1);
+  const __m128 c2 = _mm256_castps256_ps128(c23), c3 = _mm256_extractf128_ps(c23, 1);
+  const float* p = in + 3 * v;
+  const __m128 r = _mm_add_ps(_mm_add_ps(_mm_mul_ps(c0, _mm_broadcast_ss(p)), _mm_mul_ps(c1, _mm_broadcast_ss(p + 1))),
+                              _mm_add_ps(_mm_mul_ps(c2, _mm_broadcast_ss(p + 2)), c3));
+  storeVec3Avx2(out + 3 * v, r);
+  if (Mode == NormalMode::None) return r;
+  const float* n = nin + 3 * v;
+  __m128 n0 = c0, n1 = c1, n2 = c2;
+  if (Mode == NormalMode::PerJoint) {
+    w = _mm256_broadcast_ss(weights);
+    const float* nm = normalMats[joints[0]].c[0];
+    __m256 n01 = _mm256_mul_ps(w, _mm256_load_ps(nm));
+    n2 = _mm_mul_ps(_mm256_castps256_ps128(w), _mm_load_ps(nm + 8));
+    for (int k = 1; k < s; ++k) {
+      w = _mm256_broadcast_ss(weights + k);
+      nm = normalMats[joints[k]].c[0];
+      n01 = _mm256_fmadd_ps(w, _mm256_load_ps(nm), n01);
+      n2 = _mm_fmadd_ps(_mm256_castps256_ps128(w), _mm_load_ps(nm + 8), n2);
+    }
+    n0 = _mm256_castps256_ps128(n01);
+    n1 = _mm256_extractf128_ps(n01, 1);
+  }
+  return _mm_fmadd_ps(n2, _mm_broadcast_ss(n + 2),
+                      _mm_fmadd_ps(n1, _mm_broadcast_ss(n + 1), _mm_mul_ps(n0, _mm_broadcast_ss(n))));
 }
 
 template <int Stride, NormalMode Mode>
@@ -165,47 +210,30 @@ KINEMA_TARGET_AVX2 void skinLoopAvx2(const LinearBlendSkinningJob& job, int stri
   float* out = &job.outPositions[0].x;
   const float* nin = job.normals ? &job.normals[0].x : nullptr;
   float* nout = job.normals ? &job.outNormals[0].x : nullptr;
-  const bool normalize = job.normalizeNormals;
+  const size_t count = static_cast<size_t>(job.vertexCount);  // a local: the stores could alias the job
+  size_t v = 0;
+  if (Mode != NormalMode::None && job.normalizeNormals) {
+    // Pairs of vertices, their normals normalised together. Each vertex's inputs are read
+    // before its outputs are written, so in-place skinning still works.
+    for (; v + 1 < count; v += 2) {
+      const __m128 a = skinVertexAvx2<Stride, Mode>(in, out, nin, joints + v * step, weights + v * step, s, v, mats,
+                                                    normalMats);
+      const __m128 b = skinVertexAvx2<Stride, Mode>(in, out, nin, joints + (v + 1) * step, weights + (v + 1) * step,
+                                                    s, v + 1, mats, normalMats);
+      const __m256 ab = normalize3x2(_mm256_insertf128_ps(_mm256_castps128_ps256(a), b, 1));
+      storeVec3Avx2(nout + 3 * v, _mm256_castps256_ps128(ab));
+      storeVec3Avx2(nout + 3 * v + 3, _mm256_extractf128_ps(ab, 1));
+    }
+  }
   const __m128 scale = _mm_set1_ps(normalScale);
-  const int count = job.vertexCount;  // a local: the output stores could alias the job
-  for (int v = 0; v < count; ++v, joints += step, weights += step) {
-    __m256 w = _mm256_broadcast_ss(weights);
-    const float* m = mats[joints[0]].c[0];
-    __m256 c01 = _mm256_mul_ps(w, _mm256_load_ps(m));
-    __m256 c23 = _mm256_mul_ps(w, _mm256_load_ps(m + 8));
-    for (int k = 1; k < s; ++k) {
-      w = _mm256_broadcast_ss(weights + k);
-      m = mats[joints[k]].c[0];
-      c01 = _mm256_fmadd_ps(w, _mm256_load_ps(m), c01);
-      c23 = _mm256_fmadd_ps(w, _mm256_load_ps(m + 8), c23);
-    }
-    const __m128 c0 = _mm256_castps256_ps128(c01), c1 = _mm256_extractf128_ps(c01, 1);
-    const __m128 c2 = _mm256_castps256_ps128(c23), c3 = _mm256_extractf128_ps(c23, 1);
-    const float* p = in + 3 * static_cast<size_t>(v);
-    const __m128 r =
-        _mm_add_ps(_mm_add_ps(_mm_mul_ps(c0, _mm_broadcast_ss(p)), _mm_mul_ps(c1, _mm_broadcast_ss(p + 1))),
-                   _mm_add_ps(_mm_mul_ps(c2, _mm_broadcast_ss(p + 2)), c3));
-    storeVec3Avx2(out + 3 * static_cast<size_t>(v), r);
+  for (; v < count; ++v) {
+    const __m128 rn =
+        skinVertexAvx2<Stride, Mode>(in, out, nin, joints + v * step, weights + v * step, s, v, mats, normalMats);
     if (Mode == NormalMode::None) continue;
-    const float* n = nin + 3 * static_cast<size_t>(v);
-    __m128 n0 = c0, n1 = c1, n2 = c2;
-    if (Mode == NormalMode::PerJoint) {
-      w = _mm256_broadcast_ss(weights);
-      const float* nm = normalMats[joints[0]].c[0];
-      __m256 n01 = _mm256_mul_ps(w, _mm256_load_ps(nm));
-      n2 = _mm_mul_ps(_mm256_castps256_ps128(w), _mm_load_ps(nm + 8));
-      for (int k = 1; k < s; ++k) {
-        w = _mm256_broadcast_ss(weights + k);
-        nm = normalMats[joints[k]].c[0];
-        n01 = _mm256_fmadd_ps(w, _mm256_load_ps(nm), n01);
-        n2 = _mm_fmadd_ps(_mm256_castps256_ps128(w), _mm_load_ps(nm + 8), n2);
-      }
-      n0 = _mm256_castps256_ps128(n01);
-      n1 = _mm256_extractf128_ps(n01, 1);
-    }
-    const __m128 rn = _mm_fmadd_ps(
-        n2, _mm_broadcast_ss(n + 2), _mm_fmadd_ps(n1, _mm_broadcast_ss(n + 1), _mm_mul_ps(n0, _mm_broadcast_ss(n))));
-    storeVec3Avx2(nout + 3 * static_cast<size_t>(v), normalize ? normalize3Avx2(rn) : _mm_mul_ps(rn, scale));
+    const __m128 n = job.normalizeNormals
+                         ? _mm256_castps256_ps128(normalize3x2(_mm256_castps128_ps256(rn)))
+                         : _mm_mul_ps(rn, scale);
+    storeVec3Avx2(nout + 3 * v, n);
   }
 }
 
