@@ -1,7 +1,9 @@
 // CPU skinning throughput: 50,000 vertices, 64 joints, positions + normals. "ns_per_vertex"
 // is wall time per vertex. Neighbouring vertices share joints, as in real meshes. Reference
 // point: ozz-animation's SkinningJob does about 4.5 ns per vertex with 4 influences,
-// positions and normals, on this machine class.
+// positions and normals, on this machine class (ozz leaves normals unnormalised: compare
+// BM_LinearBlend_Unnormalized). BM_LinearBlend takes the AVX2 + FMA loop where the CPU has it;
+// the *Sse2* variants force the baseline loop.
 //   ./build/bench/skinning_bench --benchmark_min_time=0.5
 #include <benchmark/benchmark.h>
 
