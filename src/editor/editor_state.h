@@ -80,6 +80,7 @@ struct EditorState {
 
   // --- Viewport ---
   OrbitCamera camera;      // camera.orthographic: numpad 5
+  glm::vec4 viewportRect{0.0f};  // the 3D view in window pixels (x, y, width, height), set each frame
   ViewOptions view;
   ToolState tool;
   int hoveredJoint = -1;   // under the mouse (drawn highlighted)

@@ -26,18 +26,30 @@ std::string rotationError(const glm::quat& q) {
   return {};
 }
 
-// Sets the rotation, and the X-mirrored one on the mirror partner when X-mirror is on.
+// Sets the rotation, and the X-mirrored one on the mirror partner when X-mirror is on;
+// each within its joint's limit.
 void setRotation(DocumentEdit& e, bool xMirror, int joint, const glm::quat& q) {
   const glm::quat unit = glm::normalize(q);
-  e.pose.local[joint].rotation = unit;
+  e.pose.local[joint].rotation = limitedLocalRotation(e, joint, unit);
   if (!xMirror) return;
   const std::string partnerName = mirroredJointName(e.names[joint]);
   if (partnerName.empty()) return;
   const int partner = e.skeleton.find(partnerName);
-  if (partner >= 0 && partner != joint) e.pose.local[partner].rotation = mirrorRotationX(unit);
+  if (partner >= 0 && partner != joint)
+    e.pose.local[partner].rotation = limitedLocalRotation(e, partner, mirrorRotationX(unit));
 }
 
 const std::string& nameOf(const Document& doc, int joint) { return doc.skeleton().names[joint]; }
+
+}  // namespace
+
+glm::quat limitedLocalRotation(const DocumentEdit& e, int joint, const glm::quat& local) {
+  if (joint < 0 || joint >= static_cast<int>(e.limits.size()) || !e.limits[joint].active()) return local;
+  if (joint >= static_cast<int>(e.skeleton.rest.size())) return local;
+  return applyJointLimit(e.limits[joint], e.skeleton.rest[joint].rotation, local);
+}
+
+namespace {
 
 std::string targetError(const Document& doc, int target) {
   if (target < 0 || target >= static_cast<int>(doc.ikTargets().size()))

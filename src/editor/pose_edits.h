@@ -29,6 +29,9 @@ std::string renameJoint(Document& doc, int joint, const std::string& name);
 
 // Joint limits (a limit of type None removes it).
 std::string setJointLimit(Document& doc, int joint, const JointLimit& limit);
+// `local` clamped into the joint's limit (relative to its rest rotation, as the IK solvers
+// do); unchanged when the joint has none. Every FK rotation edit and drag goes through it.
+glm::quat limitedLocalRotation(const DocumentEdit& e, int joint, const glm::quat& local);
 
 // IK targets. The returned string is "" or the error; addIkTarget puts the new index in
 // *index when given.

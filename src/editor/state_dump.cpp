@@ -25,6 +25,8 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
   out["redo_depth"] = static_cast<int>(doc.historyLabels().size()) - doc.historyPosition();
   out["frames"] = frames;
   out["window"] = {{"width", windowWidth}, {"height", windowHeight}};
+  out["viewport"] = {{"x", s.viewportRect.x}, {"y", s.viewportRect.y}, {"width", s.viewportRect.z},
+                     {"height", s.viewportRect.w}};
   out["tool"] = modalToolName(s.tool.mode);
   json selection = json::array();
   for (int j : doc.selection.joints()) selection.push_back(jointName(s, j));

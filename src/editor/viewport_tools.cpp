@@ -109,7 +109,8 @@ void ViewportTools::applyRotate(EditorState& state, const ViewportView& view) {
   }
   const std::vector<int> joints = joints_;
   state.doc.updateDrag([&](DocumentEdit& e) {
-    for (size_t k = 0; k < joints.size(); ++k) e.pose.local[joints[k]].rotation = glm::normalize(locals[k]);
+    for (size_t k = 0; k < joints.size(); ++k)
+      e.pose.local[joints[k]].rotation = limitedLocalRotation(e, joints[k], glm::normalize(locals[k]));
     return std::string();
   });
   state.tool.axis = axisOf(rotateMode_.axis);

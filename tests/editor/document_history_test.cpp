@@ -293,3 +293,43 @@ TEST(DocumentHistory, RandomEditSequencesUndoAndRedoExactly) {
 
 }  // namespace
 }  // namespace kinema
+
+namespace kinema {
+namespace {
+
+// Same rotation (either sign of the quaternion).
+void expectSameRotation(const glm::quat& a, const glm::quat& b, const char* what) {
+  EXPECT_NEAR(std::abs(glm::dot(glm::normalize(a), glm::normalize(b))), 1.0f, 1e-6f) << what;
+}
+
+TEST(DocumentLimits, FkRotationsAndDragsStayWithinTheJointLimit) {
+  // A hinge about the rest frame's Z, 0..45 degrees, on the left forearm: 90 degrees about Z
+  // stops at 45; -30 stops at 0; a turn about X (off the hinge) has no Z twist, so the joint
+  // stays at rest. Limits are relative to the rest rotation: expected = rest * R_z(angle).
+  Document doc = newDocument();
+  const int elbow = joint(doc, "LowerArm.L");
+  const glm::quat rest = doc.skeleton().rest[elbow].rotation;
+  const glm::vec3 z(0, 0, 1);
+  ASSERT_EQ(setJointLimit(doc, elbow, JointLimit::hinge(z, 0.0f, glm::radians(45.0f))), "");
+  ASSERT_EQ(setJointRotation(doc, elbow, rest * glm::angleAxis(glm::radians(90.0f), z)), "");
+  expectSameRotation(doc.pose().local[elbow].rotation, rest * glm::angleAxis(glm::radians(45.0f), z), "90 -> 45");
+  ASSERT_EQ(setJointRotation(doc, elbow, rest * glm::angleAxis(glm::radians(-30.0f), z)), "");
+  expectSameRotation(doc.pose().local[elbow].rotation, rest, "-30 -> 0");
+  ASSERT_EQ(setJointRotation(doc, elbow, rest * glm::angleAxis(glm::radians(20.0f), z)), "");
+  expectSameRotation(doc.pose().local[elbow].rotation, rest * glm::angleAxis(glm::radians(20.0f), z), "20 inside");
+  ASSERT_EQ(setJointRotation(doc, elbow, rest * glm::angleAxis(glm::radians(30.0f), glm::vec3(1, 0, 0))), "");
+  expectSameRotation(doc.pose().local[elbow].rotation, rest, "off the hinge");
+  // A gizmo drag is clamped each frame, and the committed step holds the clamped rotation.
+  ASSERT_EQ(beginRotateDrag(doc, elbow), "");
+  ASSERT_EQ(updateRotateDrag(doc, elbow, rest * glm::angleAxis(glm::radians(120.0f), z)), "");
+  expectSameRotation(doc.pose().local[elbow].rotation, rest * glm::angleAxis(glm::radians(45.0f), z), "drag 120 -> 45");
+  doc.commitDrag();
+  expectSameRotation(doc.pose().local[elbow].rotation, rest * glm::angleAxis(glm::radians(45.0f), z), "committed");
+  // limitedLocalRotation on a joint without a limit changes nothing.
+  const int hand = joint(doc, "Hand.L");
+  ASSERT_EQ(setJointRotation(doc, hand, glm::angleAxis(2.5f, z)), "");
+  expectSameRotation(doc.pose().local[hand].rotation, glm::angleAxis(2.5f, z), "no limit");
+}
+
+}  // namespace
+}  // namespace kinema

@@ -1,7 +1,8 @@
 // End-to-end tests of the editor window: the real `kinema edit` under xvfb-run with Mesa's
 // llvmpipe, driven by --script replay (and once by xdotool, through the X server), checked
 // in --dump-state. Expected values are derived by hand from the pixels the script moves:
-// the test projects joints itself (its own pinhole camera from the dumped eye/target/fov).
+// the test projects joints itself (its own pinhole camera from the dumped eye/target/fov,
+// seen through the dumped viewport rectangle, which one test checks against the layout).
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -20,6 +21,9 @@ const std::string kSoftware =
     "LIBGL_ALWAYS_SOFTWARE=1 MESA_GL_VERSION_OVERRIDE=3.3 ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 ";
 const std::string kXvfb = "xvfb-run -a -s '-screen 0 1280x800x24' ";
 constexpr double kW = 1280, kH = 720;  // the editor's default window size
+// The 3D view between the panels (panel_layout.h: left column 250 px, right column 310 px,
+// menu bar 19 px, status bar 24 px): x 250..970, y 19..696.
+constexpr double kViewX = 250, kViewY = 19, kViewW = kW - 250 - 310, kViewH = kH - 19 - 24;
 
 std::string shotDir() {
   const std::string dir = std::string(KINEMA_BUILD_DIR) + "/editor_e2e";
@@ -38,12 +42,17 @@ json readJson(const std::string& path) {
 
 glm::dvec3 vec3(const json& a) { return a.is_array() && a.size() == 3 ? glm::dvec3(a[0], a[1], a[2]) : glm::dvec3(NAN); }
 
-// A pinhole camera rebuilt from the dump: eye, target, vertical field of view, Y up.
+// A pinhole camera rebuilt from the dump: eye, target, vertical field of view, Y up, over
+// the viewport rectangle (window pixels).
 struct TestCamera {
   glm::dvec3 eye, target;
   double fovY = 0.6;
   glm::dvec3 f, r, u;
-  explicit TestCamera(const json& c) {
+  double x0 = kViewX, y0 = kViewY, w = kViewW, h = kViewH;
+  explicit TestCamera(const json& d) {
+    const json& c = d["camera"];
+    const json& v = d["viewport"];
+    if (v.is_object()) x0 = v["x"], y0 = v["y"], w = v["width"], h = v["height"];
     eye = vec3(c["eye"]);
     target = vec3(c["target"]);
     fovY = double(c["fov_y"]) * M_PI / 180.0;
@@ -55,11 +64,11 @@ struct TestCamera {
   glm::dvec2 pixel(glm::dvec3 p) const {
     const glm::dvec3 d = p - eye;
     const double t = std::tan(fovY / 2), z = glm::dot(d, f);
-    const double nx = glm::dot(d, r) / (z * t * kW / kH), ny = glm::dot(d, u) / (z * t);
-    return {(nx + 1) / 2 * kW, (1 - ny) / 2 * kH};
+    const double nx = glm::dot(d, r) / (z * t * w / h), ny = glm::dot(d, u) / (z * t);
+    return {x0 + (nx + 1) / 2 * w, y0 + (1 - ny) / 2 * h};
   }
   // World units per pixel on the plane facing the camera at p's depth.
-  double unitsPerPixel(glm::dvec3 p) const { return 2 * depth(p) * std::tan(fovY / 2) / kH; }
+  double unitsPerPixel(glm::dvec3 p) const { return 2 * depth(p) * std::tan(fovY / 2) / h; }
 };
 
 // Events one per frame from frame 3 (frames 1-2 set the front view and frame everything).
@@ -142,7 +151,7 @@ class EditorE2e : public ::testing::Test {
     return glm::dquat(NAN, NAN, NAN, NAN);
   }
   static std::vector<std::string> selection(const json& d) { return d["selection"].get<std::vector<std::string>>(); }
-  TestCamera camera() const { return TestCamera(front_["camera"]); }
+  TestCamera camera() const { return TestCamera(front_); }
   glm::dvec2 pixelOf(const std::string& name) const { return camera().pixel(joint(front_, name)); }
   glm::dvec2 midpoint(const std::string& a, const std::string& b) const { return (pixelOf(a) + pixelOf(b)) * 0.5; }
 
@@ -156,13 +165,28 @@ void expectNear(glm::dvec3 a, glm::dvec3 b, double tol, const std::string& what)
 }
 
 TEST_F(EditorE2e, FrontViewFramesTheCharacter) {
-  // Numpad 1 looks from +Z; the T-posed arms span x = -0.89..0.89 in the middle of the view.
+  // The 3D view is the free area between the panels, not the whole window.
+  EXPECT_EQ(double(front_["viewport"]["x"]), kViewX);
+  EXPECT_EQ(double(front_["viewport"]["y"]), kViewY);
+  EXPECT_EQ(double(front_["viewport"]["width"]), kViewW);
+  EXPECT_EQ(double(front_["viewport"]["height"]), kViewH);
+  // Numpad 1 looks from +Z; the T-posed arms span x = -0.89..0.89 in the middle of the view,
+  // and Home frames all of the skeleton inside the view (not under the panels).
   EXPECT_NEAR(double(front_["camera"]["azimuth"]), 0.0, 1e-6);
   EXPECT_NEAR(double(front_["camera"]["elevation"]), 0.0, 1e-6);
   const glm::dvec2 l = pixelOf("Fingertip.L"), r = pixelOf("Fingertip.R");
-  EXPECT_GT(l.x, kW / 2 + 100);
-  EXPECT_LT(r.x, kW / 2 - 100);
+  const double centre = kViewX + kViewW / 2;
+  EXPECT_GT(l.x, centre + 100);
+  EXPECT_LT(r.x, centre - 100);
+  EXPECT_NEAR(l.x - centre, centre - r.x, 2.0);
   EXPECT_NEAR(l.y, r.y, 0.5);
+  for (const json& j : front_["joints"]) {
+    const glm::dvec2 p = camera().pixel(vec3(j["world_position"]));
+    EXPECT_GT(p.x, kViewX) << j["name"];
+    EXPECT_LT(p.x, kViewX + kViewW) << j["name"];
+    EXPECT_GT(p.y, kViewY) << j["name"];
+    EXPECT_LT(p.y, kViewY + kViewH) << j["name"];
+  }
 }
 
 TEST_F(EditorE2e, ClickSelectsTheHandAndShiftClickAdds) {
@@ -249,24 +273,28 @@ TEST_F(EditorE2e, RThenAxisKeysConstrainAndTypedDegreesAreExact) {
 }
 
 TEST_F(EditorE2e, GizmoRingDragRotatesAboutItsAxis) {
-  // In the front view the Z ring (radius 80 px, RotateGizmo's default) is a circle around
-  // the joint; X and Y are edge-on lines. Press on the Z ring at 240 degrees (its lower
-  // left half faces the eye, which is below and left of the elbow; only that half grabs),
-  // sweep to 330: +90 degrees about Z, the forearm points up.
+  // In the front view the Z ring (radius 80 px, RotateGizmo's default) is a whole circle
+  // around the joint (its axis is the view axis); X and Y are edge-on lines. Press on the Z
+  // ring at 240 degrees (lower left) and, in a second run, at 60 degrees (upper right, the
+  // half that used to be culled), sweep 90 degrees counter-clockwise: +90 degrees about Z,
+  // the forearm points up.
   const glm::dvec2 p = pixelOf("LowerArm.L");
-  Script s;
-  s.click(midpoint("LowerArm.L", "Hand.L"));
-  const double a0 = 240 * M_PI / 180;
-  s.move(p + 80.0 * glm::dvec2(std::cos(a0), -std::sin(a0))).down();
-  for (int k = 1; k <= 8; ++k) {
-    const double a = a0 + k * M_PI / 16;
-    s.move(p + 80.0 * glm::dvec2(std::cos(a), -std::sin(a)));
+  for (double startDegrees : {240.0, 60.0}) {
+    Script s;
+    s.click(midpoint("LowerArm.L", "Hand.L"));
+    const double a0 = startDegrees * M_PI / 180;
+    s.move(p + 80.0 * glm::dvec2(std::cos(a0), -std::sin(a0))).down();
+    for (int k = 1; k <= 8; ++k) {
+      const double a = a0 + k * M_PI / 16;
+      s.move(p + 80.0 * glm::dvec2(std::cos(a), -std::sin(a)));
+    }
+    s.up();
+    json d = run(s, "gizmo_ring_drag_" + std::to_string(int(startDegrees)));
+    const glm::dvec3 elbow = joint(front_, "LowerArm.L");
+    expectNear(joint(d, "Hand.L"), elbow + glm::dvec3(0, 0.26, 0), 2e-3,
+               "Hand.L after the Z ring's quarter turn from " + std::to_string(int(startDegrees)) + " degrees");
+    EXPECT_EQ(int(d["undo_depth"]), 1);
   }
-  s.up();
-  json d = run(s, "gizmo_ring_drag");
-  const glm::dvec3 elbow = joint(front_, "LowerArm.L");
-  expectNear(joint(d, "Hand.L"), elbow + glm::dvec3(0, 0.26, 0), 2e-3, "Hand.L after the Z ring's quarter turn");
-  EXPECT_EQ(int(d["undo_depth"]), 1);
 }
 
 TEST_F(EditorE2e, GMovesTheRootInTheViewPlaneAndAlongAnAxis) {
