@@ -125,13 +125,15 @@ class EditorE2e : public ::testing::Test {
 
   // Runs the script on the default character; the last frame goes to the build dir as
   // editor_e2e/NAME.png. Returns the dumped state.
-  static json runScript(const std::string& dir, const Script& script, const std::string& name) {
+  static json runScript(const std::string& dir, const Script& script, const std::string& name,
+                        const std::string& file = "") {
     const std::string scriptPath = dir + "/" + name + ".jsonl", dump = dir + "/" + name + ".json";
     std::ofstream(scriptPath) << script.text();
     std::string out, err;
     // Recent files and recovery files go to the test's folder, not the user's.
     const std::string xdg = "XDG_STATE_HOME=" + dir + " XDG_CONFIG_HOME=" + dir + " ";
-    const int rc = runCommand(kXvfb + "env " + xdg + kSoftware + KINEMA_BINARY + " edit --script " + scriptPath +
+    const int rc = runCommand(kXvfb + "env " + xdg + kSoftware + KINEMA_BINARY + " edit " +
+                                  (file.empty() ? std::string() : "'" + file + "' ") + "--script " + scriptPath +
                                   " --dump-state " + dump + " --screenshot " + shotDir() + "/" + name + ".png",
                               &out, &err);
     EXPECT_EQ(rc, 0) << err;
@@ -294,6 +296,71 @@ TEST_F(EditorE2e, GizmoRingDragRotatesAboutItsAxis) {
     expectNear(joint(d, "Hand.L"), elbow + glm::dvec3(0, 0.26, 0), 2e-3,
                "Hand.L after the Z ring's quarter turn from " + std::to_string(int(startDegrees)) + " degrees");
     EXPECT_EQ(int(d["undo_depth"]), 1);
+  }
+}
+
+TEST_F(EditorE2e, RotationsStopAtTheJointLimitAndTheLimitArcIsDrawn) {
+  // An arm whose forearm (LowerArm.L, rest rotation identity, bone 0.26 along +X) may only
+  // bend 0..45 degrees about Z. R Z 90 and a 90-degree sweep of the gizmo's Z ring both stop
+  // at 45: rotation (0, 0, sin 22.5, cos 22.5), the hand at elbow + 0.26 (cos 45, sin 45, 0).
+  const std::string file = dir_ + "/arm.kinema";
+  std::ofstream(file) << R"({"format": "kinema", "version": 1, "skeleton": {"joints": [
+    {"name": "Hips", "parent": -1, "translation": [0, 1, 0]},
+    {"name": "UpperArm.L", "parent": 0, "translation": [0.2, 0.4, 0]},
+    {"name": "LowerArm.L", "parent": 1, "translation": [0.3, 0, 0]},
+    {"name": "Hand.L", "parent": 2, "translation": [0.26, 0, 0]},
+    {"name": "Fingertip.L", "parent": 3, "translation": [0.1, 0, 0]}]},
+  "ik": {"limits": [{"joint": "LowerArm.L", "type": "hinge", "axis": [0, 0, 1], "min_deg": 0, "max_deg": 45}]}})";
+  const json front = runScript(dir_, Script(), "limit_front", file);
+  ASSERT_TRUE(front.is_object());
+  const TestCamera cam(front);
+  const glm::dvec3 elbow = joint(front, "LowerArm.L");
+  expectNear(elbow, {0.5, 1.4, 0}, 1e-6, "the elbow in the file");
+  const glm::dvec2 forearm = (cam.pixel(elbow) + cam.pixel(joint(front, "Hand.L"))) * 0.5;
+  const double c = std::cos(M_PI / 4), s = std::sin(M_PI / 4);
+  const glm::dvec3 limited = elbow + 0.26 * glm::dvec3(c, s, 0);
+
+  json d = runScript(dir_, Script().click(forearm).key("R").key("Z").key("9").key("0").key("ENTER"), "limit_r_z90", file);
+  EXPECT_EQ(selection(d), std::vector<std::string>{"LowerArm.L"});
+  const glm::dquat q = rotation(d, "LowerArm.L");
+  EXPECT_NEAR(std::abs(q.z), std::sin(M_PI / 8), 1e-4);
+  EXPECT_NEAR(std::abs(q.w), std::cos(M_PI / 8), 1e-4);
+  EXPECT_NEAR(q.x, 0, 1e-5);
+  EXPECT_NEAR(q.y, 0, 1e-5);
+  expectNear(joint(d, "Hand.L"), limited, 1e-4, "R Z 90 stops at 45");
+
+  // The Z ring from 240 to 330 degrees (a quarter turn counter-clockwise): also 45.
+  const glm::dvec2 p = cam.pixel(elbow);
+  Script ring;
+  ring.click(forearm);
+  ring.move(p + 80.0 * glm::dvec2(std::cos(4 * M_PI / 3), -std::sin(4 * M_PI / 3))).down();
+  for (int k = 1; k <= 8; ++k) {
+    const double a = 4 * M_PI / 3 + k * M_PI / 16;
+    ring.move(p + 80.0 * glm::dvec2(std::cos(a), -std::sin(a)));
+  }
+  ring.up();
+  d = runScript(dir_, ring, "limit_ring_drag", file);
+  expectNear(joint(d, "Hand.L"), limited, 2e-3, "the Z ring's quarter turn stops at 45");
+  EXPECT_EQ(int(d["undo_depth"]), 1);
+
+  // The screenshot of the R run shows the hinge arc (OverlayStyle::limit, cyan): radius the
+  // bone's length about the elbow from the rest direction +X, 0..45 degrees. Look for it
+  // (2 px wide) at 10, 22.5 and 35 degrees, away from the bone (drawn along 45).
+  const auto shot = loadPng(shotDir() + "/limit_r_z90.png");
+  ASSERT_TRUE(shot.ok()) << shot.error();
+  const Image& img = shot.value();
+  for (double deg : {10.0, 22.5, 35.0}) {
+    const double a = deg * M_PI / 180;
+    const glm::dvec2 px = cam.pixel(elbow + 0.26 * glm::dvec3(std::cos(a), std::sin(a), 0));
+    bool found = false;
+    for (int dy = -2; dy <= 2 && !found; ++dy)
+      for (int dx = -2; dx <= 2 && !found; ++dx) {
+        const int x = int(std::lround(px.x)) + dx, y = int(std::lround(px.y)) + dy;
+        if (x < 0 || y < 0 || x >= img.width || y >= img.height) continue;
+        const unsigned char* rgba = &img.rgba[(size_t(y) * img.width + x) * 4];
+        found = rgba[0] < 140 && rgba[1] > 160 && rgba[2] > 160;
+      }
+    EXPECT_TRUE(found) << "no limit arc pixel near (" << px.x << ", " << px.y << ") at " << deg << " degrees";
   }
 }
 
