@@ -9,6 +9,8 @@ cd "$root"  # the editor shows the path it was given: keep it short
 bvh=../shared/data/bvh/cmu_01_01_first720.bvh
 xvfb-run -a -s "-screen 0 1280x800x24" "$kinema" edit "$bvh" --frame-count 5 --screenshot "$root/docs/images/editor.png"
 "$kinema" render "$bvh" --frame 240 --select LeftArm --size 960x540 --out "$root/docs/images/render_cmu_frame240.png"
+"$kinema" render ../shared/data/gltf/CesiumMan.glb --time 1 --bones xray --size 960x540 --out "$root/docs/images/skinned_cesium_man.png"
+"$kinema" render ../shared/data/gltf/Fox.glb --clip 2 --time 0.6 --camera 60,15 --size 960x540 --out "$root/docs/images/skinned_fox.png"
 # The editor's FK gizmo and IK drag, posed by replaying recorded input (kinema edit --script);
 # XDG folders point away from the user's recent files and recovery files.
 tmp=$(mktemp -d)

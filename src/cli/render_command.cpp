@@ -11,6 +11,7 @@
 #include "core/forward_kinematics.h"
 #include "render/headless_renderer.h"
 #include "render/skeleton_view.h"
+#include "skin/scene_deformation.h"
 
 namespace kinema::cli {
 
@@ -101,6 +102,12 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
                   "(default: 30,12 and the distance that frames the skeleton)");
   cmd->add_option("--backend", o.backend, "egl (default) or osmesa")->check(CLI::IsMember({"egl", "osmesa"}));
   cmd->add_option("--select", o.select, "Highlight this joint, as the editor shows a selection");
+  cmd->add_option("--bones", o.bones,
+                  "Bones over the meshes: none, on (default; hidden inside a body) or xray (on top, see-through)")
+      ->check(CLI::IsMember({"none", "on", "xray"}));
+  cmd->add_option("--weights", o.weights, "Show this joint's skin weights as heat colours (blue 0 -> red 1)");
+  cmd->add_option("--mesh", o.mesh, "on (default) or off: draw the file's meshes, or its skeleton alone")
+      ->check(CLI::IsMember({"on", "off"}));
   cmd->add_option("--out", o.out, "PNG path; with --frames a pattern such as dir/frame_%04d.png")->required();
   return cmd;
 }
@@ -152,6 +159,12 @@ int runRender(const RenderOptions& o) {
     if (selected < 0) return badInput(scene.source + ": no joint named '" + o.select + "' (--select)");
   }
 
+  int weightJoint = -1;
+  if (!o.weights.empty()) {
+    weightJoint = scene.skeleton.find(o.weights);
+    if (weightJoint < 0) return badInput(scene.source + ": no joint named '" + o.weights + "' (--weights)");
+  }
+
   std::vector<Sample> samples;
   const double frameTime = frameTimeOf(scene, o.clip);
   if (sequence) {
@@ -160,12 +173,35 @@ int runRender(const RenderOptions& o) {
     samples.push_back({o.frame, o.frameOption->count() ? static_cast<double>(o.frame) * frameTime : o.time});
   }
 
-  // One camera for the whole sequence, framing every pose in it, so the view does not jump.
+  const HeadlessBackend backend = o.backend == "osmesa" ? HeadlessBackend::OsMesa : HeadlessBackend::Egl;
+  Result<std::unique_ptr<HeadlessRenderer>> opened =
+      HeadlessRenderer::open(backend, static_cast<int>(w), static_cast<int>(h));
+  if (!opened) return badInput("cannot render: " + opened.error());
+  HeadlessRenderer& renderer = *opened.value();
+  const bool meshes = !scene.meshInstances.empty() && o.mesh == "on";
+  if (meshes) {
+    const std::string error = renderer.meshes().upload(scene);
+    if (!error.empty()) return badInput("cannot render: " + error);
+  }
+
+  // One camera for the whole sequence, framing every pose in it (joints and deformed
+  // vertices, read back from the GPU), so the view does not jump.
   std::vector<std::vector<glm::mat4>> worlds;
+  std::vector<std::vector<std::vector<float>>> morphWeights;  // per sample, per mesh instance
   Bounds bounds;
   for (const Sample& s : samples) {
     worlds.push_back(posedWorld(scene, o.clip, s.time));
     for (const glm::mat4& m : worlds.back()) bounds.add(glm::vec3(m[3]));
+    if (!meshes) continue;
+    morphWeights.push_back(sampleMorphWeights(scene, scene.clips.empty() ? -1 : o.clip, s.time));
+    MeshFrame meshFrame;
+    meshFrame.world = &worlds.back();
+    meshFrame.morphWeights = &morphWeights.back();
+    const Bounds body = renderer.meshes().deformedBounds(meshFrame);
+    if (!body.empty) {
+      bounds.add(body.min);
+      bounds.add(body.max);
+    }
   }
   const float aspect = static_cast<float>(w / h);
   OrbitCamera camera = defaultCamera(bounds, aspect);
@@ -175,12 +211,7 @@ int runRender(const RenderOptions& o) {
     if (cam.size() == 3) camera.distance = static_cast<float>(cam[2]);
     camera.fitClipPlanes(bounds.radius());
   }
-
-  const HeadlessBackend backend = o.backend == "osmesa" ? HeadlessBackend::OsMesa : HeadlessBackend::Egl;
-  Result<std::unique_ptr<HeadlessRenderer>> opened =
-      HeadlessRenderer::open(backend, static_cast<int>(w), static_cast<int>(h));
-  if (!opened) return badInput("cannot render: " + opened.error());
-  HeadlessRenderer& renderer = *opened.value();
+  const std::vector<char> skinJoints = skinJointMask(scene);
 
   for (size_t k = 0; k < samples.size(); ++k) {
     const std::string path = sequence ? expandFramePattern(o.out, samples[k].frame) : o.out;
@@ -189,9 +220,18 @@ int runRender(const RenderOptions& o) {
     job.parents = &scene.skeleton.parents;
     job.world = &worlds[k];
     job.selectedJoint = selected;
+    job.shownJoints = &skinJoints;
+    if (o.bones == "xray" && meshes) job.style = SkeletonStyle::xRay();
     job.run(list);
+    MeshDraw meshDraw;
+    meshDraw.renderer = &renderer.meshes();
+    meshDraw.frame.world = &worlds[k];
+    meshDraw.frame.morphWeights = meshes ? &morphWeights[k] : nullptr;
+    meshDraw.frame.weightJoint = weightJoint;
     FrameDescription frame;
     frame.skeleton = &list;
+    frame.meshes = meshes ? &meshDraw : nullptr;
+    frame.bones = o.bones == "none" ? BoneDisplay::None : o.bones == "xray" ? BoneDisplay::XRay : BoneDisplay::On;
     frame.camera = camera;
     frame.sceneRadius = bounds.radius();
     const Image image = renderer.render(frame);

@@ -4,7 +4,8 @@
 namespace kinema::cli {
 
 // `kinema render [FILE] [--clip I] [--time T | --frame N | --frames A:B] [--size WxH]
-//  [--camera AZ,EL[,DIST]] [--backend egl|osmesa] [--select JOINT] --out PATH`
+//  [--camera AZ,EL[,DIST]] [--backend egl|osmesa] [--select JOINT] [--bones none|on|xray]
+//  [--weights JOINT] [--mesh on|off] --out PATH`
 struct RenderOptions {
   std::string file;
   int clip = 0;
@@ -15,6 +16,9 @@ struct RenderOptions {
   std::string camera;
   std::string backend = "egl";
   std::string select;
+  std::string bones = "on";
+  std::string weights;
+  std::string mesh = "on";
   std::string out;
   CLI::Option* timeOption = nullptr;
   CLI::Option* frameOption = nullptr;

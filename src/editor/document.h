@@ -28,6 +28,7 @@ struct DocumentEdit {
   Pose& pose;                          // the working pose
   std::vector<JointLimit>& limits;     // empty or one per joint
   std::vector<PoseIkTarget>& targets;  // the IK targets
+  std::vector<SkinningMethod>& skinning;  // one per scene mesh instance (linear blend / dual quaternion)
 };
 
 // The scene being edited plus everything the editor adds to it: the working pose, the IK
@@ -109,12 +110,14 @@ class Document {
     std::vector<Transform> pose;
     std::vector<JointLimit> limits;
     std::vector<PoseIkTarget> targets;
+    std::vector<SkinningMethod> skinning;
   };
   struct Drag {
     std::string label;
     Snapshot start;
   };
   Snapshot capture() const;
+  void syncSkinning();  // skinning_ -> scene_.meshInstances[i].skinning
   void restore(const Snapshot& s);
   DocumentEdit editView();
   std::string runChange(const std::function<std::string(DocumentEdit&)>& change, bool driven);
@@ -126,6 +129,7 @@ class Document {
   std::vector<std::string> loadedNames_;  // joint names as loaded: renames update glTF node names
   Pose pose_;
   std::vector<PoseIkTarget> targets_;
+  std::vector<SkinningMethod> skinning_;  // edited here, written into scene_.meshInstances after each change
   std::string path_;
   EditHistory history_;
   long long savedAt_ = 0;    // history_.dropped() + position() when last saved

@@ -2,6 +2,7 @@
 #include <string>
 #include <vector>
 
+#include "core/mesh.h"
 #include "core/transform.h"
 #include "editor/pose_ik_target.h"
 #include "ik/joint_limits.h"
@@ -26,8 +27,10 @@ struct EditRecord {
   std::vector<JointLimit> limitsBefore, limitsAfter;
   bool targetsChanged = false;
   std::vector<PoseIkTarget> targetsBefore, targetsAfter;
+  bool skinningChanged = false;  // the mesh instances' skinning methods
+  std::vector<SkinningMethod> skinningBefore, skinningAfter;
 
-  bool empty() const { return pose.empty() && names.empty() && !limitsChanged && !targetsChanged; }
+  bool empty() const { return pose.empty() && names.empty() && !limitsChanged && !targetsChanged && !skinningChanged; }
 };
 
 // A linear undo history: entries [0, position) are applied, [position, size) can be redone.

@@ -44,6 +44,8 @@ struct ToolState {
 struct ViewOptions {
   bool showGrid = true;
   bool xrayBones = false;   // bones drawn over everything
+  bool showBones = true;    // off: the body alone (bones none / on / x-ray, Alt+Z cycles)
+  bool showWeights = false; // the active joint's skin weights as heat colours on the meshes
   bool showLimits = true;   // joint-limit cones and arcs of the selection
   bool showGizmo = true;
   bool localGizmo = false;  // the gizmo's rings turn with the joint (else world axes)

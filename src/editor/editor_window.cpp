@@ -22,8 +22,10 @@
 #include "editor/viewport_tools.h"
 #include "io/atomic_write.h"
 #include "io/image.h"
+#include "render/mesh_renderer.h"
 #include "render/skeleton_renderer.h"
 #include "render/skeleton_view.h"
+#include "skin/scene_deformation.h"
 
 namespace kinema {
 
@@ -247,7 +249,36 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
   long long frame = 1;
   {
     SkeletonRenderer renderer;
-    const std::string error = renderer.init();
+    std::string error = renderer.init();
+    // The document's meshes, skinned on the GPU each frame; uploaded again when a file is
+    // opened (edits never change meshes).
+    MeshRenderer meshes;
+    if (error.empty()) error = meshes.init();
+    std::vector<char> skinJoints;  // bones only between skin joints (skinJointMask)
+    glm::vec3 meshReach(0.0f);     // how far the body reaches past the joints (a head above the neck)
+    auto uploadMeshes = [&]() -> std::string {
+      const Scene& scene = state.doc.scene();
+      skinJoints = skinJointMask(scene);
+      meshReach = glm::vec3(0.0f);
+      const std::string failed = meshes.upload(scene);
+      if (!failed.empty() || meshes.empty()) return failed;
+      // Measured once per upload at the current pose, so framing and the grid take in the
+      // body without reading vertices back every frame.
+      MeshFrame now;
+      now.world = &state.world;
+      const Bounds body = meshes.deformedBounds(now), joints = jointBounds(state.world);
+      if (!body.empty && !joints.empty)
+        meshReach = glm::max(glm::max(joints.min - body.min, body.max - joints.max), glm::vec3(0.0f));
+      return {};
+    };
+    auto viewBounds = [&state, &meshReach]() {
+      Bounds b = jointBounds(state.world);
+      if (!b.empty) {
+        b.add(b.min - meshReach);
+        b.add(b.max + meshReach);
+      }
+      return b;
+    };
     if (!error.empty()) result.error = error;
     ViewportTools tools;
     SkeletonDrawList list;  // last frame's drawing: picking casts rays against it
@@ -255,9 +286,10 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     evaluateEditorPose(state);
     int fbw = 0, fbh = 0, ww = 0, wh = 0;
     glfwGetFramebufferSize(window, &fbw, &fbh);
+    if (error.empty()) error = uploadMeshes();
     glfwGetWindowSize(window, &ww, &wh);
     const PanelRect startRect = viewportRect(ImVec2(float(ww), float(wh)));
-    state.camera = defaultCamera(jointBounds(state.world), startRect.w / startRect.h);
+    state.camera = defaultCamera(viewBounds(), startRect.w / startRect.h);
     size_t nextScripted = 0;
     const long long lastScriptFrame = o.script.empty() ? 0 : o.script.back().frame;
     double previous = glfwGetTime();
@@ -292,7 +324,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       }
       advancePlayback(state, dt);
       evaluateEditorPose(state);
-      const Bounds bounds = jointBounds(state.world);
+      const Bounds bounds = viewBounds();
 
       imguiBackendsNewFrame();
       io.DisplaySize = ImVec2(float(ww), float(wh));
@@ -310,10 +342,22 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         glClearColor(0.235f, 0.235f, 0.235f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
       } else {
+        if (meshes.needsUpload(state.doc.scene())) {
+          const std::string failed = uploadMeshes();
+          if (!failed.empty()) state.statusMessage = failed;
+        }
         SkeletonDrawJob job;
         job.parents = &state.doc.skeleton().parents;
         job.world = &state.world;
+        job.shownJoints = &skinJoints;
         job.run(list);
+        MeshDraw meshDraw;
+        meshDraw.renderer = &meshes;
+        meshDraw.frame.world = &state.world;
+        std::vector<std::vector<float>> morphWeights;  // animated blend shapes at the playhead
+        if (!meshes.empty()) morphWeights = sampleMorphWeights(state.doc.scene(), state.hasMotion() ? state.clip : -1, state.time);
+        meshDraw.frame.morphWeights = &morphWeights;
+        meshDraw.frame.weightJoint = state.view.showWeights ? state.doc.selection.active() : -1;
         colorSelection(state, list);
         state.camera.fitClipPlanes(bounds.radius());
         // The viewport in framebuffer pixels (GL counts rows from the bottom); the panels
@@ -336,6 +380,10 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         description.height = vh;
         description.sceneRadius = bounds.radius();
         description.showGrid = state.view.showGrid;
+        description.meshes = meshes.empty() ? nullptr : &meshDraw;
+        description.bones = !state.view.showBones ? BoneDisplay::None
+                            : state.view.xrayBones ? BoneDisplay::XRay
+                                                   : BoneDisplay::On;
         renderer.draw(description);
       }
       imguiBackendsRenderDrawData(ImGui::GetDrawData());

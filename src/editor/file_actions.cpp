@@ -1,9 +1,13 @@
 // New / Open / Save / Save As / Export / Quit as the menu and its shortcuts run them, the
 // "discard unsaved changes?" guard, recent files, and the autosave + recovery session.
+#include <imgui.h>
+
 #include <cstdlib>
 #include <filesystem>
 
 #include "editor/editor_panels.h"
+#include "editor/panel_layout.h"
+#include "editor/viewport_controller.h"
 
 namespace kinema {
 
@@ -20,7 +24,9 @@ void replaceDocument(EditorState& state, Document doc) {
   state.time = 0.0;
   state.playing = false;
   state.sampleClip = false;
-  state.requests.frameAll = true;
+  // The new file framed from the current direction, as Home does.
+  const PanelRect view = viewportRect(ImGui::GetIO().DisplaySize);
+  ViewportController().frameAll(state.camera, jointBounds(state.doc.worldTransforms()), view.w / view.h);
   PanelState& p = state.panels;
   p.collapsed.clear();
   p.renaming = -1;
@@ -40,6 +46,11 @@ void openNow(EditorState& state, const std::string& path) {
   Result<Document> opened = openDocument(path);
   if (!opened) {
     showEditorError(state, opened.error());
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) {  // a recent file that went away leaves the list
+      state.panels.recent.remove(path);
+      state.panels.recent.save();
+    }
     return;
   }
   replaceDocument(state, std::move(opened.value()));

@@ -2,11 +2,15 @@
 // its File and Edit items. Viewport keys (numpad views, F, Home, Alt+R, R/G) belong to the
 // window's input layer; the menu shows them and raises the same requests.
 #include <imgui.h>
+
+#include <algorithm>
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 #include "editor/editor_panels.h"
+#include "editor/panel_layout.h"
 #include "editor/pose_edits.h"
+#include "editor/viewport_controller.h"
 
 namespace kinema {
 
@@ -102,8 +106,13 @@ void handleMenuShortcuts(EditorState& state) {
   else if (pressed(GLFW_KEY_V)) paste(state, shift);
 }
 
-void viewItem(EditorState& state, const char* label, const char* shortcut, int preset) {
-  if (ImGui::MenuItem(label, shortcut)) state.requests.viewPreset = preset;
+float viewAspect() {  // of the 3D view between the panels, which framing fills
+  const PanelRect r = viewportRect(ImGui::GetIO().DisplaySize);
+  return r.w / r.h;
+}
+
+void viewItem(EditorState& state, const char* label, const char* shortcut, ViewPreset preset) {
+  if (ImGui::MenuItem(label, shortcut)) applyViewPreset(state.camera, preset);
 }
 
 }  // namespace
@@ -148,30 +157,37 @@ void drawMainMenuBar(EditorState& state) {
     if (ImGui::MenuItem("Reset to Rest Pose")) showEditorError(state, resetToRestPose(doc));
     ImGui::Separator();
     ImGui::MenuItem("X-Mirror", nullptr, &doc.xMirror);
-    ImGui::MenuItem("Auto IK", nullptr, &state.view.autoIk);
+    ImGui::MenuItem("Auto IK", "Ctrl+I", &state.view.autoIk);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("View")) {
-    viewItem(state, "Front", "Numpad 1", 1);
-    viewItem(state, "Back", "Ctrl+Numpad 1", -1);
-    viewItem(state, "Right", "Numpad 3", 3);
-    viewItem(state, "Left", "Ctrl+Numpad 3", -3);
-    viewItem(state, "Top", "Numpad 7", 7);
-    viewItem(state, "Bottom", "Ctrl+Numpad 7", -7);
+    viewItem(state, "Front", "Numpad 1", ViewPreset::Front);
+    viewItem(state, "Back", "Ctrl+Numpad 1", ViewPreset::Back);
+    viewItem(state, "Right", "Numpad 3", ViewPreset::Right);
+    viewItem(state, "Left", "Ctrl+Numpad 3", ViewPreset::Left);
+    viewItem(state, "Top", "Numpad 7", ViewPreset::Top);
+    viewItem(state, "Bottom", "Ctrl+Numpad 7", ViewPreset::Bottom);
     ImGui::Separator();
-    if (ImGui::MenuItem("Perspective / Orthographic", "Numpad 5", state.camera.orthographic)) state.requests.toggleOrtho = true;
+    if (ImGui::MenuItem("Orthographic", "Numpad 5", state.camera.orthographic)) toggleOrthographic(state.camera);
     ImGui::Separator();
-    if (ImGui::MenuItem("Frame Selected", "F", false, !doc.selection.empty())) state.requests.frameSelected = true;
-    if (ImGui::MenuItem("Frame All", "Home")) state.requests.frameAll = true;
+    const std::vector<glm::mat4> world = doc.worldTransforms();
+    const float minRadius = 0.1f * std::max(jointBounds(world).radius(), 1e-3f);
+    if (ImGui::MenuItem("Frame Selected", "F", false, !doc.selection.empty()))
+      frameSelected(state.camera, world, doc.selection.joints(), viewAspect(), minRadius);
+    if (ImGui::MenuItem("Frame All", "Home")) ViewportController().frameAll(state.camera, jointBounds(world), viewAspect());
     ImGui::Separator();
-    if (ImGui::MenuItem("Bones: Solid", nullptr, !state.view.xrayBones)) state.view.xrayBones = false;
-    if (ImGui::MenuItem("Bones: X-Ray", nullptr, state.view.xrayBones)) state.view.xrayBones = true;
+    if (ImGui::MenuItem("Bones: None", "Alt+Z", !state.view.showBones)) state.view.showBones = false;
+    if (ImGui::MenuItem("Bones: Solid", nullptr, state.view.showBones && !state.view.xrayBones))
+      state.view.showBones = true, state.view.xrayBones = false;
+    if (ImGui::MenuItem("Bones: X-Ray", nullptr, state.view.showBones && state.view.xrayBones))
+      state.view.showBones = true, state.view.xrayBones = true;
+    ImGui::MenuItem("Weights of the Active Joint", "Alt+W", &state.view.showWeights);
     ImGui::MenuItem("Show Limits", nullptr, &state.view.showLimits);
     ImGui::MenuItem("Show Grid", nullptr, &state.view.showGrid);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Pose")) {
-    if (ImGui::MenuItem("Add IK Target to Selected", nullptr, false, doc.selection.active() >= 0)) addIkTargetToActive(state);
+    if (ImGui::MenuItem("Add IK Target to Selected", "Shift+I", false, doc.selection.active() >= 0)) addIkTargetToActive(state);
     const int t = currentIkTarget(state);
     if (ImGui::MenuItem("Remove IK Target", nullptr, false, t >= 0)) removeCurrentIkTarget(state);
     const bool pinned = t >= 0 && doc.ikTargets()[t].pinned;

@@ -66,7 +66,8 @@ void drawOutlinerPanel(EditorState& state) {
         // The model validates (non-empty, unique); a refusal keeps the field open with the reason.
         p.renameError = renameJoint(doc, i, p.renameBuffer);
         if (p.renameError.empty()) p.renaming = -1;
-      } else if (ImGui::IsItemDeactivated()) {
+        else p.renameFocus = true;  // Enter left the field: back into it to fix the name (Esc gives up)
+      } else if (ImGui::IsItemDeactivated() && !p.renameFocus) {
         p.renaming = -1;  // Esc or a click elsewhere cancels
         p.renameError.clear();
       }

@@ -31,7 +31,8 @@ struct PanelState {
   float heldEuler[3] = {};  // the Euler field's own numbers while it is held
   int heldJoint = -1;
   float typedQuaternion[4] = {};  // x y z w being typed, applied when the field is left
-  bool quaternionEditing = false;
+  bool quaternionEditing = false;  // typed but not applied yet
+  int quaternionJoint = -1;
   char nameBuffer[256] = {};
   int nameJoint = -1;
   bool nameEditing = false;
@@ -49,6 +50,7 @@ struct PanelState {
   PendingFileAction pending = PendingFileAction::None;
   std::string pendingPath;
   bool askDiscard = false;  // OpenPopup on the next frame
+  bool resumeAfterSaveAs = false;  // "Save first" needed Save As: the action waits for it
 
   // Autosave and recovery
   std::optional<Autosaver> autosaver;

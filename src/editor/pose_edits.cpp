@@ -159,6 +159,16 @@ std::string renameJoint(Document& doc, int joint, const std::string& name) {
   });
 }
 
+std::string setMeshSkinning(Document& doc, int instance, SkinningMethod method) {
+  if (instance < 0 || instance >= static_cast<int>(doc.scene().meshInstances.size()))
+    return "no mesh instance " + std::to_string(instance);
+  const char* name = method == SkinningMethod::DualQuaternion ? "dual quaternion" : "linear blend";
+  return doc.edit(std::string("Skinning ") + name, [&](DocumentEdit& e) {
+    e.skinning[instance] = method;
+    return std::string();
+  });
+}
+
 std::string setJointLimit(Document& doc, int joint, const JointLimit& limit) {
   std::string error = jointError(doc, joint);
   if (error.empty() && limit.active()) error = limit.validate();

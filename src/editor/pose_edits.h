@@ -32,6 +32,8 @@ std::string setJointLimit(Document& doc, int joint, const JointLimit& limit);
 // `local` clamped into the joint's limit (relative to its rest rotation, as the IK solvers
 // do); unchanged when the joint has none. Every FK rotation edit and drag goes through it.
 glm::quat limitedLocalRotation(const DocumentEdit& e, int joint, const glm::quat& local);
+// How mesh instance `instance` is skinned (linear blend or dual quaternion); one undo step.
+std::string setMeshSkinning(Document& doc, int instance, SkinningMethod method);
 
 // IK targets. The returned string is "" or the error; addIkTarget puts the new index in
 // *index when given.

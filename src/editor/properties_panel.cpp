@@ -5,10 +5,12 @@
 #include <imgui.h>
 
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
 #include "editor/editor_panels.h"
+#include "editor/mesh_section.h"
 #include "editor/panel_drag.h"
 #include "editor/panel_layout.h"
 #include "editor/pose_edits.h"
@@ -57,18 +59,32 @@ void rotationSection(EditorState& state, int joint) {
     ImGui::TextDisabled("degrees about X, Y, Z; R = R%c R%c R%c", std::tolower(order[0]), std::tolower(order[1]),
                         std::tolower(order[2]));
   } else {
-    // x, y, z, w as files write them; applied (normalised) when the field is left.
+    // x, y, z, w as files write them. Typed components wait (a half-typed quaternion is no
+    // rotation) until Enter or Apply sets the normalised rotation as one undo step.
     float* typed = p.typedQuaternion;
-    if (!p.quaternionEditing) typed[0] = q.x, typed[1] = q.y, typed[2] = q.z, typed[3] = q.w;
-    ImGui::InputFloat4("x y z w", typed, "%.4f");
-    if (ImGui::IsItemActivated()) p.quaternionEditing = true;
-    if (ImGui::IsItemDeactivated()) {
+    if (!p.quaternionEditing || p.quaternionJoint != joint) {
+      typed[0] = q.x, typed[1] = q.y, typed[2] = q.z, typed[3] = q.w;
       p.quaternionEditing = false;
-      if (ImGui::IsItemDeactivatedAfterEdit()) {
-        const glm::quat entered(typed[3], typed[0], typed[1], typed[2]);
-        if (glm::dot(entered, entered) < 1e-12f) showEditorError(state, "a rotation quaternion must not be zero");
-        else showEditorError(state, setJointRotation(doc, joint, safeNormalize(entered)));
-      }
+      p.quaternionJoint = joint;
+    }
+    if (ImGui::InputFloat4("x y z w", typed, "%.3f")) p.quaternionEditing = true;
+    bool apply = p.quaternionEditing && ImGui::IsItemDeactivated() &&
+                 (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) ||
+                  ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_KeyPadEnter), false));
+    if (p.quaternionEditing) {
+      apply = ImGui::Button("Apply") || apply;
+      ImGui::SameLine();
+      if (ImGui::Button("Revert")) p.quaternionEditing = false;
+      ImGui::SameLine();
+      ImGui::TextDisabled("normalised on entry");
+    }
+    if (apply) {
+      p.quaternionEditing = false;
+      const glm::quat entered(typed[3], typed[0], typed[1], typed[2]);
+      if (!(glm::dot(entered, entered) > 1e-12f) || !std::isfinite(glm::dot(entered, entered)))
+        showEditorError(state, "a rotation quaternion must be finite and not zero");
+      else
+        showEditorError(state, setJointRotation(doc, joint, safeNormalize(entered)));
     }
   }
 }
@@ -186,6 +202,7 @@ void drawPropertiesPanel(EditorState& state) {
   const glm::vec3 world(doc.worldTransforms()[joint][3]);
   ImGui::TextDisabled("world position %.3f %.3f %.3f", world.x, world.y, world.z);
   limitSection(state, joint);
+  drawMeshSection(state);
   ImGui::PopID();
   ImGui::PopItemWidth();
   ImGui::End();

@@ -54,10 +54,16 @@ void discardModal(EditorState& state) {
   ImGui::SameLine();
   if (ImGui::Button("Save first", ImVec2(110, 0))) {
     ImGui::CloseCurrentPopup();
+    const bool inPlace = canSaveInPlace(state.doc);
     requestSave(state);
-    // Saved in place: go on. Save As opened its dialog instead: the user starts again after it.
-    if (!state.doc.dirty()) runPendingFileAction(state);
-    else p.pending = PendingFileAction::None;
+    // Saved in place: go on. Without a .kinema path Save As asks for one first; the action
+    // goes on once that save succeeds (and is dropped if the dialog is cancelled).
+    if (inPlace) {
+      if (!state.doc.dirty()) runPendingFileAction(state);
+      else p.pending = PendingFileAction::None;  // the save failed: its error is showing
+    } else {
+      p.resumeAfterSaveAs = true;
+    }
   }
   ImGui::SameLine();
   if (ImGui::Button("Cancel", ImVec2(110, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
@@ -156,6 +162,11 @@ void drawSessionDialogs(EditorState& state) {
   PanelState& p = state.panels;
   std::string chosen;
   if (drawFileDialog(p.fileDialog, p.recent.entries(), chosen)) finishFileDialog(state, chosen);
+  if (p.resumeAfterSaveAs && !p.fileDialog.visible) {
+    p.resumeAfterSaveAs = false;
+    if (!state.doc.dirty()) runPendingFileAction(state);  // saved: New / Open / Quit goes on
+    else p.pending = PendingFileAction::None;             // cancelled or failed
+  }
   discardModal(state);
   recoveryModal(state);
   errorPopup(state);

@@ -34,6 +34,12 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
   out["active"] = jointName(s, doc.selection.active());
   out["hovered"] = jointName(s, s.hoveredJoint);
   out["auto_ik"] = s.view.autoIk;
+  out["bones"] = !s.view.showBones ? "none" : s.view.xrayBones ? "x-ray" : "on";
+  out["show_weights"] = s.view.showWeights;
+  json skinning = json::array();
+  for (const MeshInstance& m : doc.scene().meshInstances)
+    skinning.push_back(m.skinning == SkinningMethod::DualQuaternion ? "dual-quaternion" : "linear");
+  out["mesh_skinning"] = skinning;
   out["errors"] = s.panels.errors;  // waiting in the error popup, oldest first
   out["status"] = s.statusMessage;
   const OrbitCamera& c = s.camera;
@@ -61,6 +67,8 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
     json e = {{"effector", jointName(s, t.effector)},
               {"root", jointName(s, resolved.root)},
               {"solver", toString(doc.ikTargets()[i].solver)},
+              {"chain_length", doc.ikTargets()[i].chainLength},
+              {"pinned", doc.ikTargets()[i].pinned},
               {"position", vec(t.position)}};
     for (const IkTargetReport& r : doc.lastIkReports())
       if (r.target == static_cast<int>(i)) {

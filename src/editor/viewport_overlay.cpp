@@ -59,7 +59,8 @@ void buildViewportOverlay(const EditorState& state, const ViewportView& view, co
 }
 
 void colorSelection(const EditorState& state, SkeletonDrawList& list) {
-  const SkeletonStyle style;
+  // X-ray bones are translucent so the body shows through; the selection stays opaque.
+  const SkeletonStyle style = state.view.xrayBones ? SkeletonStyle::xRay() : SkeletonStyle();
   const glm::vec4 hover = glm::mix(style.bone, glm::vec4(1.0f), 0.5f);
   for (size_t b = 0; b < list.boneColors.size() && b < list.boneParents.size(); ++b) {
     const int p = list.boneParents[b];

@@ -352,6 +352,18 @@ void ViewportTools::key(EditorState& state, const ViewportView& view, int key) {
     case GLFW_KEY_KP_3: applyViewPreset(state.camera, ViewPreset::Right); break;
     case GLFW_KEY_KP_7: applyViewPreset(state.camera, ViewPreset::Top); break;
     case GLFW_KEY_KP_5: toggleOrthographic(state.camera); break;
+    case GLFW_KEY_Z:
+      // Alt+Z (Blender's x-ray toggle) cycles the bones: on -> x-ray -> none -> on.
+      if (alt) {
+        ViewOptions& v = state.view;
+        if (!v.showBones) v.showBones = true, v.xrayBones = false;
+        else if (!v.xrayBones) v.xrayBones = true;
+        else v.showBones = false;
+      }
+      break;
+    case GLFW_KEY_W:
+      if (alt) state.view.showWeights = !state.view.showWeights;  // heat colours of the active joint
+      break;
     case GLFW_KEY_SPACE:
       if (state.hasMotion()) state.playing = !state.playing;
       break;

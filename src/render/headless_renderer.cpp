@@ -12,6 +12,8 @@ Result<std::unique_ptr<HeadlessRenderer>> HeadlessRenderer::open(HeadlessBackend
   r->height_ = height;
   r->renderer_ = std::make_unique<SkeletonRenderer>();
   std::string error = r->renderer_->init();
+  r->meshes_ = std::make_unique<MeshRenderer>();
+  if (error.empty()) error = r->meshes_->init();
   if (error.empty()) {
     r->target_ = std::make_unique<OffscreenTarget>();
     error = r->target_->create(width, height);

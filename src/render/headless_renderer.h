@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "render/gl_context.h"
+#include "render/mesh_renderer.h"
 #include "render/offscreen_target.h"
 #include "render/skeleton_renderer.h"
 
@@ -16,11 +17,14 @@ class HeadlessRenderer {
   Image render(FrameDescription frame);
   const HeadlessContext& context() const { return *context_; }
   int samples() const { return target_->samples(); }
+  // Meshes for FrameDescription::meshes: upload a scene once, then point frames at it.
+  MeshRenderer& meshes() { return *meshes_; }
 
  private:
   // Declared first so it is destroyed last: the GL objects below need it current.
   std::unique_ptr<HeadlessContext> context_;
   std::unique_ptr<SkeletonRenderer> renderer_;
+  std::unique_ptr<MeshRenderer> meshes_;
   std::unique_ptr<OffscreenTarget> target_;
   int width_ = 0, height_ = 0;
 };

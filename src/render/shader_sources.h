@@ -5,6 +5,8 @@ extern const char* const shaded_vert;
 extern const char* const shaded_frag;
 extern const char* const lines_vert;
 extern const char* const lines_frag;
+extern const char* const mesh_vert;
+extern const char* const mesh_frag;
 extern const char* const overlay_vert;
 extern const char* const overlay_frag;
 }  // namespace kinema::shaders

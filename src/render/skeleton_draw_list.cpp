@@ -34,7 +34,19 @@ std::string SkeletonDrawJob::validate() const {
     const int p = (*parents)[i];
     if (p < -1 || p >= static_cast<int>(i)) return "skeleton drawing: joint " + std::to_string(i) + " has a bad parent";
   }
+  if (shownJoints && !shownJoints->empty() && shownJoints->size() != parents->size())
+    return "skeleton drawing: the shown-joint flags and the joints differ in count";
   return {};
+}
+
+std::vector<char> skinJointMask(const Scene& scene) {
+  std::vector<char> mask;
+  if (scene.skins.empty()) return mask;
+  mask.assign(static_cast<size_t>(scene.skeleton.size()), 0);
+  for (const Skin& skin : scene.skins)
+    for (int j : skin.joints)
+      if (j >= 0 && j < static_cast<int>(mask.size())) mask[j] = 1;
+  return mask;
 }
 
 bool SkeletonDrawJob::run(SkeletonDrawList& out) const {
@@ -44,14 +56,25 @@ bool SkeletonDrawJob::run(SkeletonDrawList& out) const {
   const std::vector<glm::mat4>& w = *world;
   const int n = static_cast<int>(par.size());
   auto pos = [&w](int i) { return glm::vec3(w[i][3]); };
+  const bool filtered = shownJoints && !shownJoints->empty();
+  auto shown = [&](int i) { return !filtered || (*shownJoints)[i] != 0; };
+  // Each joint's nearest shown ancestor, in one forward pass (parents come first).
+  std::vector<int> drawnParent(n, -1);
+  for (int i = 0; i < n; ++i) {
+    const int p = par[i];
+    drawnParent[i] = p < 0 ? -1 : shown(p) ? p : drawnParent[p];
+  }
 
   // Joint radius: a tenth of the shortest bone touching the joint (Blender's proportion),
   // capped by the skeleton's size so tiny or huge bones stay readable.
-  const float size = std::max(jointBounds(w).radius(), 1e-3f);
+  Bounds shownBounds;
+  for (int i = 0; i < n; ++i)
+    if (shown(i)) shownBounds.add(pos(i));
+  const float size = std::max(shownBounds.radius(), 1e-3f);
   std::vector<float> shortest(n, 0.0f);
   for (int i = 0; i < n; ++i) {
-    const int p = par[i];
-    if (p < 0) continue;
+    const int p = drawnParent[i];
+    if (p < 0 || !shown(i)) continue;
     const float len = glm::length(pos(i) - pos(p));
     if (len <= size * 1e-4f) continue;
     for (int j : {i, p}) shortest[j] = shortest[j] == 0.0f ? len : std::min(shortest[j], len);
@@ -61,6 +84,7 @@ bool SkeletonDrawJob::run(SkeletonDrawList& out) const {
     out.boneChildren.push_back(i);
   }
   for (int i = 0; i < n; ++i) {
+    if (!shown(i)) continue;
     const float r = std::clamp(shortest[i] > 0.0f ? shortest[i] * 0.1f : size * 0.02f, size * 0.008f, size * 0.025f);
     glm::mat4 m(r);
     m[3] = glm::vec4(pos(i), 1.0f);

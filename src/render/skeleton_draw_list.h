@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "core/math.h"
+#include "io/scene.h"
 
 namespace kinema {
 
@@ -12,6 +13,14 @@ struct SkeletonStyle {
   glm::vec4 joint{0.32f, 0.34f, 0.40f, 1.0f};
   glm::vec4 selectedBone{1.0f, 0.62f, 0.20f, 1.0f};
   glm::vec4 selectedJoint{1.0f, 0.55f, 0.10f, 1.0f};
+  // Bones drawn x-ray over a (usually light) body: a blue that stands out from skin tones,
+  // 60% opaque so the body shows through; the selection stays opaque so it stands out.
+  static SkeletonStyle xRay() {
+    SkeletonStyle s;
+    s.bone = glm::vec4(0.30f, 0.52f, 0.95f, 0.6f);
+    s.joint = glm::vec4(0.12f, 0.20f, 0.45f, 0.6f);
+    return s;
+  }
 };
 
 // What the renderer draws for a posed skeleton, computed on the CPU from FK output only.
@@ -32,11 +41,19 @@ struct SkeletonDrawJob {
   const std::vector<glm::mat4>* world = nullptr;   // one world transform per joint
   int selectedJoint = -1;                          // highlighted with its outgoing bones; -1 = none
   SkeletonStyle style;
+  // Optional, one flag per joint: draw only these joints, with a bone from each to its
+  // nearest drawn ancestor (skinJointMask: a glTF character's skin joints, not its mesh
+  // and helper nodes). Null or empty: every joint.
+  const std::vector<char>* shownJoints = nullptr;
   // Empty when usable; otherwise what is wrong (missing arrays, sizes differ, bad parent).
   std::string validate() const;
   // Fills `out`; returns false (and leaves `out` empty) when validate() fails.
   bool run(SkeletonDrawList& out) const;
 };
+
+// One flag per skeleton joint: 1 for the joints of any of the scene's skins. Empty when the
+// scene has no skins (BVH, bare skeletons), which SkeletonDrawJob reads as "every joint".
+std::vector<char> skinJointMask(const Scene& scene);
 
 // The instance matrix of a bone from `head` to `tail`: maps (0,0,0) to head, (0,1,0) to tail,
 // scales uniformly by the length, and turns the waist's X axis towards `rollHint` (the

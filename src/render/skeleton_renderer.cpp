@@ -2,6 +2,7 @@
 
 #include <cstddef>
 
+#include "render/mesh_renderer.h"
 #include "render/shader_sources.h"
 #include "render/shape_meshes.h"
 
@@ -121,12 +122,32 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
   const glm::mat4 view = frame.camera.view();
   const glm::mat4 viewProjection = frame.camera.projection(aspect) * view;
   if (frame.showGrid) drawGrid(frame, viewProjection);
-  if (frame.skeleton) {
+  if (frame.meshes && frame.meshes->renderer) frame.meshes->renderer->draw(frame.meshes->frame, viewProjection, view);
+  if (frame.skeleton && frame.bones != BoneDisplay::None) {
     glUseProgram(shaded_.id());
     glUniformMatrix4fv(shaded_.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
     glUniformMatrix4fv(shaded_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
+    const bool xray = frame.bones == BoneDisplay::XRay && frame.meshes;
+    if (xray) {
+      // On top of the meshes: fresh depth, a depth-only pass, then the nearest bone surfaces
+      // blended by their colours' alpha (SkeletonStyle::xRay()) so the body still shows through.
+      glEnable(GL_SCISSOR_TEST);
+      glClear(GL_DEPTH_BUFFER_BIT);
+      glDisable(GL_SCISSOR_TEST);
+      glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+      drawInstances(bone_, frame.skeleton->boneMatrices, frame.skeleton->boneColors);
+      drawInstances(sphere_, frame.skeleton->jointMatrices, frame.skeleton->jointColors);
+      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+      glDepthFunc(GL_LEQUAL);
+      glEnable(GL_BLEND);
+      glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    }
     drawInstances(bone_, frame.skeleton->boneMatrices, frame.skeleton->boneColors);
     drawInstances(sphere_, frame.skeleton->jointMatrices, frame.skeleton->jointColors);
+    if (xray) {
+      glDisable(GL_BLEND);
+      glDepthFunc(GL_LESS);
+    }
   }
   if (frame.overlay) overlay_.draw(*frame.overlay, viewProjection, frame.width, frame.height);
   glBindVertexArray(0);

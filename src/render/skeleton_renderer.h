@@ -11,6 +11,13 @@
 
 namespace kinema {
 
+struct MeshDraw;
+
+// How bones show over meshes: not at all, depth-tested like any surface (hidden inside a
+// body), or x-ray: on top of everything, blended by the bone colours' alpha (draw with
+// SkeletonStyle::xRay() for semi-transparent bones).
+enum class BoneDisplay { None, On, XRay };
+
 // Everything one frame shows; the renderer keeps no scene state between frames.
 struct FrameDescription {
   const SkeletonDrawList* skeleton = nullptr;  // may be null: grid only
@@ -19,6 +26,8 @@ struct FrameDescription {
   float sceneRadius = 1.0f;                 // sizes the grid
   bool showGrid = true;
   glm::vec4 background{0.235f, 0.235f, 0.235f, 1.0f};  // Blender's viewport grey
+  const MeshDraw* meshes = nullptr;  // shaded (skinned) meshes, drawn before the bones; may be null
+  BoneDisplay bones = BoneDisplay::On;
   const OverlayDrawList* overlay = nullptr;             // gizmos, handles, ...; drawn last
 };
 

@@ -1,9 +1,12 @@
 #include "editor/folder_listing.h"
 
+#include <cstdlib>
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
+#include "editor/editor_panels.h"
 #include "test_support.h"
 
 namespace kinema::test {
@@ -47,6 +50,20 @@ TEST(FolderListing, WithExtensionAppendsOnlyWhenMissing) {
   EXPECT_EQ(withExtension("walk.KINEMA", ".kinema"), "walk.KINEMA");
   EXPECT_EQ(withExtension("dir.v2/walk", ".glb"), "dir.v2/walk.glb");
   EXPECT_EQ(withExtension("", ".glb"), "");
+}
+
+TEST(AutosaveInterval, FromTheEnvironmentWhenAPositiveNumberElseOneMinute) {
+  const char* before = std::getenv("KINEMA_AUTOSAVE_SECONDS");
+  const std::string saved = before ? before : "";
+  const std::pair<const char*, double> cases[] = {
+      {"0.25", 0.25}, {"5", 5.0}, {"", 60.0}, {"0", 60.0}, {"-3", 60.0}, {"2s", 60.0}, {"nan", 60.0}, {"1e9", 60.0}};
+  for (const auto& [text, expected] : cases) {
+    setenv("KINEMA_AUTOSAVE_SECONDS", text, 1);
+    EXPECT_EQ(autosaveIntervalSeconds(), expected) << text;
+  }
+  unsetenv("KINEMA_AUTOSAVE_SECONDS");
+  EXPECT_EQ(autosaveIntervalSeconds(), 60.0);
+  if (before) setenv("KINEMA_AUTOSAVE_SECONDS", saved.c_str(), 1);
 }
 
 }  // namespace

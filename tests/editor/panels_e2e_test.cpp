@@ -8,10 +8,12 @@
 #include <nlohmann/json.hpp>
 
 #include <csignal>
+#include <filesystem>
 #include <cmath>
 #include <fstream>
 #include <thread>
 
+#include "anim/sampling.h"
 #include "io/kinema_file.h"
 #include "io/scene.h"
 #include "test_support.h"
@@ -31,9 +33,17 @@ glm::dvec2 outlinerRow(int row) { return {150.0, 76.0 + 17.0 * row}; }
 const glm::dvec2 kSearchBox{120, 55};
 const glm::dvec2 kEulerField[3] = {{1007, 122}, {1069, 122}, {1131, 122}};  // X, Y, Z (degrees)
 glm::dvec2 historyRow(int k) { return {120.0, 472.0 + 17.0 * k}; }  // 0 = "(original)"
+const glm::dvec2 kRotationMode{1030, 99};
+glm::dvec2 rotationModeItem(int k) { return {1030.0, 123.0 + 17.0 * k}; }  // XYZ XZY YXZ YZX ZXY ZYX Quaternion
+const glm::dvec2 kQuaternionField[4] = {{1000, 122}, {1048, 122}, {1094, 122}, {1140, 122}};  // x y z w
+const glm::dvec2 kLimitEnabled{987, 202};  // the joint-limit checkbox (Euler mode)
+// IK Targets panel (with one target selected).
+const glm::dvec2 kIkAdd{1033, 427}, kIkChainPlus{1138, 574}, kIkPinned{987, 620}, kIkSolver{1060, 597};
+const glm::dvec2 kIkSolverFabrik{1030, 505}, kIkPositionX{1000, 643};  // the solver list opens upwards
 const glm::dvec2 kFileMenu{25, 9}, kEditMenu{69, 9}, kPoseMenu{157, 9};
 glm::dvec2 menuItem(glm::dvec2 menu, double y) { return {menu.x + 40, y}; }
-constexpr double kFileOpenY = 50, kEditResetY = 144, kPoseAddIkY = 33;
+constexpr double kFileOpenY = 50, kFileRecentY = 67, kFileExportY = 122, kEditResetY = 144, kPoseAddIkY = 33;
+constexpr double kSubmenuX = 250, kExportGlbY = 139, kExportBvhY = 156;  // File > Export > ...
 
 // One event per frame from frame 3; clicks and keys take two frames (down, up).
 class Script {
@@ -180,6 +190,48 @@ TEST_F(PanelsE2e, EulerEntrySaveAsAndReopenRoundTripThePose) {
   }
 }
 
+TEST_F(PanelsE2e, EulerOrderZxyAndQuaternionEntry) {
+  // ZXY: R = Rz * Rx * Ry. X 30 then Z 50 gives Rz(50) Rx(30).
+  Script zxy;
+  zxy.select(kUpperArmL).click(kRotationMode).wait(2).click(rotationModeItem(4)).wait(2);
+  zxy.euler(0, 30.0).euler(2, 50.0).saveAs(dir_ + "/zxy.kinema");
+  run(zxy, "euler_zxy");
+  EXPECT_ROTATION(rotation(saved(dir_ + "/zxy.kinema"), "UpperArm.L"), rotZ(50.0) * rotX(30.0));
+
+  // Quaternion (x, y, z, w) = (1, 0, 1, 0) typed: normalised on entry to (0.7071, 0, 0.7071, 0),
+  // a half turn about (1, 0, 1) / sqrt 2; one undo step.
+  Script quat;
+  quat.select(kHandR).click(kRotationMode).wait(2).click(rotationModeItem(6)).wait(2);
+  quat.click(kQuaternionField[0]).wait(1).type("1").click(kQuaternionField[3]).wait(1).type("0");
+  quat.click(kQuaternionField[2]).wait(1).type("1").key("ENTER").wait(2).saveAs(dir_ + "/quat.kinema");
+  const nlohmann::json d = runAndDump(quat, "quaternion_entry");
+  EXPECT_EQ(d["undo_depth"], 1);
+  const double h = std::sqrt(0.5);
+  EXPECT_ROTATION(rotation(saved(dir_ + "/quat.kinema"), "Hand.R"), glm::dquat(0, h, 0, h));
+  EXPECT_NEAR(glm::length(rotation(saved(dir_ + "/quat.kinema"), "Hand.R")), 1.0, 1e-6);
+}
+
+TEST_F(PanelsE2e, JointLimitEnabledInThePropertiesIsSavedAndUndoable) {
+  Script s;
+  s.select(kLowerArmL).click(kLimitEnabled).wait(2).saveAs(dir_ + "/limited.kinema");
+  s.key("Z", "\"ctrl\"").wait(2).saveAs("unlimited.kinema");
+  run(s, "joint_limit");
+  const Scene limited = saved(dir_ + "/limited.kinema");
+  const JointLimit* limit = limited.ik.limitOf(limited.skeleton.find("LowerArm.L"));
+  ASSERT_NE(limit, nullptr);
+  // Enabling starts from a 45 degree cone with +-45 degrees of twist.
+  EXPECT_EQ(limit->type, JointLimitType::Cone);
+  EXPECT_NEAR(limit->coneAngle, M_PI / 4, 1e-5);
+  EXPECT_NEAR(limit->twistMin, -M_PI / 4, 1e-5);
+  EXPECT_NEAR(limit->twistMax, M_PI / 4, 1e-5);
+  for (int j = 0; j < limited.skeleton.size(); ++j)
+    if (limited.skeleton.names[j] != "LowerArm.L") {
+      EXPECT_EQ(limited.ik.limitOf(j), nullptr) << j;
+    }
+  const Scene undone = saved(dir_ + "/unlimited.kinema");
+  EXPECT_EQ(undone.ik.limitOf(undone.skeleton.find("LowerArm.L")), nullptr);
+}
+
 TEST_F(PanelsE2e, CtrlZUndoesOneEntryAndTheHistoryPanelJumps) {
   Script s;
   s.select(kUpperArmL).euler(2, 10.0).euler(0, 20.0).euler(1, 30.0);
@@ -219,7 +271,9 @@ TEST_F(PanelsE2e, RenameThroughTheOutlinerAndRefuseADuplicate) {
   Script s;
   s.doubleClick(outlinerRow(kUpperArmL)).wait(2).type("Humerus.L").key("ENTER").wait(2);
   // A duplicate name is refused (the field stays with the reason); Escape leaves it.
-  s.doubleClick(outlinerRow(kLowerArmL)).wait(2).type("Hips").key("ENTER").wait(2).key("ESCAPE").wait(2);
+  s.doubleClick(outlinerRow(kLowerArmL)).wait(2).type("Hips").key("ENTER").wait(2);
+  run(s, "rename_refused");  // the reason under the field, for the eye
+  s.key("ESCAPE").wait(2);
   s.saveAs(dir_ + "/renamed.kinema");
   run(s, "rename");
   const Scene r = saved(dir_ + "/renamed.kinema");
@@ -254,6 +308,39 @@ TEST_F(PanelsE2e, AddIkTargetThroughThePoseMenuIsSaved) {
   glm::vec3 hand(0.0f);
   for (int j = t.effector; j >= 0; j = r.skeleton.parents[j]) hand += r.skeleton.rest[j].translation;
   EXPECT_LT(glm::length(t.position - hand), 1e-4f);
+}
+
+TEST_F(PanelsE2e, IkPanelSettingsAndTypedTargetPositionMoveTheChain) {
+  Script s;
+  s.select(kHandL).click(kIkAdd).wait(2).click(kIkChainPlus).wait(2).click(kIkPinned).wait(2);
+  s.click(kIkSolver).wait(2).click(kIkSolverFabrik).wait(2);
+  // Off the arm's line (a straight chain pulled along itself is the solvers' singular case).
+  s.doubleClick(kIkPositionX).wait(1).type("0.5").key("ENTER").wait(3);
+  s.doubleClick(kIkPositionX + glm::dvec2(48, 0)).wait(1).type("1.3").key("ENTER").wait(3);
+  const nlohmann::json d = runAndDump(s, "ik_panel");
+  ASSERT_EQ(d["ik_targets"].size(), 1u);
+  const nlohmann::json& t = d["ik_targets"][0];
+  EXPECT_EQ(t["effector"], "Hand.L");
+  EXPECT_EQ(t["chain_length"], 3);
+  EXPECT_EQ(t["root"], "Shoulder.L");  // three bones up from the hand
+  EXPECT_EQ(t["pinned"], true);
+  EXPECT_EQ(t["solver"], "fabrik");
+  EXPECT_EQ(d["undo_depth"], 6);  // add, chain, pin, solver, position x, position y: one step each
+  // The target moved to (0.5, 1.3, 0) (z as placed at the hand) and the hand followed.
+  const auto world = [&](const std::string& name) {
+    for (const nlohmann::json& j : d["joints"])
+      if (j["name"] == name) return glm::dvec3(j["world_position"][0], j["world_position"][1], j["world_position"][2]);
+    return glm::dvec3(NAN);
+  };
+  const glm::dvec3 target(t["position"][0], t["position"][1], t["position"][2]);
+  EXPECT_NEAR(target.x, 0.5, 1e-6);
+  EXPECT_NEAR(target.y, 1.3, 1e-6);
+  EXPECT_NEAR(target.z, 0.0, 1e-6);
+  EXPECT_LT(glm::length(world("Hand.L") - target), 2e-3);
+  // Bone lengths stay those of the default character (src/core/default_character.cpp puts
+  // the left arm's joints at x = 0.17, 0.45, 0.71 on one line).
+  EXPECT_NEAR(glm::length(world("Hand.L") - world("LowerArm.L")), 0.26, 1e-4);
+  EXPECT_NEAR(glm::length(world("LowerArm.L") - world("UpperArm.L")), 0.28, 1e-4);
 }
 
 TEST_F(PanelsE2e, OpenBvhAndGltfThroughTheFileMenu) {
@@ -308,6 +395,18 @@ TEST_F(PanelsE2e, NewAsksBeforeDiscardingUnsavedChanges) {
   EXPECT_ROTATION(dumpedRotation(fresh, "UpperArm.L"), glm::dquat(1, 0, 0, 0));
 }
 
+TEST_F(PanelsE2e, SaveFirstSavesThroughSaveAsThenStartsTheNewDocument) {
+  Script s;
+  s.select(kUpperArmL).euler(2, 40.0).key("N", "\"ctrl\"").wait(3);
+  s.click({640, 386}).wait(3);  // "Save first" in the centred question
+  s.type(dir_ + "/first.kinema").key("ENTER").wait(3);
+  const nlohmann::json d = runAndDump(s, "save_first");
+  EXPECT_ROTATION(rotation(saved(dir_ + "/first.kinema"), "UpperArm.L"), rotZ(40.0));
+  EXPECT_EQ(d["path"], "");  // then New went on
+  EXPECT_EQ(d["dirty"], false);
+  EXPECT_ROTATION(dumpedRotation(d, "UpperArm.L"), glm::dquat(1, 0, 0, 0));
+}
+
 TEST_F(PanelsE2e, SaveAsAsksBeforeReplacingAFile) {
   writeFile(dir_ + "/taken.kinema", "keep me");
   Script s;
@@ -318,6 +417,54 @@ TEST_F(PanelsE2e, SaveAsAsksBeforeReplacingAFile) {
   const nlohmann::json d = runAndDump(s, "replace_declined");
   EXPECT_EQ(readFile(dir_ + "/taken.kinema"), "keep me");
   EXPECT_EQ(d["dirty"], true);
+}
+
+TEST_F(PanelsE2e, ExportGlbAndBvhThroughTheFileMenuCarryThePose) {
+  // No clips on the default character: the working pose goes out as a one-key clip.
+  const std::pair<double, std::string> formats[] = {{kExportGlbY, "/posed.glb"}, {kExportBvhY, "/posed.bvh"}};
+  for (const auto& [itemY, name] : formats) {
+    Script s;
+    s.select(kUpperArmL).euler(2, 40.0);
+    s.click(kFileMenu).wait(2).move(menuItem(kFileMenu, kFileExportY)).wait(3).move({kSubmenuX, kFileExportY}).wait(2);
+    s.click({kSubmenuX, itemY}).wait(3).type(dir_ + name).key("ENTER").wait(3);
+    const nlohmann::json d = runAndDump(s, "export_" + name.substr(name.size() - 3));
+    EXPECT_EQ(d["dirty"], true) << "exporting is not saving";
+    const Result<Scene> exported = loadScene(dir_ + name);
+    ASSERT_TRUE(exported.ok()) << exported.error();
+    ASSERT_FALSE(exported->clips.empty()) << name;
+    Pose pose = Pose::rest(exported->skeleton);
+    sampleClip(exported->clips[0], 0.0f, pose);
+    const int arm = exported->skeleton.find("UpperArm.L");
+    ASSERT_GE(arm, 0) << name;
+    EXPECT_ROTATION(glm::dquat(pose.local[arm].rotation), rotZ(40.0));
+    EXPECT_ROTATION(glm::dquat(pose.local[exported->skeleton.find("UpperArm.R")].rotation), glm::dquat(1, 0, 0, 0));
+  }
+}
+
+TEST_F(PanelsE2e, QuitClosesAtOnceWhenCleanAndAsksWhenDirty) {
+  // Events run to frame ~1000; a quit that goes through ends the run long before.
+  Script clean;
+  clean.key("Q", "\"ctrl\"").wait(1000).move({600, 400});
+  EXPECT_LT(runAndDump(clean, "quit_clean")["frames"].get<long long>(), 100);
+  Script dirty;
+  dirty.select(kUpperArmL).euler(2, 40.0).key("Q", "\"ctrl\"").wait(3).key("ESCAPE").wait(100).move({600, 400});
+  const nlohmann::json d = runAndDump(dirty, "quit_dirty");
+  EXPECT_GT(d["frames"].get<long long>(), 100);
+  EXPECT_EQ(d["dirty"], true);
+}
+
+TEST_F(PanelsE2e, OpenRecentReopensTheLastFile) {
+  KINEMA_REQUIRE_SHARED_DATA();
+  const std::string bvh = sharedDataDir() + "/bvh/games105_walk60.bvh";
+  Script open;
+  open.key("O", "\"ctrl\"").wait(2).type(bvh).key("ENTER").wait(3).key("N", "\"ctrl\"").wait(3);
+  EXPECT_EQ(runAndDump(open, "recent_first")["path"], "");  // New after Open: the list keeps the file
+  Script recent;
+  recent.click(kFileMenu).wait(2).move(menuItem(kFileMenu, kFileRecentY)).wait(3).move({kSubmenuX, kFileRecentY}).wait(2);
+  recent.click({kSubmenuX + 40, kFileRecentY}).wait(3);
+  const nlohmann::json d = runAndDump(recent, "recent_reopen");
+  EXPECT_EQ(std::filesystem::path(d["path"].get<std::string>()).lexically_normal(),
+            std::filesystem::path(bvh).lexically_normal());
 }
 
 TEST_F(PanelsE2e, KillDashNineThenRestartOffersTheRecoveryFile) {

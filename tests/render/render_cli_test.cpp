@@ -141,9 +141,10 @@ TEST_F(RenderCli, MotionCaptureFrameMatchesGoldenWithEglAndOsMesa) {
                "cmu_01_01_frame240.png", dir_);
 }
 
+// The skeleton alone (--mesh off): bone pixels and the orange selection measure the framing.
 TEST_F(RenderCli, SizeScalesTheCharacterAndCameraTurnsIt) {
-  ASSERT_EQ(kinema("render --camera 0,0 --size 160x120 --out " + dir_ + "/small.png", &out_, &err_), 0) << err_;
-  ASSERT_EQ(kinema("render --camera 0,0 --size 320x240 --out " + dir_ + "/large.png", &out_, &err_), 0) << err_;
+  ASSERT_EQ(kinema("render --mesh off --camera 0,0 --size 160x120 --out " + dir_ + "/small.png", &out_, &err_), 0) << err_;
+  ASSERT_EQ(kinema("render --mesh off --camera 0,0 --size 320x240 --out " + dir_ + "/large.png", &out_, &err_), 0) << err_;
   const Image small = load(dir_ + "/small.png"), large = load(dir_ + "/large.png");
   ASSERT_EQ(small.width, 160);
   ASSERT_EQ(small.height, 120);
@@ -158,7 +159,7 @@ TEST_F(RenderCli, SizeScalesTheCharacterAndCameraTurnsIt) {
 
   // The default character is in T-pose, arms along X: wide from the front (azimuth 0),
   // narrow from the side (azimuth 90). Its arm span is 1.5 units and its height 1.8.
-  ASSERT_EQ(kinema("render --camera 90,0 --size 320x240 --out " + dir_ + "/side.png", &out_, &err_), 0) << err_;
+  ASSERT_EQ(kinema("render --mesh off --camera 90,0 --size 320x240 --out " + dir_ + "/side.png", &out_, &err_), 0) << err_;
   const Box side = brightBox(load(dir_ + "/side.png"));
   EXPECT_GT(double(l.width()) / l.height(), 0.6);
   EXPECT_LT(double(side.width()) / side.height(), 0.3);
@@ -173,7 +174,7 @@ TEST_F(RenderCli, SizeScalesTheCharacterAndCameraTurnsIt) {
     glm::dvec2 hand[2];
     for (int side = 0; side < 2; ++side) {
       const std::string path = dir_ + "/hand" + std::to_string(k) + std::to_string(side) + ".png";
-      ASSERT_EQ(kinema(std::string("render --select Hand.") + (side ? "R" : "L") + " --camera " + camera +
+      ASSERT_EQ(kinema(std::string("render --mesh off --select Hand.") + (side ? "R" : "L") + " --camera " + camera +
                            " --size 640x480 --out " + path, &out_, &err_), 0) << err_;
       hand[side] = orangeCentroid(load(path));
     }

@@ -1,4 +1,6 @@
 // Bone, sphere and grid geometry, and the bone instance matrices (no GL context needed).
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "render/grid_lines.h"
 #include "render/shape_meshes.h"
 #include "render/skeleton_draw_list.h"
@@ -95,6 +97,49 @@ TEST(SkeletonDrawList, OneBonePerParentChildPairAndOneSpherePerJoint) {
   EXPECT_FALSE(job.validate().empty());
   EXPECT_FALSE(job.run(list));
   EXPECT_TRUE(list.boneMatrices.empty());
+}
+
+// A glTF character's mesh and helper nodes are joints of the skeleton but not of the skin:
+// with the skin's mask only skin joints are drawn, each bone spanning to the nearest drawn
+// ancestor (here B's parent H is a helper, so the bone runs A -> B).
+TEST(SkeletonDrawList, ShownJointsSkipHelperNodesAndBridgeToTheNearestShownAncestor) {
+  std::vector<int> parents = {-1, 0, 1, 2, 0};  // Armature, A, H, B, MeshNode
+  std::vector<glm::mat4> world(5, glm::mat4(1));
+  world[0] = glm::scale(glm::mat4(1), glm::vec3(100.0f));  // a big helper transform
+  world[1][3] = glm::vec4(0, 1, 0, 1);
+  world[2][3] = glm::vec4(0, 1.5f, 0, 1);
+  world[3][3] = glm::vec4(0, 2, 0, 1);
+  world[4][3] = glm::vec4(5, 0, 0, 1);
+  const std::vector<char> shown = {0, 1, 0, 1, 0};
+  SkeletonDrawJob job;
+  job.parents = &parents;
+  job.world = &world;
+  job.shownJoints = &shown;
+  SkeletonDrawList list;
+  ASSERT_TRUE(job.run(list));
+  ASSERT_EQ(list.boneMatrices.size(), 1u);
+  EXPECT_VEC3_NEAR(glm::vec3(list.boneMatrices[0] * glm::vec4(0, 0, 0, 1)), glm::vec3(0, 1, 0), 1e-6f);
+  EXPECT_VEC3_NEAR(glm::vec3(list.boneMatrices[0] * glm::vec4(0, 1, 0, 1)), glm::vec3(0, 2, 0), 1e-6f);
+  ASSERT_EQ(list.jointMatrices.size(), 2u);
+  // Sized by the drawn joints only (bounds radius 0.5), not by the far mesh node.
+  EXPECT_NEAR(list.jointMatrices[0][0][0], 0.025f * 0.5f, 1e-6f);
+
+  // Without a mask (BVH, bare skeletons) every joint is drawn, as before.
+  const std::vector<char> none;
+  job.shownJoints = &none;
+  ASSERT_TRUE(job.run(list));
+  EXPECT_EQ(list.jointMatrices.size(), 5u);
+  EXPECT_EQ(list.boneMatrices.size(), 4u);
+  const std::vector<char> wrongSize = {1, 1};
+  job.shownJoints = &wrongSize;
+  EXPECT_FALSE(job.run(list));
+
+  // skinJointMask marks exactly the skin's joints; a scene without skins gives no mask.
+  Scene scene;
+  for (int i = 0; i < 5; ++i) scene.skeleton.addJoint("n" + std::to_string(i), parents[i], Transform{});
+  EXPECT_TRUE(skinJointMask(scene).empty());
+  scene.skins.push_back(Skin{"s", {3, 1}, {glm::mat4(1), glm::mat4(1)}, -1});
+  EXPECT_EQ(skinJointMask(scene), shown);
 }
 
 TEST(GridLines, CoverTheReachWithAxesThroughTheOrigin) {

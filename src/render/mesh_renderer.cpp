@@ -1,0 +1,541 @@
+#include "render/mesh_renderer.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstring>
+
+#include "render/shader_sources.h"
+#include "skin/skinning_matrices.h"
+
+namespace kinema {
+
+namespace {
+
+// Vertex layout of the static buffer: position, normal, texcoord.
+struct PackedVertex {
+  float position[3];
+  float normal[3];
+  float texcoord[2];
+};
+
+// The rotation of the polar decomposition A = R P (the rotation nearest A), by Higham's
+// iteration R <- (R + R^-T) / 2 in double, as DualQuaternionSkinningJob does so GPU and CPU
+// split a matrix alike; a reflection (det < 0) is negated into a rotation, the sign moving
+// into the stretch S = R^T A. A singular A (a zero scale) keeps the identity.
+glm::mat3 nearestRotation(const glm::mat3& a) {
+  glm::dmat3 r(a);
+  const double det = glm::determinant(r);
+  if (!(std::abs(det) > 1e-30) || !std::isfinite(det)) return glm::mat3(1.0f);
+  for (int i = 0; i < 30; ++i) {
+    const glm::dmat3 next = 0.5 * (r + glm::transpose(glm::inverse(r)));
+    double change = 0.0;
+    for (int c = 0; c < 3; ++c) change += glm::dot(next[c] - r[c], next[c] - r[c]);
+    r = next;
+    if (change < 1e-24) break;
+  }
+  if (det < 0.0) r = -r;
+  return glm::mat3(r);
+}
+
+glm::mat3 inverseTranspose3(const glm::mat3& m) {
+  const float det = glm::determinant(m);
+  if (!(std::abs(det) > 1e-30f)) return glm::mat3(0.0f);
+  return glm::transpose(glm::inverse(m));
+}
+
+GLuint makeBufferTexture(GLuint buffer, GLenum format) {
+  GLuint texture = 0;
+  glGenTextures(1, &texture);
+  glBindTexture(GL_TEXTURE_BUFFER, texture);
+  glTexBuffer(GL_TEXTURE_BUFFER, format, buffer);
+  glBindTexture(GL_TEXTURE_BUFFER, 0);
+  return texture;
+}
+
+// Area-weighted vertex normals for display when the file gives none (glTF asks for flat
+// shading there; smooth is what a skinned body wants, and the CPU reference has no normals
+// to compare against in that case anyway).
+std::vector<glm::vec3> displayNormals(const MeshPrimitive& p) {
+  std::vector<glm::vec3> n(p.positions.size(), glm::vec3(0.0f));
+  for (size_t t = 0; t + 2 < p.indices.size(); t += 3) {
+    const uint32_t a = p.indices[t], b = p.indices[t + 1], c = p.indices[t + 2];
+    if (a >= n.size() || b >= n.size() || c >= n.size()) continue;
+    const glm::vec3 face = glm::cross(p.positions[b] - p.positions[a], p.positions[c] - p.positions[a]);
+    n[a] += face;
+    n[b] += face;
+    n[c] += face;
+  }
+  for (glm::vec3& v : n) v = glm::length(v) > 0.0f ? glm::normalize(v) : glm::vec3(0.0f, 1.0f, 0.0f);
+  return n;
+}
+
+}  // namespace
+
+void packJointTexels(const glm::mat4& m, float* out) {
+  const glm::mat3 a(m);
+  const glm::mat3 normal = inverseTranspose3(a);
+  const glm::quat real = glm::normalize(glm::quat_cast(nearestRotation(a)));
+  const glm::mat3 rest = glm::transpose(glm::mat3_cast(real)) * a;  // S = R^T * A, so A = R * S
+  const glm::vec3 t(m[3]);
+  const glm::quat dual = 0.5f * (glm::quat(0.0f, t.x, t.y, t.z) * real);
+  auto put = [&out](const glm::vec4& v) {
+    out[0] = v.x;
+    out[1] = v.y;
+    out[2] = v.z;
+    out[3] = v.w;
+    out += 4;
+  };
+  for (int c = 0; c < 4; ++c) put(m[c]);
+  for (int c = 0; c < 3; ++c) put(glm::vec4(normal[c], 0.0f));
+  put(glm::vec4(real.x, real.y, real.z, real.w));
+  put(glm::vec4(dual.x, dual.y, dual.z, dual.w));
+  for (int c = 0; c < 3; ++c) put(glm::vec4(rest[c], 0.0f));
+}
+
+MeshRenderer::~MeshRenderer() {
+  release();
+  if (!program_) return;  // init() never succeeded: no GL objects (and maybe no GL loaded)
+  glDeleteProgram(program_);
+  const GLuint buffers[] = {jointBuffer_, feedbackBuffer_, emptyBuffer_};
+  glDeleteBuffers(3, buffers);
+  const GLuint textures[] = {jointTexture_, emptyTexture_};
+  glDeleteTextures(2, textures);
+  glDeleteFramebuffers(1, &feedbackFbo_);
+  glDeleteRenderbuffers(1, &feedbackColor_);
+}
+
+void MeshRenderer::release() {
+  for (GpuPrimitive& p : primitives_) {
+    glDeleteVertexArrays(1, &p.vao);
+    const GLuint buffers[] = {p.vertices, p.influences, p.indices, p.morphBuffer};
+    glDeleteBuffers(4, buffers);
+    glDeleteTextures(1, &p.morphTexture);
+  }
+  primitives_.clear();
+  primitivesOfMesh_.clear();
+  uploadKey_.clear();
+  if (!textures_.empty()) glDeleteTextures(static_cast<GLsizei>(textures_.size()), textures_.data());
+  textures_.clear();
+  scene_ = nullptr;
+}
+
+std::string MeshRenderer::init() {
+  // Built here rather than with ShaderProgram: the transform feedback outputs must be named
+  // before linking.
+  auto compile = [](GLenum type, const char* source, GLuint& shader) -> std::string {
+    shader = glCreateShader(type);
+    glShaderSource(shader, 1, &source, nullptr);
+    glCompileShader(shader);
+    GLint ok = 0;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (ok) return {};
+    char log[4096] = {};
+    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+    return std::string("shader program mesh: ") + (type == GL_VERTEX_SHADER ? "vertex" : "fragment") + " shader: " + log;
+  };
+  GLuint vs = 0, fs = 0;
+  std::string error = compile(GL_VERTEX_SHADER, shaders::mesh_vert, vs);
+  if (error.empty()) error = compile(GL_FRAGMENT_SHADER, shaders::mesh_frag, fs);
+  if (error.empty()) {
+    program_ = glCreateProgram();
+    glAttachShader(program_, vs);
+    glAttachShader(program_, fs);
+    const char* varyings[] = {"vWorldPosition", "vWorldNormal"};
+    glTransformFeedbackVaryings(program_, 2, varyings, GL_INTERLEAVED_ATTRIBS);
+    glLinkProgram(program_);
+    GLint ok = 0;
+    glGetProgramiv(program_, GL_LINK_STATUS, &ok);
+    if (!ok) {
+      char log[4096] = {};
+      glGetProgramInfoLog(program_, sizeof log, nullptr, log);
+      error = std::string("shader program mesh: link: ") + log;
+      glDeleteProgram(program_);
+      program_ = 0;
+    }
+  }
+  if (vs) glDeleteShader(vs);
+  if (fs) glDeleteShader(fs);
+  if (!error.empty()) {
+    while (!error.empty() && (error.back() == '\n' || error.back() == '\r')) error.pop_back();
+    return error;
+  }
+  glGenBuffers(1, &jointBuffer_);
+  glBindBuffer(GL_TEXTURE_BUFFER, jointBuffer_);
+  glBufferData(GL_TEXTURE_BUFFER, 16, nullptr, GL_STREAM_DRAW);
+  jointTexture_ = makeBufferTexture(jointBuffer_, GL_RGBA32F);
+  // Samplers must always name a complete texture, also for primitives without morphs.
+  glGenBuffers(1, &emptyBuffer_);
+  glBindBuffer(GL_TEXTURE_BUFFER, emptyBuffer_);
+  const float zero[4] = {0, 0, 0, 0};
+  glBufferData(GL_TEXTURE_BUFFER, sizeof zero, zero, GL_STATIC_DRAW);
+  emptyTexture_ = makeBufferTexture(emptyBuffer_, GL_RGBA32F);
+  glBindBuffer(GL_TEXTURE_BUFFER, 0);
+  glGenBuffers(1, &feedbackBuffer_);
+  // Draws need a complete framebuffer even with the rasterizer off, and a headless context
+  // has none of its own: deform() binds this 1x1 one.
+  glGenRenderbuffers(1, &feedbackColor_);
+  glBindRenderbuffer(GL_RENDERBUFFER, feedbackColor_);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, 1, 1);
+  glGenFramebuffers(1, &feedbackFbo_);
+  glBindFramebuffer(GL_FRAMEBUFFER, feedbackFbo_);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, feedbackColor_);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glUseProgram(program_);
+  glUniform1i(glGetUniformLocation(program_, "uJoints"), 0);
+  glUniform1i(glGetUniformLocation(program_, "uMorphDeltas"), 1);
+  glUniform1i(glGetUniformLocation(program_, "uBaseColorTexture"), 2);
+  glUseProgram(0);
+  const GLenum status = glGetError();
+  if (status != GL_NO_ERROR) return "OpenGL error " + std::to_string(status) + " while creating the mesh renderer";
+  return {};
+}
+
+std::vector<const void*> MeshRenderer::keyOf(const Scene& scene) {
+  // A scene replaced by another (moved or copied in) has new array buffers; sizes catch the rest.
+  return {&scene,
+          scene.meshes.data(), reinterpret_cast<const void*>(scene.meshes.size()),
+          scene.skins.data(), reinterpret_cast<const void*>(scene.skins.size()),
+          scene.meshInstances.data(), reinterpret_cast<const void*>(scene.meshInstances.size()),
+          scene.images.data(), reinterpret_cast<const void*>(scene.images.size())};
+}
+
+bool MeshRenderer::needsUpload(const Scene& scene) const { return keyOf(scene) != uploadKey_; }
+
+std::string MeshRenderer::upload(const Scene& scene) {
+  release();
+  warnings_.clear();
+  scene_ = &scene;
+  uploadKey_ = keyOf(scene);
+  primitivesOfMesh_.resize(scene.meshes.size());
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    const Mesh& mesh = scene.meshes[m];
+    for (size_t k = 0; k < mesh.primitives.size(); ++k) {
+      const MeshPrimitive& src = mesh.primitives[k];
+      GpuPrimitive p;
+      p.mesh = static_cast<int>(m);
+      p.primitive = static_cast<int>(k);
+      p.vertexCount = src.vertexCount();
+      p.indexCount = static_cast<int>(src.indices.size());
+      p.hasNormals = src.normals.size() == src.positions.size();
+      p.skinned = src.skinned();
+      const std::vector<glm::vec3> normals = p.hasNormals ? src.normals : displayNormals(src);
+      std::vector<PackedVertex> vertices(static_cast<size_t>(p.vertexCount));
+      for (int v = 0; v < p.vertexCount; ++v) {
+        PackedVertex& out = vertices[v];
+        for (int c = 0; c < 3; ++c) {
+          out.position[c] = src.positions[v][c];
+          out.normal[c] = normals[v][c];
+        }
+        const glm::vec2 uv = src.texcoords.size() == src.positions.size() ? src.texcoords[v] : glm::vec2(0.0f);
+        out.texcoord[0] = uv.x;
+        out.texcoord[1] = uv.y;
+      }
+      glGenVertexArrays(1, &p.vao);
+      glBindVertexArray(p.vao);
+      glGenBuffers(1, &p.vertices);
+      glBindBuffer(GL_ARRAY_BUFFER, p.vertices);
+      glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(PackedVertex)), vertices.data(),
+                   GL_STATIC_DRAW);
+      glEnableVertexAttribArray(0);
+      glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(PackedVertex), reinterpret_cast<void*>(offsetof(PackedVertex, position)));
+      glEnableVertexAttribArray(1);
+      glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(PackedVertex), reinterpret_cast<void*>(offsetof(PackedVertex, normal)));
+      glEnableVertexAttribArray(2);
+      glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(PackedVertex), reinterpret_cast<void*>(offsetof(PackedVertex, texcoord)));
+      if (p.skinned && src.influenceJoints.size() == static_cast<size_t>(p.vertexCount) * kMaxInfluences &&
+          src.influenceWeights.size() == src.influenceJoints.size()) {
+        // Per vertex: 8 joint numbers (uint16) then 8 weights (float).
+        const size_t stride = kMaxInfluences * (sizeof(uint16_t) + sizeof(float));
+        std::vector<unsigned char> data(stride * static_cast<size_t>(p.vertexCount));
+        for (int v = 0; v < p.vertexCount; ++v) {
+          unsigned char* at = data.data() + stride * v;
+          std::memcpy(at, &src.influenceJoints[static_cast<size_t>(v) * kMaxInfluences], kMaxInfluences * sizeof(uint16_t));
+          std::memcpy(at + kMaxInfluences * sizeof(uint16_t), &src.influenceWeights[static_cast<size_t>(v) * kMaxInfluences],
+                      kMaxInfluences * sizeof(float));
+        }
+        glGenBuffers(1, &p.influences);
+        glBindBuffer(GL_ARRAY_BUFFER, p.influences);
+        glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size()), data.data(), GL_STATIC_DRAW);
+        const GLsizei s = static_cast<GLsizei>(stride);
+        glEnableVertexAttribArray(3);
+        glVertexAttribIPointer(3, 4, GL_UNSIGNED_SHORT, s, nullptr);
+        glEnableVertexAttribArray(4);
+        glVertexAttribIPointer(4, 4, GL_UNSIGNED_SHORT, s, reinterpret_cast<void*>(4 * sizeof(uint16_t)));
+        const size_t w = kMaxInfluences * sizeof(uint16_t);
+        glEnableVertexAttribArray(5);
+        glVertexAttribPointer(5, 4, GL_FLOAT, GL_FALSE, s, reinterpret_cast<void*>(w));
+        glEnableVertexAttribArray(6);
+        glVertexAttribPointer(6, 4, GL_FLOAT, GL_FALSE, s, reinterpret_cast<void*>(w + 4 * sizeof(float)));
+      } else {
+        p.skinned = false;
+        glVertexAttribI4ui(3, 0, 0, 0, 0);
+        glVertexAttribI4ui(4, 0, 0, 0, 0);
+        glVertexAttrib4f(5, 0, 0, 0, 0);
+        glVertexAttrib4f(6, 0, 0, 0, 0);
+      }
+      glGenBuffers(1, &p.indices);
+      glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, p.indices);
+      glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(src.indices.size() * sizeof(uint32_t)),
+                   src.indices.data(), GL_STATIC_DRAW);
+      glBindVertexArray(0);
+
+      p.morphCount = std::min(static_cast<int>(src.targets.size()), kMaxMorphTargets);
+      if (static_cast<int>(src.targets.size()) > kMaxMorphTargets)
+        warnings_.push_back("mesh " + std::to_string(m) + " primitive " + std::to_string(k) + ": only the first " +
+                            std::to_string(kMaxMorphTargets) + " of " + std::to_string(src.targets.size()) +
+                            " morph targets are drawn");
+      if (p.morphCount > 0) {
+        p.morphNormals = p.hasNormals;
+        for (int t = 0; t < p.morphCount; ++t)
+          p.morphNormals = p.morphNormals && src.targets[t].normalDeltas.size() == src.positions.size();
+        const int blocks = p.morphCount * (p.morphNormals ? 2 : 1);
+        std::vector<glm::vec4> deltas(static_cast<size_t>(blocks) * p.vertexCount, glm::vec4(0.0f));
+        for (int t = 0; t < p.morphCount; ++t)
+          for (int v = 0; v < p.vertexCount; ++v) {
+            const MorphTarget& target = src.targets[t];
+            if (v < static_cast<int>(target.positionDeltas.size()))
+              deltas[static_cast<size_t>(t) * p.vertexCount + v] = glm::vec4(target.positionDeltas[v], 0.0f);
+            if (p.morphNormals)
+              deltas[static_cast<size_t>(p.morphCount + t) * p.vertexCount + v] = glm::vec4(target.normalDeltas[v], 0.0f);
+          }
+        glGenBuffers(1, &p.morphBuffer);
+        glBindBuffer(GL_TEXTURE_BUFFER, p.morphBuffer);
+        glBufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(deltas.size() * sizeof(glm::vec4)), deltas.data(),
+                     GL_STATIC_DRAW);
+        glBindBuffer(GL_TEXTURE_BUFFER, 0);
+        p.morphTexture = makeBufferTexture(p.morphBuffer, GL_RGBA32F);
+      }
+      primitivesOfMesh_[m].push_back(static_cast<int>(primitives_.size()));
+      primitives_.push_back(p);
+    }
+  }
+  for (const TextureImage& image : scene.images) {
+    GLuint texture = 0;
+    glGenTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    // Rows go up first-row-first, so glTF's UV origin (the image's top left) is texture t = 0.
+    if (image.width > 0 && image.height > 0 &&
+        image.rgba.size() == static_cast<size_t>(image.width) * image.height * 4) {
+      glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+      glGenerateMipmap(GL_TEXTURE_2D);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    } else {
+      const unsigned char white[4] = {255, 255, 255, 255};
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, white);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    }
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    textures_.push_back(texture);
+  }
+  glBindTexture(GL_TEXTURE_2D, 0);
+  skinOffset_.clear();
+  long long slots = 0;
+  for (const Skin& skin : scene.skins) {
+    skinOffset_.push_back(static_cast<int>(std::min<long long>(slots, 1 << 30)));
+    slots += static_cast<long long>(skin.joints.size());
+  }
+  // A file decides these sizes: refuse what the driver's texture buffers cannot hold
+  // (at least 65,536 texels: over 4,000 joints) instead of drawing garbage.
+  GLint maxTexels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+  if (slots * kJointTexels > maxTexels) {
+    const std::string error = scene.source + ": " + std::to_string(slots) + " skin joints in all, more than the " +
+                              std::to_string(maxTexels / kJointTexels) + " this OpenGL driver can skin";
+    release();
+    uploadKey_ = keyOf(scene);  // tried: not again every frame
+    return error;
+  }
+  for (const GpuPrimitive& p : primitives_)
+    if (static_cast<long long>(p.morphCount) * (p.morphNormals ? 2 : 1) * p.vertexCount > maxTexels) {
+      const std::string error = scene.source + ": mesh " + std::to_string(p.mesh) + " primitive " +
+                                std::to_string(p.primitive) + " has more morph target data than this OpenGL driver's " +
+                                std::to_string(maxTexels) + "-texel texture buffers hold";
+      release();
+      uploadKey_ = keyOf(scene);
+      return error;
+    }
+  const GLenum status = glGetError();
+  if (status != GL_NO_ERROR) return "OpenGL error " + std::to_string(status) + " while uploading the meshes";
+  return {};
+}
+
+void MeshRenderer::uploadJointMatrices(const MeshFrame& frame) {
+  // Every skin's matrices in one buffer, skin after skin; instances index from their skin's offset.
+  jointScratch_.clear();
+  for (size_t k = 0; k < scene_->skins.size() && k < skinOffset_.size(); ++k) {
+    computeSkinningMatrices(scene_->skins[k], *frame.world, skinScratch_);
+    const size_t at = jointScratch_.size();
+    jointScratch_.resize(at + skinScratch_.size() * kJointTexels * 4);
+    for (size_t j = 0; j < skinScratch_.size(); ++j) packJointTexels(skinScratch_[j], &jointScratch_[at + j * kJointTexels * 4]);
+  }
+  if (jointScratch_.empty()) jointScratch_.assign(4, 0.0f);
+  glBindBuffer(GL_TEXTURE_BUFFER, jointBuffer_);
+  glBufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(jointScratch_.size() * sizeof(float)), jointScratch_.data(),
+               GL_STREAM_DRAW);
+  glBindBuffer(GL_TEXTURE_BUFFER, 0);
+}
+
+bool MeshRenderer::uploadedMesh(int mesh) const {
+  // The scene may have changed since upload() (the editor edits it): draw only what both know.
+  return mesh >= 0 && mesh < static_cast<int>(primitivesOfMesh_.size()) && mesh < static_cast<int>(scene_->meshes.size());
+}
+
+void MeshRenderer::bindInstance(const MeshFrame& frame, int instance, const GpuPrimitive& p, bool weightsView) {
+  const MeshInstance& inst = scene_->meshInstances[instance];
+  const bool skinned = p.skinned && inst.skin >= 0 && inst.skin < static_cast<int>(skinOffset_.size()) &&
+                       inst.skin < static_cast<int>(scene_->skins.size());
+  const int method = !skinned ? 0 : inst.skinning == SkinningMethod::DualQuaternion ? 2 : 1;
+  glUniform1i(glGetUniformLocation(program_, "uSkinning"), method);
+  // The skin's joints start at its offset in the joint buffer: a buffer texture view per
+  // skin would need GL 4.3, so the texel offset goes in through the joint numbers instead.
+  const glm::mat4 model = inst.joint >= 0 && inst.joint < static_cast<int>(frame.world->size())
+                              ? (*frame.world)[inst.joint]
+                              : glm::mat4(1.0f);
+  glUniformMatrix4fv(glGetUniformLocation(program_, "uModel"), 1, GL_FALSE, glm::value_ptr(model));
+  const glm::mat3 normal = inverseTranspose3(glm::mat3(model));
+  glUniformMatrix3fv(glGetUniformLocation(program_, "uModelNormal"), 1, GL_FALSE, glm::value_ptr(normal));
+  glUniform1i(glGetUniformLocation(program_, "uJointOffset"), skinned ? skinOffset_[inst.skin] : 0);
+
+  int weightJoint = -1;
+  if (weightsView && frame.weightJoint >= 0) {
+    if (skinned) {
+      const std::vector<int>& joints = scene_->skins[inst.skin].joints;
+      const auto it = std::find(joints.begin(), joints.end(), frame.weightJoint);
+      weightJoint = it == joints.end() ? -2 : static_cast<int>(it - joints.begin());
+    } else {
+      weightJoint = inst.joint == frame.weightJoint ? 0 : -2;  // rigid: all or nothing
+    }
+  }
+  glUniform1i(glGetUniformLocation(program_, "uWeightJoint"), weightJoint);
+  glUniform1i(glGetUniformLocation(program_, "uShowWeights"), weightsView && frame.weightJoint >= 0);
+
+  // Morph weights: the frame's, else the instance's, else the mesh's defaults (glTF order).
+  const Mesh& mesh = scene_->meshes[inst.mesh];
+  const std::vector<float>* weights = &mesh.morphWeights;
+  if (!inst.morphWeights.empty()) weights = &inst.morphWeights;
+  if (frame.morphWeights && instance < static_cast<int>(frame.morphWeights->size()) &&
+      !(*frame.morphWeights)[instance].empty())
+    weights = &(*frame.morphWeights)[instance];
+  float w[kMaxMorphTargets] = {};
+  for (int k = 0; k < p.morphCount && k < static_cast<int>(weights->size()); ++k) w[k] = (*weights)[k];
+  glUniform1fv(glGetUniformLocation(program_, "uMorphWeights"), kMaxMorphTargets, w);
+  glUniform1i(glGetUniformLocation(program_, "uMorphCount"), p.morphCount);
+  glUniform1i(glGetUniformLocation(program_, "uVertexCount"), p.vertexCount);
+  glUniform1i(glGetUniformLocation(program_, "uMorphHasNormals"), p.morphNormals);
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_BUFFER, p.morphTexture ? p.morphTexture : emptyTexture_);
+
+  const Material* material = mesh.primitives[p.primitive].material >= 0 &&
+                                     mesh.primitives[p.primitive].material < static_cast<int>(scene_->materials.size())
+                                 ? &scene_->materials[mesh.primitives[p.primitive].material]
+                                 : nullptr;
+  const glm::vec4 base = material ? material->baseColor : glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
+  glUniform4fv(glGetUniformLocation(program_, "uBaseColor"), 1, glm::value_ptr(base));
+  const int image = material ? material->baseColorImage : -1;
+  const bool textured = image >= 0 && image < static_cast<int>(textures_.size()) &&
+                        !mesh.primitives[p.primitive].texcoords.empty();
+  glUniform1i(glGetUniformLocation(program_, "uHasTexture"), textured);
+  glActiveTexture(GL_TEXTURE2);
+  glBindTexture(GL_TEXTURE_2D, textured ? textures_[image] : 0);
+  glActiveTexture(GL_TEXTURE0);
+}
+
+void MeshRenderer::draw(const MeshFrame& frame, const glm::mat4& viewProjection, const glm::mat4& view) {
+  if (!scene_ || !frame.world || primitives_.empty()) return;
+  uploadJointMatrices(frame);
+  glUseProgram(program_);
+  glUniformMatrix4fv(glGetUniformLocation(program_, "uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
+  glUniformMatrix4fv(glGetUniformLocation(program_, "uView"), 1, GL_FALSE, glm::value_ptr(view));
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_BUFFER, jointTexture_);
+  glEnable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);  // double-sided: the fragment shader lights back faces too
+  for (size_t i = 0; i < scene_->meshInstances.size(); ++i) {
+    const MeshInstance& inst = scene_->meshInstances[i];
+    if (!uploadedMesh(inst.mesh)) continue;
+    for (int index : primitivesOfMesh_[inst.mesh]) {
+      const GpuPrimitive& p = primitives_[index];
+      if (p.indexCount == 0 || p.primitive >= static_cast<int>(scene_->meshes[inst.mesh].primitives.size())) continue;
+      bindInstance(frame, static_cast<int>(i), p, true);
+      glBindVertexArray(p.vao);
+      glDrawElements(GL_TRIANGLES, p.indexCount, GL_UNSIGNED_INT, nullptr);
+    }
+  }
+  glBindVertexArray(0);
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_BUFFER, 0);
+  glActiveTexture(GL_TEXTURE2);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_BUFFER, 0);
+  glUseProgram(0);
+}
+
+std::string MeshRenderer::deform(const MeshFrame& frame, bool skinnedOnly, std::vector<DeformedPrimitive>& out) {
+  out.clear();
+  if (!scene_ || !frame.world) return "the mesh renderer has no scene or no pose";
+  uploadJointMatrices(frame);
+  GLint previousFbo = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousFbo);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, feedbackFbo_);
+  glUseProgram(program_);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_BUFFER, jointTexture_);
+  glEnable(GL_RASTERIZER_DISCARD);
+  for (size_t i = 0; i < scene_->meshInstances.size(); ++i) {
+    const MeshInstance& inst = scene_->meshInstances[i];
+    if (!uploadedMesh(inst.mesh)) continue;
+    if (skinnedOnly && inst.skin < 0) continue;
+    for (int index : primitivesOfMesh_[inst.mesh]) {
+      const GpuPrimitive& p = primitives_[index];
+      if (p.primitive >= static_cast<int>(scene_->meshes[inst.mesh].primitives.size())) continue;
+      DeformedPrimitive result;
+      result.instance = static_cast<int>(i);
+      result.primitive = p.primitive;
+      if (p.vertexCount > 0) {
+        bindInstance(frame, static_cast<int>(i), p, false);
+        // One point per vertex, so gl_VertexID is the vertex index the morph deltas use.
+        const GLsizeiptr bytes = static_cast<GLsizeiptr>(p.vertexCount) * 6 * sizeof(float);
+        glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, feedbackBuffer_);
+        glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, bytes, nullptr, GL_STREAM_READ);
+        glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, feedbackBuffer_);
+        glBindVertexArray(p.vao);
+        glBeginTransformFeedback(GL_POINTS);
+        glDrawArrays(GL_POINTS, 0, p.vertexCount);
+        glEndTransformFeedback();
+        std::vector<float> data(static_cast<size_t>(p.vertexCount) * 6);
+        glGetBufferSubData(GL_TRANSFORM_FEEDBACK_BUFFER, 0, bytes, data.data());
+        result.positions.resize(p.vertexCount);
+        if (p.hasNormals) result.normals.resize(p.vertexCount);
+        for (int v = 0; v < p.vertexCount; ++v) {
+          const float* d = &data[static_cast<size_t>(v) * 6];
+          result.positions[v] = glm::vec3(d[0], d[1], d[2]);
+          if (p.hasNormals) result.normals[v] = glm::vec3(d[3], d[4], d[5]);
+        }
+      }
+      out.push_back(std::move(result));
+    }
+  }
+  glBindVertexArray(0);
+  glDisable(GL_RASTERIZER_DISCARD);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(previousFbo));
+  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
+  glBindTexture(GL_TEXTURE_BUFFER, 0);
+  glUseProgram(0);
+  const GLenum status = glGetError();
+  if (status != GL_NO_ERROR) return "OpenGL error " + std::to_string(status) + " while reading skinned vertices back";
+  return {};
+}
+
+Bounds MeshRenderer::deformedBounds(const MeshFrame& frame) {
+  Bounds bounds;
+  std::vector<DeformedPrimitive> deformed;
+  if (!deform(frame, false, deformed).empty()) return bounds;
+  for (const DeformedPrimitive& d : deformed)
+    for (const glm::vec3& p : d.positions)
+      if (isFinite(p)) bounds.add(p);
+  return bounds;
+}
+
+}  // namespace kinema

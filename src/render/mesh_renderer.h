@@ -1,0 +1,110 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include <glad/gl.h>
+
+#include "core/math.h"
+#include "io/scene.h"
+#include "render/camera.h"
+#include "skin/scene_deformation.h"
+
+namespace kinema {
+
+// What the mesh pass of one frame shows: the posed scene's joints (one world matrix per
+// skeleton joint) and optional per-instance morph weights (sampleMorphWeights; null or an
+// empty entry: the instance's or the mesh's default weights).
+struct MeshFrame {
+  const std::vector<glm::mat4>* world = nullptr;
+  const std::vector<std::vector<float>>* morphWeights = nullptr;
+  // Skeleton joint whose skin weights are shown as heat colours (blue 0 -> red 1) instead of
+  // the shaded material; -1 shows the materials.
+  int weightJoint = -1;
+};
+
+// Draws a Scene's meshes with OpenGL 3.3 core, skinned in the vertex shader
+// (shaders/mesh.vert): the scene's vertex data and textures are uploaded once by upload(),
+// each frame sends only the skinning matrices (computeSkinningMatrices) as a texture
+// buffer, so skins with hundreds of joints work, and the morph weights. Morph targets are
+// blended on the GPU from deltas uploaded once (a texture buffer), so a frame never
+// re-uploads vertices. Linear blend or dual quaternion per instance (MeshInstance::skinning);
+// unskinned instances follow their joint's world matrix. Create, use and destroy it with
+// one context current.
+class MeshRenderer {
+ public:
+  MeshRenderer() = default;
+  ~MeshRenderer();
+  MeshRenderer(const MeshRenderer&) = delete;
+  MeshRenderer& operator=(const MeshRenderer&) = delete;
+
+  // Compiles the shaders. Empty string on success.
+  std::string init();
+  // Uploads the scene's meshes, skins and textures (replacing any earlier scene). The scene
+  // must outlive the renderer's use of it (draw() reads its skins and instances); upload
+  // again when its meshes or skins change (draws skip what no longer matches, never crash).
+  std::string upload(const Scene& scene);
+  bool empty() const { return primitives_.empty(); }
+  // True when `scene` is not the scene last uploaded (another object, or the same object
+  // given other meshes, skins or images since: a file opened into it).
+  bool needsUpload(const Scene& scene) const;
+
+  // Draws every mesh instance into the bound framebuffer (depth test on, both faces lit).
+  void draw(const MeshFrame& frame, const glm::mat4& viewProjection, const glm::mat4& view);
+
+  // The same vertex shader run through transform feedback: world-space positions and
+  // normals of every instance x primitive, in SceneDeformationJob's order and layout (normals
+  // empty where the primitive has none), so tests compare the GPU with the CPU.
+  // skinnedOnly as in SceneDeformationJob. Empty string on success.
+  std::string deform(const MeshFrame& frame, bool skinnedOnly, std::vector<DeformedPrimitive>& out);
+
+  // The box around every deformed vertex of the frame (deform() then a loop); empty bounds
+  // when there is nothing to draw.
+  Bounds deformedBounds(const MeshFrame& frame);
+
+  // Most morph targets a primitive blends (more are ignored, with a warning from upload()).
+  static constexpr int kMaxMorphTargets = 32;
+  // Warnings upload() found (too many morph targets...), one line each.
+  const std::vector<std::string>& warnings() const { return warnings_; }
+
+ private:
+  struct GpuPrimitive {
+    int mesh = -1, primitive = -1;
+    GLuint vao = 0, vertices = 0, influences = 0, indices = 0;
+    GLuint morphBuffer = 0, morphTexture = 0;
+    int vertexCount = 0, indexCount = 0, morphCount = 0;
+    bool hasNormals = false, morphNormals = false, skinned = false;
+  };
+  void bindInstance(const MeshFrame& frame, int instance, const GpuPrimitive& p, bool weightsView);
+  void uploadJointMatrices(const MeshFrame& frame);
+  bool uploadedMesh(int mesh) const;
+  void release();
+
+  GLuint program_ = 0;
+  const Scene* scene_ = nullptr;
+  std::vector<GpuPrimitive> primitives_;
+  std::vector<std::vector<int>> primitivesOfMesh_;  // indices into primitives_
+  std::vector<GLuint> textures_;                     // one per scene image
+  GLuint feedbackFbo_ = 0, feedbackColor_ = 0;
+  GLuint jointBuffer_ = 0, jointTexture_ = 0, feedbackBuffer_ = 0, emptyBuffer_ = 0, emptyTexture_ = 0;
+  std::vector<int> skinOffset_;  // first joint slot of each skin in the joint buffer
+  std::vector<float> jointScratch_;
+  std::vector<glm::mat4> skinScratch_;
+  std::vector<std::string> warnings_;
+  // What upload() saw: the scene's address and its mesh, skin, instance and image arrays.
+  std::vector<const void*> uploadKey_;
+  static std::vector<const void*> keyOf(const Scene& scene);
+};
+
+// A FrameDescription's mesh pass: the renderer holding the uploaded scene and this frame's pose.
+struct MeshDraw {
+  MeshRenderer* renderer = nullptr;
+  MeshFrame frame;
+};
+
+// The per-joint texels mesh.vert reads for a skinning matrix M: M's 4 columns, the 3x3
+// inverse transpose (3 texels), the rigid part as a unit dual quaternion (real xyzw, dual
+// xyzw) and the scale/shear rest S = rigid^-1 * M (3), as DualQuaternionSkinningJob splits it.
+constexpr int kJointTexels = 12;
+void packJointTexels(const glm::mat4& m, float* out);  // writes kJointTexels * 4 floats
+
+}  // namespace kinema

@@ -1,0 +1,106 @@
+// The default character's skinned body, posed by rotating named joints (elbows and a knee
+// bent, arms lowered), rendered in-process on EGL and OSMesa and compared with a golden image.
+// Regenerate: KINEMA_UPDATE_GOLDEN=1 build/tests/kinema_tests --gtest_filter='DefaultCharacterRender*'
+// (tests/render/update_golden.sh does it), then LOOK at the image before committing.
+#include <cstdlib>
+
+#include "core/forward_kinematics.h"
+#include "io/image.h"
+#include "render/headless_renderer.h"
+#include "render/skeleton_view.h"
+#include "skin/default_character_scene.h"
+#include "test_support.h"
+
+namespace kinema {
+namespace {
+
+constexpr int kWidth = 320, kHeight = 240;
+
+void turn(const Skeleton& skeleton, Pose& pose, const char* joint, float degrees, glm::vec3 axis) {
+  const int j = skeleton.find(joint);
+  ASSERT_GE(j, 0) << joint;
+  pose.local[j].rotation = glm::angleAxis(glm::radians(degrees), axis) * pose.local[j].rotation;
+}
+
+// Arms lowered 50 degrees and bent 70 degrees forward at the elbows; the left thigh raised
+// 40 degrees forward and its knee bent 60 degrees back; the character faces +Z.
+std::vector<glm::mat4> posedWorld(const Scene& scene) {
+  Pose pose = Pose::rest(scene.skeleton);
+  const Skeleton& s = scene.skeleton;
+  turn(s, pose, "UpperArm.L", -50.0f, glm::vec3(0, 0, 1));
+  turn(s, pose, "UpperArm.R", 50.0f, glm::vec3(0, 0, 1));
+  turn(s, pose, "LowerArm.L", -70.0f, glm::vec3(0, 1, 0));
+  turn(s, pose, "LowerArm.R", 70.0f, glm::vec3(0, 1, 0));
+  turn(s, pose, "UpperLeg.L", -40.0f, glm::vec3(1, 0, 0));
+  turn(s, pose, "LowerLeg.L", 60.0f, glm::vec3(1, 0, 0));
+  return computeWorld(scene.skeleton, pose);
+}
+
+Image render(HeadlessBackend backend, const Scene& scene, const std::vector<glm::mat4>& world) {
+  Result<std::unique_ptr<HeadlessRenderer>> opened = HeadlessRenderer::open(backend, kWidth, kHeight);
+  EXPECT_TRUE(opened.ok()) << (opened ? "" : opened.error());
+  if (!opened) return Image();
+  HeadlessRenderer& renderer = *opened.value();
+  EXPECT_EQ(renderer.meshes().upload(scene), "");
+  const std::vector<char> skinJoints = skinJointMask(scene);
+  SkeletonDrawList list;
+  SkeletonDrawJob job;
+  job.parents = &scene.skeleton.parents;
+  job.world = &world;
+  job.shownJoints = &skinJoints;
+  job.run(list);
+  MeshDraw meshes;
+  meshes.renderer = &renderer.meshes();
+  meshes.frame.world = &world;
+  FrameDescription frame;
+  frame.skeleton = &list;
+  frame.meshes = &meshes;
+  frame.bones = BoneDisplay::None;
+  Bounds bounds = jointBounds(world);
+  bounds.add(bounds.min - glm::vec3(0.15f));  // the body reaches past the joints a little
+  bounds.add(bounds.max + glm::vec3(0.15f));
+  frame.camera = defaultCamera(bounds, float(kWidth) / kHeight);
+  frame.camera.azimuthDeg = 60.0f;  // three-quarter: both elbows and the bent knee show
+  frame.sceneRadius = bounds.radius();
+  return renderer.render(frame);
+}
+
+int differingPixels(const Image& a, const Image& b, int tolerance) {
+  if (a.width != b.width || a.height != b.height) return -1;
+  int n = 0;
+  for (size_t i = 0; i < a.rgba.size(); i += 4)
+    for (int c = 0; c < 4; ++c)
+      if (std::abs(int(a.rgba[i + c]) - int(b.rgba[i + c])) > tolerance) {
+        ++n;
+        break;
+      }
+  return n;
+}
+
+TEST(DefaultCharacterRender, PosedBodyMatchesGoldenWithEglAndOsMesa) {
+  setenv("LIBGL_ALWAYS_SOFTWARE", "1", 0);
+  const Scene scene = makeDefaultCharacterScene();
+  ASSERT_FALSE(scene.meshInstances.empty());
+  const std::vector<glm::mat4> world = posedWorld(scene);
+  const std::string golden = std::string(KINEMA_SOURCE_DIR) + "/tests/render/golden/default_character_posed.png";
+  const Image egl = render(HeadlessBackend::Egl, scene, world);
+  ASSERT_EQ(egl.width, kWidth);
+  if (std::getenv("KINEMA_UPDATE_GOLDEN")) {
+    ASSERT_EQ(savePng(golden, egl), "");
+    GTEST_SKIP() << "wrote " << golden << "; look at it before committing";
+  }
+  Result<Image> reference = loadPng(golden);
+  ASSERT_TRUE(reference.ok()) << reference.error();
+  // As the other goldens: at most 0.1% of the pixels off by more than 8 levels.
+  const int diff = differingPixels(egl, reference.value(), 8);
+  EXPECT_GE(diff, 0);
+  EXPECT_LE(diff, kWidth * kHeight / 1000) << "egl: " << diff << " pixels differ from the golden image";
+  if (!osMesaAvailable()) return;
+  const Image osmesa = render(HeadlessBackend::OsMesa, scene, world);
+  const int d2 = differingPixels(osmesa, reference.value(), 8);
+  EXPECT_GE(d2, 0);
+  EXPECT_LE(d2, kWidth * kHeight / 1000) << "osmesa: " << d2 << " pixels differ from the golden image";
+}
+
+}  // namespace
+}  // namespace kinema
