@@ -1,0 +1,272 @@
+// End-to-end tests of the posing features the other e2e files leave out: X-mirror editing,
+// the two-bone pole target, pinned IK targets, IK target drags along an axis, and the
+// orthographic toggle with frame selected from the View menu. The real `kinema edit` runs
+// under xvfb-run at 1280x800 (so the IK panel shows the pole fields) on --script replay and
+// is checked in --dump-state. Expected values are derived by hand (triangle geometry for the
+// two-bone chain, quaternion algebra for the mirror) or computed here from the dumped camera
+// (e2e_harness.h); panel pixels come from the fixed layout (src/editor/panel_layout.h) with
+// ImGui 1.86's default font, read off a screenshot once.
+#include <cmath>
+
+#include "editor/e2e_harness.h"
+
+namespace kinema::test {
+namespace {
+
+using namespace e2e;
+
+const std::string kSize = "1280x800";
+// Main menu bar: titles, then items 17 px apart (separators 4 px).
+const glm::dvec2 kEditMenu{69, 9}, kViewMenu{113, 9}, kPoseMenu{157, 9};
+const glm::dvec2 kEditXMirror{109, 164}, kViewOrthographic{153, 139}, kViewFrameSelected{153, 160};
+const glm::dvec2 kPosePin{197, 67};
+// The outliner's rows (depth-first order of the default character), 17 px apart.
+enum Row { kLowerArmL = 9, kHandL = 10, kLowerArmR = 14 };
+glm::dvec2 outlinerRow(int row) { return {150.0, 76.0 + 17.0 * row}; }
+// The IK Targets panel at 1280x800 (its top at y = 19 + 757 * 0.55), one target selected:
+// "Add to selected", the "bones" stepper's +, then the settings of the selected target.
+const glm::dvec2 kIkAdd{1033, 471}, kIkBonesPlus{1159, 471};
+const glm::dvec2 kIkPosition[3] = {{1007, 687}, {1069, 687}, {1131, 687}};
+const glm::dvec2 kIkPoleCheckbox{987, 710};
+const glm::dvec2 kIkPole[3] = {{1007, 733}, {1069, 733}, {1131, 733}};
+
+class PosingE2e : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    if (runCommand("command -v xvfb-run") != 0) return;
+    const std::string dir = makeTempDir();
+    const json d = runEditor(dir, shotDir(), Script(), "front", kSize);
+    if (d.is_object()) front_ = d;
+    runCommand("rm -rf '" + dir + "'");
+  }
+  void SetUp() override {
+    if (runCommand("command -v xvfb-run") != 0) GTEST_SKIP() << "SKIPPED: xvfb-run is not installed";
+    ASSERT_TRUE(front_.is_object()) << "the front-view run failed";
+    dir_ = makeTempDir();
+  }
+  void TearDown() override {
+    if (!dir_.empty()) runCommand("rm -rf '" + dir_ + "'");
+  }
+  static std::string shotDir() {
+    const std::string dir = std::string(KINEMA_BUILD_DIR) + "/posing_e2e";
+    runCommand("mkdir -p '" + dir + "'");
+    return dir;
+  }
+  json run(const Script& script, const std::string& name) { return runEditor(dir_, shotDir(), script, name, kSize); }
+
+  DumpCamera camera() const { return DumpCamera(front_); }
+  glm::dvec3 rest(const std::string& name) const { return jointIn(front_, name); }
+  glm::dvec2 pixelOf(const std::string& name) const { return camera().pixel(rest(name)); }
+  glm::dvec2 midpoint(const std::string& a, const std::string& b) const { return (pixelOf(a) + pixelOf(b)) * 0.5; }
+
+  static inline json front_;
+  std::string dir_;
+};
+
+// The point of the line p + s * axis nearest to the ray o + t * d (both directions unit).
+glm::dvec3 closestOnLine(glm::dvec3 p, glm::dvec3 axis, glm::dvec3 o, glm::dvec3 d) {
+  const glm::dvec3 w = p - o;
+  const double b = glm::dot(axis, d), denom = 1 - b * b;
+  const double s = (b * glm::dot(d, w) - glm::dot(axis, w)) / denom;
+  return p + s * axis;
+}
+
+TEST_F(PosingE2e, TheDefaultCharacterRestsWithIdentityRotations) {
+  // The premise of the hand derivations below: every rest rotation is the identity, so a
+  // world turn of a joint is also its local rotation; the arms lie along X at one height.
+  for (const json& j : front_["joints"]) {
+    const std::string name = j["name"];
+    expectRotation(rotationIn(front_, name), glm::dquat(1, 0, 0, 0), 1e-9, name);
+  }
+  EXPECT_NEAR(glm::length(rest("LowerArm.L") - rest("UpperArm.L")), 0.28, 1e-6);
+  EXPECT_NEAR(glm::length(rest("Hand.L") - rest("LowerArm.L")), 0.26, 1e-6);
+  EXPECT_EQ(double(front_["viewport"]["height"]), 800.0 - 19 - 24);
+}
+
+TEST_F(PosingE2e, XMirrorEditingRotatesTheMirrorPartnerInTheSameUndoStep) {
+  // R Z 30 on the left forearm: local rotation Rz(30) = (x, y, z, w) = (0, 0, sin 15, cos 15);
+  // with X-mirror (Edit menu) the right forearm gets (x, -y, -z, w) = (0, 0, -sin 15, cos 15),
+  // which puts the right hand at the left hand's place mirrored across X = 0.
+  const double c = std::cos(M_PI / 12), s = std::sin(M_PI / 12);
+  const glm::dquat left(c, 0, 0, s), right(c, 0, 0, -s);
+  const auto rotate = [&](Script& script) {
+    return script.click(outlinerRow(kLowerArmL)).wait(1).move(pixelOf("Hips") + glm::dvec2(0, 150))
+        .key("R").key("Z").key("3").key("0").key("ENTER");
+  };
+  Script on;
+  on.menu(kEditMenu, kEditXMirror);
+  rotate(on);
+  json d = run(on, "x_mirror_on");
+  const glm::dvec3 elbow = rest("LowerArm.L"), hand = elbow + 0.26 * glm::dvec3(std::cos(M_PI / 6), std::sin(M_PI / 6), 0);
+  expectRotation(rotationIn(d, "LowerArm.L"), left, 1e-5, "LowerArm.L");
+  expectRotation(rotationIn(d, "LowerArm.R"), right, 1e-5, "LowerArm.R, mirrored");
+  expectNear(jointIn(d, "Hand.L"), hand, 1e-4, "Hand.L");
+  expectNear(jointIn(d, "Hand.R"), glm::dvec3(-hand.x, hand.y, hand.z), 1e-4, "Hand.R, mirrored");
+  EXPECT_EQ(int(d["undo_depth"]), 1);  // one step for both sides
+
+  // One Ctrl+Z undoes both sides.
+  on.keyDown("LEFT_CONTROL").key("Z").keyUp("LEFT_CONTROL");
+  d = run(on, "x_mirror_undo");
+  expectRotation(rotationIn(d, "LowerArm.L"), glm::dquat(1, 0, 0, 0), 1e-6, "LowerArm.L undone");
+  expectRotation(rotationIn(d, "LowerArm.R"), glm::dquat(1, 0, 0, 0), 1e-6, "LowerArm.R undone");
+  expectNear(jointIn(d, "Hand.R"), rest("Hand.R"), 1e-6, "Hand.R undone");
+  EXPECT_EQ(int(d["undo_depth"]), 0);
+  EXPECT_EQ(int(d["redo_depth"]), 1);
+
+  // Off (the default), the partner stays.
+  Script off;
+  rotate(off);
+  d = run(off, "x_mirror_off");
+  expectRotation(rotationIn(d, "LowerArm.L"), left, 1e-5, "LowerArm.L");
+  expectRotation(rotationIn(d, "LowerArm.R"), glm::dquat(1, 0, 0, 0), 1e-6, "LowerArm.R without X-mirror");
+  expectNear(jointIn(d, "Hand.R"), rest("Hand.R"), 1e-6, "Hand.R without X-mirror");
+}
+
+TEST_F(PosingE2e, PoleTargetBendsTheElbowTowardsThePole) {
+  // A two-bone target on the left hand (IK panel, 2 bones), a pole 0.5 in front of or behind
+  // the elbow, then the target typed 0.21 nearer the shoulder: the arm must bend. With the
+  // shoulder S, upper arm a = 0.28, forearm b = 0.26 and d = |T - S|, the elbow lies
+  // s = (a^2 - b^2 + d^2) / 2d along the line S->T and h = sqrt(a^2 - s^2) off it, on the
+  // pole's side: along the part of P - S perpendicular to the line.
+  const glm::dvec3 S = rest("UpperArm.L"), hand = rest("Hand.L");
+  const double a = glm::length(rest("LowerArm.L") - S), b = glm::length(hand - rest("LowerArm.L"));
+  const glm::dvec3 T(0.5, hand.y, hand.z);
+  for (double poleZ : {0.5, -0.5}) {
+    const glm::dvec3 P = rest("LowerArm.L") + glm::dvec3(0, 0, poleZ);
+    Script script;
+    script.click(outlinerRow(kHandL)).wait(1).click(kIkAdd).wait(2).click(kIkPoleCheckbox).wait(2);
+    script.doubleClick(kIkPole[2]).wait(1).type(poleZ > 0 ? "0.5" : "-0.5").key("ENTER").wait(2);
+    script.doubleClick(kIkPosition[0]).wait(1).type("0.5").key("ENTER").wait(3);
+    const json d = run(script, poleZ > 0 ? "pole_in_front" : "pole_behind");
+    ASSERT_EQ(d["ik_targets"].size(), 1u);
+    const json& t = d["ik_targets"][0];
+    EXPECT_EQ(t["solver"], "two-bone");
+    expectNear(vec3(t["pole"]), P, 1e-6, "the pole");
+    expectNear(vec3(t["position"]), T, 1e-6, "the typed target");
+
+    const double dist = glm::length(T - S), s = (a * a - b * b + dist * dist) / (2 * dist), h = std::sqrt(a * a - s * s);
+    const glm::dvec3 n = (T - S) / dist, off = (P - S) - glm::dot(P - S, n) * n;
+    const glm::dvec3 elbow = S + s * n + h * glm::normalize(off);
+    expectNear(jointIn(d, "LowerArm.L"), elbow, 2e-3, "the elbow, pole z " + std::to_string(poleZ));
+    EXPECT_GT(jointIn(d, "LowerArm.L").z * poleZ, 0.2 * 0.5) << "the elbow bends towards the pole";
+    expectNear(jointIn(d, "Hand.L"), T, 2e-3, "the hand reaches the target");
+    expectNear(jointIn(d, "UpperArm.L"), S, 1e-6, "the shoulder stays");
+  }
+}
+
+TEST_F(PosingE2e, APinnedTargetHoldsItsEffectorWhileAnotherIsDragged) {
+  // A two-bone target on the elbow (Shift+I, 2 bones, up to Shoulder.L), pinned from the
+  // Pose menu; a 3-bone target on the hand (IK panel, damped least squares). The hand's
+  // handle is dragged along a circle of radius 0.26 (the forearm) around the elbow, 50
+  // degrees down: every point is reachable with the elbow where it is, so pinned it holds;
+  // unpinned, the elbow's target follows the elbow wherever the hand's solve puts it.
+  const DumpCamera cam = camera();
+  const glm::dvec3 elbow = rest("LowerArm.L"), hand = rest("Hand.L");
+  const double upp = cam.unitsPerPixel(hand), radius = 0.26 / upp;
+  const glm::dvec2 e = pixelOf("LowerArm.L"), h = pixelOf("Hand.L");
+  for (bool pinned : {true, false}) {
+    Script script;
+    script.click(outlinerRow(kLowerArmL)).wait(1).keyDown("LEFT_SHIFT").key("I").keyUp("LEFT_SHIFT").wait(1);
+    if (pinned) script.menu(kPoseMenu, kPosePin);
+    script.click(outlinerRow(kHandL)).wait(1).click(kIkBonesPlus).wait(1).click(kIkAdd).wait(2);
+    script.move(h).down();
+    glm::dvec2 last = h;
+    for (int k = 1; k <= 10; ++k) {
+      const double angle = -50.0 * M_PI / 180 * k / 10;
+      last = e + radius * glm::dvec2(std::cos(angle), -std::sin(angle));
+      script.move(last);
+    }
+    script.up();
+    const json d = run(script, pinned ? "pin_held" : "pin_off_follows");
+    ASSERT_EQ(d["ik_targets"].size(), 2u);
+    const json &elbowTarget = d["ik_targets"][0], &handTarget = d["ik_targets"][1];
+    EXPECT_EQ(elbowTarget["effector"], "LowerArm.L");
+    EXPECT_EQ(elbowTarget["pinned"], pinned);
+    EXPECT_EQ(handTarget["effector"], "Hand.L");
+    EXPECT_EQ(handTarget["chain_length"], 3);
+    // The dropped target: the pixel offset at the hand's depth.
+    const glm::dvec3 goal = hand + upp * glm::dvec3(last.x - h.x, -(last.y - h.y), 0);
+    expectNear(goal, elbow + 0.26 * glm::dvec3(std::cos(-5 * M_PI / 18), std::sin(-5 * M_PI / 18), 0), 1e-4, "goal on the circle");
+    expectNear(vec3(handTarget["position"]), goal, 1e-4, "the hand's target");
+    expectNear(jointIn(d, "Hand.L"), goal, 2e-3, "the hand reaches its target");
+    if (pinned) {
+      expectNear(vec3(elbowTarget["position"]), elbow, 1e-6, "the pinned target stays");
+      expectNear(jointIn(d, "LowerArm.L"), elbow, 2e-3, "the pinned elbow holds");
+    } else {
+      expectNear(vec3(elbowTarget["position"]), jointIn(d, "LowerArm.L"), 1e-5, "the unpinned target follows the elbow");
+      EXPECT_GT(glm::length(jointIn(d, "LowerArm.L") - elbow), 1e-2) << "unpinned, the elbow moves";
+    }
+    EXPECT_NEAR(glm::length(jointIn(d, "Hand.L") - jointIn(d, "LowerArm.L")), 0.26, 1e-4);
+    EXPECT_NEAR(glm::length(jointIn(d, "LowerArm.L") - jointIn(d, "UpperArm.L")), 0.28, 1e-4);
+  }
+}
+
+TEST_F(PosingE2e, IkTargetDragAlongAnAxisChangesOnlyThatCoordinate) {
+  // X (then Y) pressed during the handle drag: the target moves along the world axis
+  // through where it was, by as much as the line's nearest point to the cursor's ray moved
+  // (computed here from the dumped camera); the other two coordinates stay.
+  const DumpCamera cam = camera();
+  const glm::dvec3 hand = rest("Hand.L"), S = rest("UpperArm.L");
+  const glm::dvec2 h = pixelOf("Hand.L");
+  struct Case {
+    const char* key;
+    int axis;
+    glm::dvec2 offset;
+  };
+  for (const Case& c : {Case{"X", 0, {-60, 40}}, Case{"Y", 1, {35, -50}}}) {
+    Script script;
+    script.click(outlinerRow(kHandL)).wait(1).keyDown("LEFT_SHIFT").key("I").keyUp("LEFT_SHIFT").wait(1);
+    script.move(h).down().key(c.key).path(h, h + c.offset, 8).up();
+    const json d = run(script, std::string("ik_axis_drag_") + c.key);
+    ASSERT_EQ(d["ik_targets"].size(), 1u);
+    const glm::dvec3 t = vec3(d["ik_targets"][0]["position"]);
+    glm::dvec3 axis(0), o, dir;
+    axis[c.axis] = 1;
+    cam.ray(h, o, dir);
+    const glm::dvec3 grabbed = closestOnLine(hand, axis, o, dir);
+    cam.ray(h + c.offset, o, dir);
+    const glm::dvec3 expected = hand + (closestOnLine(hand, axis, o, dir) - grabbed);
+    for (int k = 0; k < 3; ++k) {
+      if (k != c.axis) EXPECT_NEAR(t[k], hand[k], 1e-5) << c.key << " drag moved coordinate " << k;
+    }
+    EXPECT_NEAR(t[c.axis], expected[c.axis], 2e-4) << c.key;
+    EXPECT_GT(std::abs(t[c.axis] - hand[c.axis]), 0.1) << c.key << " the target moved";
+    if (c.axis == 0) {
+      // 0.26 towards the shoulder: within reach.
+      expectNear(jointIn(d, "Hand.L"), t, 2e-3, "the hand reaches the X-dragged target");
+    } else {
+      // Straight up from the outstretched hand is out of reach: the arm points at it.
+      expectNear(jointIn(d, "Hand.L"), S + 0.54 * glm::normalize(t - S), 2e-3, "the arm points at the Y-dragged target");
+    }
+  }
+}
+
+TEST_F(PosingE2e, OrthographicToggleAndFrameSelectedFromTheViewMenuAndKeys) {
+  // View > Orthographic, then View > Frame Selected on the right forearm: an orthographic
+  // camera centred on the joint; numpad 5 goes back to perspective.
+  Script menus;
+  menus.click(outlinerRow(kLowerArmR)).wait(1).menu(kViewMenu, kViewOrthographic).menu(kViewMenu, kViewFrameSelected);
+  json d = run(menus, "view_menu_ortho_frame_selected");
+  EXPECT_TRUE(d["camera"]["orthographic"].get<bool>());
+  expectNear(vec3(d["camera"]["target"]), rest("LowerArm.R"), 1e-4, "View > Frame Selected");
+  EXPECT_LT(double(d["camera"]["distance"]), double(front_["camera"]["distance"]) / 2);
+  // The joint is at the middle of the 3D view (between the panels), not of the window.
+  const glm::dvec2 centre = DumpCamera(d).pixel(rest("LowerArm.R"));
+  EXPECT_NEAR(centre.x, 250 + (1280 - 250 - 310) / 2.0, 0.5);
+  EXPECT_NEAR(centre.y, 19 + (800 - 19 - 24) / 2.0, 0.5);
+  menus.key("KP_5");
+  d = run(menus, "view_menu_ortho_then_numpad5");
+  EXPECT_FALSE(d["camera"]["orthographic"].get<bool>());
+
+  // Numpad 5 and F: orthographic, centred on the left hand.
+  Script keys;
+  keys.click(outlinerRow(kHandL)).wait(1).move(pixelOf("Hips") + glm::dvec2(0, 150)).key("KP_5").key("F");
+  d = run(keys, "numpad5_frame_selected");
+  EXPECT_TRUE(d["camera"]["orthographic"].get<bool>());
+  expectNear(vec3(d["camera"]["target"]), rest("Hand.L"), 1e-4, "F");
+  // Perspective from the start: the front run.
+  EXPECT_FALSE(front_["camera"]["orthographic"].get<bool>());
+}
+
+}  // namespace
+}  // namespace kinema::test
