@@ -333,3 +333,31 @@ TEST(DocumentLimits, FkRotationsAndDragsStayWithinTheJointLimit) {
 
 }  // namespace
 }  // namespace kinema
+
+namespace kinema {
+namespace {
+
+TEST(DocumentSkinning, TheSkinningMethodIsAnUndoableEditOfTheMeshInstance) {
+  Document doc = newDocument();  // the default character: one skinned body
+  ASSERT_FALSE(doc.scene().meshInstances.empty());
+  ASSERT_EQ(doc.scene().meshInstances[0].skinning, SkinningMethod::LinearBlend);
+  ASSERT_EQ(setMeshSkinning(doc, 0, SkinningMethod::DualQuaternion), "");
+  EXPECT_EQ(doc.scene().meshInstances[0].skinning, SkinningMethod::DualQuaternion);
+  EXPECT_EQ(doc.historyLabels(), std::vector<std::string>{"Skinning dual quaternion"});
+  EXPECT_TRUE(doc.dirty());
+  EXPECT_EQ(doc.sceneForSaving().meshInstances[0].skinning, SkinningMethod::DualQuaternion);
+  ASSERT_TRUE(doc.undo());
+  EXPECT_EQ(doc.scene().meshInstances[0].skinning, SkinningMethod::LinearBlend);
+  EXPECT_FALSE(doc.dirty());
+  ASSERT_TRUE(doc.redo());
+  EXPECT_EQ(doc.scene().meshInstances[0].skinning, SkinningMethod::DualQuaternion);
+  // Setting the same method again is no step; a missing instance is refused.
+  ASSERT_EQ(setMeshSkinning(doc, 0, SkinningMethod::DualQuaternion), "");
+  EXPECT_EQ(doc.historyPosition(), 1);
+  EXPECT_NE(setMeshSkinning(doc, 99, SkinningMethod::LinearBlend), "");
+  EXPECT_NE(setMeshSkinning(doc, -1, SkinningMethod::LinearBlend), "");
+  EXPECT_EQ(doc.historyPosition(), 1);
+}
+
+}  // namespace
+}  // namespace kinema

@@ -364,6 +364,52 @@ TEST_F(EditorE2e, RotationsStopAtTheJointLimitAndTheLimitArcIsDrawn) {
   }
 }
 
+// The pixel (x, y) of a screenshot the test wrote (RGBA), or black outside it.
+glm::ivec3 pixelAt(const Image& img, glm::dvec2 p) {
+  const int x = int(std::lround(p.x)), y = int(std::lround(p.y));
+  if (x < 0 || y < 0 || x >= img.width || y >= img.height) return glm::ivec3(0);
+  const unsigned char* c = &img.rgba[(size_t(y) * img.width + x) * 4];
+  return {c[0], c[1], c[2]};
+}
+
+TEST_F(EditorE2e, SkinnedCharacterWithXrayBonesWeightsAndDualQuaternionSkinning) {
+  // The default character has a body now. Click the forearm (bones are picked through the
+  // body), R Z 90 bends the elbow, Alt+Z turns the bones to x-ray, Alt+W shows the
+  // forearm's weights, and the properties panel's Mesh section (fixed layout: its skinning
+  // combo at y 271 under the collapsed joint limit) switches the body to dual quaternions.
+  Script s;
+  s.click(midpoint("LowerArm.L", "Hand.L")).key("R").key("Z").key("9").key("0").key("ENTER");
+  s.keyDown("LEFT_ALT").key("Z").key("W").keyUp("LEFT_ALT");
+  s.click({1065, 271}).move({1065, 312}).click({1065, 312});
+  json d = run(s, "skinned_xray_weights_dq");
+  EXPECT_EQ(selection(d), std::vector<std::string>{"LowerArm.L"});
+  expectNear(joint(d, "Hand.L"), joint(front_, "LowerArm.L") + glm::dvec3(0, 0.26, 0), 1e-4, "the bent elbow");
+  EXPECT_EQ(d["bones"], "x-ray");
+  EXPECT_TRUE(bool(d["show_weights"]));
+  ASSERT_EQ(d["mesh_skinning"].size(), 1u);
+  EXPECT_EQ(d["mesh_skinning"][0], "dual-quaternion");
+  EXPECT_EQ(int(d["undo_depth"]), 2);  // the rotation, then the skinning method
+  // Ctrl+Z puts linear blend back (the skinning method is an undoable edit).
+  s.keyDown("LEFT_CONTROL").key("Z").keyUp("LEFT_CONTROL");
+  d = run(s, "skinned_dq_undone");
+  EXPECT_EQ(d["mesh_skinning"][0], "linear");
+  EXPECT_EQ(int(d["undo_depth"]), 1);
+
+  // Weights without bones (Alt+Z twice from on: x-ray, none), rest pose: the forearm's own
+  // vertices are hot (red), the chest's are cold (blue: weight 0 of the forearm).
+  d = run(Script()
+              .click(midpoint("LowerArm.L", "Hand.L"))
+              .keyDown("LEFT_ALT").key("W").key("Z").key("Z").keyUp("LEFT_ALT"),
+          "skinned_weights_no_bones");
+  EXPECT_EQ(d["bones"], "none");
+  const auto shot = loadPng(shotDir() + "/skinned_weights_no_bones.png");
+  ASSERT_TRUE(shot.ok()) << shot.error();
+  const glm::ivec3 forearm = pixelAt(shot.value(), midpoint("LowerArm.L", "Hand.L"));
+  const glm::ivec3 chest = pixelAt(shot.value(), pixelOf("Chest"));
+  EXPECT_GT(forearm.r, forearm.b + 60) << forearm.r << " " << forearm.g << " " << forearm.b;
+  EXPECT_GT(chest.b, chest.r + 60) << chest.r << " " << chest.g << " " << chest.b;
+}
+
 TEST_F(EditorE2e, GMovesTheRootInTheViewPlaneAndAlongAnAxis) {
   // 100 px right at the hips' depth is 100 * (2 depth tan(fov/2) / 720) world units along +X.
   const glm::dvec3 hips = joint(front_, "Hips");
