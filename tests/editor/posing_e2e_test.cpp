@@ -19,9 +19,10 @@ const std::string kSize = "1280x800";
 // Main menu bar: titles, then items 17 px apart (separators 4 px).
 const glm::dvec2 kEditMenu{69, 9}, kViewMenu{113, 9}, kPoseMenu{157, 9};
 const glm::dvec2 kEditXMirror{109, 164}, kViewOrthographic{153, 139}, kViewFrameSelected{153, 160};
+const glm::dvec2 kViewRight{153, 67}, kViewTop{153, 101};
 const glm::dvec2 kPosePin{197, 67};
 // The outliner's rows (depth-first order of the default character), 17 px apart.
-enum Row { kLowerArmL = 9, kHandL = 10, kLowerArmR = 14 };
+enum Row { kUpperArmL = 8, kLowerArmL = 9, kHandL = 10, kLowerArmR = 14 };
 glm::dvec2 outlinerRow(int row) { return {150.0, 76.0 + 17.0 * row}; }
 // The IK Targets panel at 1280x800 (its top at y = 19 + 757 * 0.55), one target selected:
 // "Add to selected", the "bones" stepper's +, then the settings of the selected target.
@@ -227,7 +228,8 @@ TEST_F(PosingE2e, IkTargetDragAlongAnAxisChangesOnlyThatCoordinate) {
     cam.ray(h + c.offset, o, dir);
     const glm::dvec3 expected = hand + (closestOnLine(hand, axis, o, dir) - grabbed);
     for (int k = 0; k < 3; ++k) {
-      if (k != c.axis) EXPECT_NEAR(t[k], hand[k], 1e-5) << c.key << " drag moved coordinate " << k;
+      if (k == c.axis) continue;
+      EXPECT_NEAR(t[k], hand[k], 1e-5) << c.key << " drag moved coordinate " << k;
     }
     EXPECT_NEAR(t[c.axis], expected[c.axis], 2e-4) << c.key;
     EXPECT_GT(std::abs(t[c.axis] - hand[c.axis]), 0.1) << c.key << " the target moved";
@@ -266,6 +268,62 @@ TEST_F(PosingE2e, OrthographicToggleAndFrameSelectedFromTheViewMenuAndKeys) {
   expectNear(vec3(d["camera"]["target"]), rest("Hand.L"), 1e-4, "F");
   // Perspective from the start: the front run.
   EXPECT_FALSE(front_["camera"]["orthographic"].get<bool>());
+}
+
+TEST_F(PosingE2e, ViewMenuPresetsAltLeftOrbitAndShiftMiddlePan) {
+  // View > Right looks from +X (azimuth 90), View > Top from above (elevation 90).
+  json d = run(Script().menu(kViewMenu, kViewRight), "view_menu_right");
+  EXPECT_NEAR(double(d["camera"]["azimuth"]), 90.0, 1e-4);
+  EXPECT_NEAR(double(d["camera"]["elevation"]), 0.0, 1e-4);
+  d = run(Script().menu(kViewMenu, kViewTop), "view_menu_top");
+  EXPECT_NEAR(double(d["camera"]["elevation"]), 90.0, 1e-3);
+
+  // Alt + left drag, starting on the hand's bone, orbits like a middle drag (0.4 degrees
+  // per pixel, turntable): 100 px right and 50 px up; nothing gets selected.
+  const glm::dvec2 a = midpoint("Hand.L", "Fingertip.L");
+  d = run(Script().move(a).keyDown("LEFT_ALT").down().path(a, a + glm::dvec2(100, -50)).up().keyUp("LEFT_ALT"),
+          "alt_left_orbit");
+  EXPECT_NEAR(double(d["camera"]["azimuth"]), -40.0, 1e-3);
+  EXPECT_NEAR(double(d["camera"]["elevation"]), -20.0, 1e-3);
+  EXPECT_TRUE(d["selection"].empty());
+  EXPECT_EQ(int(d["undo_depth"]), 0);
+
+  // Shift + middle drag pans: the scene follows the cursor on the target's plane, so the
+  // old target's point now projects 120 px right and 40 px below the view's centre.
+  const glm::dvec2 m(600, 500);
+  d = run(Script().move(m).keyDown("LEFT_SHIFT").down("middle").path(m, m + glm::dvec2(120, 40)).up("middle").keyUp("LEFT_SHIFT"),
+          "shift_middle_pan");
+  const DumpCamera after(d);
+  const glm::dvec2 centre(after.x0 + after.w / 2, after.y0 + after.h / 2);
+  const glm::dvec2 moved = after.pixel(vec3(front_["camera"]["target"]));
+  EXPECT_NEAR(moved.x, centre.x + 120, 0.05);
+  EXPECT_NEAR(moved.y, centre.y + 40, 0.05);
+  EXPECT_NEAR(double(d["camera"]["azimuth"]), 0.0, 1e-6);  // a pan does not turn
+  EXPECT_NEAR(double(d["camera"]["distance"]), double(front_["camera"]["distance"]), 1e-5);
+}
+
+TEST_F(PosingE2e, RPressedAxisTwiceTurnsAboutTheJointsLocalAxis) {
+  // The upper arm turned 90 degrees about Z points up; the forearm's local frame is that
+  // turn, so its local Y is world -X. R Y Y 90 turns the forearm (now along +Y) about -X:
+  // to -Z, the hand at elbow + 0.26 (0, 0, -1), local rotation (0, sin 45, 0, cos 45).
+  // R Y 90 (global Y) turns it about its own length: the hand stays at elbow + (0, 0.26, 0).
+  const glm::dvec3 elbow = rest("UpperArm.L") + glm::dvec3(0, 0.28, 0);
+  const glm::dvec2 away = pixelOf("Hips") + glm::dvec2(0, 150);
+  const auto script = [&](bool local) {
+    Script s;
+    s.click(outlinerRow(kUpperArmL)).wait(1).move(away).key("R").key("Z").key("9").key("0").key("ENTER");
+    s.click(outlinerRow(kLowerArmL)).wait(1).move(away).key("R").key("Y");
+    if (local) s.key("Y");
+    return s.key("9").key("0").key("ENTER");
+  };
+  json d = run(script(true), "rotate_local_axis");
+  expectNear(jointIn(d, "LowerArm.L"), elbow, 1e-4, "the elbow after the upper arm's turn");
+  expectNear(jointIn(d, "Hand.L"), elbow + glm::dvec3(0, 0, -0.26), 1e-4, "R Y Y 90: about the local Y");
+  const double h = std::sqrt(0.5);
+  expectRotation(rotationIn(d, "LowerArm.L"), glm::dquat(h, 0, h, 0), 1e-5, "local rotation");
+  d = run(script(false), "rotate_global_axis");
+  expectNear(jointIn(d, "Hand.L"), elbow + glm::dvec3(0, 0.26, 0), 1e-4, "R Y 90: about the global Y");
+  EXPECT_EQ(int(d["undo_depth"]), 2);
 }
 
 }  // namespace
