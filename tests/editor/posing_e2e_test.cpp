@@ -29,6 +29,10 @@ glm::dvec2 outlinerRow(int row) { return {150.0, 76.0 + 17.0 * row}; }
 const glm::dvec2 kIkAdd{1033, 471}, kIkBonesPlus{1159, 471};
 const glm::dvec2 kIkPosition[3] = {{1007, 687}, {1069, 687}, {1131, 687}};
 const glm::dvec2 kIkPoleCheckbox{987, 710};
+// With the chain length at 0 an "IK root" combo comes in under it (its list opens upwards,
+// the effector's ancestors from the parent up) and the rows below move down one.
+const glm::dvec2 kIkChainMinus{1129, 618}, kIkRootCombo{1060, 641}, kIkRootUpperChest{1020, 566};
+const glm::dvec2 kIkPositionBelowRoot[3] = {{1007, 710}, {1069, 710}, {1131, 710}};
 const glm::dvec2 kIkPole[3] = {{1007, 733}, {1069, 733}, {1131, 733}};
 
 class PosingE2e : public ::testing::Test {
@@ -324,6 +328,46 @@ TEST_F(PosingE2e, RPressedAxisTwiceTurnsAboutTheJointsLocalAxis) {
   d = run(script(false), "rotate_global_axis");
   expectNear(jointIn(d, "Hand.L"), elbow + glm::dvec3(0, 0.26, 0), 1e-4, "R Y 90: about the global Y");
   EXPECT_EQ(int(d["undo_depth"]), 2);
+}
+
+TEST_F(PosingE2e, AChosenIkRootSetsTheChain) {
+  // A 3-bone target on the left hand (root Shoulder.L: Shoulder.L, UpperArm.L and LowerArm.L
+  // turn) reaches at most 0.14 + 0.28 + 0.26 = 0.68 from Shoulder.L. The target typed at
+  // (0.55, 0.95, 0) is sqrt(0.52^2 + 0.5^2) = 0.72 from it: out of reach. With the chain
+  // length at 0 and UpperChest chosen as IK root, UpperChest turns too and the target is
+  // 0.67 from it, inside its 0.12 + 0.68 reach: the hand gets there, UpperChest itself stays
+  // where it is, and the joints above it (Chest, Spine, Hips) keep their rotations.
+  const glm::dvec3 T(0.55, 0.95, 0.0);
+  ASSERT_GT(glm::length(T - rest("Shoulder.L")), 0.68 + 0.02);
+  const auto script = [&](bool chooseRoot) {
+    Script s;
+    s.click(outlinerRow(kHandL)).wait(1).click(kIkBonesPlus).wait(1).click(kIkAdd).wait(2);
+    if (chooseRoot) {
+      for (int k = 0; k < 3; ++k) s.click(kIkChainMinus).wait(1);
+      s.click(kIkRootCombo).wait(2).click(kIkRootUpperChest).wait(2);
+    }
+    const glm::dvec2* position = chooseRoot ? kIkPositionBelowRoot : kIkPosition;
+    s.doubleClick(position[0]).wait(1).type("0.55").key("ENTER").wait(3);
+    return s.doubleClick(position[1]).wait(1).type("0.95").key("ENTER").wait(3);
+  };
+  json d = run(script(true), "ik_root_chosen");
+  ASSERT_EQ(d["ik_targets"].size(), 1u);
+  EXPECT_EQ(d["ik_targets"][0]["chain_length"], 0);
+  EXPECT_EQ(d["ik_targets"][0]["root"], "UpperChest");
+  EXPECT_EQ(d["ik_targets"][0]["solver"], "jacobian-dls");
+  expectNear(vec3(d["ik_targets"][0]["position"]), T, 1e-6, "the typed target");
+  expectNear(jointIn(d, "Hand.L"), T, 2e-3, "the hand reaches the target");
+  expectNear(jointIn(d, "UpperChest"), rest("UpperChest"), 1e-5, "the IK root stays in place");
+  EXPECT_LT(std::abs(rotationIn(d, "UpperChest").w), 0.9999) << "the IK root turns";
+  for (const char* outside : {"Chest", "Spine", "Hips"})
+    expectRotation(rotationIn(d, outside), glm::dquat(1, 0, 0, 0), 1e-6, outside);
+
+  // The same target with the 3-bone chain: the hand stops short (root Shoulder.L).
+  d = run(script(false), "ik_root_chain3");
+  EXPECT_EQ(d["ik_targets"][0]["root"], "Shoulder.L");
+  EXPECT_GT(glm::length(jointIn(d, "Hand.L") - T), 0.72 - 0.68 - 2e-3);
+  expectNear(jointIn(d, "Shoulder.L"), rest("Shoulder.L"), 1e-5, "the 3-bone chain's root stays");
+  expectRotation(rotationIn(d, "UpperChest"), glm::dquat(1, 0, 0, 0), 1e-6, "UpperChest outside the chain");
 }
 
 }  // namespace
