@@ -203,6 +203,16 @@ TEST_F(PosingE2e, APinnedTargetHoldsItsEffectorWhileAnotherIsDragged) {
     }
     EXPECT_NEAR(glm::length(jointIn(d, "Hand.L") - jointIn(d, "LowerArm.L")), 0.26, 1e-4);
     EXPECT_NEAR(glm::length(jointIn(d, "LowerArm.L") - jointIn(d, "UpperArm.L")), 0.28, 1e-4);
+    // The last solve's report per solved target (shown in the status bar): the dragged
+    // one, and the pinned one too; each error is its effector's distance to its target.
+    ASSERT_TRUE(handTarget.contains("iterations"));
+    EXPECT_GE(int(handTarget["iterations"]), 1);
+    EXPECT_GE(double(handTarget["milliseconds"]), 0.0);
+    EXPECT_NEAR(double(handTarget["error"]), glm::length(jointIn(d, "Hand.L") - goal), 1e-4);
+    EXPECT_EQ(elbowTarget.contains("error"), pinned) << "only a pinned target is solved while another is dragged";
+    if (pinned) {
+      EXPECT_NEAR(double(elbowTarget["error"]), glm::length(jointIn(d, "LowerArm.L") - elbow), 1e-4);
+    }
   }
 }
 
