@@ -284,6 +284,31 @@ TEST_F(PosingE2e, OrthographicToggleAndFrameSelectedFromTheViewMenuAndKeys) {
   EXPECT_FALSE(front_["camera"]["orthographic"].get<bool>());
 }
 
+TEST_F(PosingE2e, OrthographicPickingFollowsTheOrthographicProjection) {
+  // From the right (numpad 3) with numpad 5 the left arm, which points at the eye, projects
+  // to a single point: every joint of it lies on one viewing ray, and a click there picks
+  // the one nearest the eye, the fingertip (x = 0.89). Without numpad 5 the same pixel is
+  // far from the fingertip's perspective image (the arm spreads along the view's height).
+  Script ortho;
+  ortho.key("KP_3").key("KP_5");
+  const json view = run(ortho, "right_ortho");
+  ASSERT_TRUE(view.is_object());
+  ASSERT_TRUE(view["camera"]["orthographic"].get<bool>());
+  const DumpCamera cam(view);
+  const glm::dvec2 arm = cam.pixel(rest("Hand.L"));
+  for (const char* j : {"Shoulder.L", "UpperArm.L", "LowerArm.L", "Fingertip.L"})
+    EXPECT_LT(glm::length(cam.pixel(rest(j)) - arm), 0.01) << j << " on the same ray";
+  json d = run(ortho.click(arm), "right_ortho_pick");
+  EXPECT_EQ(d["selection"], json::array({"Fingertip.L"}));
+
+  Script perspective;
+  perspective.key("KP_3").wait(1).click(arm);
+  d = run(perspective, "right_perspective_pick");
+  EXPECT_FALSE(d["camera"]["orthographic"].get<bool>());
+  EXPECT_GT(glm::length(DumpCamera(d).pixel(rest("Fingertip.L")) - arm), 20.0);
+  EXPECT_NE(d["selection"], json::array({"Fingertip.L"}));
+}
+
 TEST_F(PosingE2e, ViewMenuPresetsAltLeftOrbitAndShiftMiddlePan) {
   // View > Right looks from +X (azimuth 90), View > Top from above (elevation 90).
   json d = run(Script().menu(kViewMenu, kViewRight), "view_menu_right");
