@@ -410,6 +410,23 @@ TEST_F(EditorE2e, SkinnedCharacterWithXrayBonesWeightsAndDualQuaternionSkinning)
   EXPECT_GT(chest.b, chest.r + 60) << chest.r << " " << chest.g << " " << chest.b;
 }
 
+TEST_F(EditorE2e, AClickOnTheBodyAwayFromTheBonesSelectsTheJointWeighingMostThere) {
+  // 22 px right of the chest joint the ray crosses the torso but no bone (the spine's
+  // octahedra are a few pixels wide, the fallback circle smaller): the joint with the
+  // largest weight at the hit vertex is one of the torso's. Before, nothing was selected.
+  const glm::dvec2 side = pixelOf("Chest") + glm::dvec2(22, 0);
+  json d = run(Script().click(side), "click_body");
+  ASSERT_EQ(selection(d).size(), 1u);
+  const std::string j = selection(d)[0];
+  EXPECT_TRUE(j == "Spine" || j == "Chest" || j == "UpperChest" || j == "Shoulder.L") << j;
+  // The same click with the bones hidden (Alt+Z twice), and on the forearm: the body's
+  // weights decide there too (the forearm's middle is its own).
+  d = run(Script().keyDown("LEFT_ALT").key("Z").key("Z").keyUp("LEFT_ALT").click(midpoint("LowerArm.L", "Hand.L")),
+          "click_body_no_bones");
+  EXPECT_EQ(d["bones"], "none");
+  EXPECT_EQ(selection(d), std::vector<std::string>{"LowerArm.L"});
+}
+
 TEST_F(EditorE2e, GMovesTheRootInTheViewPlaneAndAlongAnAxis) {
   // 100 px right at the hips' depth is 100 * (2 depth tan(fov/2) / 720) world units along +X.
   const glm::dvec3 hips = joint(front_, "Hips");
