@@ -305,6 +305,10 @@ void ViewportTools::key(EditorState& state, const ViewportView& view, int key) {
   if (ctrl) {
     // Ctrl+N/O/S/Q/Z/Y/C/V are the main menu's shortcuts (editor_panels.h).
     if (key == GLFW_KEY_I) state.view.autoIk = !state.view.autoIk;
+    else if (key == GLFW_KEY_P) {  // Blender's Ctrl+P, "With Automatic Weights"
+      const std::string error = bindUnskinnedMeshes(doc);
+      state.statusMessage = error.empty() ? "Bound to the skeleton with automatic weights" : error;
+    }
     else if (key == GLFW_KEY_KP_1) applyViewPreset(state.camera, ViewPreset::Back);
     else if (key == GLFW_KEY_KP_3) applyViewPreset(state.camera, ViewPreset::Left);
     else if (key == GLFW_KEY_KP_7) applyViewPreset(state.camera, ViewPreset::Bottom);
