@@ -197,6 +197,25 @@ std::string Document::edit(const std::string& label, const std::function<std::st
   return {};
 }
 
+std::string Document::editMeshes(const std::string& label, const std::function<std::string(Scene&)>& change) {
+  if (drag_) return "finish the current drag first";
+  Scene scratch = scene_;
+  const std::string error = change(scratch);
+  if (!error.empty()) return error;
+  if (scratch.meshInstances.size() != scene_.meshInstances.size())
+    return "an edit may not add or remove mesh instances";
+  auto before = std::make_shared<SceneMeshes>(SceneMeshes{scene_.meshes, scene_.skins, scene_.meshInstances});
+  auto after = std::make_shared<SceneMeshes>(
+      SceneMeshes{std::move(scratch.meshes), std::move(scratch.skins), std::move(scratch.meshInstances)});
+  EditRecord record;
+  record.label = label;
+  record.meshesBefore = before;
+  record.meshesAfter = after;
+  apply(record, true);
+  pushRecord(std::move(record));
+  return {};
+}
+
 std::string Document::beginDrag(const std::string& label) {
   if (drag_) return "a drag is already in progress";
   drag_ = Drag{label, capture()};
@@ -236,6 +255,15 @@ void Document::apply(const EditRecord& r, bool forward) {
   for (const EditRecord::NameChange& c : r.names) scene_.skeleton.names[c.joint] = forward ? c.after : c.before;
   if (r.limitsChanged) scene_.ik.limits = forward ? r.limitsAfter : r.limitsBefore;
   if (r.targetsChanged) targets_ = forward ? r.targetsAfter : r.targetsBefore;
+  if (r.meshesBefore && r.meshesAfter) {
+    const SceneMeshes& m = forward ? *r.meshesAfter : *r.meshesBefore;
+    scene_.meshes = m.meshes;
+    scene_.skins = m.skins;
+    scene_.meshInstances = m.instances;
+    skinning_.clear();
+    for (const MeshInstance& i : scene_.meshInstances) skinning_.push_back(i.skinning);
+    ++meshRevision_;
+  }
   if (r.skinningChanged) {
     skinning_ = forward ? r.skinningAfter : r.skinningBefore;
     syncSkinning();

@@ -70,6 +70,12 @@ class Document {
   // changes nothing adds no step. Refused while a drag is in progress.
   std::string edit(const std::string& label, const std::function<std::string(DocumentEdit&)>& change);
 
+  // Replaces the scene's meshes, skins and mesh instances as one undo step: `change` edits a
+  // copy of the scene (only those three arrays are taken back; the instance count must stay).
+  std::string editMeshes(const std::string& label, const std::function<std::string(Scene&)>& change);
+  // Grows whenever the meshes, skins or instances were replaced (GPU copies must upload again).
+  long long meshRevision() const { return meshRevision_; }
+
   // An interactive drag is one undo step: begin, any number of updates (each starts from
   // the state at begin, so the result depends only on the latest update), then commit or
   // cancel (Esc / right click: back to the start, nothing recorded).
@@ -129,6 +135,7 @@ class Document {
   std::vector<std::string> loadedNames_;  // joint names as loaded: renames update glTF node names
   Pose pose_;
   std::vector<PoseIkTarget> targets_;
+  long long meshRevision_ = 0;
   std::vector<SkinningMethod> skinning_;  // edited here, written into scene_.meshInstances after each change
   std::string path_;
   EditHistory history_;

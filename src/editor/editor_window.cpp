@@ -287,6 +287,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     int fbw = 0, fbh = 0, ww = 0, wh = 0;
     glfwGetFramebufferSize(window, &fbw, &fbh);
     if (error.empty()) error = uploadMeshes();
+    long long uploadedMeshRevision = state.doc.meshRevision();  // a bind replaces the meshes
     glfwGetWindowSize(window, &ww, &wh);
     const PanelRect startRect = viewportRect(ImVec2(float(ww), float(wh)));
     state.camera = defaultCamera(viewBounds(), startRect.w / startRect.h);
@@ -342,7 +343,8 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         glClearColor(0.235f, 0.235f, 0.235f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
       } else {
-        if (meshes.needsUpload(state.doc.scene())) {
+        if (meshes.needsUpload(state.doc.scene()) || state.doc.meshRevision() != uploadedMeshRevision) {
+          uploadedMeshRevision = state.doc.meshRevision();
           const std::string failed = uploadMeshes();
           if (!failed.empty()) state.statusMessage = failed;
         }

@@ -194,6 +194,10 @@ void drawMainMenuBar(EditorState& state) {
     if (ImGui::MenuItem("Pin IK Target", nullptr, pinned, t >= 0)) togglePin(state);
     ImGui::SetNextItemWidth(80);
     ImGui::SliderInt("Chain length", &p.ikChainLength, 1, 8);
+    bool unskinned = false;
+    for (const MeshInstance& m : doc.scene().meshInstances) unskinned = unskinned || m.skin < 0;
+    if (ImGui::MenuItem("Bind to Skeleton with Automatic Weights", "Ctrl+P", false, unskinned))
+      showEditorError(state, bindUnskinnedMeshes(doc));
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {

@@ -6,6 +6,7 @@
 #include "editor/ik_posing.h"
 #include "editor/mirror_names.h"
 #include "editor/pose_clipboard.h"
+#include "skin/default_character_scene.h"
 
 namespace kinema {
 
@@ -165,6 +166,20 @@ std::string setMeshSkinning(Document& doc, int instance, SkinningMethod method) 
   const char* name = method == SkinningMethod::DualQuaternion ? "dual quaternion" : "linear blend";
   return doc.edit(std::string("Skinning ") + name, [&](DocumentEdit& e) {
     e.skinning[instance] = method;
+    return std::string();
+  });
+}
+
+std::string bindUnskinnedMeshes(Document& doc, AutomaticWeightsMethod method) {
+  bool any = false;
+  for (const MeshInstance& m : doc.scene().meshInstances) any = any || m.skin < 0;
+  if (!any) return "no unskinned mesh to bind (every mesh already follows a skin)";
+  return doc.editMeshes("Bind to skeleton", [&](Scene& scene) {
+    for (size_t i = 0; i < scene.meshInstances.size(); ++i) {
+      if (scene.meshInstances[i].skin >= 0) continue;
+      std::string error;
+      if (!bindMeshWithAutomaticWeights(scene, static_cast<int>(i), method, error)) return error;
+    }
     return std::string();
   });
 }

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "editor/document.h"
+#include "skin/automatic_weights.h"
 
 namespace kinema {
 
@@ -34,6 +35,9 @@ std::string setJointLimit(Document& doc, int joint, const JointLimit& limit);
 glm::quat limitedLocalRotation(const DocumentEdit& e, int joint, const glm::quat& local);
 // How mesh instance `instance` is skinned (linear blend or dual quaternion); one undo step.
 std::string setMeshSkinning(Document& doc, int instance, SkinningMethod method);
+// Pose > Bind to Skeleton with Automatic Weights (Ctrl+P): every unskinned mesh instance
+// bound to the skeleton at its rest pose (skin/default_character_scene.h), one undo step.
+std::string bindUnskinnedMeshes(Document& doc, AutomaticWeightsMethod method = AutomaticWeightsMethod::Capsule);
 
 // IK targets. The returned string is "" or the error; addIkTarget puts the new index in
 // *index when given.

@@ -40,6 +40,9 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
   for (const MeshInstance& m : doc.scene().meshInstances)
     skinning.push_back(m.skinning == SkinningMethod::DualQuaternion ? "dual-quaternion" : "linear");
   out["mesh_skinning"] = skinning;
+  json skins = json::array();
+  for (const MeshInstance& m : doc.scene().meshInstances) skins.push_back(m.skin);
+  out["mesh_skins"] = skins;  // per mesh instance: its skin, -1 = not bound
   out["errors"] = s.panels.errors;  // waiting in the error popup, oldest first
   out["status"] = s.statusMessage;
   const OrbitCamera& c = s.camera;

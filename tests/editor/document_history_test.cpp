@@ -361,3 +361,54 @@ TEST(DocumentSkinning, TheSkinningMethodIsAnUndoableEditOfTheMeshInstance) {
 
 }  // namespace
 }  // namespace kinema
+
+namespace kinema {
+namespace {
+
+TEST(DocumentSkinning, BindingAnUnskinnedMeshIsOneUndoStep) {
+  // A two-bone chain up +Y and a 4-vertex quad along it on the root, not skinned.
+  Scene s;
+  Transform up;
+  up.translation = {0, 1, 0};
+  s.skeleton.addJoint("Root", -1, Transform{});
+  s.skeleton.addJoint("Mid", 0, up);
+  s.skeleton.addJoint("Tip", 1, up);
+  MeshPrimitive p;
+  p.positions = {{-0.1f, 0.2f, 0}, {0.1f, 0.2f, 0}, {-0.1f, 1.8f, 0}, {0.1f, 1.8f, 0}};
+  p.indices = {0, 1, 3, 0, 3, 2};
+  Mesh m;
+  m.primitives.push_back(p);
+  s.meshes.push_back(m);
+  MeshInstance i;
+  i.joint = 0;
+  i.mesh = 0;
+  s.meshInstances.push_back(i);
+  Document doc(s);
+  const long long revision = doc.meshRevision();
+  ASSERT_EQ(bindUnskinnedMeshes(doc), "");
+  ASSERT_EQ(doc.scene().skins.size(), 1u);
+  EXPECT_EQ(doc.scene().meshInstances[0].skin, 0);
+  const MeshPrimitive& bound = doc.scene().meshes[doc.scene().meshInstances[0].mesh].primitives[0];
+  ASSERT_EQ(bound.influenceWeights.size(), 4u * kMaxInfluences);
+  for (int v = 0; v < 4; ++v) {  // every vertex weighted, the weights summing to 1
+    float sum = 0;
+    for (int k = 0; k < kMaxInfluences; ++k) sum += bound.influenceWeights[v * kMaxInfluences + k];
+    EXPECT_NEAR(sum, 1.0f, 1e-5f) << v;
+  }
+  EXPECT_EQ(doc.historyLabels(), std::vector<std::string>{"Bind to skeleton"});
+  EXPECT_GT(doc.meshRevision(), revision);
+  EXPECT_NE(bindUnskinnedMeshes(doc), "");  // nothing left to bind: refused, no step
+  EXPECT_EQ(doc.historyPosition(), 1);
+  ASSERT_TRUE(doc.undo());
+  EXPECT_TRUE(doc.scene().skins.empty());
+  EXPECT_EQ(doc.scene().meshInstances[0].skin, -1);
+  EXPECT_FALSE(doc.scene().meshes[0].primitives[0].skinned());
+  EXPECT_FALSE(doc.dirty());
+  ASSERT_TRUE(doc.redo());
+  EXPECT_EQ(doc.scene().meshInstances[0].skin, 0);
+  // The bound scene is what Save writes.
+  EXPECT_EQ(doc.sceneForSaving().skins.size(), 1u);
+}
+
+}  // namespace
+}  // namespace kinema

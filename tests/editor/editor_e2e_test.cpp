@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/gltf_writer.h"
 #include "io/image.h"
 #include "test_support.h"
 
@@ -408,6 +409,102 @@ TEST_F(EditorE2e, SkinnedCharacterWithXrayBonesWeightsAndDualQuaternionSkinning)
   const glm::ivec3 chest = pixelAt(shot.value(), pixelOf("Chest"));
   EXPECT_GT(forearm.r, forearm.b + 60) << forearm.r << " " << forearm.g << " " << forearm.b;
   EXPECT_GT(chest.b, chest.r + 60) << chest.r << " " << chest.g << " " << chest.b;
+}
+
+TEST_F(EditorE2e, AClickOnTheBodyAwayFromTheBonesSelectsTheJointWeighingMostThere) {
+  // 22 px right of the chest joint the ray crosses the torso but no bone (the spine's
+  // octahedra are a few pixels wide, the fallback circle smaller): the joint with the
+  // largest weight at the hit vertex is one of the torso's. Before, nothing was selected.
+  const glm::dvec2 side = pixelOf("Chest") + glm::dvec2(22, 0);
+  json d = run(Script().click(side), "click_body");
+  ASSERT_EQ(selection(d).size(), 1u);
+  const std::string j = selection(d)[0];
+  EXPECT_TRUE(j == "Spine" || j == "Chest" || j == "UpperChest" || j == "Shoulder.L") << j;
+  // The same click with the bones hidden (Alt+Z twice), and on the forearm: the body's
+  // weights decide there too (the forearm's middle is its own).
+  d = run(Script().keyDown("LEFT_ALT").key("Z").key("Z").keyUp("LEFT_ALT").click(midpoint("LowerArm.L", "Hand.L")),
+          "click_body_no_bones");
+  EXPECT_EQ(d["bones"], "none");
+  EXPECT_EQ(selection(d), std::vector<std::string>{"LowerArm.L"});
+}
+
+// A bar 0.1 x 0.1 wide from the root (y = 1) up to the tip (y = 2), NOT skinned: one mesh
+// instance on the root joint; Mid at y = 1.5 halfway. Written with the project's glTF writer.
+std::string writeUnskinnedBar(const std::string& dir) {
+  Scene s;
+  Transform root, up;
+  root.translation = {0, 1, 0};
+  up.translation = {0, 0.5f, 0};
+  s.skeleton.addJoint("Root", -1, root);
+  s.skeleton.addJoint("Mid", 0, up);
+  s.skeleton.addJoint("Tip", 1, up);
+  MeshPrimitive p;
+  const int rings = 9;  // every 0.125 up the bar, in the root's frame (y 0..1)
+  const float corners[4][2] = {{-0.05f, -0.05f}, {0.05f, -0.05f}, {0.05f, 0.05f}, {-0.05f, 0.05f}};
+  for (int r = 0; r < rings; ++r)
+    for (const auto& c : corners) p.positions.push_back({c[0], r / float(rings - 1), c[1]});
+  for (int r = 0; r + 1 < rings; ++r)
+    for (int k = 0; k < 4; ++k) {
+      const uint32_t a = r * 4 + k, b = r * 4 + (k + 1) % 4, c = a + 4, d = b + 4;
+      p.indices.insert(p.indices.end(), {a, b, d, a, d, c});
+    }
+  Mesh m;
+  m.name = "bar";
+  m.primitives.push_back(p);
+  s.meshes.push_back(m);
+  MeshInstance i;
+  i.joint = 0;
+  i.mesh = 0;
+  s.meshInstances.push_back(i);
+  const std::string path = dir + "/bar.gltf";
+  EXPECT_EQ(saveGltf(path, s, GltfWriteOptions{}), "");
+  return path;
+}
+
+TEST_F(EditorE2e, CtrlPBindsAnUnskinnedMeshWithAutomaticWeightsUndoably) {
+  const std::string file = writeUnskinnedBar(dir_);
+  const json front = runScript(dir_, Script(), "bind_front", file);
+  ASSERT_TRUE(front.is_object());
+  ASSERT_EQ(front["mesh_skins"].size(), 1u);
+  EXPECT_EQ(int(front["mesh_skins"][0]), -1);
+  const TestCamera cam(front);
+  const glm::dvec2 midBone = (cam.pixel(joint(front, "Mid")) + cam.pixel(joint(front, "Tip"))) * 0.5;
+  // Ctrl+P binds (one undo step); Ctrl+Z unbinds.
+  Script bind;
+  bind.keyDown("LEFT_CONTROL").key("P").keyUp("LEFT_CONTROL");
+  json d = runScript(dir_, bind, "bind_only", file);
+  EXPECT_GE(int(d["mesh_skins"][0]), 0);
+  EXPECT_EQ(int(d["undo_depth"]), 1);
+  EXPECT_TRUE(bool(d["dirty"]));
+  d = runScript(dir_, Script(bind).keyDown("LEFT_CONTROL").key("Z").keyUp("LEFT_CONTROL"), "bind_undone", file);
+  EXPECT_EQ(int(d["mesh_skins"][0]), -1);
+  EXPECT_EQ(int(d["undo_depth"]), 0);
+
+  // Then R Z 90 on Mid: bound, the bar's upper half turns with it to the left (Tip at
+  // (-0.5, 1.5, 0)); unbound, the bar stays upright on the root. Bones hidden and nothing
+  // selected for the screenshot, so only the body shows.
+  auto pose = [&](bool withBind, const std::string& name) {
+    Script s;
+    if (withBind) s.keyDown("LEFT_CONTROL").key("P").keyUp("LEFT_CONTROL");
+    s.click(midBone).key("R").key("Z").key("9").key("0").key("ENTER");
+    s.keyDown("LEFT_ALT").key("A").key("Z").key("Z").keyUp("LEFT_ALT");
+    json out = runScript(dir_, s, name, file);
+    expectNear(joint(out, "Tip"), {-0.5, 1.5, 0}, 1e-4, name + ": Tip after R Z 90");
+    const auto shot = loadPng(shotDir() + "/" + name + ".png");
+    EXPECT_TRUE(shot.ok());
+    return shot.ok() ? shot.value() : Image();
+  };
+  auto bright = [&](const Image& img, glm::dvec3 world) {
+    const glm::ivec3 c = pixelAt(img, cam.pixel(world));
+    return c.r + c.g + c.b > 3 * 100;  // the lit grey body; the background is 60, 60, 60
+  };
+  const glm::dvec3 oldTop(0, 1.85, 0), turned(-0.35, 1.5, 0), lower(0, 1.25, 0);
+  const Image bound = pose(true, "bind_posed"), unbound = pose(false, "unbound_posed");
+  EXPECT_TRUE(bright(bound, turned)) << "the bound bar's upper half turned left";
+  EXPECT_FALSE(bright(bound, oldTop)) << "and left its old place";
+  EXPECT_TRUE(bright(bound, lower)) << "its lower half stays on the root";
+  EXPECT_FALSE(bright(unbound, turned));
+  EXPECT_TRUE(bright(unbound, oldTop)) << "an unbound bar stays upright";
 }
 
 TEST_F(EditorE2e, GMovesTheRootInTheViewPlaneAndAlongAnAxis) {
