@@ -55,6 +55,12 @@ Document::Document(Scene scene, std::string path) : scene_(std::move(scene)), pa
   scene_.ik.targets.clear();  // targets_ hold them with their editor settings
   scene_.ik.targetOptions.clear();
   loadedNames_ = scene_.skeleton.names;
+  for (const MeshInstance& m : scene_.meshInstances) skinning_.push_back(m.skinning);
+}
+
+void Document::syncSkinning() {
+  for (size_t i = 0; i < scene_.meshInstances.size() && i < skinning_.size(); ++i)
+    scene_.meshInstances[i].skinning = skinning_[i];
 }
 
 std::vector<glm::mat4> Document::worldTransforms() const { return computeWorld(scene_.skeleton, pose_); }
@@ -90,7 +96,7 @@ void Document::markSaved() {
 void Document::markModified() { savedReachable_ = false; }
 
 Document::Snapshot Document::capture() const {
-  return Snapshot{scene_.skeleton.names, pose_.local, scene_.ik.limits, targets_};
+  return Snapshot{scene_.skeleton.names, pose_.local, scene_.ik.limits, targets_, skinning_};
 }
 
 void Document::restore(const Snapshot& s) {
@@ -98,10 +104,12 @@ void Document::restore(const Snapshot& s) {
   pose_.local = s.pose;
   scene_.ik.limits = s.limits;
   targets_ = s.targets;
+  skinning_ = s.skinning;
+  syncSkinning();
 }
 
 DocumentEdit Document::editView() {
-  return DocumentEdit{scene_.skeleton, scene_.skeleton.names, pose_, scene_.ik.limits, targets_};
+  return DocumentEdit{scene_.skeleton, scene_.skeleton.names, pose_, scene_.ik.limits, targets_, skinning_};
 }
 
 std::string Document::runChange(const std::function<std::string(DocumentEdit&)>& change, bool /*driven*/) {
@@ -124,6 +132,8 @@ std::string Document::runChange(const std::function<std::string(DocumentEdit&)>&
     const std::string bad = targets_[i].validate(scene_.skeleton);
     if (!bad.empty()) return "IK target " + std::to_string(i) + ": " + bad;
   }
+  if (skinning_.size() != scene_.meshInstances.size()) return "an edit may not add or remove mesh instances";
+  syncSkinning();
   if (autoSolveIk) {
     IkPosingInput in;
     in.skeleton = &scene_.skeleton;
@@ -150,6 +160,11 @@ EditRecord Document::diff(const std::string& label, const Snapshot& before) cons
     r.limitsChanged = true;
     r.limitsBefore = before.limits;
     r.limitsAfter = scene_.ik.limits;
+  }
+  if (before.skinning != skinning_) {
+    r.skinningChanged = true;
+    r.skinningBefore = before.skinning;
+    r.skinningAfter = skinning_;
   }
   if (!sameTargets(before.targets, targets_)) {
     r.targetsChanged = true;
@@ -179,6 +194,25 @@ std::string Document::edit(const std::string& label, const std::function<std::st
     pushRecord(std::move(record));
     ++changeCount_;
   }
+  return {};
+}
+
+std::string Document::editMeshes(const std::string& label, const std::function<std::string(Scene&)>& change) {
+  if (drag_) return "finish the current drag first";
+  Scene scratch = scene_;
+  const std::string error = change(scratch);
+  if (!error.empty()) return error;
+  if (scratch.meshInstances.size() != scene_.meshInstances.size())
+    return "an edit may not add or remove mesh instances";
+  auto before = std::make_shared<SceneMeshes>(SceneMeshes{scene_.meshes, scene_.skins, scene_.meshInstances});
+  auto after = std::make_shared<SceneMeshes>(
+      SceneMeshes{std::move(scratch.meshes), std::move(scratch.skins), std::move(scratch.meshInstances)});
+  EditRecord record;
+  record.label = label;
+  record.meshesBefore = before;
+  record.meshesAfter = after;
+  apply(record, true);
+  pushRecord(std::move(record));
   return {};
 }
 
@@ -221,6 +255,19 @@ void Document::apply(const EditRecord& r, bool forward) {
   for (const EditRecord::NameChange& c : r.names) scene_.skeleton.names[c.joint] = forward ? c.after : c.before;
   if (r.limitsChanged) scene_.ik.limits = forward ? r.limitsAfter : r.limitsBefore;
   if (r.targetsChanged) targets_ = forward ? r.targetsAfter : r.targetsBefore;
+  if (r.meshesBefore && r.meshesAfter) {
+    const SceneMeshes& m = forward ? *r.meshesAfter : *r.meshesBefore;
+    scene_.meshes = m.meshes;
+    scene_.skins = m.skins;
+    scene_.meshInstances = m.instances;
+    skinning_.clear();
+    for (const MeshInstance& i : scene_.meshInstances) skinning_.push_back(i.skinning);
+    ++meshRevision_;
+  }
+  if (r.skinningChanged) {
+    skinning_ = forward ? r.skinningAfter : r.skinningBefore;
+    syncSkinning();
+  }
   ikReports_.clear();
   ++changeCount_;
 }

@@ -28,6 +28,7 @@ struct DocumentEdit {
   Pose& pose;                          // the working pose
   std::vector<JointLimit>& limits;     // empty or one per joint
   std::vector<PoseIkTarget>& targets;  // the IK targets
+  std::vector<SkinningMethod>& skinning;  // one per scene mesh instance (linear blend / dual quaternion)
 };
 
 // The scene being edited plus everything the editor adds to it: the working pose, the IK
@@ -69,6 +70,12 @@ class Document {
   // changes nothing adds no step. Refused while a drag is in progress.
   std::string edit(const std::string& label, const std::function<std::string(DocumentEdit&)>& change);
 
+  // Replaces the scene's meshes, skins and mesh instances as one undo step: `change` edits a
+  // copy of the scene (only those three arrays are taken back; the instance count must stay).
+  std::string editMeshes(const std::string& label, const std::function<std::string(Scene&)>& change);
+  // Grows whenever the meshes, skins or instances were replaced (GPU copies must upload again).
+  long long meshRevision() const { return meshRevision_; }
+
   // An interactive drag is one undo step: begin, any number of updates (each starts from
   // the state at begin, so the result depends only on the latest update), then commit or
   // cancel (Esc / right click: back to the start, nothing recorded).
@@ -109,12 +116,14 @@ class Document {
     std::vector<Transform> pose;
     std::vector<JointLimit> limits;
     std::vector<PoseIkTarget> targets;
+    std::vector<SkinningMethod> skinning;
   };
   struct Drag {
     std::string label;
     Snapshot start;
   };
   Snapshot capture() const;
+  void syncSkinning();  // skinning_ -> scene_.meshInstances[i].skinning
   void restore(const Snapshot& s);
   DocumentEdit editView();
   std::string runChange(const std::function<std::string(DocumentEdit&)>& change, bool driven);
@@ -126,6 +135,8 @@ class Document {
   std::vector<std::string> loadedNames_;  // joint names as loaded: renames update glTF node names
   Pose pose_;
   std::vector<PoseIkTarget> targets_;
+  long long meshRevision_ = 0;
+  std::vector<SkinningMethod> skinning_;  // edited here, written into scene_.meshInstances after each change
   std::string path_;
   EditHistory history_;
   long long savedAt_ = 0;    // history_.dropped() + position() when last saved

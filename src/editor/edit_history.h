@@ -1,7 +1,9 @@
 #pragma once
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "core/mesh.h"
 #include "core/transform.h"
 #include "editor/pose_ik_target.h"
 #include "ik/joint_limits.h"
@@ -10,6 +12,13 @@ namespace kinema {
 
 // What one undo step changed: before/after copies of exactly what the edit touched
 // (simple and exact: undo/redo restore the stored values bit for bit).
+// The scene's mesh data an edit may replace as a whole (binding a mesh to the skeleton).
+struct SceneMeshes {
+  std::vector<Mesh> meshes;
+  std::vector<Skin> skins;
+  std::vector<MeshInstance> instances;
+};
+
 struct EditRecord {
   struct JointChange {
     int joint = -1;
@@ -26,8 +35,12 @@ struct EditRecord {
   std::vector<JointLimit> limitsBefore, limitsAfter;
   bool targetsChanged = false;
   std::vector<PoseIkTarget> targetsBefore, targetsAfter;
+  bool skinningChanged = false;  // the mesh instances' skinning methods
+  std::vector<SkinningMethod> skinningBefore, skinningAfter;
+  std::shared_ptr<const SceneMeshes> meshesBefore, meshesAfter;  // both or neither
 
-  bool empty() const { return pose.empty() && names.empty() && !limitsChanged && !targetsChanged; }
+  bool empty() const { return pose.empty() && names.empty() && !limitsChanged && !targetsChanged && !skinningChanged &&
+                        !meshesBefore; }
 };
 
 // A linear undo history: entries [0, position) are applied, [position, size) can be redone.

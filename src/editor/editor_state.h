@@ -44,6 +44,8 @@ struct ToolState {
 struct ViewOptions {
   bool showGrid = true;
   bool xrayBones = false;   // bones drawn over everything
+  bool showBones = true;    // off: the body alone (bones none / on / x-ray, Alt+Z cycles)
+  bool showWeights = false; // the active joint's skin weights as heat colours on the meshes
   bool showLimits = true;   // joint-limit cones and arcs of the selection
   bool showGizmo = true;
   bool localGizmo = false;  // the gizmo's rings turn with the joint (else world axes)
@@ -80,6 +82,7 @@ struct EditorState {
 
   // --- Viewport ---
   OrbitCamera camera;      // camera.orthographic: numpad 5
+  glm::vec4 viewportRect{0.0f};  // the 3D view in window pixels (x, y, width, height), set each frame
   ViewOptions view;
   ToolState tool;
   int hoveredJoint = -1;   // under the mouse (drawn highlighted)

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <deque>
 #include <iostream>
@@ -14,6 +15,7 @@
 
 #include "editor/editor_panels.h"
 #include "editor/imgui_backends.h"
+#include "editor/panel_layout.h"
 #include "editor/state_dump.h"
 #include "editor/viewport_overlay.h"
 #include "editor/viewport_controller.h"
@@ -285,7 +287,10 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     int fbw = 0, fbh = 0, ww = 0, wh = 0;
     glfwGetFramebufferSize(window, &fbw, &fbh);
     if (error.empty()) error = uploadMeshes();
-    state.camera = defaultCamera(viewBounds(), fbh > 0 ? float(fbw) / float(fbh) : 1.0f);
+    long long uploadedMeshRevision = state.doc.meshRevision();  // a bind replaces the meshes
+    glfwGetWindowSize(window, &ww, &wh);
+    const PanelRect startRect = viewportRect(ImVec2(float(ww), float(wh)));
+    state.camera = defaultCamera(viewBounds(), startRect.w / startRect.h);
     size_t nextScripted = 0;
     const long long lastScriptFrame = o.script.empty() ? 0 : o.script.back().frame;
     double previous = glfwGetTime();
@@ -303,7 +308,11 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       previous = now;
       glfwGetWindowSize(window, &ww, &wh);
       glfwGetFramebufferSize(window, &fbw, &fbh);
-      const ViewportView view = ViewportView::of(state.camera, glm::vec2(ww, wh));
+      // The 3D view is the free area between the panels (the empty-frame measurement has none).
+      const PanelRect vp = o.emptyFrame ? PanelRect{0.0f, 0.0f, float(std::max(ww, 1)), float(std::max(wh, 1))}
+                                        : viewportRect(ImVec2(float(ww), float(wh)));
+      state.viewportRect = glm::vec4(vp.x, vp.y, vp.w, vp.h);
+      const ViewportView view = ViewportView::of(state.camera, glm::vec2(vp.w, vp.h), glm::vec2(vp.x, vp.y));
 
       // Input: ImGui gets every event; the viewport tools get those ImGui does not want
       // (as of the previous frame, which is what the user saw).
@@ -326,7 +335,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       if (!o.emptyFrame) drawEditorPanels(state, io.Framerate);
       ImGui::Render();
       evaluateEditorPose(state);  // the panels may have edited the document
-      actOnViewRequests(state, static_cast<float>(ww) / std::max(wh, 1));
+      actOnViewRequests(state, vp.w / vp.h);
 
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       if (o.emptyFrame) {
@@ -334,7 +343,8 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         glClearColor(0.235f, 0.235f, 0.235f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
       } else {
-        if (meshes.needsUpload(state.doc.scene())) {
+        if (meshes.needsUpload(state.doc.scene()) || state.doc.meshRevision() != uploadedMeshRevision) {
+          uploadedMeshRevision = state.doc.meshRevision();
           const std::string failed = uploadMeshes();
           if (!failed.empty()) state.statusMessage = failed;
         }
@@ -349,18 +359,33 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         std::vector<std::vector<float>> morphWeights;  // animated blend shapes at the playhead
         if (!meshes.empty()) morphWeights = sampleMorphWeights(state.doc.scene(), state.hasMotion() ? state.clip : -1, state.time);
         meshDraw.frame.morphWeights = &morphWeights;
+        meshDraw.frame.weightJoint = state.view.showWeights ? state.doc.selection.active() : -1;
         colorSelection(state, list);
         state.camera.fitClipPlanes(bounds.radius());
-        buildViewportOverlay(state, ViewportView::of(state.camera, glm::vec2(fbw, fbh)), tools, overlay);
+        // The viewport in framebuffer pixels (GL counts rows from the bottom); the panels
+        // cover the rest, which is cleared to the background behind them.
+        const float sx = ww > 0 ? float(fbw) / ww : 1.0f, sy = wh > 0 ? float(fbh) / wh : 1.0f;
+        const int vx = int(std::lround(vp.x * sx)), vw = std::max(int(std::lround(vp.w * sx)), 1);
+        const int vh = std::max(int(std::lround(vp.h * sy)), 1), vy = std::max(fbh - int(std::lround(vp.y * sy)) - vh, 0);
+        glViewport(0, 0, fbw, fbh);
+        glClearColor(0.235f, 0.235f, 0.235f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        buildViewportOverlay(state, ViewportView::of(state.camera, glm::vec2(vw, vh), glm::vec2(vp.x * sx, vp.y * sy)),
+                             tools, overlay);
         FrameDescription description;
         description.skeleton = &list;
         description.overlay = &overlay;
         description.camera = state.camera;
-        description.width = fbw;
-        description.height = fbh;
+        description.x = vx;
+        description.y = vy;
+        description.width = vw;
+        description.height = vh;
         description.sceneRadius = bounds.radius();
         description.showGrid = state.view.showGrid;
         description.meshes = meshes.empty() ? nullptr : &meshDraw;
+        description.bones = !state.view.showBones ? BoneDisplay::None
+                            : state.view.xrayBones ? BoneDisplay::XRay
+                                                   : BoneDisplay::On;
         renderer.draw(description);
       }
       imguiBackendsRenderDrawData(ImGui::GetDrawData());

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "editor/editor_panels.h"
+#include "editor/panel_layout.h"
 #include "editor/viewport_controller.h"
 
 namespace kinema {
@@ -24,9 +25,8 @@ void replaceDocument(EditorState& state, Document doc) {
   state.playing = false;
   state.sampleClip = false;
   // The new file framed from the current direction, as Home does.
-  const ImVec2 size = ImGui::GetIO().DisplaySize;
-  ViewportController().frameAll(state.camera, jointBounds(state.doc.worldTransforms()),
-                                size.y > 0 ? size.x / size.y : 1.0f);
+  const PanelRect view = viewportRect(ImGui::GetIO().DisplaySize);
+  ViewportController().frameAll(state.camera, jointBounds(state.doc.worldTransforms()), view.w / view.h);
   PanelState& p = state.panels;
   p.collapsed.clear();
   p.renaming = -1;

@@ -8,6 +8,7 @@
 #include <GLFW/glfw3.h>
 
 #include "editor/editor_panels.h"
+#include "editor/panel_layout.h"
 #include "editor/pose_edits.h"
 #include "editor/viewport_controller.h"
 
@@ -105,9 +106,9 @@ void handleMenuShortcuts(EditorState& state) {
   else if (pressed(GLFW_KEY_V)) paste(state, shift);
 }
 
-float viewAspect() {
-  const ImVec2 size = ImGui::GetIO().DisplaySize;
-  return size.y > 0 ? size.x / size.y : 1.0f;
+float viewAspect() {  // of the 3D view between the panels, which framing fills
+  const PanelRect r = viewportRect(ImGui::GetIO().DisplaySize);
+  return r.w / r.h;
 }
 
 void viewItem(EditorState& state, const char* label, const char* shortcut, ViewPreset preset) {
@@ -175,8 +176,12 @@ void drawMainMenuBar(EditorState& state) {
       frameSelected(state.camera, world, doc.selection.joints(), viewAspect(), minRadius);
     if (ImGui::MenuItem("Frame All", "Home")) ViewportController().frameAll(state.camera, jointBounds(world), viewAspect());
     ImGui::Separator();
-    if (ImGui::MenuItem("Bones: Solid", nullptr, !state.view.xrayBones)) state.view.xrayBones = false;
-    if (ImGui::MenuItem("Bones: X-Ray", nullptr, state.view.xrayBones)) state.view.xrayBones = true;
+    if (ImGui::MenuItem("Bones: None", "Alt+Z", !state.view.showBones)) state.view.showBones = false;
+    if (ImGui::MenuItem("Bones: Solid", nullptr, state.view.showBones && !state.view.xrayBones))
+      state.view.showBones = true, state.view.xrayBones = false;
+    if (ImGui::MenuItem("Bones: X-Ray", nullptr, state.view.showBones && state.view.xrayBones))
+      state.view.showBones = true, state.view.xrayBones = true;
+    ImGui::MenuItem("Weights of the Active Joint", "Alt+W", &state.view.showWeights);
     ImGui::MenuItem("Show Limits", nullptr, &state.view.showLimits);
     ImGui::MenuItem("Show Grid", nullptr, &state.view.showGrid);
     ImGui::EndMenu();
@@ -189,6 +194,10 @@ void drawMainMenuBar(EditorState& state) {
     if (ImGui::MenuItem("Pin IK Target", nullptr, pinned, t >= 0)) togglePin(state);
     ImGui::SetNextItemWidth(80);
     ImGui::SliderInt("Chain length", &p.ikChainLength, 1, 8);
+    bool unskinned = false;
+    for (const MeshInstance& m : doc.scene().meshInstances) unskinned = unskinned || m.skin < 0;
+    if (ImGui::MenuItem("Bind to Skeleton with Automatic Weights", "Ctrl+P", false, unskinned))
+      showEditorError(state, bindUnskinnedMeshes(doc));
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {

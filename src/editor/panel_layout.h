@@ -38,5 +38,11 @@ inline PanelRect ikTargetsRect(ImVec2 display) {
 inline PanelRect statusBarRect(ImVec2 display) {
   return {0.0f, display.y - kStatusBarHeight, display.x, kStatusBarHeight};
 }
+// The 3D view (Blender's view region): the free area between the columns, the menu bar and
+// the status bar; at least 1 px each way so a tiny window still has a camera aspect.
+inline PanelRect viewportRect(ImVec2 display) {
+  const float w = display.x - kLeftColumnWidth - kRightColumnWidth, h = panelAreaHeight(display);
+  return {kLeftColumnWidth, kMenuBarHeight, w > 1.0f ? w : 1.0f, h > 1.0f ? h : 1.0f};
+}
 
 }  // namespace kinema

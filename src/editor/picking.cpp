@@ -76,7 +76,8 @@ SkeletonPick pickSkeletonAt(const SkeletonDrawList& list, const ViewportView& vi
                             float fallbackRadiusPixels) {
   SkeletonPick pick = pickSkeleton(list, view.rayThrough(cursor));
   if (pick.hit()) return pick;
-  pick.joint = pickJoint(list.jointMatrices, view.viewProjection(), view.size, cursor, fallbackRadiusPixels);
+  pick.joint = pickJoint(list.jointMatrices, view.viewProjection(), view.size, cursor - view.origin,
+                         fallbackRadiusPixels);
   if (pick.joint >= 0) {
     const glm::vec3 p(list.jointMatrices[pick.joint][3]);
     pick.distance = glm::length(p - view.rayThrough(cursor).origin);

@@ -6,6 +6,7 @@
 #include "editor/ik_posing.h"
 #include "editor/mirror_names.h"
 #include "editor/pose_clipboard.h"
+#include "skin/default_character_scene.h"
 
 namespace kinema {
 
@@ -26,18 +27,30 @@ std::string rotationError(const glm::quat& q) {
   return {};
 }
 
-// Sets the rotation, and the X-mirrored one on the mirror partner when X-mirror is on.
+// Sets the rotation, and the X-mirrored one on the mirror partner when X-mirror is on;
+// each within its joint's limit.
 void setRotation(DocumentEdit& e, bool xMirror, int joint, const glm::quat& q) {
   const glm::quat unit = glm::normalize(q);
-  e.pose.local[joint].rotation = unit;
+  e.pose.local[joint].rotation = limitedLocalRotation(e, joint, unit);
   if (!xMirror) return;
   const std::string partnerName = mirroredJointName(e.names[joint]);
   if (partnerName.empty()) return;
   const int partner = e.skeleton.find(partnerName);
-  if (partner >= 0 && partner != joint) e.pose.local[partner].rotation = mirrorRotationX(unit);
+  if (partner >= 0 && partner != joint)
+    e.pose.local[partner].rotation = limitedLocalRotation(e, partner, mirrorRotationX(unit));
 }
 
 const std::string& nameOf(const Document& doc, int joint) { return doc.skeleton().names[joint]; }
+
+}  // namespace
+
+glm::quat limitedLocalRotation(const DocumentEdit& e, int joint, const glm::quat& local) {
+  if (joint < 0 || joint >= static_cast<int>(e.limits.size()) || !e.limits[joint].active()) return local;
+  if (joint >= static_cast<int>(e.skeleton.rest.size())) return local;
+  return applyJointLimit(e.limits[joint], e.skeleton.rest[joint].rotation, local);
+}
+
+namespace {
 
 std::string targetError(const Document& doc, int target) {
   if (target < 0 || target >= static_cast<int>(doc.ikTargets().size()))
@@ -147,6 +160,30 @@ std::string renameJoint(Document& doc, int joint, const std::string& name) {
   });
 }
 
+std::string setMeshSkinning(Document& doc, int instance, SkinningMethod method) {
+  if (instance < 0 || instance >= static_cast<int>(doc.scene().meshInstances.size()))
+    return "no mesh instance " + std::to_string(instance);
+  const char* name = method == SkinningMethod::DualQuaternion ? "dual quaternion" : "linear blend";
+  return doc.edit(std::string("Skinning ") + name, [&](DocumentEdit& e) {
+    e.skinning[instance] = method;
+    return std::string();
+  });
+}
+
+std::string bindUnskinnedMeshes(Document& doc, AutomaticWeightsMethod method) {
+  bool any = false;
+  for (const MeshInstance& m : doc.scene().meshInstances) any = any || m.skin < 0;
+  if (!any) return "no unskinned mesh to bind (every mesh already follows a skin)";
+  return doc.editMeshes("Bind to skeleton", [&](Scene& scene) {
+    for (size_t i = 0; i < scene.meshInstances.size(); ++i) {
+      if (scene.meshInstances[i].skin >= 0) continue;
+      std::string error;
+      if (!bindMeshWithAutomaticWeights(scene, static_cast<int>(i), method, error)) return error;
+    }
+    return std::string();
+  });
+}
+
 std::string setJointLimit(Document& doc, int joint, const JointLimit& limit) {
   std::string error = jointError(doc, joint);
   if (error.empty() && limit.active()) error = limit.validate();
@@ -215,6 +252,22 @@ std::string updateRotateDrag(Document& doc, int joint, const glm::quat& local) {
   const bool mirror = doc.xMirror;
   return doc.updateDrag([&](DocumentEdit& e) {
     setRotation(e, mirror, joint, local);
+    return std::string();
+  });
+}
+
+std::string updateRotateDrag(Document& doc, const std::vector<int>& joints, const std::vector<glm::quat>& locals) {
+  if (joints.size() != locals.size()) return "one rotation per joint expected";
+  for (size_t k = 0; k < joints.size(); ++k) {
+    std::string error = jointError(doc, joints[k]);
+    if (error.empty()) error = rotationError(locals[k]);
+    if (!error.empty()) return error;
+  }
+  const bool mirror = doc.xMirror;
+  return doc.updateDrag([&](DocumentEdit& e) {
+    for (size_t k = 0; k < joints.size(); ++k) setRotation(e, mirror, joints[k], locals[k]);
+    if (mirror)  // partners set above, then the selected joints' own rotations win
+      for (size_t k = 0; k < joints.size(); ++k) setRotation(e, false, joints[k], locals[k]);
     return std::string();
   });
 }

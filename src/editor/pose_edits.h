@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "editor/document.h"
+#include "skin/automatic_weights.h"
 
 namespace kinema {
 
@@ -29,6 +30,14 @@ std::string renameJoint(Document& doc, int joint, const std::string& name);
 
 // Joint limits (a limit of type None removes it).
 std::string setJointLimit(Document& doc, int joint, const JointLimit& limit);
+// `local` clamped into the joint's limit (relative to its rest rotation, as the IK solvers
+// do); unchanged when the joint has none. Every FK rotation edit and drag goes through it.
+glm::quat limitedLocalRotation(const DocumentEdit& e, int joint, const glm::quat& local);
+// How mesh instance `instance` is skinned (linear blend or dual quaternion); one undo step.
+std::string setMeshSkinning(Document& doc, int instance, SkinningMethod method);
+// Pose > Bind to Skeleton with Automatic Weights (Ctrl+P): every unskinned mesh instance
+// bound to the skeleton at its rest pose (skin/default_character_scene.h), one undo step.
+std::string bindUnskinnedMeshes(Document& doc, AutomaticWeightsMethod method = AutomaticWeightsMethod::Capsule);
 
 // IK targets. The returned string is "" or the error; addIkTarget puts the new index in
 // *index when given.
@@ -44,6 +53,9 @@ std::string setIkTarget(Document& doc, int target, const PoseIkTarget& settings)
 // Rotate gizmo: each update gives the joint's local rotation for this frame.
 std::string beginRotateDrag(Document& doc, int joint);
 std::string updateRotateDrag(Document& doc, int joint, const glm::quat& local);
+// R on several joints: each its local rotation (same length as joints), X-mirror honoured;
+// a selected joint keeps its own rotation over its selected partner's mirror.
+std::string updateRotateDrag(Document& doc, const std::vector<int>& joints, const std::vector<glm::quat>& locals);
 // Translate (G): each update gives the joint's local translation.
 std::string beginTranslateDrag(Document& doc, int joint);
 std::string updateTranslateDrag(Document& doc, int joint, const glm::vec3& translation);

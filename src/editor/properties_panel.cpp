@@ -10,6 +10,7 @@
 #include <string>
 
 #include "editor/editor_panels.h"
+#include "editor/mesh_section.h"
 #include "editor/panel_drag.h"
 #include "editor/panel_layout.h"
 #include "editor/pose_edits.h"
@@ -201,6 +202,7 @@ void drawPropertiesPanel(EditorState& state) {
   const glm::vec3 world(doc.worldTransforms()[joint][3]);
   ImGui::TextDisabled("world position %.3f %.3f %.3f", world.x, world.y, world.z);
   limitSection(state, joint);
+  drawMeshSection(state);
   ImGui::PopID();
   ImGui::PopItemWidth();
   ImGui::End();

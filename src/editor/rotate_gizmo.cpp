@@ -58,8 +58,14 @@ std::vector<glm::vec3> RotateGizmo::ringPoints(const ViewportView& view, int i, 
 
 bool ringSegmentFacesViewer(const RotateGizmo& gizmo, const ViewportView& view, const glm::vec3& a,
                             const glm::vec3& b) {
+  // Blender clips its dials by the plane through the centre normal to the VIEW AXIS, not to
+  // the line from the eye to the centre: a ring parallel to the image plane is a full circle
+  // on screen wherever it sits in a perspective view, so it must be whole. The plane sits a
+  // little behind the centre (2% of the radius) so a nearly face-on ring is whole as well and
+  // the drawn arc grows smoothly from half to whole as a ring turns towards the viewer.
+  constexpr float kClipBias = 0.02f;
   const glm::vec3 mid = (a + b) * 0.5f - gizmo.pivot;
-  return glm::dot(mid, view.towardViewer(gizmo.pivot)) >= -1e-4f * glm::length(mid);
+  return glm::dot(mid, -view.forward()) >= -kClipBias * glm::length(mid);
 }
 
 GizmoPart hitTestRotateGizmo(const RotateGizmo& gizmo, const ViewportView& view, glm::vec2 cursor) {

@@ -27,7 +27,8 @@ struct RotateGizmo {
 };
 
 // Whether the axis-ring segment a-b is on the half facing the viewer (Blender draws and grabs
-// only that half; a ring facing the viewer is whole, within a small tolerance for rounding).
+// only that half): judged against the view axis, so a ring whose axis is the view axis is a
+// whole circle also off-centre in perspective; nearly face-on rings (within ~1 degree) too.
 bool ringSegmentFacesViewer(const RotateGizmo& gizmo, const ViewportView& view, const glm::vec3& a,
                             const glm::vec3& b);
 

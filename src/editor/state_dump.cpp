@@ -25,6 +25,8 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
   out["redo_depth"] = static_cast<int>(doc.historyLabels().size()) - doc.historyPosition();
   out["frames"] = frames;
   out["window"] = {{"width", windowWidth}, {"height", windowHeight}};
+  out["viewport"] = {{"x", s.viewportRect.x}, {"y", s.viewportRect.y}, {"width", s.viewportRect.z},
+                     {"height", s.viewportRect.w}};
   out["tool"] = modalToolName(s.tool.mode);
   json selection = json::array();
   for (int j : doc.selection.joints()) selection.push_back(jointName(s, j));
@@ -32,6 +34,15 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
   out["active"] = jointName(s, doc.selection.active());
   out["hovered"] = jointName(s, s.hoveredJoint);
   out["auto_ik"] = s.view.autoIk;
+  out["bones"] = !s.view.showBones ? "none" : s.view.xrayBones ? "x-ray" : "on";
+  out["show_weights"] = s.view.showWeights;
+  json skinning = json::array();
+  for (const MeshInstance& m : doc.scene().meshInstances)
+    skinning.push_back(m.skinning == SkinningMethod::DualQuaternion ? "dual-quaternion" : "linear");
+  out["mesh_skinning"] = skinning;
+  json skins = json::array();
+  for (const MeshInstance& m : doc.scene().meshInstances) skins.push_back(m.skin);
+  out["mesh_skins"] = skins;  // per mesh instance: its skin, -1 = not bound
   out["errors"] = s.panels.errors;  // waiting in the error popup, oldest first
   out["status"] = s.statusMessage;
   const OrbitCamera& c = s.camera;
@@ -62,6 +73,7 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
               {"chain_length", doc.ikTargets()[i].chainLength},
               {"pinned", doc.ikTargets()[i].pinned},
               {"position", vec(t.position)}};
+    if (t.hasPole) e["pole"] = vec(t.pole);  // the two-bone pole target, when one is set
     for (const IkTargetReport& r : doc.lastIkReports())
       if (r.target == static_cast<int>(i)) {
         e["iterations"] = r.iterations;

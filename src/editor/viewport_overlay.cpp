@@ -48,16 +48,19 @@ void buildViewportOverlay(const EditorState& state, const ViewportView& view, co
       if (job.run(shape)) addLimitShape(out, shape);
     }
   }
-  if (mode == ModalTool::BoxSelect) addBoxSelectRectangle(out, state.tool.startMouse, state.tool.mouse);
+  // Screen shapes are drawn in the viewport's own pixels; the tools work in window pixels.
+  if (mode == ModalTool::BoxSelect)
+    addBoxSelectRectangle(out, state.tool.startMouse - view.origin, state.tool.mouse - view.origin);
   if (mode == ModalTool::Rotate && doc.selection.active() >= 0 && doc.selection.active() < static_cast<int>(state.world.size())) {
     glm::vec2 c;
     if (view.project(glm::vec3(state.world[doc.selection.active()][3]), c))
-      out.screenLines.push_back({c, state.tool.mouse, glm::vec4(0.9f, 0.9f, 0.9f, 0.7f), 1.0f});
+      out.screenLines.push_back({c - view.origin, state.tool.mouse - view.origin, glm::vec4(0.9f, 0.9f, 0.9f, 0.7f), 1.0f});
   }
 }
 
 void colorSelection(const EditorState& state, SkeletonDrawList& list) {
-  const SkeletonStyle style;
+  // X-ray bones are translucent so the body shows through; the selection stays opaque.
+  const SkeletonStyle style = state.view.xrayBones ? SkeletonStyle::xRay() : SkeletonStyle();
   const glm::vec4 hover = glm::mix(style.bone, glm::vec4(1.0f), 0.5f);
   for (size_t b = 0; b < list.boneColors.size() && b < list.boneParents.size(); ++b) {
     const int p = list.boneParents[b];

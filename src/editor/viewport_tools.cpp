@@ -9,6 +9,7 @@
 #include "editor/box_select.h"
 #include "editor/editor_panels.h"
 #include "editor/ik_posing.h"
+#include "editor/mesh_picking.h"
 #include "editor/picking.h"
 #include "editor/pose_edits.h"
 #include "editor/translate_drag.h"
@@ -87,6 +88,22 @@ void ViewportTools::cancel(EditorState& state) {
   state.statusMessage.clear();
 }
 
+SkeletonPick ViewportTools::pickAt(const EditorState& state, const ViewportView& view,
+                                   const SkeletonDrawList& list) const {
+  SkeletonPick pick = pickSkeletonAt(list, view, mouse_);
+  // Shown bones (solid or x-ray) are picked through the body, as in Blender's pose mode with
+  // x-ray; a click on the body away from any bone, or any click while the bones are hidden,
+  // takes the joint weighing most at the hit vertex.
+  if (pick.hit() && state.view.showBones) return pick;
+  const MeshPick m = pickMeshJointAt(state.doc.scene(), state.world, view.rayThrough(mouse_));
+  if (m.hit()) {
+    pick.joint = m.joint;
+    pick.boneChild = -1;
+    pick.distance = m.distance;
+  }
+  return pick;
+}
+
 void ViewportTools::applyRotate(EditorState& state, const ViewportView& view) {
   const bool snap = mods_ & kModCtrl;
   const float total = sweep_.update(mouse_);
@@ -107,11 +124,7 @@ void ViewportTools::applyRotate(EditorState& state, const ViewportView& view) {
     }
     locals[k] = localRotationAfterWorldTurn(parentWorld_[k], startLocal_[k], delta);
   }
-  const std::vector<int> joints = joints_;
-  state.doc.updateDrag([&](DocumentEdit& e) {
-    for (size_t k = 0; k < joints.size(); ++k) e.pose.local[joints[k]].rotation = glm::normalize(locals[k]);
-    return std::string();
-  });
+  updateRotateDrag(state.doc, joints_, locals);  // honours X-mirror, as the gizmo's drag does
   state.tool.axis = axisOf(rotateMode_.axis);
   state.tool.localAxes = rotateMode_.local;
   char line[96];
@@ -177,7 +190,7 @@ void ViewportTools::leftPress(EditorState& state, const ViewportView& view, cons
   }
   GizmoPart part = GizmoPart::None;
   if (!shift && gizmo(state, view, gizmo_)) part = hitTestRotateGizmo(gizmo_, view, mouse_);
-  const SkeletonPick pick = pickSkeletonAt(list, view, mouse_);
+  const SkeletonPick pick = pickAt(state, view, list);
   if (part == GizmoPart::Trackball && pick.hit() && pick.joint != doc.selection.active()) part = GizmoPart::None;
   if (part != GizmoPart::None) {
     const int j = doc.selection.active();
@@ -248,7 +261,7 @@ void ViewportTools::mouseMove(EditorState& state, const ViewportView& view, cons
   if (state.tool.mode == ModalTool::None) {
     state.hoveredIkTarget = ikHandleUnder(state, view, mouse_);
     hoveredPart_ = gizmo(state, view, gizmo_) ? hitTestRotateGizmo(gizmo_, view, mouse_) : GizmoPart::None;
-    state.hoveredJoint = pickSkeletonAt(list, view, mouse_).joint;
+    state.hoveredJoint = pickAt(state, view, list).joint;
   }
 }
 
@@ -287,6 +300,10 @@ void ViewportTools::key(EditorState& state, const ViewportView& view, int key) {
   if (ctrl) {
     // Ctrl+N/O/S/Q/Z/Y/C/V are the main menu's shortcuts (editor_panels.h).
     if (key == GLFW_KEY_I) state.view.autoIk = !state.view.autoIk;
+    else if (key == GLFW_KEY_P) {  // Blender's Ctrl+P, "With Automatic Weights"
+      const std::string error = bindUnskinnedMeshes(doc);
+      state.statusMessage = error.empty() ? "Bound to the skeleton with automatic weights" : error;
+    }
     else if (key == GLFW_KEY_KP_1) applyViewPreset(state.camera, ViewPreset::Back);
     else if (key == GLFW_KEY_KP_3) applyViewPreset(state.camera, ViewPreset::Left);
     else if (key == GLFW_KEY_KP_7) applyViewPreset(state.camera, ViewPreset::Bottom);
@@ -351,6 +368,18 @@ void ViewportTools::key(EditorState& state, const ViewportView& view, int key) {
     case GLFW_KEY_KP_3: applyViewPreset(state.camera, ViewPreset::Right); break;
     case GLFW_KEY_KP_7: applyViewPreset(state.camera, ViewPreset::Top); break;
     case GLFW_KEY_KP_5: toggleOrthographic(state.camera); break;
+    case GLFW_KEY_Z:
+      // Alt+Z (Blender's x-ray toggle) cycles the bones: on -> x-ray -> none -> on.
+      if (alt) {
+        ViewOptions& v = state.view;
+        if (!v.showBones) v.showBones = true, v.xrayBones = false;
+        else if (!v.xrayBones) v.xrayBones = true;
+        else v.showBones = false;
+      }
+      break;
+    case GLFW_KEY_W:
+      if (alt) state.view.showWeights = !state.view.showWeights;  // heat colours of the active joint
+      break;
     case GLFW_KEY_SPACE:
       if (state.hasMotion()) state.playing = !state.playing;
       break;

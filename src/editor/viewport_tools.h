@@ -3,6 +3,7 @@
 
 #include "editor/editor_state.h"
 #include "editor/input_events.h"
+#include "editor/picking.h"
 #include "editor/rotate_gizmo.h"
 #include "editor/viewport_view.h"
 #include "render/skeleton_draw_list.h"
@@ -31,6 +32,8 @@ class ViewportTools {
   void confirm(EditorState& state);
   void cancel(EditorState& state);
   void applyRotate(EditorState& state, const ViewportView& view);
+  // The joint under the mouse: shown bones and joints first, else the body (mesh_picking.h).
+  SkeletonPick pickAt(const EditorState& state, const ViewportView& view, const SkeletonDrawList& list) const;
   void applyGizmo(EditorState& state, const ViewportView& view);
   void applyMove(EditorState& state, const ViewportView& view);  // Grab and IK drags
   glm::vec3 jointPosition(const EditorState& state, int joint) const;

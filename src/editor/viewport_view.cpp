@@ -2,9 +2,10 @@
 
 namespace kinema {
 
-ViewportView ViewportView::of(const OrbitCamera& camera, glm::vec2 size) {
+ViewportView ViewportView::of(const OrbitCamera& camera, glm::vec2 size, glm::vec2 origin) {
   ViewportView v;
   v.size = glm::max(size, glm::vec2(1.0f));
+  v.origin = origin;
   v.view = camera.view();
   v.projection = camera.projection(v.size.x / v.size.y);
   v.orthographic = camera.orthographic;
@@ -28,7 +29,7 @@ bool ViewportView::project(const glm::vec3& world, glm::vec2& pixel) const {
   const glm::vec4 clip = viewProjection() * glm::vec4(world, 1.0f);
   if (clip.w <= 1e-7f) return false;  // behind the eye (orthographic w is always 1)
   const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-  pixel = glm::vec2((ndc.x * 0.5f + 0.5f) * size.x, (0.5f - ndc.y * 0.5f) * size.y);
+  pixel = origin + glm::vec2((ndc.x * 0.5f + 0.5f) * size.x, (0.5f - ndc.y * 0.5f) * size.y);
   return true;
 }
 
@@ -36,7 +37,8 @@ PickRay ViewportView::rayThrough(glm::vec2 pixel) const {
   // Built from the camera's axes rather than by inverting the view-projection, which loses
   // digits to the near/far ratio; OrbitCamera's frusta are symmetric, so projection[0][0] and
   // [1][1] (1 / tan of the half-angles, or 1 / the half-sizes) say all there is.
-  const glm::vec2 ndc(2.0f * pixel.x / size.x - 1.0f, 1.0f - 2.0f * pixel.y / size.y);
+  const glm::vec2 local = pixel - origin;
+  const glm::vec2 ndc(2.0f * local.x / size.x - 1.0f, 1.0f - 2.0f * local.y / size.y);
   const glm::vec2 half(1.0f / projection[0][0], 1.0f / projection[1][1]);
   const glm::vec3 side = right() * (ndc.x * half.x) + up() * (ndc.y * half.y);
   PickRay ray;

@@ -293,3 +293,122 @@ TEST(DocumentHistory, RandomEditSequencesUndoAndRedoExactly) {
 
 }  // namespace
 }  // namespace kinema
+
+namespace kinema {
+namespace {
+
+// Same rotation (either sign of the quaternion).
+void expectSameRotation(const glm::quat& a, const glm::quat& b, const char* what) {
+  EXPECT_NEAR(std::abs(glm::dot(glm::normalize(a), glm::normalize(b))), 1.0f, 1e-6f) << what;
+}
+
+TEST(DocumentLimits, FkRotationsAndDragsStayWithinTheJointLimit) {
+  // A hinge about the rest frame's Z, 0..45 degrees, on the left forearm: 90 degrees about Z
+  // stops at 45; -30 stops at 0; a turn about X (off the hinge) has no Z twist, so the joint
+  // stays at rest. Limits are relative to the rest rotation: expected = rest * R_z(angle).
+  Document doc = newDocument();
+  const int elbow = joint(doc, "LowerArm.L");
+  const glm::quat rest = doc.skeleton().rest[elbow].rotation;
+  const glm::vec3 z(0, 0, 1);
+  ASSERT_EQ(setJointLimit(doc, elbow, JointLimit::hinge(z, 0.0f, glm::radians(45.0f))), "");
+  ASSERT_EQ(setJointRotation(doc, elbow, rest * glm::angleAxis(glm::radians(90.0f), z)), "");
+  expectSameRotation(doc.pose().local[elbow].rotation, rest * glm::angleAxis(glm::radians(45.0f), z), "90 -> 45");
+  ASSERT_EQ(setJointRotation(doc, elbow, rest * glm::angleAxis(glm::radians(-30.0f), z)), "");
+  expectSameRotation(doc.pose().local[elbow].rotation, rest, "-30 -> 0");
+  ASSERT_EQ(setJointRotation(doc, elbow, rest * glm::angleAxis(glm::radians(20.0f), z)), "");
+  expectSameRotation(doc.pose().local[elbow].rotation, rest * glm::angleAxis(glm::radians(20.0f), z), "20 inside");
+  ASSERT_EQ(setJointRotation(doc, elbow, rest * glm::angleAxis(glm::radians(30.0f), glm::vec3(1, 0, 0))), "");
+  expectSameRotation(doc.pose().local[elbow].rotation, rest, "off the hinge");
+  // A gizmo drag is clamped each frame, and the committed step holds the clamped rotation.
+  ASSERT_EQ(beginRotateDrag(doc, elbow), "");
+  ASSERT_EQ(updateRotateDrag(doc, elbow, rest * glm::angleAxis(glm::radians(120.0f), z)), "");
+  expectSameRotation(doc.pose().local[elbow].rotation, rest * glm::angleAxis(glm::radians(45.0f), z), "drag 120 -> 45");
+  doc.commitDrag();
+  expectSameRotation(doc.pose().local[elbow].rotation, rest * glm::angleAxis(glm::radians(45.0f), z), "committed");
+  // limitedLocalRotation on a joint without a limit changes nothing.
+  const int hand = joint(doc, "Hand.L");
+  ASSERT_EQ(setJointRotation(doc, hand, glm::angleAxis(2.5f, z)), "");
+  expectSameRotation(doc.pose().local[hand].rotation, glm::angleAxis(2.5f, z), "no limit");
+}
+
+}  // namespace
+}  // namespace kinema
+
+namespace kinema {
+namespace {
+
+TEST(DocumentSkinning, TheSkinningMethodIsAnUndoableEditOfTheMeshInstance) {
+  Document doc = newDocument();  // the default character: one skinned body
+  ASSERT_FALSE(doc.scene().meshInstances.empty());
+  ASSERT_EQ(doc.scene().meshInstances[0].skinning, SkinningMethod::LinearBlend);
+  ASSERT_EQ(setMeshSkinning(doc, 0, SkinningMethod::DualQuaternion), "");
+  EXPECT_EQ(doc.scene().meshInstances[0].skinning, SkinningMethod::DualQuaternion);
+  EXPECT_EQ(doc.historyLabels(), std::vector<std::string>{"Skinning dual quaternion"});
+  EXPECT_TRUE(doc.dirty());
+  EXPECT_EQ(doc.sceneForSaving().meshInstances[0].skinning, SkinningMethod::DualQuaternion);
+  ASSERT_TRUE(doc.undo());
+  EXPECT_EQ(doc.scene().meshInstances[0].skinning, SkinningMethod::LinearBlend);
+  EXPECT_FALSE(doc.dirty());
+  ASSERT_TRUE(doc.redo());
+  EXPECT_EQ(doc.scene().meshInstances[0].skinning, SkinningMethod::DualQuaternion);
+  // Setting the same method again is no step; a missing instance is refused.
+  ASSERT_EQ(setMeshSkinning(doc, 0, SkinningMethod::DualQuaternion), "");
+  EXPECT_EQ(doc.historyPosition(), 1);
+  EXPECT_NE(setMeshSkinning(doc, 99, SkinningMethod::LinearBlend), "");
+  EXPECT_NE(setMeshSkinning(doc, -1, SkinningMethod::LinearBlend), "");
+  EXPECT_EQ(doc.historyPosition(), 1);
+}
+
+}  // namespace
+}  // namespace kinema
+
+namespace kinema {
+namespace {
+
+TEST(DocumentSkinning, BindingAnUnskinnedMeshIsOneUndoStep) {
+  // A two-bone chain up +Y and a 4-vertex quad along it on the root, not skinned.
+  Scene s;
+  Transform up;
+  up.translation = {0, 1, 0};
+  s.skeleton.addJoint("Root", -1, Transform{});
+  s.skeleton.addJoint("Mid", 0, up);
+  s.skeleton.addJoint("Tip", 1, up);
+  MeshPrimitive p;
+  p.positions = {{-0.1f, 0.2f, 0}, {0.1f, 0.2f, 0}, {-0.1f, 1.8f, 0}, {0.1f, 1.8f, 0}};
+  p.indices = {0, 1, 3, 0, 3, 2};
+  Mesh m;
+  m.primitives.push_back(p);
+  s.meshes.push_back(m);
+  MeshInstance i;
+  i.joint = 0;
+  i.mesh = 0;
+  s.meshInstances.push_back(i);
+  Document doc(s);
+  const long long revision = doc.meshRevision();
+  ASSERT_EQ(bindUnskinnedMeshes(doc), "");
+  ASSERT_EQ(doc.scene().skins.size(), 1u);
+  EXPECT_EQ(doc.scene().meshInstances[0].skin, 0);
+  const MeshPrimitive& bound = doc.scene().meshes[doc.scene().meshInstances[0].mesh].primitives[0];
+  ASSERT_EQ(bound.influenceWeights.size(), 4u * kMaxInfluences);
+  for (int v = 0; v < 4; ++v) {  // every vertex weighted, the weights summing to 1
+    float sum = 0;
+    for (int k = 0; k < kMaxInfluences; ++k) sum += bound.influenceWeights[v * kMaxInfluences + k];
+    EXPECT_NEAR(sum, 1.0f, 1e-5f) << v;
+  }
+  EXPECT_EQ(doc.historyLabels(), std::vector<std::string>{"Bind to skeleton"});
+  EXPECT_GT(doc.meshRevision(), revision);
+  EXPECT_NE(bindUnskinnedMeshes(doc), "");  // nothing left to bind: refused, no step
+  EXPECT_EQ(doc.historyPosition(), 1);
+  ASSERT_TRUE(doc.undo());
+  EXPECT_TRUE(doc.scene().skins.empty());
+  EXPECT_EQ(doc.scene().meshInstances[0].skin, -1);
+  EXPECT_FALSE(doc.scene().meshes[0].primitives[0].skinned());
+  EXPECT_FALSE(doc.dirty());
+  ASSERT_TRUE(doc.redo());
+  EXPECT_EQ(doc.scene().meshInstances[0].skin, 0);
+  // The bound scene is what Save writes.
+  EXPECT_EQ(doc.sceneForSaving().skins.size(), 1u);
+}
+
+}  // namespace
+}  // namespace kinema

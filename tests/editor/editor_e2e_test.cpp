@@ -1,13 +1,15 @@
 // End-to-end tests of the editor window: the real `kinema edit` under xvfb-run with Mesa's
 // llvmpipe, driven by --script replay (and once by xdotool, through the X server), checked
 // in --dump-state. Expected values are derived by hand from the pixels the script moves:
-// the test projects joints itself (its own pinhole camera from the dumped eye/target/fov).
+// the test projects joints itself (its own pinhole camera from the dumped eye/target/fov,
+// seen through the dumped viewport rectangle, which one test checks against the layout).
 #include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <fstream>
 #include <sstream>
 
+#include "io/gltf_writer.h"
 #include "io/image.h"
 #include "test_support.h"
 
@@ -20,6 +22,9 @@ const std::string kSoftware =
     "LIBGL_ALWAYS_SOFTWARE=1 MESA_GL_VERSION_OVERRIDE=3.3 ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 ";
 const std::string kXvfb = "xvfb-run -a -s '-screen 0 1280x800x24' ";
 constexpr double kW = 1280, kH = 720;  // the editor's default window size
+// The 3D view between the panels (panel_layout.h: left column 250 px, right column 310 px,
+// menu bar 19 px, status bar 24 px): x 250..970, y 19..696.
+constexpr double kViewX = 250, kViewY = 19, kViewW = kW - 250 - 310, kViewH = kH - 19 - 24;
 
 std::string shotDir() {
   const std::string dir = std::string(KINEMA_BUILD_DIR) + "/editor_e2e";
@@ -38,12 +43,17 @@ json readJson(const std::string& path) {
 
 glm::dvec3 vec3(const json& a) { return a.is_array() && a.size() == 3 ? glm::dvec3(a[0], a[1], a[2]) : glm::dvec3(NAN); }
 
-// A pinhole camera rebuilt from the dump: eye, target, vertical field of view, Y up.
+// A pinhole camera rebuilt from the dump: eye, target, vertical field of view, Y up, over
+// the viewport rectangle (window pixels).
 struct TestCamera {
   glm::dvec3 eye, target;
   double fovY = 0.6;
   glm::dvec3 f, r, u;
-  explicit TestCamera(const json& c) {
+  double x0 = kViewX, y0 = kViewY, w = kViewW, h = kViewH;
+  explicit TestCamera(const json& d) {
+    const json& c = d["camera"];
+    const json& v = d["viewport"];
+    if (v.is_object()) x0 = v["x"], y0 = v["y"], w = v["width"], h = v["height"];
     eye = vec3(c["eye"]);
     target = vec3(c["target"]);
     fovY = double(c["fov_y"]) * M_PI / 180.0;
@@ -55,11 +65,11 @@ struct TestCamera {
   glm::dvec2 pixel(glm::dvec3 p) const {
     const glm::dvec3 d = p - eye;
     const double t = std::tan(fovY / 2), z = glm::dot(d, f);
-    const double nx = glm::dot(d, r) / (z * t * kW / kH), ny = glm::dot(d, u) / (z * t);
-    return {(nx + 1) / 2 * kW, (1 - ny) / 2 * kH};
+    const double nx = glm::dot(d, r) / (z * t * w / h), ny = glm::dot(d, u) / (z * t);
+    return {x0 + (nx + 1) / 2 * w, y0 + (1 - ny) / 2 * h};
   }
   // World units per pixel on the plane facing the camera at p's depth.
-  double unitsPerPixel(glm::dvec3 p) const { return 2 * depth(p) * std::tan(fovY / 2) / kH; }
+  double unitsPerPixel(glm::dvec3 p) const { return 2 * depth(p) * std::tan(fovY / 2) / h; }
 };
 
 // Events one per frame from frame 3 (frames 1-2 set the front view and frame everything).
@@ -116,13 +126,15 @@ class EditorE2e : public ::testing::Test {
 
   // Runs the script on the default character; the last frame goes to the build dir as
   // editor_e2e/NAME.png. Returns the dumped state.
-  static json runScript(const std::string& dir, const Script& script, const std::string& name) {
+  static json runScript(const std::string& dir, const Script& script, const std::string& name,
+                        const std::string& file = "") {
     const std::string scriptPath = dir + "/" + name + ".jsonl", dump = dir + "/" + name + ".json";
     std::ofstream(scriptPath) << script.text();
     std::string out, err;
     // Recent files and recovery files go to the test's folder, not the user's.
     const std::string xdg = "XDG_STATE_HOME=" + dir + " XDG_CONFIG_HOME=" + dir + " ";
-    const int rc = runCommand(kXvfb + "env " + xdg + kSoftware + KINEMA_BINARY + " edit --script " + scriptPath +
+    const int rc = runCommand(kXvfb + "env " + xdg + kSoftware + KINEMA_BINARY + " edit " +
+                                  (file.empty() ? std::string() : "'" + file + "' ") + "--script " + scriptPath +
                                   " --dump-state " + dump + " --screenshot " + shotDir() + "/" + name + ".png",
                               &out, &err);
     EXPECT_EQ(rc, 0) << err;
@@ -142,7 +154,7 @@ class EditorE2e : public ::testing::Test {
     return glm::dquat(NAN, NAN, NAN, NAN);
   }
   static std::vector<std::string> selection(const json& d) { return d["selection"].get<std::vector<std::string>>(); }
-  TestCamera camera() const { return TestCamera(front_["camera"]); }
+  TestCamera camera() const { return TestCamera(front_); }
   glm::dvec2 pixelOf(const std::string& name) const { return camera().pixel(joint(front_, name)); }
   glm::dvec2 midpoint(const std::string& a, const std::string& b) const { return (pixelOf(a) + pixelOf(b)) * 0.5; }
 
@@ -156,13 +168,28 @@ void expectNear(glm::dvec3 a, glm::dvec3 b, double tol, const std::string& what)
 }
 
 TEST_F(EditorE2e, FrontViewFramesTheCharacter) {
-  // Numpad 1 looks from +Z; the T-posed arms span x = -0.89..0.89 in the middle of the view.
+  // The 3D view is the free area between the panels, not the whole window.
+  EXPECT_EQ(double(front_["viewport"]["x"]), kViewX);
+  EXPECT_EQ(double(front_["viewport"]["y"]), kViewY);
+  EXPECT_EQ(double(front_["viewport"]["width"]), kViewW);
+  EXPECT_EQ(double(front_["viewport"]["height"]), kViewH);
+  // Numpad 1 looks from +Z; the T-posed arms span x = -0.89..0.89 in the middle of the view,
+  // and Home frames all of the skeleton inside the view (not under the panels).
   EXPECT_NEAR(double(front_["camera"]["azimuth"]), 0.0, 1e-6);
   EXPECT_NEAR(double(front_["camera"]["elevation"]), 0.0, 1e-6);
   const glm::dvec2 l = pixelOf("Fingertip.L"), r = pixelOf("Fingertip.R");
-  EXPECT_GT(l.x, kW / 2 + 100);
-  EXPECT_LT(r.x, kW / 2 - 100);
+  const double centre = kViewX + kViewW / 2;
+  EXPECT_GT(l.x, centre + 100);
+  EXPECT_LT(r.x, centre - 100);
+  EXPECT_NEAR(l.x - centre, centre - r.x, 2.0);
   EXPECT_NEAR(l.y, r.y, 0.5);
+  for (const json& j : front_["joints"]) {
+    const glm::dvec2 p = camera().pixel(vec3(j["world_position"]));
+    EXPECT_GT(p.x, kViewX) << j["name"];
+    EXPECT_LT(p.x, kViewX + kViewW) << j["name"];
+    EXPECT_GT(p.y, kViewY) << j["name"];
+    EXPECT_LT(p.y, kViewY + kViewH) << j["name"];
+  }
 }
 
 TEST_F(EditorE2e, ClickSelectsTheHandAndShiftClickAdds) {
@@ -249,24 +276,235 @@ TEST_F(EditorE2e, RThenAxisKeysConstrainAndTypedDegreesAreExact) {
 }
 
 TEST_F(EditorE2e, GizmoRingDragRotatesAboutItsAxis) {
-  // In the front view the Z ring (radius 80 px, RotateGizmo's default) is a circle around
-  // the joint; X and Y are edge-on lines. Press on the Z ring at 240 degrees (its lower
-  // left half faces the eye, which is below and left of the elbow; only that half grabs),
-  // sweep to 330: +90 degrees about Z, the forearm points up.
+  // In the front view the Z ring (radius 80 px, RotateGizmo's default) is a whole circle
+  // around the joint (its axis is the view axis); X and Y are edge-on lines. Press on the Z
+  // ring at 240 degrees (lower left) and, in a second run, at 60 degrees (upper right, the
+  // half that used to be culled), sweep 90 degrees counter-clockwise: +90 degrees about Z,
+  // the forearm points up.
   const glm::dvec2 p = pixelOf("LowerArm.L");
-  Script s;
-  s.click(midpoint("LowerArm.L", "Hand.L"));
-  const double a0 = 240 * M_PI / 180;
-  s.move(p + 80.0 * glm::dvec2(std::cos(a0), -std::sin(a0))).down();
-  for (int k = 1; k <= 8; ++k) {
-    const double a = a0 + k * M_PI / 16;
-    s.move(p + 80.0 * glm::dvec2(std::cos(a), -std::sin(a)));
+  for (double startDegrees : {240.0, 60.0}) {
+    Script s;
+    s.click(midpoint("LowerArm.L", "Hand.L"));
+    const double a0 = startDegrees * M_PI / 180;
+    s.move(p + 80.0 * glm::dvec2(std::cos(a0), -std::sin(a0))).down();
+    for (int k = 1; k <= 8; ++k) {
+      const double a = a0 + k * M_PI / 16;
+      s.move(p + 80.0 * glm::dvec2(std::cos(a), -std::sin(a)));
+    }
+    s.up();
+    json d = run(s, "gizmo_ring_drag_" + std::to_string(int(startDegrees)));
+    const glm::dvec3 elbow = joint(front_, "LowerArm.L");
+    expectNear(joint(d, "Hand.L"), elbow + glm::dvec3(0, 0.26, 0), 2e-3,
+               "Hand.L after the Z ring's quarter turn from " + std::to_string(int(startDegrees)) + " degrees");
+    EXPECT_EQ(int(d["undo_depth"]), 1);
   }
-  s.up();
-  json d = run(s, "gizmo_ring_drag");
-  const glm::dvec3 elbow = joint(front_, "LowerArm.L");
-  expectNear(joint(d, "Hand.L"), elbow + glm::dvec3(0, 0.26, 0), 2e-3, "Hand.L after the Z ring's quarter turn");
+}
+
+TEST_F(EditorE2e, RotationsStopAtTheJointLimitAndTheLimitArcIsDrawn) {
+  // An arm whose forearm (LowerArm.L, rest rotation identity, bone 0.26 along +X) may only
+  // bend 0..45 degrees about Z. R Z 90 and a 90-degree sweep of the gizmo's Z ring both stop
+  // at 45: rotation (0, 0, sin 22.5, cos 22.5), the hand at elbow + 0.26 (cos 45, sin 45, 0).
+  const std::string file = dir_ + "/arm.kinema";
+  std::ofstream(file) << R"({"format": "kinema", "version": 1, "skeleton": {"joints": [
+    {"name": "Hips", "parent": -1, "translation": [0, 1, 0]},
+    {"name": "UpperArm.L", "parent": 0, "translation": [0.2, 0.4, 0]},
+    {"name": "LowerArm.L", "parent": 1, "translation": [0.3, 0, 0]},
+    {"name": "Hand.L", "parent": 2, "translation": [0.26, 0, 0]},
+    {"name": "Fingertip.L", "parent": 3, "translation": [0.1, 0, 0]}]},
+  "ik": {"limits": [{"joint": "LowerArm.L", "type": "hinge", "axis": [0, 0, 1], "min_deg": 0, "max_deg": 45}]}})";
+  const json front = runScript(dir_, Script(), "limit_front", file);
+  ASSERT_TRUE(front.is_object());
+  const TestCamera cam(front);
+  const glm::dvec3 elbow = joint(front, "LowerArm.L");
+  expectNear(elbow, {0.5, 1.4, 0}, 1e-6, "the elbow in the file");
+  const glm::dvec2 forearm = (cam.pixel(elbow) + cam.pixel(joint(front, "Hand.L"))) * 0.5;
+  const double c = std::cos(M_PI / 4), s = std::sin(M_PI / 4);
+  const glm::dvec3 limited = elbow + 0.26 * glm::dvec3(c, s, 0);
+
+  json d = runScript(dir_, Script().click(forearm).key("R").key("Z").key("9").key("0").key("ENTER"), "limit_r_z90", file);
+  EXPECT_EQ(selection(d), std::vector<std::string>{"LowerArm.L"});
+  const glm::dquat q = rotation(d, "LowerArm.L");
+  EXPECT_NEAR(std::abs(q.z), std::sin(M_PI / 8), 1e-4);
+  EXPECT_NEAR(std::abs(q.w), std::cos(M_PI / 8), 1e-4);
+  EXPECT_NEAR(q.x, 0, 1e-5);
+  EXPECT_NEAR(q.y, 0, 1e-5);
+  expectNear(joint(d, "Hand.L"), limited, 1e-4, "R Z 90 stops at 45");
+
+  // The Z ring from 240 to 330 degrees (a quarter turn counter-clockwise): also 45.
+  const glm::dvec2 p = cam.pixel(elbow);
+  Script ring;
+  ring.click(forearm);
+  ring.move(p + 80.0 * glm::dvec2(std::cos(4 * M_PI / 3), -std::sin(4 * M_PI / 3))).down();
+  for (int k = 1; k <= 8; ++k) {
+    const double a = 4 * M_PI / 3 + k * M_PI / 16;
+    ring.move(p + 80.0 * glm::dvec2(std::cos(a), -std::sin(a)));
+  }
+  ring.up();
+  d = runScript(dir_, ring, "limit_ring_drag", file);
+  expectNear(joint(d, "Hand.L"), limited, 2e-3, "the Z ring's quarter turn stops at 45");
   EXPECT_EQ(int(d["undo_depth"]), 1);
+
+  // The screenshot of the R run shows the hinge arc (OverlayStyle::limit, cyan): radius the
+  // bone's length about the elbow from the rest direction +X, 0..45 degrees. Look for it
+  // (2 px wide) at 10, 22.5 and 35 degrees, away from the bone (drawn along 45).
+  const auto shot = loadPng(shotDir() + "/limit_r_z90.png");
+  ASSERT_TRUE(shot.ok()) << shot.error();
+  const Image& img = shot.value();
+  for (double deg : {10.0, 22.5, 35.0}) {
+    const double a = deg * M_PI / 180;
+    const glm::dvec2 px = cam.pixel(elbow + 0.26 * glm::dvec3(std::cos(a), std::sin(a), 0));
+    bool found = false;
+    for (int dy = -2; dy <= 2 && !found; ++dy)
+      for (int dx = -2; dx <= 2 && !found; ++dx) {
+        const int x = int(std::lround(px.x)) + dx, y = int(std::lround(px.y)) + dy;
+        if (x < 0 || y < 0 || x >= img.width || y >= img.height) continue;
+        const unsigned char* rgba = &img.rgba[(size_t(y) * img.width + x) * 4];
+        found = rgba[0] < 140 && rgba[1] > 160 && rgba[2] > 160;
+      }
+    EXPECT_TRUE(found) << "no limit arc pixel near (" << px.x << ", " << px.y << ") at " << deg << " degrees";
+  }
+}
+
+// The pixel (x, y) of a screenshot the test wrote (RGBA), or black outside it.
+glm::ivec3 pixelAt(const Image& img, glm::dvec2 p) {
+  const int x = int(std::lround(p.x)), y = int(std::lround(p.y));
+  if (x < 0 || y < 0 || x >= img.width || y >= img.height) return glm::ivec3(0);
+  const unsigned char* c = &img.rgba[(size_t(y) * img.width + x) * 4];
+  return {c[0], c[1], c[2]};
+}
+
+TEST_F(EditorE2e, SkinnedCharacterWithXrayBonesWeightsAndDualQuaternionSkinning) {
+  // The default character has a body now. Click the forearm (bones are picked through the
+  // body), R Z 90 bends the elbow, Alt+Z turns the bones to x-ray, Alt+W shows the
+  // forearm's weights, and the properties panel's Mesh section (fixed layout: its skinning
+  // combo at y 271 under the collapsed joint limit) switches the body to dual quaternions.
+  Script s;
+  s.click(midpoint("LowerArm.L", "Hand.L")).key("R").key("Z").key("9").key("0").key("ENTER");
+  s.keyDown("LEFT_ALT").key("Z").key("W").keyUp("LEFT_ALT");
+  s.click({1065, 271}).move({1065, 312}).click({1065, 312});
+  json d = run(s, "skinned_xray_weights_dq");
+  EXPECT_EQ(selection(d), std::vector<std::string>{"LowerArm.L"});
+  expectNear(joint(d, "Hand.L"), joint(front_, "LowerArm.L") + glm::dvec3(0, 0.26, 0), 1e-4, "the bent elbow");
+  EXPECT_EQ(d["bones"], "x-ray");
+  EXPECT_TRUE(bool(d["show_weights"]));
+  ASSERT_EQ(d["mesh_skinning"].size(), 1u);
+  EXPECT_EQ(d["mesh_skinning"][0], "dual-quaternion");
+  EXPECT_EQ(int(d["undo_depth"]), 2);  // the rotation, then the skinning method
+  // Ctrl+Z puts linear blend back (the skinning method is an undoable edit).
+  s.keyDown("LEFT_CONTROL").key("Z").keyUp("LEFT_CONTROL");
+  d = run(s, "skinned_dq_undone");
+  EXPECT_EQ(d["mesh_skinning"][0], "linear");
+  EXPECT_EQ(int(d["undo_depth"]), 1);
+
+  // Weights without bones (Alt+Z twice from on: x-ray, none), rest pose: the forearm's own
+  // vertices are hot (red), the chest's are cold (blue: weight 0 of the forearm).
+  d = run(Script()
+              .click(midpoint("LowerArm.L", "Hand.L"))
+              .keyDown("LEFT_ALT").key("W").key("Z").key("Z").keyUp("LEFT_ALT"),
+          "skinned_weights_no_bones");
+  EXPECT_EQ(d["bones"], "none");
+  const auto shot = loadPng(shotDir() + "/skinned_weights_no_bones.png");
+  ASSERT_TRUE(shot.ok()) << shot.error();
+  const glm::ivec3 forearm = pixelAt(shot.value(), midpoint("LowerArm.L", "Hand.L"));
+  const glm::ivec3 chest = pixelAt(shot.value(), pixelOf("Chest"));
+  EXPECT_GT(forearm.r, forearm.b + 60) << forearm.r << " " << forearm.g << " " << forearm.b;
+  EXPECT_GT(chest.b, chest.r + 60) << chest.r << " " << chest.g << " " << chest.b;
+}
+
+TEST_F(EditorE2e, AClickOnTheBodyAwayFromTheBonesSelectsTheJointWeighingMostThere) {
+  // 22 px right of the chest joint the ray crosses the torso but no bone (the spine's
+  // octahedra are a few pixels wide, the fallback circle smaller): the joint with the
+  // largest weight at the hit vertex is one of the torso's. Before, nothing was selected.
+  const glm::dvec2 side = pixelOf("Chest") + glm::dvec2(22, 0);
+  json d = run(Script().click(side), "click_body");
+  ASSERT_EQ(selection(d).size(), 1u);
+  const std::string j = selection(d)[0];
+  EXPECT_TRUE(j == "Spine" || j == "Chest" || j == "UpperChest" || j == "Shoulder.L") << j;
+  // The same click with the bones hidden (Alt+Z twice), and on the forearm: the body's
+  // weights decide there too (the forearm's middle is its own).
+  d = run(Script().keyDown("LEFT_ALT").key("Z").key("Z").keyUp("LEFT_ALT").click(midpoint("LowerArm.L", "Hand.L")),
+          "click_body_no_bones");
+  EXPECT_EQ(d["bones"], "none");
+  EXPECT_EQ(selection(d), std::vector<std::string>{"LowerArm.L"});
+}
+
+// A bar 0.1 x 0.1 wide from the root (y = 1) up to the tip (y = 2), NOT skinned: one mesh
+// instance on the root joint; Mid at y = 1.5 halfway. Written with the project's glTF writer.
+std::string writeUnskinnedBar(const std::string& dir) {
+  Scene s;
+  Transform root, up;
+  root.translation = {0, 1, 0};
+  up.translation = {0, 0.5f, 0};
+  s.skeleton.addJoint("Root", -1, root);
+  s.skeleton.addJoint("Mid", 0, up);
+  s.skeleton.addJoint("Tip", 1, up);
+  MeshPrimitive p;
+  const int rings = 9;  // every 0.125 up the bar, in the root's frame (y 0..1)
+  const float corners[4][2] = {{-0.05f, -0.05f}, {0.05f, -0.05f}, {0.05f, 0.05f}, {-0.05f, 0.05f}};
+  for (int r = 0; r < rings; ++r)
+    for (const auto& c : corners) p.positions.push_back({c[0], r / float(rings - 1), c[1]});
+  for (int r = 0; r + 1 < rings; ++r)
+    for (int k = 0; k < 4; ++k) {
+      const uint32_t a = r * 4 + k, b = r * 4 + (k + 1) % 4, c = a + 4, d = b + 4;
+      p.indices.insert(p.indices.end(), {a, b, d, a, d, c});
+    }
+  Mesh m;
+  m.name = "bar";
+  m.primitives.push_back(p);
+  s.meshes.push_back(m);
+  MeshInstance i;
+  i.joint = 0;
+  i.mesh = 0;
+  s.meshInstances.push_back(i);
+  const std::string path = dir + "/bar.gltf";
+  EXPECT_EQ(saveGltf(path, s, GltfWriteOptions{}), "");
+  return path;
+}
+
+TEST_F(EditorE2e, CtrlPBindsAnUnskinnedMeshWithAutomaticWeightsUndoably) {
+  const std::string file = writeUnskinnedBar(dir_);
+  const json front = runScript(dir_, Script(), "bind_front", file);
+  ASSERT_TRUE(front.is_object());
+  ASSERT_EQ(front["mesh_skins"].size(), 1u);
+  EXPECT_EQ(int(front["mesh_skins"][0]), -1);
+  const TestCamera cam(front);
+  const glm::dvec2 midBone = (cam.pixel(joint(front, "Mid")) + cam.pixel(joint(front, "Tip"))) * 0.5;
+  // Ctrl+P binds (one undo step); Ctrl+Z unbinds.
+  Script bind;
+  bind.keyDown("LEFT_CONTROL").key("P").keyUp("LEFT_CONTROL");
+  json d = runScript(dir_, bind, "bind_only", file);
+  EXPECT_GE(int(d["mesh_skins"][0]), 0);
+  EXPECT_EQ(int(d["undo_depth"]), 1);
+  EXPECT_TRUE(bool(d["dirty"]));
+  d = runScript(dir_, Script(bind).keyDown("LEFT_CONTROL").key("Z").keyUp("LEFT_CONTROL"), "bind_undone", file);
+  EXPECT_EQ(int(d["mesh_skins"][0]), -1);
+  EXPECT_EQ(int(d["undo_depth"]), 0);
+
+  // Then R Z 90 on Mid: bound, the bar's upper half turns with it to the left (Tip at
+  // (-0.5, 1.5, 0)); unbound, the bar stays upright on the root. Bones hidden and nothing
+  // selected for the screenshot, so only the body shows.
+  auto pose = [&](bool withBind, const std::string& name) {
+    Script s;
+    if (withBind) s.keyDown("LEFT_CONTROL").key("P").keyUp("LEFT_CONTROL");
+    s.click(midBone).key("R").key("Z").key("9").key("0").key("ENTER");
+    s.keyDown("LEFT_ALT").key("A").key("Z").key("Z").keyUp("LEFT_ALT");
+    json out = runScript(dir_, s, name, file);
+    expectNear(joint(out, "Tip"), {-0.5, 1.5, 0}, 1e-4, name + ": Tip after R Z 90");
+    const auto shot = loadPng(shotDir() + "/" + name + ".png");
+    EXPECT_TRUE(shot.ok());
+    return shot.ok() ? shot.value() : Image();
+  };
+  auto bright = [&](const Image& img, glm::dvec3 world) {
+    const glm::ivec3 c = pixelAt(img, cam.pixel(world));
+    return c.r + c.g + c.b > 3 * 100;  // the lit grey body; the background is 60, 60, 60
+  };
+  const glm::dvec3 oldTop(0, 1.85, 0), turned(-0.35, 1.5, 0), lower(0, 1.25, 0);
+  const Image bound = pose(true, "bind_posed"), unbound = pose(false, "unbound_posed");
+  EXPECT_TRUE(bright(bound, turned)) << "the bound bar's upper half turned left";
+  EXPECT_FALSE(bright(bound, oldTop)) << "and left its old place";
+  EXPECT_TRUE(bright(bound, lower)) << "its lower half stays on the root";
+  EXPECT_FALSE(bright(unbound, turned));
+  EXPECT_TRUE(bright(unbound, oldTop)) << "an unbound bar stays upright";
 }
 
 TEST_F(EditorE2e, GMovesTheRootInTheViewPlaneAndAlongAnAxis) {

@@ -58,6 +58,56 @@ TEST(RotateGizmo, HitTestFindsRingsViewRingTrackballAndNothing) {
             glm::quat(1, 0, 0, 0));
 }
 
+// Counts the segments of axis ring i that ringSegmentFacesViewer keeps (64 segments).
+int frontSegments(const RotateGizmo& g, const ViewportView& v, int i) {
+  const std::vector<glm::vec3> ring = g.ringPoints(v, i, 64);
+  int n = 0;
+  for (size_t k = 0; k < ring.size(); ++k) n += ringSegmentFacesViewer(g, v, ring[k], ring[(k + 1) % ring.size()]);
+  return n;
+}
+
+TEST(RotateGizmo, RingFacingTheViewAxisIsWholeOffCentreInPerspective) {
+  // Pivot (4, -3, 0) in the perspective hand view: 40 px right and 30 px below the centre,
+  // pixel (140, 130). The Z ring lies parallel to the image plane, so it projects to a full
+  // 80 px circle (depth 10, 0.1 units per pixel) and all of it faces the viewer, although
+  // the line from the pivot to the eye, (-4, 3, 10), leans 27 degrees off its axis.
+  const ViewportView v = handView(false);
+  RotateGizmo g;
+  g.pivot = {4, -3, 0};
+  EXPECT_EQ(frontSegments(g, v, 2), 64);
+  // Grabbable all round, the upper right half (towards the screen centre) included.
+  for (float deg : {45.0f, 135.0f, 225.0f, 315.0f}) {
+    const float a = glm::radians(deg);
+    EXPECT_EQ(hitTestRotateGizmo(g, v, {140 + 80 * std::cos(a), 130 - 80 * std::sin(a)}), GizmoPart::AxisZ) << deg;
+  }
+  // The edge-on X and Y rings still show their front halves: the segment midpoints lie at
+  // z = 8 sin((k + 0.5) 360/64 deg), 32 of them in front of the pivot's plane; the bias
+  // (2% of the radius) admits no more, as the nearest behind is 8 sin(2.8 deg) = 0.39 deep.
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_GE(frontSegments(g, v, i), 32) << i;
+    EXPECT_LE(frontSegments(g, v, i), 34) << i;
+  }
+}
+
+TEST(RotateGizmo, NearlyFaceOnRingIsWholeAndAnObliqueRingShowsItsFrontHalf) {
+  const ViewportView v = handView(true);
+  RotateGizmo g;
+  // Tilted 0.5 degrees: the farthest point lies 8 sin 0.5 = 0.07 behind the pivot's plane,
+  // within the 2% bias (0.16): whole. Tilted 30 degrees: points with 8 sin 30 cos(t) >= -0.16,
+  // i.e. cos t >= -0.04, about 51% of the ring: 32 to 34 of 64 segments.
+  g.axesRotation = glm::angleAxis(glm::radians(0.5f), glm::vec3(0, 1, 0));
+  EXPECT_EQ(frontSegments(g, v, 2), 64);
+  g.axesRotation = glm::angleAxis(glm::radians(30.0f), glm::vec3(0, 1, 0));
+  EXPECT_GE(frontSegments(g, v, 2), 32);
+  EXPECT_LE(frontSegments(g, v, 2), 34);
+  // Its farthest point, 8 axis(0) = 8 (cos 30, 0, -sin 30), is 4 behind the pivot: not
+  // kept; the opposite point, 4 in front, is.
+  const glm::vec3 far = g.pivot + 8.0f * g.axis(0);
+  EXPECT_LT(far.z, 0.0f);
+  EXPECT_FALSE(ringSegmentFacesViewer(g, v, far, far));
+  EXPECT_TRUE(ringSegmentFacesViewer(g, v, g.pivot - 8.0f * g.axis(0), g.pivot - 8.0f * g.axis(0)));
+}
+
 TEST(RotateGizmo, SweptAngleIsCounterClockwiseAsTheViewerSeesIt) {
   const glm::vec2 c(100, 100);
   EXPECT_NEAR(sweptAngle(c, {150, 100}, {100, 50}), kPi / 2, 1e-6f);   // right -> up: CCW

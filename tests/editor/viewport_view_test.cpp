@@ -25,6 +25,25 @@ TEST(ViewportView, PerspectiveProjectsByDepth) {
   EXPECT_VEC3_NEAR(v.towardViewer({10, 0, 0}), glm::normalize(glm::vec3(-10, 0, 10)), 1e-6f);
 }
 
+TEST(ViewportView, AViewportBetweenPanelsWorksInWindowPixels) {
+  // The same 200 x 200 view placed with its top left corner at window pixel (250, 19), as
+  // the editor's 3D view sits between its panels: every pixel shifts by (250, 19), the rays
+  // through shifted pixels are the unshifted ones, and picking a joint's fallback circle
+  // takes window pixels too.
+  const ViewportView base = handView(false);
+  const ViewportView v = ViewportView::of(handCamera(false), {200, 200}, {250, 19});
+  glm::vec2 p;
+  ASSERT_TRUE(v.project({1, 2, 0}, p));
+  EXPECT_NEAR(p.x, 250.0f + 110.0f, 1e-3f);
+  EXPECT_NEAR(p.y, 19.0f + 80.0f, 1e-3f);
+  const PickRay a = v.rayThrough({250 + 130, 19 + 40}), b = base.rayThrough({130, 40});
+  EXPECT_VEC3_NEAR(a.origin, b.origin, 1e-5f);
+  EXPECT_VEC3_NEAR(a.direction, b.direction, 1e-6f);
+  // The centre of the viewport looks straight down -Z.
+  EXPECT_VEC3_NEAR(v.rayThrough({350, 119}).direction, glm::vec3(0, 0, -1), 1e-6f);
+  EXPECT_NEAR(v.unitsPerPixelAt({0, 0, 0}), 0.1f, 1e-6f);
+}
+
 TEST(ViewportView, OrthographicIgnoresDepth) {
   const ViewportView v = handView(true);
   glm::vec2 p;
