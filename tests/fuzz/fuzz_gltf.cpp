@@ -7,6 +7,7 @@
 
 #include "core/forward_kinematics.h"
 #include "io/gltf_reader.h"
+#include "skin/scene_deformation.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, size_t size) {
   const std::string bytes(reinterpret_cast<const char*>(data), size);
@@ -39,5 +40,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, size_t size) {
       (void)kinema::computeWorld(scene.skeleton, pose);
     }
   }
+  // Skinning and morph targets on whatever loaded (ASan/UBSan watch the indexing). A job
+  // may refuse (non-finite matrices from huge numbers) but must not crash.
+  const std::vector<glm::mat4> world = kinema::computeWorld(scene.skeleton, pose);
+  const std::vector<std::vector<float>> morph =
+      kinema::sampleMorphWeights(scene, scene.clips.empty() ? -1 : 0, 0.5);
+  std::vector<kinema::DeformedPrimitive> deformed;
+  kinema::SceneDeformationJob job;
+  job.scene = &scene;
+  job.world = &world;
+  job.morphWeights = &morph;
+  job.out = &deformed;
+  (void)job.run();
   return 0;
 }

@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   const std::string out = argv[1];
-  for (const char* sub : {"", "/bvh", "/kinema", "/sampling", "/ik", "/gltf"}) ::mkdir((out + sub).c_str(), 0755);
+  for (const char* sub : {"", "/bvh", "/kinema", "/sampling", "/ik", "/gltf", "/script"}) ::mkdir((out + sub).c_str(), 0755);
 
   const char* orders[] = {"XYZ", "XZY", "YXZ", "YZX", "ZXY", "ZYX"};
   int n = 0;
@@ -105,6 +105,22 @@ int main(int argc, char** argv) {
     write(out + "/gltf/skinned.gltf", f.gltf());
     write(out + "/gltf/skinned.glb", f.glb());
   }
+
+  // Editor input scripts (kinema edit --script): JSON lines and a JSON array, every event type.
+  write(out + "/script/rotate.jsonl",
+        "# R Z 45 on a clicked joint\n"
+        "{\"frame\": 1, \"type\": \"key\", \"key\": \"KP_1\"}\n"
+        "{\"frame\": 2, \"type\": \"mouse_move\", \"x\": 700, \"y\": 236}\n"
+        "{\"frame\": 3, \"type\": \"click\", \"button\": \"left\", \"mods\": [\"shift\"]}\n"
+        "{\"frame\": 5, \"type\": \"key\", \"key\": \"R\"}\n"
+        "{\"frame\": 6, \"type\": \"text\", \"text\": \"45\"}\n"
+        "{\"frame\": 7, \"type\": \"scroll\", \"x\": 0, \"y\": -1}\n");
+  write(out + "/script/drag.json",
+        "[{\"frame\": 1, \"type\": \"button_down\", \"button\": \"middle\"},"
+        " {\"frame\": 2, \"type\": \"mouse_move\", \"x\": 10.5, \"y\": 20},"
+        " {\"frame\": 3, \"type\": \"button_up\", \"button\": \"middle\"},"
+        " {\"frame\": 4, \"type\": \"key_down\", \"key\": \"LEFT_CONTROL\"},"
+        " {\"frame\": 4, \"type\": \"key_up\", \"key\": \"LEFT_CONTROL\"}]\n");
 
   // .kinema files written by the project's writer.
   kinema::Scene character;
