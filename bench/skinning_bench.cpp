@@ -1,7 +1,9 @@
 // CPU skinning throughput: 50,000 vertices, 64 joints, positions + normals. "ns_per_vertex"
 // is wall time per vertex. Neighbouring vertices share joints, as in real meshes. Reference
 // point: ozz-animation's SkinningJob does about 4.5 ns per vertex with 4 influences,
-// positions and normals, on this machine class.
+// positions and normals, on this machine class (ozz leaves normals unnormalised: compare
+// BM_LinearBlend_Unnormalized). BM_LinearBlend takes the AVX2 + FMA loop where the CPU has it;
+// the *Sse2* variants force the baseline loop.
 //   ./build/bench/skinning_bench --benchmark_min_time=0.5
 #include <benchmark/benchmark.h>
 
@@ -76,9 +78,10 @@ Job makeJob(Mesh& m, bool normals) {
 }
 
 template <class Job>
-void run(benchmark::State& state, bool rigid, bool normals) {
+void run(benchmark::State& state, bool rigid, bool normals, void (*configure)(Job&) = nullptr) {
   Mesh m = makeMesh(static_cast<int>(state.range(0)), rigid);
-  const Job job = makeJob<Job>(m, normals);
+  Job job = makeJob<Job>(m, normals);
+  if (configure) configure(job);
   for (auto _ : state) {
     if (!job.run()) state.SkipWithError("the job refused its inputs");
     benchmark::DoNotOptimize(m.outPositions.data());
@@ -93,12 +96,29 @@ void run(benchmark::State& state, bool rigid, bool normals) {
 void BM_LinearBlend(benchmark::State& state) { run<LinearBlendSkinningJob>(state, true, true); }
 void BM_LinearBlend_PositionsOnly(benchmark::State& state) { run<LinearBlendSkinningJob>(state, true, false); }
 void BM_LinearBlend_ScaledJoints(benchmark::State& state) { run<LinearBlendSkinningJob>(state, false, true); }
+// Unnormalised normals (ozz's SkinningJob leaves them so) and the SSE2 loop forced on a
+// CPU with AVX2 + FMA.
+void unnormalized(LinearBlendSkinningJob& job) { job.normalizeNormals = false; }
+void sse2Only(LinearBlendSkinningJob& job) { job.allowAvx2 = false; }
+void BM_LinearBlend_Unnormalized(benchmark::State& state) {
+  run<LinearBlendSkinningJob>(state, true, true, unnormalized);
+}
+void BM_LinearBlend_Sse2(benchmark::State& state) { run<LinearBlendSkinningJob>(state, true, true, sse2Only); }
+void BM_LinearBlend_Sse2Unnormalized(benchmark::State& state) {
+  run<LinearBlendSkinningJob>(state, true, true, [](LinearBlendSkinningJob& job) {
+    job.allowAvx2 = false;
+    job.normalizeNormals = false;
+  });
+}
 void BM_DualQuaternion(benchmark::State& state) { run<DualQuaternionSkinningJob>(state, true, true); }
 void BM_DualQuaternion_ScaledJoints(benchmark::State& state) { run<DualQuaternionSkinningJob>(state, false, true); }
 
 BENCHMARK(BM_LinearBlend)->Arg(4)->Arg(1)->Arg(2)->Arg(8);
 BENCHMARK(BM_LinearBlend_PositionsOnly)->Arg(4);
 BENCHMARK(BM_LinearBlend_ScaledJoints)->Arg(4);
+BENCHMARK(BM_LinearBlend_Unnormalized)->Arg(4);
+BENCHMARK(BM_LinearBlend_Sse2)->Arg(4);
+BENCHMARK(BM_LinearBlend_Sse2Unnormalized)->Arg(4);
 BENCHMARK(BM_DualQuaternion)->Arg(4)->Arg(1)->Arg(8);
 BENCHMARK(BM_DualQuaternion_ScaledJoints)->Arg(4);
 

@@ -256,6 +256,22 @@ std::string updateRotateDrag(Document& doc, int joint, const glm::quat& local) {
   });
 }
 
+std::string updateRotateDrag(Document& doc, const std::vector<int>& joints, const std::vector<glm::quat>& locals) {
+  if (joints.size() != locals.size()) return "one rotation per joint expected";
+  for (size_t k = 0; k < joints.size(); ++k) {
+    std::string error = jointError(doc, joints[k]);
+    if (error.empty()) error = rotationError(locals[k]);
+    if (!error.empty()) return error;
+  }
+  const bool mirror = doc.xMirror;
+  return doc.updateDrag([&](DocumentEdit& e) {
+    for (size_t k = 0; k < joints.size(); ++k) setRotation(e, mirror, joints[k], locals[k]);
+    if (mirror)  // partners set above, then the selected joints' own rotations win
+      for (size_t k = 0; k < joints.size(); ++k) setRotation(e, false, joints[k], locals[k]);
+    return std::string();
+  });
+}
+
 std::string beginTranslateDrag(Document& doc, int joint) {
   const std::string error = jointError(doc, joint);
   if (!error.empty()) return error;

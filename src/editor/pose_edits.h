@@ -53,6 +53,9 @@ std::string setIkTarget(Document& doc, int target, const PoseIkTarget& settings)
 // Rotate gizmo: each update gives the joint's local rotation for this frame.
 std::string beginRotateDrag(Document& doc, int joint);
 std::string updateRotateDrag(Document& doc, int joint, const glm::quat& local);
+// R on several joints: each its local rotation (same length as joints), X-mirror honoured;
+// a selected joint keeps its own rotation over its selected partner's mirror.
+std::string updateRotateDrag(Document& doc, const std::vector<int>& joints, const std::vector<glm::quat>& locals);
 // Translate (G): each update gives the joint's local translation.
 std::string beginTranslateDrag(Document& doc, int joint);
 std::string updateTranslateDrag(Document& doc, int joint, const glm::vec3& translation);

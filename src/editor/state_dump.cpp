@@ -73,6 +73,7 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
               {"chain_length", doc.ikTargets()[i].chainLength},
               {"pinned", doc.ikTargets()[i].pinned},
               {"position", vec(t.position)}};
+    if (t.hasPole) e["pole"] = vec(t.pole);  // the two-bone pole target, when one is set
     for (const IkTargetReport& r : doc.lastIkReports())
       if (r.target == static_cast<int>(i)) {
         e["iterations"] = r.iterations;

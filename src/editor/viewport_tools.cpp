@@ -139,12 +139,7 @@ void ViewportTools::applyRotate(EditorState& state, const ViewportView& view) {
     }
     locals[k] = localRotationAfterWorldTurn(parentWorld_[k], startLocal_[k], delta);
   }
-  const std::vector<int> joints = joints_;
-  state.doc.updateDrag([&](DocumentEdit& e) {
-    for (size_t k = 0; k < joints.size(); ++k)
-      e.pose.local[joints[k]].rotation = limitedLocalRotation(e, joints[k], glm::normalize(locals[k]));
-    return std::string();
-  });
+  updateRotateDrag(state.doc, joints_, locals);  // honours X-mirror, as the gizmo's drag does
   state.tool.axis = axisOf(rotateMode_.axis);
   state.tool.localAxes = rotateMode_.local;
   char line[96];

@@ -109,7 +109,8 @@ TEST(LinearBlendSkinning, UniformScaleRigNormals) {
   EXPECT_VEC3_NEAR(b.outNormals[0], glm::vec3(-1, 1, 0) / std::sqrt(2.0f), 1e-6f);
 }
 
-// Rigid binding (one influence of weight 1) applies the joint's matrix exactly, as glm does.
+// Rigid binding (one influence of weight 1) applies the joint's matrix exactly, as glm does,
+// on both loops.
 TEST(LinearBlendSkinning, RigidBindingEqualsJointMatrixExactly) {
   std::mt19937 rng(7);
   Buffers b;
@@ -119,10 +120,14 @@ TEST(LinearBlendSkinning, RigidBindingEqualsJointMatrixExactly) {
     b.joints.push_back(static_cast<uint16_t>(v % 5));
     b.weights.push_back(1.0f);
   }
-  ASSERT_TRUE(b.job(1).run());
-  for (int v = 0; v < 200; ++v) {
-    const glm::vec3 expected(b.matrices[v % 5] * glm::vec4(b.positions[v], 1.0f));
-    ASSERT_EQ(b.outPositions[v], expected) << "vertex " << v;
+  for (const bool avx2 : {true, false}) {
+    LinearBlendSkinningJob j = b.job(1);
+    j.allowAvx2 = avx2;
+    ASSERT_TRUE(j.run());
+    for (int v = 0; v < 200; ++v) {
+      const glm::vec3 expected(b.matrices[v % 5] * glm::vec4(b.positions[v], 1.0f));
+      ASSERT_EQ(b.outPositions[v], expected) << "vertex " << v << (avx2 ? " avx2" : " sse2");
+    }
   }
 }
 
@@ -177,9 +182,12 @@ TEST(LinearBlendSkinning, ValidateNamesWhatIsWrong) {
 // The SIMD loops (strides 1..8, with and without normals, the uniform-scale shortcut and
 // the per-joint normal matrices) against the double-precision reference: within 1e-6 of
 // the size of the terms summed (float rounding of a handful of products and sums).
-void checkAgainstReference(std::mt19937& rng, int stride, bool rigid, bool normals) {
+// allowAvx2 false forces the SSE2 loop; normalize false checks the unnormalised sum. An odd
+// vertex count now and then runs the AVX2 loop's single-vertex tail after its pairs.
+void checkAgainstReference(std::mt19937& rng, int stride, bool rigid, bool normals, bool allowAvx2 = true,
+                           bool normalize = true) {
   Buffers b;
-  const int joints = 12, vertices = 64;
+  const int joints = 12, vertices = 63 + static_cast<int>(rng() % 2);
   const float scale = rigid ? std::uniform_real_distribution<float>(0.01f, 3.0f)(rng) : 1.0f;
   for (int j = 0; j < joints; ++j)
     b.matrices.push_back(rigid ? test::randomSimilarity(rng, scale) : test::randomAffine(rng));
@@ -193,7 +201,10 @@ void checkAgainstReference(std::mt19937& rng, int stride, bool rigid, bool norma
       b.weights.push_back(w[k]);
     }
   }
-  ASSERT_TRUE(b.job(stride).run());
+  LinearBlendSkinningJob job = b.job(stride);
+  job.allowAvx2 = allowAvx2;
+  job.normalizeNormals = normalize;
+  ASSERT_TRUE(job.run());
   for (int v = 0; v < vertices; ++v) {
     const test::ReferenceSkinned r =
         test::referenceLinearBlend(b.positions[v], normals ? b.normals[v] : glm::vec3(0, 0, 1), &b.joints[v * stride],
@@ -202,6 +213,14 @@ void checkAgainstReference(std::mt19937& rng, int stride, bool rigid, bool norma
       ASSERT_NEAR(b.outPositions[v][c], r.position[c], 1e-6 * r.positionScale)
           << "stride " << stride << (rigid ? " rigid" : " general") << " vertex " << v;
     if (!normals) continue;
+    if (!normalize) {
+      // sum_i w_i invT(M_i) n itself, also under the shared-similarity shortcut (which
+      // blends M_i = s^2 invT(M_i) and must divide by s^2).
+      for (int c = 0; c < 3; ++c)
+        ASSERT_NEAR(b.outNormals[v][c], r.normalSum[c], 2e-6 * r.normalScale)
+            << "stride " << stride << (rigid ? " rigid" : " general") << " unnormalised normal " << v;
+      continue;
+    }
     // Normalising divides by |sum|: compare the unnormalised directions at their own scale.
     const double len = glm::length(r.normalSum);
     for (int c = 0; c < 3; ++c)
@@ -221,7 +240,54 @@ TEST(LinearBlendSkinning, SimdLoopsMatchScalarReference) {
   }
 }
 
-// Writing the outputs over the inputs works: each vertex is read before it is written.
+// The same property on the SSE2 loop (on a CPU with AVX2 + FMA the default run above takes
+// the AVX2 loop; on one without, both tests run the SSE2 loop).
+TEST(LinearBlendSkinning, Sse2LoopMatchesScalarReference) {
+  std::mt19937 rng(2025);
+  const int cases = propertyCases(300);
+  for (int c = 0; c < cases; ++c) {
+    const int stride = 1 + c % kMaxInfluences;
+    checkAgainstReference(rng, stride, (c / kMaxInfluences) % 2 == 0, (c / (2 * kMaxInfluences)) % 3 != 0, false);
+    if (HasFatalFailure()) return;
+  }
+}
+
+// normalizeNormals = false: the normals are the weighted sum of inverse-transposed joint
+// matrices applied to n, unnormalised, on both loops, rigid (shortcut) and general rigs.
+TEST(LinearBlendSkinning, UnnormalizedNormalsMatchReferenceSum) {
+  std::mt19937 rng(2026);
+  const int cases = propertyCases(200);
+  for (int c = 0; c < cases; ++c) {
+    const int stride = 1 + c % kMaxInfluences;
+    checkAgainstReference(rng, stride, (c / kMaxInfluences) % 2 == 0, true, (c / (2 * kMaxInfluences)) % 2 == 0,
+                          false);
+    if (HasFatalFailure()) return;
+  }
+}
+
+// Hand case for the shortcut's 1/s^2: M = 2 I (uniform scale 2, shared by the one joint)
+// has invT(M) = I / 2, so the unnormalised normal (0, 0, 1) comes out (0, 0, 0.5).
+TEST(LinearBlendSkinning, UnnormalizedNormalUnderUniformScaleIsHalved) {
+  for (const bool avx2 : {true, false}) {
+    Buffers b;
+    b.matrices = {glm::scale(glm::mat4(1.0f), glm::vec3(2.0f))};
+    b.positions = {{1, 2, 3}, {0, 0, 1}, {1, 0, 0}};
+    b.normals = {{0, 0, 1}, {0, 1, 0}, {1, 0, 0}};
+    b.joints = {0, 0, 0};
+    b.weights = {1, 1, 1};
+    LinearBlendSkinningJob j = b.job(1);
+    j.normalizeNormals = false;
+    j.allowAvx2 = avx2;
+    ASSERT_TRUE(j.run());
+    EXPECT_EQ(b.outPositions[0], glm::vec3(2, 4, 6));
+    EXPECT_EQ(b.outNormals[0], glm::vec3(0, 0, 0.5f)) << (avx2 ? "avx2" : "sse2");
+    EXPECT_EQ(b.outNormals[1], glm::vec3(0, 0.5f, 0));
+    EXPECT_EQ(b.outNormals[2], glm::vec3(0.5f, 0, 0));
+  }
+}
+
+// Writing the outputs over the inputs works: each vertex is read before it is written (33
+// vertices: the AVX2 loop's pairs and its tail), on both loops.
 TEST(LinearBlendSkinning, InPlaceMatchesSeparateOutputs) {
   std::mt19937 rng(11);
   Buffers b;
@@ -236,14 +302,22 @@ TEST(LinearBlendSkinning, InPlaceMatchesSeparateOutputs) {
       b.weights.push_back(w[k]);
     }
   }
-  ASSERT_TRUE(b.job(4).run());
-  const std::vector<glm::vec3> expectedP = b.outPositions, expectedN = b.outNormals;
-  LinearBlendSkinningJob j = b.job(4);
-  j.outPositions = b.positions.data();
-  j.outNormals = b.normals.data();
-  ASSERT_TRUE(j.run());
-  EXPECT_EQ(b.positions, expectedP);
-  EXPECT_EQ(b.normals, expectedN);
+  const std::vector<glm::vec3> positions = b.positions, normals = b.normals;
+  for (const bool avx2 : {true, false}) {
+    b.positions = positions;
+    b.normals = normals;
+    LinearBlendSkinningJob separate = b.job(4);
+    separate.allowAvx2 = avx2;
+    ASSERT_TRUE(separate.run());
+    const std::vector<glm::vec3> expectedP = b.outPositions, expectedN = b.outNormals;
+    LinearBlendSkinningJob j = b.job(4);
+    j.allowAvx2 = avx2;
+    j.outPositions = b.positions.data();
+    j.outNormals = b.normals.data();
+    ASSERT_TRUE(j.run());
+    EXPECT_EQ(b.positions, expectedP) << (avx2 ? "avx2" : "sse2");
+    EXPECT_EQ(b.normals, expectedN) << (avx2 ? "avx2" : "sse2");
+  }
 }
 
 // influenceStride: reading the first 3 of every 8 entries (MeshPrimitive's layout) gives
