@@ -95,7 +95,22 @@ SkeletonPick ViewportTools::pickAt(const EditorState& state, const ViewportView&
   // x-ray; a click on the body away from any bone, or any click while the bones are hidden,
   // takes the joint weighing most at the hit vertex.
   if (pick.hit() && state.view.showBones) return pick;
-  const MeshPick m = pickMeshJointAt(state.doc.scene(), state.world, view.rayThrough(mouse_));
+  const Scene& scene = state.doc.scene();
+  if (scene.meshInstances.empty()) return pick;
+  if (deformedScene_ != &scene || deformedRevision_ != state.doc.meshRevision() ||
+      deformedChange_ != state.doc.changeCount() || deformedWorld_ != state.world) {
+    deformed_.clear();
+    SceneDeformationJob job;
+    job.scene = &scene;
+    job.world = &state.world;
+    job.out = &deformed_;
+    if (!job.run()) deformed_.clear();
+    deformedScene_ = &scene;
+    deformedRevision_ = state.doc.meshRevision();
+    deformedChange_ = state.doc.changeCount();
+    deformedWorld_ = state.world;
+  }
+  const MeshPick m = pickMeshJoint(scene, deformed_, view.rayThrough(mouse_));
   if (m.hit()) {
     pick.joint = m.joint;
     pick.boneChild = -1;

@@ -4,6 +4,7 @@
 #include "editor/editor_state.h"
 #include "editor/input_events.h"
 #include "editor/picking.h"
+#include "skin/scene_deformation.h"
 #include "editor/rotate_gizmo.h"
 #include "editor/viewport_view.h"
 #include "render/skeleton_draw_list.h"
@@ -50,6 +51,13 @@ class ViewportTools {
   RotateGizmo gizmo_;
   RotateMode rotateMode_;
   SweepTracker sweep_;
+  // The body deformed at the pose last picked on: hover picks on every mouse move, the pose
+  // changes far less often. Valid while the world transforms and the document's change
+  // count (skinning methods, binds) match.
+  mutable std::vector<DeformedPrimitive> deformed_;
+  mutable std::vector<glm::mat4> deformedWorld_;
+  mutable long long deformedRevision_ = -1, deformedChange_ = -1;  // meshRevision, changeCount
+  mutable const Scene* deformedScene_ = nullptr;
   glm::vec3 startTranslation_{0.0f};
 };
 
