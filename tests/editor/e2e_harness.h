@@ -102,6 +102,7 @@ class Script {
   Script& keyDown(const char* name) { return add(std::string("\"type\":\"key_down\",\"key\":\"") + name + "\""); }
   Script& keyUp(const char* name) { return add(std::string("\"type\":\"key_up\",\"key\":\"") + name + "\""); }
   Script& type(const std::string& text) { return add("\"type\":\"text\",\"text\":\"" + text + "\""); }
+  Script& scroll(double y) { return add("\"type\":\"scroll\",\"y\":" + num(y)); }
   Script& wait(int frames) {
     frame_ += frames;
     return *this;

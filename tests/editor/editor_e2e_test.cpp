@@ -11,6 +11,7 @@
 
 #include "io/gltf_writer.h"
 #include "io/image.h"
+#include "editor/e2e_harness.h"
 #include "test_support.h"
 
 namespace kinema::test {
@@ -72,38 +73,8 @@ struct TestCamera {
   double unitsPerPixel(glm::dvec3 p) const { return 2 * depth(p) * std::tan(fovY / 2) / h; }
 };
 
-// Events one per frame from frame 3 (frames 1-2 set the front view and frame everything).
-class Script {
- public:
-  Script() { lines_ = "{\"frame\":1,\"type\":\"key\",\"key\":\"KP_1\"}\n{\"frame\":2,\"type\":\"key\",\"key\":\"HOME\"}\n"; }
-  Script& move(glm::dvec2 p) { return add("\"type\":\"mouse_move\",\"x\":" + num(p.x) + ",\"y\":" + num(p.y)); }
-  Script& down(const char* button = "left") { return add(std::string("\"type\":\"button_down\",\"button\":\"") + button + "\""); }
-  Script& up(const char* button = "left") { return add(std::string("\"type\":\"button_up\",\"button\":\"") + button + "\""); }
-  Script& click(glm::dvec2 p) { return move(p).down().up(); }
-  Script& key(const char* name) { return add(std::string("\"type\":\"key\",\"key\":\"") + name + "\""); }
-  Script& keyDown(const char* name) { return add(std::string("\"type\":\"key_down\",\"key\":\"") + name + "\""); }
-  Script& keyUp(const char* name) { return add(std::string("\"type\":\"key_up\",\"key\":\"") + name + "\""); }
-  Script& scroll(double y) { return add("\"type\":\"scroll\",\"y\":" + num(y)); }
-  // Mouse path in `steps` straight moves from the current position `a` to `b`.
-  Script& path(glm::dvec2 a, glm::dvec2 b, int steps = 6) {
-    for (int i = 1; i <= steps; ++i) move(a + (b - a) * (double(i) / steps));
-    return *this;
-  }
-  const std::string& text() const { return lines_; }
-
- private:
-  static std::string num(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.3f", v);
-    return b;
-  }
-  Script& add(const std::string& body) {
-    lines_ += "{\"frame\":" + std::to_string(frame_++) + "," + body + "}\n";
-    return *this;
-  }
-  std::string lines_;
-  long long frame_ = 3;
-};
+// The script builder shared by the editor e2e suites.
+using e2e::Script;
 
 class EditorE2e : public ::testing::Test {
  protected:
