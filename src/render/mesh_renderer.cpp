@@ -94,8 +94,7 @@ void packJointTexels(const glm::mat4& m, float* out) {
 
 MeshRenderer::~MeshRenderer() {
   release();
-  if (!program_) return;  // init() never succeeded: no GL objects (and maybe no GL loaded)
-  glDeleteProgram(program_);
+  if (!program_.id()) return;  // init() never succeeded: no GL objects (and maybe no GL loaded)
   const GLuint buffers[] = {jointBuffer_, feedbackBuffer_, emptyBuffer_};
   glDeleteBuffers(3, buffers);
   const GLuint textures[] = {jointTexture_, emptyTexture_};
@@ -120,45 +119,9 @@ void MeshRenderer::release() {
 }
 
 std::string MeshRenderer::init() {
-  // Built here rather than with ShaderProgram: the transform feedback outputs must be named
-  // before linking.
-  auto compile = [](GLenum type, const char* source, GLuint& shader) -> std::string {
-    shader = glCreateShader(type);
-    glShaderSource(shader, 1, &source, nullptr);
-    glCompileShader(shader);
-    GLint ok = 0;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (ok) return {};
-    char log[4096] = {};
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    return std::string("shader program mesh: ") + (type == GL_VERTEX_SHADER ? "vertex" : "fragment") + " shader: " + log;
-  };
-  GLuint vs = 0, fs = 0;
-  std::string error = compile(GL_VERTEX_SHADER, shaders::mesh_vert, vs);
-  if (error.empty()) error = compile(GL_FRAGMENT_SHADER, shaders::mesh_frag, fs);
-  if (error.empty()) {
-    program_ = glCreateProgram();
-    glAttachShader(program_, vs);
-    glAttachShader(program_, fs);
-    const char* varyings[] = {"vWorldPosition", "vWorldNormal"};
-    glTransformFeedbackVaryings(program_, 2, varyings, GL_INTERLEAVED_ATTRIBS);
-    glLinkProgram(program_);
-    GLint ok = 0;
-    glGetProgramiv(program_, GL_LINK_STATUS, &ok);
-    if (!ok) {
-      char log[4096] = {};
-      glGetProgramInfoLog(program_, sizeof log, nullptr, log);
-      error = std::string("shader program mesh: link: ") + log;
-      glDeleteProgram(program_);
-      program_ = 0;
-    }
-  }
-  if (vs) glDeleteShader(vs);
-  if (fs) glDeleteShader(fs);
-  if (!error.empty()) {
-    while (!error.empty() && (error.back() == '\n' || error.back() == '\r')) error.pop_back();
-    return error;
-  }
+  // The world position and normal are also captured by transform feedback (deform()).
+  std::string error = program_.build("mesh", shaders::mesh_vert, shaders::mesh_frag, {"vWorldPosition", "vWorldNormal"});
+  if (!error.empty()) return error;
   glGenBuffers(1, &jointBuffer_);
   glBindBuffer(GL_TEXTURE_BUFFER, jointBuffer_);
   glBufferData(GL_TEXTURE_BUFFER, 16, nullptr, GL_STREAM_DRAW);
@@ -180,10 +143,10 @@ std::string MeshRenderer::init() {
   glBindFramebuffer(GL_FRAMEBUFFER, feedbackFbo_);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, feedbackColor_);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glUseProgram(program_);
-  glUniform1i(glGetUniformLocation(program_, "uJoints"), 0);
-  glUniform1i(glGetUniformLocation(program_, "uMorphDeltas"), 1);
-  glUniform1i(glGetUniformLocation(program_, "uBaseColorTexture"), 2);
+  glUseProgram(program_.id());
+  glUniform1i(program_.uniform("uJoints"), 0);
+  glUniform1i(program_.uniform("uMorphDeltas"), 1);
+  glUniform1i(program_.uniform("uBaseColorTexture"), 2);
   glUseProgram(0);
   const GLenum status = glGetError();
   if (status != GL_NO_ERROR) return "OpenGL error " + std::to_string(status) + " while creating the mesh renderer";
@@ -386,16 +349,16 @@ void MeshRenderer::bindInstance(const MeshFrame& frame, int instance, const GpuP
   const bool skinned = p.skinned && inst.skin >= 0 && inst.skin < static_cast<int>(skinOffset_.size()) &&
                        inst.skin < static_cast<int>(scene_->skins.size());
   const int method = !skinned ? 0 : inst.skinning == SkinningMethod::DualQuaternion ? 2 : 1;
-  glUniform1i(glGetUniformLocation(program_, "uSkinning"), method);
+  glUniform1i(program_.uniform("uSkinning"), method);
   // The skin's joints start at its offset in the joint buffer: a buffer texture view per
   // skin would need GL 4.3, so the texel offset goes in through the joint numbers instead.
   const glm::mat4 model = inst.joint >= 0 && inst.joint < static_cast<int>(frame.world->size())
                               ? (*frame.world)[inst.joint]
                               : glm::mat4(1.0f);
-  glUniformMatrix4fv(glGetUniformLocation(program_, "uModel"), 1, GL_FALSE, glm::value_ptr(model));
+  glUniformMatrix4fv(program_.uniform("uModel"), 1, GL_FALSE, glm::value_ptr(model));
   const glm::mat3 normal = inverseTranspose3(glm::mat3(model));
-  glUniformMatrix3fv(glGetUniformLocation(program_, "uModelNormal"), 1, GL_FALSE, glm::value_ptr(normal));
-  glUniform1i(glGetUniformLocation(program_, "uJointOffset"), skinned ? skinOffset_[inst.skin] : 0);
+  glUniformMatrix3fv(program_.uniform("uModelNormal"), 1, GL_FALSE, glm::value_ptr(normal));
+  glUniform1i(program_.uniform("uJointOffset"), skinned ? skinOffset_[inst.skin] : 0);
 
   int weightJoint = -1;
   if (weightsView && frame.weightJoint >= 0) {
@@ -407,8 +370,8 @@ void MeshRenderer::bindInstance(const MeshFrame& frame, int instance, const GpuP
       weightJoint = inst.joint == frame.weightJoint ? 0 : -2;  // rigid: all or nothing
     }
   }
-  glUniform1i(glGetUniformLocation(program_, "uWeightJoint"), weightJoint);
-  glUniform1i(glGetUniformLocation(program_, "uShowWeights"), weightsView && frame.weightJoint >= 0);
+  glUniform1i(program_.uniform("uWeightJoint"), weightJoint);
+  glUniform1i(program_.uniform("uShowWeights"), weightsView && frame.weightJoint >= 0);
 
   // Morph weights: the frame's, else the instance's, else the mesh's defaults (glTF order).
   const Mesh& mesh = scene_->meshes[inst.mesh];
@@ -419,10 +382,10 @@ void MeshRenderer::bindInstance(const MeshFrame& frame, int instance, const GpuP
     weights = &(*frame.morphWeights)[instance];
   float w[kMaxMorphTargets] = {};
   for (int k = 0; k < p.morphCount && k < static_cast<int>(weights->size()); ++k) w[k] = (*weights)[k];
-  glUniform1fv(glGetUniformLocation(program_, "uMorphWeights"), kMaxMorphTargets, w);
-  glUniform1i(glGetUniformLocation(program_, "uMorphCount"), p.morphCount);
-  glUniform1i(glGetUniformLocation(program_, "uVertexCount"), p.vertexCount);
-  glUniform1i(glGetUniformLocation(program_, "uMorphHasNormals"), p.morphNormals);
+  glUniform1fv(program_.uniform("uMorphWeights"), kMaxMorphTargets, w);
+  glUniform1i(program_.uniform("uMorphCount"), p.morphCount);
+  glUniform1i(program_.uniform("uVertexCount"), p.vertexCount);
+  glUniform1i(program_.uniform("uMorphHasNormals"), p.morphNormals);
   glActiveTexture(GL_TEXTURE1);
   glBindTexture(GL_TEXTURE_BUFFER, p.morphTexture ? p.morphTexture : emptyTexture_);
 
@@ -431,11 +394,11 @@ void MeshRenderer::bindInstance(const MeshFrame& frame, int instance, const GpuP
                                  ? &scene_->materials[mesh.primitives[p.primitive].material]
                                  : nullptr;
   const glm::vec4 base = material ? material->baseColor : glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
-  glUniform4fv(glGetUniformLocation(program_, "uBaseColor"), 1, glm::value_ptr(base));
+  glUniform4fv(program_.uniform("uBaseColor"), 1, glm::value_ptr(base));
   const int image = material ? material->baseColorImage : -1;
   const bool textured = image >= 0 && image < static_cast<int>(textures_.size()) &&
                         !mesh.primitives[p.primitive].texcoords.empty();
-  glUniform1i(glGetUniformLocation(program_, "uHasTexture"), textured);
+  glUniform1i(program_.uniform("uHasTexture"), textured);
   glActiveTexture(GL_TEXTURE2);
   glBindTexture(GL_TEXTURE_2D, textured ? textures_[image] : 0);
   glActiveTexture(GL_TEXTURE0);
@@ -444,9 +407,9 @@ void MeshRenderer::bindInstance(const MeshFrame& frame, int instance, const GpuP
 void MeshRenderer::draw(const MeshFrame& frame, const glm::mat4& viewProjection, const glm::mat4& view) {
   if (!scene_ || !frame.world || primitives_.empty()) return;
   uploadJointMatrices(frame);
-  glUseProgram(program_);
-  glUniformMatrix4fv(glGetUniformLocation(program_, "uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
-  glUniformMatrix4fv(glGetUniformLocation(program_, "uView"), 1, GL_FALSE, glm::value_ptr(view));
+  glUseProgram(program_.id());
+  glUniformMatrix4fv(program_.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
+  glUniformMatrix4fv(program_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_BUFFER, jointTexture_);
   glEnable(GL_DEPTH_TEST);
@@ -479,7 +442,7 @@ std::string MeshRenderer::deform(const MeshFrame& frame, bool skinnedOnly, std::
   GLint previousFbo = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousFbo);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, feedbackFbo_);
-  glUseProgram(program_);
+  glUseProgram(program_.id());
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_BUFFER, jointTexture_);
   glEnable(GL_RASTERIZER_DISCARD);

@@ -7,6 +7,7 @@
 #include "core/math.h"
 #include "io/scene.h"
 #include "render/camera.h"
+#include "render/shader_program.h"
 #include "skin/scene_deformation.h"
 
 namespace kinema {
@@ -79,7 +80,7 @@ class MeshRenderer {
   bool uploadedMesh(int mesh) const;
   void release();
 
-  GLuint program_ = 0;
+  ShaderProgram program_;
   const Scene* scene_ = nullptr;
   std::vector<GpuPrimitive> primitives_;
   std::vector<std::vector<int>> primitivesOfMesh_;  // indices into primitives_

@@ -24,7 +24,8 @@ ShaderProgram::~ShaderProgram() {
   if (id_) glDeleteProgram(id_);
 }
 
-std::string ShaderProgram::build(const char* name, const char* vertexSource, const char* fragmentSource) {
+std::string ShaderProgram::build(const char* name, const char* vertexSource, const char* fragmentSource,
+                                 const std::vector<const char*>& feedbackVaryings) {
   GLuint vs = 0, fs = 0;
   std::string error = compile(GL_VERTEX_SHADER, vertexSource, vs);
   if (error.empty()) error = compile(GL_FRAGMENT_SHADER, fragmentSource, fs);
@@ -32,6 +33,9 @@ std::string ShaderProgram::build(const char* name, const char* vertexSource, con
     id_ = glCreateProgram();
     glAttachShader(id_, vs);
     glAttachShader(id_, fs);
+    if (!feedbackVaryings.empty())
+      glTransformFeedbackVaryings(id_, static_cast<GLsizei>(feedbackVaryings.size()), feedbackVaryings.data(),
+                                  GL_INTERLEAVED_ATTRIBS);
     glLinkProgram(id_);
     GLint ok = 0;
     glGetProgramiv(id_, GL_LINK_STATUS, &ok);

@@ -1,5 +1,6 @@
 #pragma once
 #include <string>
+#include <vector>
 
 #include <glad/gl.h>
 
@@ -15,7 +16,10 @@ class ShaderProgram {
   ShaderProgram& operator=(const ShaderProgram&) = delete;
 
   // Compiles and links; returns an empty string or the driver's log with the shader's name.
-  std::string build(const char* name, const char* vertexSource, const char* fragmentSource);
+  // `feedbackVaryings`: vertex outputs captured by transform feedback (interleaved); they
+  // must be named before linking.
+  std::string build(const char* name, const char* vertexSource, const char* fragmentSource,
+                    const std::vector<const char*>& feedbackVaryings = {});
   GLuint id() const { return id_; }
   GLint uniform(const char* name) const { return glGetUniformLocation(id_, name); }
 
