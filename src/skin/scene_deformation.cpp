@@ -179,9 +179,8 @@ bool SceneDeformationJob::run() const {
         const int used = usedInfluences(prim);
         const glm::vec3* nin = normals->empty() ? nullptr : normals->data();
         glm::vec3* nout = normals->empty() ? nullptr : d.normals.data();
-        bool ok = false;
-        if (inst.skinning == SkinningMethod::DualQuaternion) {
-          DualQuaternionSkinningJob job;
+        // Both jobs take the same inputs; fill whichever the instance uses.
+        auto fill = [&](auto& job) {
           job.positions = positions->data();
           job.normals = nin;
           job.vertexCount = n;
@@ -193,22 +192,11 @@ bool SceneDeformationJob::run() const {
           job.jointCount = static_cast<int>(skinning.size());
           job.outPositions = d.positions.data();
           job.outNormals = nout;
-          ok = job.run();
-        } else {
-          LinearBlendSkinningJob job;
-          job.positions = positions->data();
-          job.normals = nin;
-          job.vertexCount = n;
-          job.influenceJoints = prim.influenceJoints.data();
-          job.influenceWeights = prim.influenceWeights.data();
-          job.influencesPerVertex = used;
-          job.influenceStride = kMaxInfluences;
-          job.jointMatrices = skinning.data();
-          job.jointCount = static_cast<int>(skinning.size());
-          job.outPositions = d.positions.data();
-          job.outNormals = nout;
-          ok = job.run();
-        }
+          return job.run();
+        };
+        DualQuaternionSkinningJob dq;
+        LinearBlendSkinningJob lbs;
+        const bool ok = inst.skinning == SkinningMethod::DualQuaternion ? fill(dq) : fill(lbs);
         if (!ok) return false;  // validate() above rules this out (non-finite world matrices aside)
       }
       result.push_back(std::move(d));
