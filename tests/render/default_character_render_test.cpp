@@ -6,6 +6,7 @@
 
 #include "core/forward_kinematics.h"
 #include "io/image.h"
+#include "render/image_compare.h"
 #include "render/headless_renderer.h"
 #include "render/skeleton_view.h"
 #include "skin/default_character_scene.h"
@@ -13,6 +14,8 @@
 
 namespace kinema {
 namespace {
+
+using test::differingPixels;
 
 constexpr int kWidth = 320, kHeight = 240;
 
@@ -63,18 +66,6 @@ Image render(HeadlessBackend backend, const Scene& scene, const std::vector<glm:
   frame.camera.azimuthDeg = 60.0f;  // three-quarter: both elbows and the bent knee show
   frame.sceneRadius = bounds.radius();
   return renderer.render(frame);
-}
-
-int differingPixels(const Image& a, const Image& b, int tolerance) {
-  if (a.width != b.width || a.height != b.height) return -1;
-  int n = 0;
-  for (size_t i = 0; i < a.rgba.size(); i += 4)
-    for (int c = 0; c < 4; ++c)
-      if (std::abs(int(a.rgba[i + c]) - int(b.rgba[i + c])) > tolerance) {
-        ++n;
-        break;
-      }
-  return n;
 }
 
 TEST(DefaultCharacterRender, PosedBodyMatchesGoldenWithEglAndOsMesa) {

@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "io/image.h"
+#include "render/image_compare.h"
 #include "test_support.h"
 
 namespace kinema::test {
@@ -16,24 +17,6 @@ const std::string kSoftware =
 int kinema(const std::string& args, std::string* err = nullptr) {
   std::string out;
   return runCommand(kSoftware + KINEMA_BINARY + " " + args, &out, err);
-}
-
-Image load(const std::string& path) {
-  Result<Image> image = loadPng(path);
-  EXPECT_TRUE(image.ok()) << image.error();
-  return image ? image.value() : Image();
-}
-
-int differingPixels(const Image& a, const Image& b, int tolerance) {
-  if (a.width != b.width || a.height != b.height) return -1;
-  int n = 0;
-  for (size_t i = 0; i < a.rgba.size(); i += 4)
-    for (int c = 0; c < 4; ++c)
-      if (std::abs(int(a.rgba[i + c]) - int(b.rgba[i + c])) > tolerance) {
-        ++n;
-        break;
-      }
-  return n;
 }
 
 // Pixels of a colour class, counted.
@@ -64,14 +47,14 @@ class MeshRenderCli : public ::testing::Test {
 // more than 8 levels, against the committed image and between the two backends.
 TEST_F(MeshRenderCli, CesiumManMidAnimationMatchesGoldenWithEglAndOsMesa) {
   KINEMA_REQUIRE_SHARED_DATA();
-  const Image reference = load(std::string(KINEMA_SOURCE_DIR) + "/tests/render/golden/cesium_man_t1.png");
+  const Image reference = loadImageOrFail(std::string(KINEMA_SOURCE_DIR) + "/tests/render/golden/cesium_man_t1.png");
   Image images[2];
   const char* backends[2] = {"egl", "osmesa"};
   for (int k = 0; k < 2; ++k) {
     const std::string path = dir_ + "/" + backends[k] + ".png";
     ASSERT_EQ(kinema("render " + cesium_ + " --time 1 --size 320x240 --backend " + backends[k] + " --out " + path, &err_), 0)
         << err_;
-    images[k] = load(path);
+    images[k] = loadImageOrFail(path);
     const int diff = differingPixels(images[k], reference, 8);
     EXPECT_GE(diff, 0) << "size differs from the reference";
     EXPECT_LE(diff, 320 * 240 / 1000) << backends[k] << ": " << diff << " pixels differ from the golden image";
@@ -86,7 +69,7 @@ TEST_F(MeshRenderCli, MeshCoversTheBonesUnlessXRayAndWeightsShowAsHeat) {
   const std::string common = cesium_ + " --time 1 --camera 0,0 --size 320x240 --out " + dir_;
   ASSERT_EQ(kinema("render " + common + "/none.png --bones none", &err_), 0) << err_;
   ASSERT_EQ(kinema("render " + common + "/xray.png --bones xray", &err_), 0) << err_;
-  const Image none = load(dir_ + "/none.png"), xray = load(dir_ + "/xray.png");
+  const Image none = loadImageOrFail(dir_ + "/none.png"), xray = loadImageOrFail(dir_ + "/xray.png");
   // The body fills a good part of the frame (the camera frames the mesh, not just the joints).
   const int body = 320 * 240 - countPixels(none, isBackgroundGrey);
   EXPECT_GT(body, 320 * 240 / 20);
@@ -98,14 +81,14 @@ TEST_F(MeshRenderCli, MeshCoversTheBonesUnlessXRayAndWeightsShowAsHeat) {
   ASSERT_EQ(kinema("render " + common + "/xray_sel.png --bones xray --select leg_joint_L_1", &err_), 0) << err_;
   ASSERT_EQ(kinema("render " + common + "/on_sel.png --bones on --select leg_joint_L_1", &err_), 0) << err_;
   auto orange = [](const std::uint8_t* p) { return p[0] > 150 && p[1] > 0.45 * p[0] && p[1] < 0.8 * p[0] && p[2] < 0.3 * p[0]; };
-  EXPECT_GT(countPixels(load(dir_ + "/xray_sel.png"), orange), countPixels(load(dir_ + "/on_sel.png"), orange) + 60);
+  EXPECT_GT(countPixels(loadImageOrFail(dir_ + "/xray_sel.png"), orange), countPixels(loadImageOrFail(dir_ + "/on_sel.png"), orange) + 60);
   // --mesh off: the skeleton alone, far fewer non-background pixels than the body.
   ASSERT_EQ(kinema("render " + common + "/bare.png --mesh off", &err_), 0) << err_;
-  EXPECT_LT(320 * 240 - countPixels(load(dir_ + "/bare.png"), isBackgroundGrey), body / 2);
+  EXPECT_LT(320 * 240 - countPixels(loadImageOrFail(dir_ + "/bare.png"), isBackgroundGrey), body / 2);
 
   // Heat colours: the left forearm's weights are warm on the arm, blue elsewhere.
   ASSERT_EQ(kinema("render " + common + "/weights.png --bones none --weights Skeleton_arm_joint_L__3_", &err_), 0) << err_;
-  const Image weights = load(dir_ + "/weights.png");
+  const Image weights = loadImageOrFail(dir_ + "/weights.png");
   const int blue = countPixels(weights, isHeatBlue), warm = countPixels(weights, isHeatWarm);
   EXPECT_GT(blue, body / 2);
   EXPECT_GT(warm, 20);

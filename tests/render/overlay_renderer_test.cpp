@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "io/image.h"
+#include "render/image_compare.h"
 #include "render/overlay_renderer.h"
 #include "test_support.h"
 
@@ -99,18 +100,6 @@ TEST(OverlayRenderer, ScreenRectanglesMapPixelsToNdc) {
 // with tests/render/update_golden.sh, and LOOK at the image before committing it.
 const std::string kSoftware =
     "LIBGL_ALWAYS_SOFTWARE=1 MESA_GL_VERSION_OVERRIDE=3.3 ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 ";
-
-int differingPixels(const Image& a, const Image& b, int tolerance) {
-  if (a.width != b.width || a.height != b.height) return -1;
-  int n = 0;
-  for (size_t i = 0; i < a.rgba.size(); i += 4)
-    for (int c = 0; c < 4; ++c)
-      if (std::abs(int(a.rgba[i + c]) - int(b.rgba[i + c])) > tolerance) {
-        ++n;
-        break;
-      }
-  return n;
-}
 
 TEST(OverlayRenderer, OverlayFrameMatchesGoldenWithEglAndOsMesa) {
   const Result<Image> reference = loadPng(std::string(KINEMA_SOURCE_DIR) + "/tests/render/golden/overlay_gizmo.png");

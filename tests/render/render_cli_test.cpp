@@ -6,6 +6,7 @@
 #include <set>
 
 #include "io/image.h"
+#include "render/image_compare.h"
 #include "test_support.h"
 
 namespace kinema::test {
@@ -19,25 +20,6 @@ const std::string kSoftware =
 
 int kinema(const std::string& args, std::string* out = nullptr, std::string* err = nullptr) {
   return runCommand(kSoftware + KINEMA_BINARY + " " + args, out, err);
-}
-
-Image load(const std::string& path) {
-  Result<Image> image = loadPng(path);
-  EXPECT_TRUE(image.ok()) << image.error();
-  return image ? image.value() : Image();
-}
-
-// Pixels that differ by more than `tolerance` in some channel.
-int differingPixels(const Image& a, const Image& b, int tolerance) {
-  if (a.width != b.width || a.height != b.height) return -1;
-  int n = 0;
-  for (size_t i = 0; i < a.rgba.size(); i += 4)
-    for (int c = 0; c < 4; ++c)
-      if (std::abs(int(a.rgba[i + c]) - int(b.rgba[i + c])) > tolerance) {
-        ++n;
-        break;
-      }
-  return n;
 }
 
 // Box around the lit bone faces: pixels much brighter than the background and the grid.
@@ -113,7 +95,7 @@ class RenderCli : public ::testing::Test {
 // The golden check: each backend matches the committed reference (a few pixels may differ
 // by a little, e.g. another llvmpipe build rounding an edge differently), and they agree.
 void expectGolden(const std::string& args, const std::string& golden, const std::string& dir) {
-  const Image reference = load(std::string(KINEMA_SOURCE_DIR) + "/tests/render/golden/" + golden);
+  const Image reference = loadImageOrFail(std::string(KINEMA_SOURCE_DIR) + "/tests/render/golden/" + golden);
   Image images[2];
   const char* backends[2] = {"egl", "osmesa"};
   for (int k = 0; k < 2; ++k) {
@@ -121,7 +103,7 @@ void expectGolden(const std::string& args, const std::string& golden, const std:
     std::string err;
     ASSERT_EQ(kinema("render " + args + " --size 320x240 --backend " + backends[k] + " --out " + path, nullptr, &err), 0)
         << err;
-    images[k] = load(path);
+    images[k] = loadImageOrFail(path);
     const int diff = differingPixels(images[k], reference, 8);
     EXPECT_GE(diff, 0) << "size differs from the reference";
     EXPECT_LE(diff, 320 * 240 / 1000) << backends[k] << " vs " << golden << ": " << diff << " pixels differ";
@@ -145,7 +127,7 @@ TEST_F(RenderCli, MotionCaptureFrameMatchesGoldenWithEglAndOsMesa) {
 TEST_F(RenderCli, SizeScalesTheCharacterAndCameraTurnsIt) {
   ASSERT_EQ(kinema("render --mesh off --camera 0,0 --size 160x120 --out " + dir_ + "/small.png", &out_, &err_), 0) << err_;
   ASSERT_EQ(kinema("render --mesh off --camera 0,0 --size 320x240 --out " + dir_ + "/large.png", &out_, &err_), 0) << err_;
-  const Image small = load(dir_ + "/small.png"), large = load(dir_ + "/large.png");
+  const Image small = loadImageOrFail(dir_ + "/small.png"), large = loadImageOrFail(dir_ + "/large.png");
   ASSERT_EQ(small.width, 160);
   ASSERT_EQ(small.height, 120);
   ASSERT_EQ(large.width, 320);
@@ -160,7 +142,7 @@ TEST_F(RenderCli, SizeScalesTheCharacterAndCameraTurnsIt) {
   // The default character is in T-pose, arms along X: wide from the front (azimuth 0),
   // narrow from the side (azimuth 90). Its arm span is 1.5 units and its height 1.8.
   ASSERT_EQ(kinema("render --mesh off --camera 90,0 --size 320x240 --out " + dir_ + "/side.png", &out_, &err_), 0) << err_;
-  const Box side = brightBox(load(dir_ + "/side.png"));
+  const Box side = brightBox(loadImageOrFail(dir_ + "/side.png"));
   EXPECT_GT(double(l.width()) / l.height(), 0.6);
   EXPECT_LT(double(side.width()) / side.height(), 0.3);
   EXPECT_NEAR(side.height(), l.height(), l.height() * 0.1);
@@ -176,7 +158,7 @@ TEST_F(RenderCli, SizeScalesTheCharacterAndCameraTurnsIt) {
       const std::string path = dir_ + "/hand" + std::to_string(k) + std::to_string(side) + ".png";
       ASSERT_EQ(kinema(std::string("render --mesh off --select Hand.") + (side ? "R" : "L") + " --camera " + camera +
                            " --size 640x480 --out " + path, &out_, &err_), 0) << err_;
-      hand[side] = orangeCentroid(load(path));
+      hand[side] = orangeCentroid(loadImageOrFail(path));
     }
     span[k] = glm::length(hand[0] - hand[1]);
   }
@@ -203,7 +185,7 @@ TEST_F(RenderCli, SequenceWritesNumberedFramesWithProgress) {
   EXPECT_NE(::stat((dir_ + "/seq/frame_0099.png").c_str(), &st), 0);
   EXPECT_NE(::stat((dir_ + "/seq/frame_0130.png").c_str(), &st), 0);
   // The subject moves: the first and last frames differ, same camera.
-  EXPECT_GT(differingPixels(load(dir_ + "/seq/frame_0100.png"), load(dir_ + "/seq/frame_0129.png"), 24), 20);
+  EXPECT_GT(differingPixels(loadImageOrFail(dir_ + "/seq/frame_0100.png"), loadImageOrFail(dir_ + "/seq/frame_0129.png"), 24), 20);
 }
 
 TEST_F(RenderCli, BadArgumentsAndInputsFailWithOneLine) {
@@ -237,7 +219,7 @@ TEST_F(RenderCli, EditorWindowOpensRendersAndExitsUnderXvfb) {
                        &out_, &err_),
             0)
       << err_;
-  const Image image = load(shot);
+  const Image image = loadImageOrFail(shot);
   EXPECT_EQ(image.width, 1280);
   EXPECT_EQ(image.height, 720);
   EXPECT_GT(distinctColors(image), 50);
