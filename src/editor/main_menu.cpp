@@ -106,8 +106,8 @@ void handleMenuShortcuts(EditorState& state) {
   else if (pressed(GLFW_KEY_V)) paste(state, shift);
 }
 
-float viewAspect() {  // of the 3D view between the panels, which framing fills
-  const PanelRect r = viewportRect(ImGui::GetIO().DisplaySize);
+float viewAspect(const EditorState& state) {  // of the 3D view between the panels, which framing fills
+  const PanelRect r = viewportRect(ImGui::GetIO().DisplaySize, state.hasMotion());
   return r.w / r.h;
 }
 
@@ -173,8 +173,8 @@ void drawMainMenuBar(EditorState& state) {
     const std::vector<glm::mat4> world = doc.worldTransforms();
     const float minRadius = 0.1f * std::max(jointBounds(world).radius(), 1e-3f);
     if (ImGui::MenuItem("Frame Selected", "F", false, !doc.selection.empty()))
-      frameSelected(state.camera, world, doc.selection.joints(), viewAspect(), minRadius);
-    if (ImGui::MenuItem("Frame All", "Home")) ViewportController().frameAll(state.camera, jointBounds(world), viewAspect());
+      frameSelected(state.camera, world, doc.selection.joints(), viewAspect(state), minRadius);
+    if (ImGui::MenuItem("Frame All", "Home")) ViewportController().frameAll(state.camera, jointBounds(world), viewAspect(state));
     ImGui::Separator();
     if (ImGui::MenuItem("Bones: None", "Alt+Z", !state.view.showBones)) state.view.showBones = false;
     if (ImGui::MenuItem("Bones: Solid", nullptr, state.view.showBones && !state.view.xrayBones))

@@ -13,6 +13,7 @@ struct PanelRect {
 
 constexpr float kMenuBarHeight = 19.0f;  // ImGui 1.86's default font and frame padding
 constexpr float kStatusBarHeight = 24.0f;
+constexpr float kTimelineHeight = 40.0f;  // under the 3D view, only for scenes with motion
 constexpr float kLeftColumnWidth = 250.0f;
 constexpr float kRightColumnWidth = 310.0f;
 constexpr float kOutlinerIndent = 12.0f;
@@ -39,10 +40,17 @@ inline PanelRect statusBarRect(ImVec2 display) {
   return {0.0f, display.y - kStatusBarHeight, display.x, kStatusBarHeight};
 }
 // The 3D view (Blender's view region): the free area between the columns, the menu bar and
-// the status bar; at least 1 px each way so a tiny window still has a camera aspect.
-inline PanelRect viewportRect(ImVec2 display) {
-  const float w = display.x - kLeftColumnWidth - kRightColumnWidth, h = panelAreaHeight(display);
+// the status bar (and the timeline when the scene has motion); at least 1 px each way so a
+// tiny window still has a camera aspect.
+inline PanelRect viewportRect(ImVec2 display, bool withTimeline = false) {
+  const float w = display.x - kLeftColumnWidth - kRightColumnWidth,
+              h = panelAreaHeight(display) - (withTimeline ? kTimelineHeight : 0.0f);
   return {kLeftColumnWidth, kMenuBarHeight, w > 1.0f ? w : 1.0f, h > 1.0f ? h : 1.0f};
+}
+// The timeline (Blender's): a strip under the 3D view, as wide as it.
+inline PanelRect timelineRect(ImVec2 display) {
+  const PanelRect v = viewportRect(display, true);
+  return {v.x, v.y + v.h, v.w, kTimelineHeight};
 }
 
 }  // namespace kinema

@@ -181,6 +181,7 @@ void drawEditorPanels(EditorState& state, float fps) {
   drawPropertiesPanel(state);
   drawIkTargetsPanel(state);
   drawStatusBar(state, fps);
+  drawTimelinePanel(state);
   drawSessionDialogs(state);
 }
 

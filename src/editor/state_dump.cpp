@@ -27,6 +27,7 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
   out["window"] = {{"width", windowWidth}, {"height", windowHeight}};
   out["viewport"] = {{"x", s.viewportRect.x}, {"y", s.viewportRect.y}, {"width", s.viewportRect.z},
                      {"height", s.viewportRect.w}};
+  out["playback"] = {{"clip", s.hasMotion() ? s.clip : -1}, {"time", s.time}, {"playing", s.playing}};
   out["tool"] = modalToolName(s.tool.mode);
   json selection = json::array();
   for (int j : doc.selection.joints()) selection.push_back(jointName(s, j));

@@ -1,19 +1,20 @@
 // The timeline: play/pause and a frame slider for files with motion (Blender's timeline,
-// reduced to what this issue needs).
+// reduced to playback; keyframe editing is the animating issue's).
 #include <imgui.h>
 
 #include <cmath>
 
 #include "editor/editor_panels.h"
+#include "editor/panel_layout.h"
 
 namespace kinema {
 
 void drawTimelinePanel(EditorState& state) {
   if (!state.hasMotion()) return;
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(8, display.y - 72), ImGuiCond_Always);
-  ImGui::SetNextWindowSize(ImVec2(display.x - 16, 64), ImGuiCond_Always);
-  ImGui::Begin("Timeline", nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse);
+  const PanelRect r = timelineRect(ImGui::GetIO().DisplaySize);
+  ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(r.w, r.h), ImGuiCond_Always);
+  ImGui::Begin("Timeline", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar);
   if (ImGui::Button(state.playing ? "Pause" : "Play")) state.playing = !state.playing;
   ImGui::SameLine();
   ImGui::Checkbox("Loop", &state.loop);

@@ -405,5 +405,27 @@ TEST_F(PosingE2e, AChosenIkRootSetsTheChain) {
   expectRotation(rotationIn(d, "UpperChest"), glm::dquat(1, 0, 0, 0), 1e-6, "UpperChest outside the chain");
 }
 
+// A file with motion gets the timeline under the 3D view (which gives it the room), and its
+// Play button plays the clip at the replay's fixed 1/60 s per frame.
+TEST_F(PosingE2e, TimelinePlaysAFilesMotion) {
+  KINEMA_REQUIRE_SHARED_DATA();
+  const std::string bvh = sharedDataDir() + "/bvh/cmu_01_01_first720.bvh";
+  // Layout at 1280x800: menu bar 19, status bar 24, timeline 40 px; Play is its first button.
+  const glm::dvec2 play{275, 800 - 24 - 40 + 17};
+  Script s;
+  s.click(play).wait(60).click(play).wait(2);
+  const json d = runEditor(dir_, shotDir(), s, "timeline_play", kSize, bvh);
+  ASSERT_TRUE(d.is_object());
+  EXPECT_EQ(double(d["viewport"]["height"]), 800.0 - 19 - 24 - 40);
+  EXPECT_EQ(d["playback"]["clip"], 0);
+  EXPECT_EQ(d["playback"]["playing"], false);
+  // Play takes effect with the first click's release (frame 5), Pause with the second's
+  // (3 frames after the 60 waited): about 63 frames of 1/60 s, give or take the frame in
+  // which ImGui reports each click.
+  const double t = d["playback"]["time"];
+  EXPECT_GT(t, 59.0 / 60.0);
+  EXPECT_LT(t, 66.0 / 60.0);
+}
+
 }  // namespace
 }  // namespace kinema::test
