@@ -11,9 +11,10 @@ namespace {
 
 struct KeepMesaDriverLoaded {
   KeepMesaDriverLoaded() {
-    for (const char* path : {"/usr/lib/x86_64-linux-gnu/dri/swrast_dri.so", "/usr/lib/x86_64-linux-gnu/dri/kms_swrast_dri.so",
-                             "/usr/lib/aarch64-linux-gnu/dri/swrast_dri.so", "/usr/lib64/dri/swrast_dri.so"})
-      (void)dlopen(path, RTLD_LAZY | RTLD_NODELETE);  // absent on this machine: nothing to keep
+    static const char* const kPaths[] = {"/usr/lib/x86_64-linux-gnu/dri/swrast_dri.so",
+                                         "/usr/lib/x86_64-linux-gnu/dri/kms_swrast_dri.so",
+                                         "/usr/lib/aarch64-linux-gnu/dri/swrast_dri.so", "/usr/lib64/dri/swrast_dri.so"};
+    for (const char* path : kPaths) (void)dlopen(path, RTLD_LAZY | RTLD_NODELETE);  // absent: nothing to keep
   }
 };
 const KeepMesaDriverLoaded keepMesaDriverLoaded;
