@@ -1,5 +1,6 @@
 #include "editor/document.h"
 
+#include <algorithm>
 #include <cstring>
 #include <set>
 
@@ -27,6 +28,26 @@ bool sameTargets(const std::vector<PoseIkTarget>& a, const std::vector<PoseIkTar
   if (a.size() != b.size()) return false;
   for (size_t i = 0; i < a.size(); ++i)
     if (!sameBits(a[i], b[i])) return false;
+  return true;
+}
+
+template <typename T>
+bool sameBitsArray(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+bool sameChannel(const Channel& a, const Channel& b) {
+  return a.joint == b.joint && a.target == b.target && a.interpolation == b.interpolation &&
+         a.eulerOrder == b.eulerOrder && a.property == b.property && sameBitsArray(a.times, b.times) &&
+         sameBitsArray(a.values, b.values) && a.keys == b.keys;
+}
+
+bool sameClip(const Clip& a, const Clip& b) {
+  if (a.name != b.name || a.frameTime != b.frameTime || a.loop != b.loop || a.hasRange != b.hasRange ||
+      a.rangeStart != b.rangeStart || a.rangeEnd != b.rangeEnd || a.channels.size() != b.channels.size())
+    return false;
+  for (size_t i = 0; i < a.channels.size(); ++i)
+    if (!sameChannel(a.channels[i], b.channels[i])) return false;
   return true;
 }
 
@@ -96,7 +117,7 @@ void Document::markSaved() {
 void Document::markModified() { savedReachable_ = false; }
 
 Document::Snapshot Document::capture() const {
-  return Snapshot{scene_.skeleton.names, pose_.local, scene_.ik.limits, targets_, skinning_};
+  return Snapshot{scene_.skeleton.names, pose_.local, scene_.ik.limits, targets_, skinning_, scene_.clips};
 }
 
 void Document::restore(const Snapshot& s) {
@@ -105,11 +126,13 @@ void Document::restore(const Snapshot& s) {
   scene_.ik.limits = s.limits;
   targets_ = s.targets;
   skinning_ = s.skinning;
+  scene_.clips = s.clips;
   syncSkinning();
 }
 
 DocumentEdit Document::editView() {
-  return DocumentEdit{scene_.skeleton, scene_.skeleton.names, pose_, scene_.ik.limits, targets_, skinning_};
+  return DocumentEdit{scene_.skeleton, scene_.skeleton.names, pose_, scene_.ik.limits, targets_, skinning_,
+                      scene_.clips};
 }
 
 std::string Document::runChange(const std::function<std::string(DocumentEdit&)>& change, bool /*driven*/) {
@@ -133,6 +156,10 @@ std::string Document::runChange(const std::function<std::string(DocumentEdit&)>&
     if (!bad.empty()) return "IK target " + std::to_string(i) + ": " + bad;
   }
   if (skinning_.size() != scene_.meshInstances.size()) return "an edit may not add or remove mesh instances";
+  for (size_t c = 0; c < scene_.clips.size(); ++c) {
+    const std::string bad = scene_.clips[c].validate(scene_.skeleton);
+    if (!bad.empty()) return "clip " + std::to_string(c) + ": " + bad;
+  }
   syncSkinning();
   if (autoSolveIk) {
     IkPosingInput in;
@@ -171,6 +198,19 @@ EditRecord Document::diff(const std::string& label, const Snapshot& before) cons
     r.targetsBefore = before.targets;
     r.targetsAfter = targets_;
   }
+  const size_t clipCount = std::max(before.clips.size(), scene_.clips.size());
+  for (size_t c = 0; c < clipCount; ++c) {
+    const Clip* was = c < before.clips.size() ? &before.clips[c] : nullptr;
+    const Clip* now = c < scene_.clips.size() ? &scene_.clips[c] : nullptr;
+    if (was && now && sameClip(*was, *now)) continue;
+    EditRecord::ClipChange change;
+    change.clip = static_cast<int>(c);
+    if (was) change.before = std::make_shared<const Clip>(*was);
+    if (now) change.after = std::make_shared<const Clip>(*now);
+    r.clips.push_back(std::move(change));
+  }
+  r.clipCountBefore = static_cast<int>(before.clips.size());
+  r.clipCountAfter = static_cast<int>(scene_.clips.size());
   return r;
 }
 
@@ -268,8 +308,22 @@ void Document::apply(const EditRecord& r, bool forward) {
     skinning_ = forward ? r.skinningAfter : r.skinningBefore;
     syncSkinning();
   }
+  if (!r.clips.empty()) {
+    scene_.clips.resize(static_cast<size_t>(forward ? r.clipCountAfter : r.clipCountBefore));
+    for (const EditRecord::ClipChange& c : r.clips) {
+      const std::shared_ptr<const Clip>& value = forward ? c.after : c.before;
+      if (value) scene_.clips[c.clip] = *value;
+    }
+  }
   ikReports_.clear();
   ++changeCount_;
+}
+
+bool Document::setAnimatedPose(const Pose& pose) {
+  if (drag_ || pose.size() != scene_.skeleton.size() || !pose.validate(scene_.skeleton).empty()) return false;
+  pose_ = pose;
+  ikReports_.clear();
+  return true;
 }
 
 bool Document::canUndo() const { return !drag_ && history_.canUndo(); }

@@ -29,6 +29,7 @@ struct DocumentEdit {
   std::vector<JointLimit>& limits;     // empty or one per joint
   std::vector<PoseIkTarget>& targets;  // the IK targets
   std::vector<SkinningMethod>& skinning;  // one per scene mesh instance (linear blend / dual quaternion)
+  std::vector<Clip>& clips;            // the scene's clips: keys, ranges, names (validated after the change)
 };
 
 // The scene being edited plus everything the editor adds to it: the working pose, the IK
@@ -92,6 +93,11 @@ class Document {
   void setDrivenIkTarget(int target) { drivenTarget_ = target; }
   int drivenIkTarget() const { return drivenTarget_; }
 
+  // The working pose set from the animation at the current frame (scrubbing, stepping,
+  // pausing): not an undo step and not a change to save, as Blender re-evaluates the action
+  // on a frame change. Refused (false) during a drag or when the pose does not fit.
+  bool setAnimatedPose(const Pose& pose);
+
   // ---- history ----
   bool canUndo() const;
   bool canRedo() const;
@@ -117,6 +123,7 @@ class Document {
     std::vector<JointLimit> limits;
     std::vector<PoseIkTarget> targets;
     std::vector<SkinningMethod> skinning;
+    std::vector<Clip> clips;
   };
   struct Drag {
     std::string label;

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "anim/clip.h"
 #include "core/mesh.h"
 #include "core/transform.h"
 #include "editor/pose_ik_target.h"
@@ -38,9 +39,17 @@ struct EditRecord {
   bool skinningChanged = false;  // the mesh instances' skinning methods
   std::vector<SkinningMethod> skinningBefore, skinningAfter;
   std::shared_ptr<const SceneMeshes> meshesBefore, meshesAfter;  // both or neither
+  // Clips (keys, ranges, names): each clip that differs, as a whole before and after
+  // (nullptr where the clip does not exist on that side), and the clip counts.
+  struct ClipChange {
+    int clip = -1;
+    std::shared_ptr<const Clip> before, after;
+  };
+  std::vector<ClipChange> clips;
+  int clipCountBefore = 0, clipCountAfter = 0;
 
   bool empty() const { return pose.empty() && names.empty() && !limitsChanged && !targetsChanged && !skinningChanged &&
-                        !meshesBefore; }
+                        !meshesBefore && clips.empty(); }
 };
 
 // A linear undo history: entries [0, position) are applied, [position, size) can be redone.

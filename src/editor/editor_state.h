@@ -5,6 +5,7 @@
 
 #include "core/pose.h"
 #include "editor/document.h"
+#include "editor/bottom_panels.h"
 #include "editor/panel_state.h"
 #include "io/scene.h"
 #include "render/camera.h"
@@ -39,6 +40,9 @@ struct ToolState {
   std::string typed;        // numbers typed during R (degrees)
   glm::vec3 startPoint{0.0f};  // Grab / IkDrag: where the dragged point was at the start
 };
+
+// The editor shown in the area between the 3D view and the timeline (Blender's bottom area).
+enum class AnimationEditorKind { None, DopeSheet, CurveEditor };
 
 // Display switches of the viewport (panels and menus toggle them).
 struct ViewOptions {
@@ -88,6 +92,7 @@ struct EditorState {
   int hoveredJoint = -1;   // under the mouse (drawn highlighted)
   int hoveredIkTarget = -1;
   EditorRequests requests;
+  AnimationEditorKind animationEditor = AnimationEditorKind::None;
   std::string statusMessage;  // one line for the status bar (errors included)
 
   // Derived each frame from the fields above: the document's pose, or the clip while it plays.
@@ -98,6 +103,14 @@ struct EditorState {
   double duration() const;       // the clip's length in seconds, 0 without motion
   double frameTime() const;      // the clip's frame time, or 1/30 s
   long long frameCount() const;  // frames on the clip's grid, at least 1
+  // The panels under the 3D view this frame (layout: panel_layout.h).
+  bool timelineShown() const { return hasMotion(); }
+  BottomPanels bottomPanels() const {
+    BottomPanels b;
+    b.timeline = timelineShown();
+    b.animationEditor = animationEditor != AnimationEditorKind::None;
+    return b;
+  }
 };
 
 // state.world: the clip sampled at state.time while it plays (the document is not edited by

@@ -289,7 +289,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     if (error.empty()) error = uploadMeshes();
     long long uploadedMeshRevision = state.doc.meshRevision();  // a bind replaces the meshes
     glfwGetWindowSize(window, &ww, &wh);
-    const PanelRect startRect = viewportRect(ImVec2(float(ww), float(wh)), state.hasMotion());
+    const PanelRect startRect = viewportRect(ImVec2(float(ww), float(wh)), state.bottomPanels());
     state.camera = defaultCamera(viewBounds(), startRect.w / startRect.h);
     size_t nextScripted = 0;
     const long long lastScriptFrame = o.script.empty() ? 0 : o.script.back().frame;
@@ -310,7 +310,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       glfwGetFramebufferSize(window, &fbw, &fbh);
       // The 3D view is the free area between the panels (the empty-frame measurement has none).
       const PanelRect vp = o.emptyFrame ? PanelRect{0.0f, 0.0f, float(std::max(ww, 1)), float(std::max(wh, 1))}
-                                        : viewportRect(ImVec2(float(ww), float(wh)), state.hasMotion());
+                                        : viewportRect(ImVec2(float(ww), float(wh)), state.bottomPanels());
       state.viewportRect = glm::vec4(vp.x, vp.y, vp.w, vp.h);
       const ViewportView view = ViewportView::of(state.camera, glm::vec2(vp.w, vp.h), glm::vec2(vp.x, vp.y));
 

@@ -25,7 +25,7 @@ void replaceDocument(EditorState& state, Document doc) {
   state.playing = false;
   state.sampleClip = false;
   // The new file framed from the current direction, as Home does.
-  const PanelRect view = viewportRect(ImGui::GetIO().DisplaySize, state.hasMotion());
+  const PanelRect view = viewportRect(ImGui::GetIO().DisplaySize, state.bottomPanels());
   ViewportController().frameAll(state.camera, jointBounds(state.doc.worldTransforms()), view.w / view.h);
   PanelState& p = state.panels;
   p.collapsed.clear();

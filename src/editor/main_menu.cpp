@@ -107,7 +107,7 @@ void handleMenuShortcuts(EditorState& state) {
 }
 
 float viewAspect(const EditorState& state) {  // of the 3D view between the panels, which framing fills
-  const PanelRect r = viewportRect(ImGui::GetIO().DisplaySize, state.hasMotion());
+  const PanelRect r = viewportRect(ImGui::GetIO().DisplaySize, state.bottomPanels());
   return r.w / r.h;
 }
 

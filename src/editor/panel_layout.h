@@ -1,6 +1,8 @@
 #pragma once
 #include <imgui.h>
 
+#include "editor/bottom_panels.h"
+
 namespace kinema {
 
 // The editor's fixed panel layout (pixels, origin top left): outliner and history on the
@@ -13,7 +15,6 @@ struct PanelRect {
 
 constexpr float kMenuBarHeight = 19.0f;  // ImGui 1.86's default font and frame padding
 constexpr float kStatusBarHeight = 24.0f;
-constexpr float kTimelineHeight = 40.0f;  // under the 3D view, only for scenes with motion
 constexpr float kLeftColumnWidth = 250.0f;
 constexpr float kRightColumnWidth = 310.0f;
 constexpr float kOutlinerIndent = 12.0f;
@@ -40,17 +41,27 @@ inline PanelRect statusBarRect(ImVec2 display) {
   return {0.0f, display.y - kStatusBarHeight, display.x, kStatusBarHeight};
 }
 // The 3D view (Blender's view region): the free area between the columns, the menu bar and
-// the status bar (and the timeline when the scene has motion); at least 1 px each way so a
-// tiny window still has a camera aspect.
-inline PanelRect viewportRect(ImVec2 display, bool withTimeline = false) {
+// the status bar (and the bottom panels when shown); at least 1 px each way so a tiny
+// window still has a camera aspect.
+inline PanelRect viewportRect(ImVec2 display, BottomPanels bottom) {
   const float w = display.x - kLeftColumnWidth - kRightColumnWidth,
-              h = panelAreaHeight(display) - (withTimeline ? kTimelineHeight : 0.0f);
+              h = panelAreaHeight(display) - bottomPanelsHeight(bottom);
   return {kLeftColumnWidth, kMenuBarHeight, w > 1.0f ? w : 1.0f, h > 1.0f ? h : 1.0f};
 }
-// The timeline (Blender's): a strip under the 3D view, as wide as it.
+inline PanelRect viewportRect(ImVec2 display, bool withTimeline = false) {
+  BottomPanels b;
+  b.timeline = withTimeline;
+  return viewportRect(display, b);
+}
+// The timeline (Blender's): a strip just above the status bar, as wide as the 3D view.
 inline PanelRect timelineRect(ImVec2 display) {
-  const PanelRect v = viewportRect(display, true);
-  return {v.x, v.y + v.h, v.w, kTimelineHeight};
+  const float w = display.x - kLeftColumnWidth - kRightColumnWidth;
+  return {kLeftColumnWidth, display.y - kStatusBarHeight - kTimelineHeight, w > 1.0f ? w : 1.0f, kTimelineHeight};
+}
+// The dope sheet / curve editor: between the 3D view and the timeline, as wide as the view.
+inline PanelRect animationEditorRect(ImVec2 display, BottomPanels bottom) {
+  const PanelRect v = viewportRect(display, bottom);
+  return {v.x, v.y + v.h, v.w, kAnimationEditorHeight};
 }
 
 }  // namespace kinema

@@ -1,0 +1,76 @@
+#pragma once
+// Teaching figures as 2D vector drawings (issue 10): the same primitives are drawn by the
+// editor's "Compare solvers" view (ImGui draw lists) and rasterised on the CPU for
+// `kinema demo` (PNG for slides, white background). No OpenGL.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/math.h"
+#include "ik/solver_comparison.h"
+#include "io/image.h"
+
+namespace kinema {
+
+using Rgba = std::array<std::uint8_t, 4>;
+
+struct FigureLine {
+  glm::vec2 a{0.0f}, b{0.0f};
+  Rgba color{0, 0, 0, 255};
+  float width = 2.0f;  // pixels
+  bool dashed = false;
+};
+struct FigureCircle {
+  glm::vec2 center{0.0f};
+  float radius = 1.0f;      // figure units (a joint dot: pixelRadius instead)
+  float pixelRadius = 0.0f; // > 0: a dot of this many pixels whatever the zoom
+  Rgba color{0, 0, 0, 255};
+  float width = 2.0f;
+  bool filled = false;
+};
+struct FigurePolygon {  // filled (reach regions, unreachable areas)
+  std::vector<glm::vec2> points;
+  Rgba color{0, 0, 0, 64};
+};
+struct FigureText {
+  glm::vec2 at{0.0f};  // figure units, text's top left
+  std::string text;
+  Rgba color{0, 0, 0, 255};
+};
+
+// In figure units (the chain's own, Y up); a view maps [min, max] into its pixels keeping
+// the aspect ratio. Drawn in this order: polygons, circles, lines, texts.
+struct Figure {
+  glm::vec2 min{-1.0f}, max{1.0f};
+  std::vector<FigurePolygon> polygons;
+  std::vector<FigureCircle> circles;
+  std::vector<FigureLine> lines;
+  std::vector<FigureText> texts;
+};
+
+struct FigureStyle {
+  bool slides = true;            // true: clear colours on white; false: the editor's dark theme
+  bool showGhost = true;         // the previous sub-step, faded
+  bool showReach = true;         // the reach circle (sum of bone lengths)
+  glm::vec3 viewDirection{0.0f, 0.0f, 1.0f};  // 3D chains: projected along this onto the figure plane
+};
+
+// Run `run` of the comparison at its cursor: the chain, the target, the ghost, and what the
+// step did (CCD: joint->effector and joint->target lines with the angle; FABRIK: the
+// target-anchored backward chain and the root-anchored forward chain in their colours;
+// two-bone: unreachable regions shaded and both elbow solutions), titled with the solver,
+// the iteration and the error.
+Figure drawSolverStep(const SolverComparison& comparison, int run, const FigureStyle& style);
+
+// Error against iteration, log scale, one series per run, in the solvers' colours.
+Figure drawConvergencePlot(const SolverComparison& comparison, const FigureStyle& style);
+
+// The colour each solver is drawn in (figures, plot, editor).
+Rgba solverColor(IkSolver solver);
+
+// Anti-aliased CPU rasterisation into a width x height RGBA image (background white when
+// style.slides, else dark).
+Image rasterizeFigure(const Figure& figure, int width, int height, bool slides = true);
+
+}  // namespace kinema
