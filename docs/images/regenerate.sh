@@ -19,3 +19,11 @@ for shot in editor_fk_gizmo editor_ik_drag; do
     --script "$root/docs/images/$shot.jsonl" --frame-count 40 --screenshot "$root/docs/images/$shot.png"
 done
 rm -rf "$tmp"
+# Teach > Compare Solvers (docs/teaching-editor.md): the editor opened on a preset, stepped by
+# recorded keys.
+tmp=$(mktemp -d)
+XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp xvfb-run -a -s "-screen 0 1280x800x24" "$kinema" edit --compare fabrik-steps \
+  --size 1280x720 --script "$root/docs/images/compare_solvers.jsonl" --frame-count 10 --screenshot "$root/docs/images/compare_solvers.png"
+XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp xvfb-run -a -s "-screen 0 1280x800x24" "$kinema" edit --compare near-root \
+  --size 1280x720 --script "$root/docs/images/compare_solvers_near_root.jsonl" --frame-count 10 --screenshot "$root/docs/images/compare_solvers_near_root.png"
+rm -rf "$tmp"

@@ -39,13 +39,14 @@ glm::vec2 FigureViewMap::toFigure(glm::vec2 p) const {
 }
 
 FigureProjection FigureProjection::along(glm::vec3 d) {
+  // The same frame as solver_figure's projectToFigure (a test holds them equal): the board
+  // (x, y) when looking along Z either way; else Y stays up (Z when looking along Y).
   FigureProjection p;
   const float len = glm::length(d);
   if (!(len > 1e-6f)) return p;
   d /= len;
-  // Y stays up on screen unless the view looks straight down or up (then -Z is up).
-  glm::vec3 upHint(0, 1, 0);
-  if (std::abs(d.y) > 0.999f) upHint = glm::vec3(0, 0, d.y > 0 ? 1.0f : -1.0f);
+  if (std::abs(d.z) > 0.9999f) return p;
+  const glm::vec3 upHint = std::abs(d.y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
   p.right = glm::normalize(glm::cross(upHint, d));
   p.up = glm::cross(d, p.right);
   return p;
@@ -261,7 +262,12 @@ bool handleCompareKey(CompareMode& m, int key, int mods) {
 
 bool handleCompareEvent(CompareMode& m, const InputEvent& e, bool mouseCaptured, bool keyboardCaptured) {
   switch (e.type) {
-    case InputEventType::KeyDown: return !keyboardCaptured && handleCompareKey(m, e.key, e.mods);
+    case InputEventType::KeyDown:
+      if (e.key == keyCodeFromName("LEFT_SHIFT") || e.key == keyCodeFromName("RIGHT_SHIFT")) m.shiftHeld = true;
+      return !keyboardCaptured && handleCompareKey(m, e.key, e.mods | (m.shiftHeld ? kModShift : 0));
+    case InputEventType::KeyUp:
+      if (e.key == keyCodeFromName("LEFT_SHIFT") || e.key == keyCodeFromName("RIGHT_SHIFT")) m.shiftHeld = false;
+      return false;
     case InputEventType::ButtonDown: return !mouseCaptured && e.button == 0 && compareMouseDown(m, {e.x, e.y});
     case InputEventType::MouseMove: return compareMouseMove(m, {e.x, e.y});
     case InputEventType::ButtonUp: return e.button == 0 && compareMouseUp(m);

@@ -89,6 +89,7 @@ struct CompareMode {
   CompareDrag drag = CompareDrag::None;
   int dragView = -1, dragJoint = -1;
   glm::vec2 lastMouse{0.0f};
+  bool shiftHeld = false;  // a Shift key is down (scripted keys carry no mods)
 
   bool ready() const { return !comparison.runs.empty(); }
   glm::vec3 viewDirection() const { return view3d ? orbitViewDirection(yaw, pitch) : glm::vec3(0, 0, 1); }

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "editor/panel_layout.h"
 #include "render/solver_figure.h"
@@ -26,20 +27,40 @@ FigureStyle editorStyle(const CompareMode& m) {
   return s;
 }
 
+// A polygon filled by the even-odd rule (the figures' regions may have holes: a frame with
+// the reach circle cut out), as horizontal spans 2 px high.
+void fillEvenOdd(ImDrawList* dl, const FigurePolygon& poly, const FigureViewMap& map, const CompareRect& r) {
+  if (poly.points.size() < 3) return;
+  std::vector<glm::vec2> px;
+  float top = r.y + r.h, bottom = r.y;
+  for (const glm::vec2& q : poly.points) {
+    px.push_back(map.toPixel(q));
+    top = std::min(top, px.back().y);
+    bottom = std::max(bottom, px.back().y);
+  }
+  top = std::max(top, r.y);
+  bottom = std::min(bottom, r.y + r.h);
+  std::vector<float> xs;
+  for (float y = std::floor(top); y < bottom; y += 2.0f) {
+    const float yc = y + 1.0f;  // the span's centre row
+    xs.clear();
+    for (size_t i = 0; i < px.size(); ++i) {
+      const glm::vec2 a = px[i], b = px[(i + 1) % px.size()];
+      if ((a.y <= yc) != (b.y <= yc)) xs.push_back(a.x + (yc - a.y) / (b.y - a.y) * (b.x - a.x));
+    }
+    std::sort(xs.begin(), xs.end());
+    for (size_t k = 0; k + 1 < xs.size(); k += 2) {
+      const float x0 = std::max(xs[k], r.x), x1 = std::min(xs[k + 1], r.x + r.w);
+      if (x1 > x0) dl->AddRectFilled(ImVec2(x0, y), ImVec2(x1, y + 2.0f), color(poly.color));
+    }
+  }
+}
+
 // A figure's primitives in the rect through the map, in Figure's order (polygons, circles,
 // lines, texts), clipped to the rect.
 void drawFigure(ImDrawList* dl, const Figure& f, const FigureViewMap& map, const CompareRect& r) {
   dl->PushClipRect(ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h), true);
-  for (const FigurePolygon& p : f.polygons) {
-    if (p.points.size() < 3) continue;
-    // A fan from the centroid: the figures' regions are star-shaped about it (discs, bands).
-    glm::vec2 c(0.0f);
-    for (const glm::vec2& q : p.points) c += q;
-    c /= float(p.points.size());
-    for (size_t i = 0; i < p.points.size(); ++i)
-      dl->AddTriangleFilled(im(map.toPixel(c)), im(map.toPixel(p.points[i])),
-                            im(map.toPixel(p.points[(i + 1) % p.points.size()])), color(p.color));
-  }
+  for (const FigurePolygon& p : f.polygons) fillEvenOdd(dl, p, map, r);
   for (const FigureCircle& c : f.circles) {
     const float radius = c.pixelRadius > 0 ? c.pixelRadius : c.radius * map.pixelsPerUnit;
     const int segments = std::clamp(int(radius * 0.5f), 12, 96);

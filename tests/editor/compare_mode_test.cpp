@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "editor/compare_mode.h"
+#include "render/solver_figure.h"
 
 namespace kinema {
 namespace {
@@ -47,6 +48,22 @@ TEST(CompareMode, ProjectionIsTheBoardForThePlanarViewAndOrthonormalOtherwise) {
     EXPECT_NEAR(glm::dot(q.right, q.up), 0.0f, 1e-5f);
     expectVec2(q.project(n * 5.0f), {0, 0}, 1e-4f, "the view direction collapses to a point");
     expectVec3(glm::cross(q.right, q.up), n, 1e-5f, "right x up = towards the viewer, as X x Y = Z");
+  }
+}
+
+TEST(CompareMode, ProjectionMatchesTheFiguresOwn) {
+  // Hit-tests must land where drawSolverStep draws: the same projection for every view.
+  const glm::vec3 p(0.7f, -1.3f, 2.1f);
+  for (float yaw = -3.0f; yaw <= 3.0f; yaw += 0.5f)
+    for (float pitch : {-1.5f, -0.7f, 0.0f, 0.4f, 1.5f}) {
+      FigureStyle style;
+      style.viewDirection = orbitViewDirection(yaw, pitch);
+      expectVec2(FigureProjection::along(style.viewDirection).project(p), projectToFigure(p, style), 1e-5f, "orbit");
+    }
+  for (glm::vec3 d : {glm::vec3(0, 0, 1), glm::vec3(0, 0, -1), glm::vec3(0, 1, 0), glm::vec3(0, -1, 0)}) {
+    FigureStyle style;
+    style.viewDirection = d;
+    expectVec2(FigureProjection::along(d).project(p), projectToFigure(p, style), 1e-5f, "axis");
   }
 }
 
@@ -104,7 +121,9 @@ TEST(CompareMode, LayoutPutsTheViewsSideBySideAboveThePlot) {
       EXPECT_GE(l.views[i].x, area.x + kCompareSideWidth);
       EXPECT_LE(l.views[i].x + l.views[i].w, area.x + area.w + 0.5f);
       EXPECT_FLOAT_EQ(l.views[i].y, area.y + kCompareToolbarHeight);
-      if (i > 0) EXPECT_FLOAT_EQ(l.views[i].x, l.views[i - 1].x + l.views[i - 1].w);  // side by side
+      if (i > 0) {
+        EXPECT_FLOAT_EQ(l.views[i].x, l.views[i - 1].x + l.views[i - 1].w);  // side by side
+      }
       EXPECT_FLOAT_EQ(l.views[i].w, l.views[0].w);  // comparable: the same size
     }
     EXPECT_FLOAT_EQ(l.plot.y, l.views[0].y + l.views[0].h);
@@ -134,7 +153,9 @@ TEST(CompareMode, KeysStepResetAndRunEverySolver) {
   EXPECT_TRUE(handleCompareKey(m, right, kModShift));  // to the end of iteration 1
   for (const SolverRun& r : m.comparison.runs) {
     EXPECT_EQ(r.current().iteration, 1) << toString(r.solver);
-    if (!r.finished()) EXPECT_EQ(r.trace.entries[r.cursor + 1].iteration, 2) << toString(r.solver);
+    if (!r.finished()) {
+      EXPECT_EQ(r.trace.entries[r.cursor + 1].iteration, 2) << toString(r.solver);
+    }
   }
   EXPECT_TRUE(handleCompareKey(m, keyCodeFromName("R"), 0));
   for (const SolverRun& r : m.comparison.runs) EXPECT_EQ(r.cursor, 0);
