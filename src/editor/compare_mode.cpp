@@ -74,7 +74,7 @@ int hitCompareHandle(const std::vector<glm::vec2>& joints, glm::vec2 target, glm
 int PlayClock::advance(double dt, double stepsPerSecond) {
   if (!(dt > 0.0) || !(stepsPerSecond > 0.0)) return 0;
   carry += dt * stepsPerSecond;
-  const double whole = std::floor(carry);
+  const double whole = std::floor(carry + 1e-9);  // 60 x (4/60) is 4 steps, not 3.999...
   carry -= whole;
   return static_cast<int>(std::min(whole, 1000.0));
 }
@@ -268,8 +268,10 @@ bool handleCompareEvent(CompareMode& m, const InputEvent& e, bool mouseCaptured,
     case InputEventType::KeyUp:
       if (e.key == keyCodeFromName("LEFT_SHIFT") || e.key == keyCodeFromName("RIGHT_SHIFT")) m.shiftHeld = false;
       return false;
-    case InputEventType::ButtonDown: return !mouseCaptured && e.button == 0 && compareMouseDown(m, {e.x, e.y});
-    case InputEventType::MouseMove: return compareMouseMove(m, {e.x, e.y});
+    case InputEventType::ButtonDown: return !mouseCaptured && e.button == 0 && compareMouseDown(m, m.mouse);
+    case InputEventType::MouseMove:
+      m.mouse = {e.x, e.y};
+      return compareMouseMove(m, m.mouse);
     case InputEventType::ButtonUp: return e.button == 0 && compareMouseUp(m);
     default: return false;
   }

@@ -89,6 +89,7 @@ struct CompareMode {
   CompareDrag drag = CompareDrag::None;
   int dragView = -1, dragJoint = -1;
   glm::vec2 lastMouse{0.0f};
+  glm::vec2 mouse{0.0f};   // the last mouse position (scripted button events carry none)
   bool shiftHeld = false;  // a Shift key is down (scripted keys carry no mods)
 
   bool ready() const { return !comparison.runs.empty(); }

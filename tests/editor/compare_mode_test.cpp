@@ -150,11 +150,13 @@ TEST(CompareMode, KeysStepResetAndRunEverySolver) {
   const int right = keyCodeFromName("RIGHT");
   EXPECT_TRUE(handleCompareKey(m, right, 0));
   for (const SolverRun& r : m.comparison.runs) EXPECT_EQ(r.cursor, 1) << toString(r.solver);
-  EXPECT_TRUE(handleCompareKey(m, right, kModShift));  // to the end of iteration 1
+  // Shift+Right from inside iteration 1: to the last entry of iteration 2 (solver_comparison.h).
+  for (const SolverRun& r : m.comparison.runs) ASSERT_EQ(r.current().iteration, 1) << toString(r.solver);
+  EXPECT_TRUE(handleCompareKey(m, right, kModShift));
   for (const SolverRun& r : m.comparison.runs) {
-    EXPECT_EQ(r.current().iteration, 1) << toString(r.solver);
+    EXPECT_EQ(r.current().iteration, 2) << toString(r.solver);
     if (!r.finished()) {
-      EXPECT_EQ(r.trace.entries[r.cursor + 1].iteration, 2) << toString(r.solver);
+      EXPECT_EQ(r.trace.entries[r.cursor + 1].iteration, 3) << toString(r.solver);
     }
   }
   EXPECT_TRUE(handleCompareKey(m, keyCodeFromName("R"), 0));
