@@ -214,6 +214,53 @@ TEST_F(CompareE2e, ThePlotShowsOneSeriesPerSolver) {
   }
 }
 
+// Pixels read off a 1280x720 screenshot (ImGui 1.86's default font): the Teach menu and its
+// item, the toolbar's preset combo and its sixth row ("A target near the root"), the 3D radio.
+const glm::dvec2 kTeachMenu{205, 9}, kCompareItem{240, 33}, kPresetCombo{385, 36}, kNearRootRow{330, 145};
+const glm::dvec2 k3dRadio{574, 59};
+
+TEST_F(CompareE2e, TheTeachMenuOpensTheModeAndTheComboChoosesAPreset) {
+  Script s;
+  s.menu(kTeachMenu, kCompareItem).click(kPresetCombo).wait(2).click(kNearRootRow).wait(2).key("RIGHT").wait(2);
+  const json d = runEditor(dir_, shotDir(), s, "menu_near_root");
+  ASSERT_TRUE(d.is_object());
+  EXPECT_EQ(d["compare"]["active"], true);
+  EXPECT_EQ(d["compare"]["preset"], "near-root");
+  const TeachingCase setup = presetWithTarget("near-root", d["compare"]["target"]);
+  expectNear(vec3(d["compare"]["target"]), glm::dvec3(glm::vec3(findTeachingPreset("near-root")->target)), 1e-6,
+             "the preset's own target");
+  for (IkSolver solver : setup.solvers) {
+    const json* state = solverIn(d, toString(solver));
+    ASSERT_NE(state, nullptr);
+    expectTraceEntry(*state, cliTrace(dir_, setup, solver), 1, std::string("near-root, ") + toString(solver));
+  }
+}
+
+TEST_F(CompareE2e, The3dSwitchSolvesBallJointsAndADragOrbitsTheViews) {
+  // 3D, then a left drag on empty space in the first view: 60 px right, 20 px up.
+  const glm::dvec2 a{300, 420}, b{360, 400};
+  Script s;
+  s.wait(2).click(k3dRadio).wait(2).move(a).wait(1).down().path(a, b).wait(1).up().wait(2);
+  const json d = run(s, "orbit_3d", "ccd-steps");
+  ASSERT_TRUE(d.is_object());
+  EXPECT_EQ(d["compare"]["view"], "3d");
+  EXPECT_EQ(d["compare"]["planar"], false);
+  // Orbit: yaw -0.01 rad per px right, pitch +0.01 per px down -> yaw -0.6, pitch -0.2.
+  const double yaw = -0.6, pitch = -0.2;
+  expectNear(vec3(d["compare"]["view_direction"]),
+             {std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw)}, 1e-4,
+             "the view direction after the orbit");
+  TeachingCase setup = presetWithTarget("ccd-steps", d["compare"]["target"]);
+  setup.chain.planar = false;
+  for (IkSolver solver : setup.solvers) {
+    const json* state = solverIn(d, toString(solver));
+    ASSERT_NE(state, nullptr);
+    const json cli = cliTrace(dir_, setup, solver);
+    expectTraceEntry(*state, cli, 0, std::string("3D, ") + toString(solver));
+    EXPECT_EQ((*state)["iterations"], cli["iterations"]);
+  }
+}
+
 TEST_F(CompareE2e, AnUnknownPresetIsABadUsage) {
   std::string out, err;
   const int rc = runCommand(std::string(KINEMA_BINARY) + " edit --compare no-such-case --frame-count 1", &out, &err);
