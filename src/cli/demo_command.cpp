@@ -157,7 +157,7 @@ int runPreset(const TeachingCase& preset, const DemoOptions& o, int width, int h
   numbers["solvers"] = std::move(solvers);
   const Image plot = rasterizeFigure(drawConvergencePlot(cmp, style), width, static_cast<int>(width / 1.6f), true);
   if (std::string bad = savePng((out / "convergence.png").string(), plot); !bad.empty()) return badInput(bad);
-  for (const auto& [file, text] : {std::pair<const char*, std::string>{"numbers.json", numbers.dump(2) + "\n"},
+  for (const auto& [file, text] : {std::pair<const char*, std::string>{"numbers.json", numbers.dump() + "\n"},
                                    {"numbers.csv", csv}, {"commands.txt", commands}})
     if (std::string bad = writeText(out / file, text); !bad.empty()) return badInput(bad);
   std::printf("wrote %s: %zu solvers, convergence.png, numbers.json, numbers.csv, case.kinema, commands.txt\n",
@@ -169,7 +169,7 @@ std::string solverLabel(IkSolver s) {
   switch (s) {
     case IkSolver::Ccd: return "CCD";
     case IkSolver::Fabrik: return "FABRIK";
-    case IkSolver::JacobianTranspose: return "J transpose";
+    case IkSolver::JacobianTranspose: return "J^T";
     case IkSolver::JacobianPinv: return "J pinv";
     case IkSolver::JacobianDls: return "J DLS";
     default: return toString(s);
@@ -191,7 +191,8 @@ Figure solverTableChart(const std::vector<SolverTableRow>& rows, const SolverTab
       if (v > 0) lo = std::min(lo, v), hi = std::max(hi, v);
     }
     if (hi <= 0) lo = 0.1, hi = 1;
-    const int d0 = static_cast<int>(std::floor(std::log10(lo))), d1 = std::max(d0 + 1, static_cast<int>(std::ceil(std::log10(hi))));
+    // A decade below the smallest bar, so a mean of exactly 1 still shows.
+    const int d0 = static_cast<int>(std::floor(std::log10(lo * 0.999))), d1 = std::max(d0 + 1, static_cast<int>(std::ceil(std::log10(hi))));
     auto y = [&](double v) {
       return y0 + (y1 - y0) * static_cast<float>((std::log10(std::max(v, std::pow(10.0, d0))) - d0) / (d1 - d0));
     };

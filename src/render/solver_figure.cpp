@@ -111,7 +111,9 @@ void addElbowSolutions(Figure& f, const SolverComparison& c, const FigureStyle& 
   const glm::vec2 a = f.min - extra, b = f.max + extra;
   outside.points = {{b.x, base.y}, {b.x, b.y}, {a.x, b.y}, {a.x, a.y}, {b.x, a.y}, {b.x, base.y}};
   for (int i = 0; i <= 96; ++i) {
-    const float ang = -glm::two_pi<float>() * static_cast<float>(i) / 96.0f;
+    // The seam must be exactly horizontal at both ends (sin(2 pi) is not 0 in floats), or
+    // one row of samples sees a crossing there and leaves a streak.
+    const float ang = -glm::two_pi<float>() * static_cast<float>(i % 96) / 96.0f;
     outside.points.push_back(base + outer * glm::vec2(std::cos(ang), std::sin(ang)));
   }
   f.polygons.push_back(outside);
@@ -264,7 +266,7 @@ Figure drawSolverStep(const SolverComparison& c, int runIndex, const FigureStyle
   } else if (e.step == IkStep::TwoBone) {
     what = "law of cosines: solved in one step";
   }
-  addChain(f, now, chainColor, 3.5f, false, 4.5f);
+  addChain(f, now, chainColor, 3.5f, false, now.size() > 8 ? 3.0f : 4.5f);  // long chains: smaller dots
   FigureCircle t;
   t.center = target;
   t.pixelRadius = 8.0f;
