@@ -6,14 +6,20 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 namespace kinema {
 
 namespace {
 
 std::string number(float v) {
+  // The shortest text that reads back as the same float (the CLI parses it as a double
+  // and rounds to float), so the printed command reproduces the case exactly.
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(v));
+  for (int digits = 6; digits <= 9; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, static_cast<double>(v));
+    if (static_cast<float>(std::strtod(buf, nullptr)) == v) break;
+  }
   return buf;
 }
 

@@ -89,10 +89,10 @@ std::vector<TeachingCase> makePresets() {
     c.name = "near-root";
     c.title = "A target near the root";
     c.description =
-        "The chain must fold back on itself: CCD's first turns swing the effector around the root and "
-        "FABRIK's passes zig-zag before they settle.";
+        "The chain must fold back towards its own root: FABRIK's passes alternate between a chain hanging "
+        "from the target and one pinned to the base and need more iterations here than CCD's sweeps.";
     c.chain = chainOf({0.7f, 0.6f, 0.5f, 0.4f}, {0.3f, 0.3f, 0.3f, 0.3f});
-    c.target = {0.15f, -0.2f, 0.0f};
+    c.target = {0.3f, 0.1f, 0.0f};
     c.solvers = {IkSolver::Ccd, IkSolver::Fabrik, IkSolver::JacobianDls};
     out.push_back(c);
   }
@@ -113,14 +113,15 @@ std::vector<TeachingCase> makePresets() {
     c.name = "hinge-limits";
     c.title = "Hinges limited to +-60 degrees";
     c.description =
-        "Every joint may bend at most 60 degrees either way from its parent bone. Pure FABRIK passes "
-        "(no DLS finish) clamp each joint as they go and crawl near the goal, so FABRIK is slow here; CCD "
-        "clamps each turn and still converges.";
+        "Every joint may bend at most 60 degrees either way from its parent bone and the target needs the "
+        "root near its limit: CCD's clamped turns crawl (tens of sweeps). FABRIK runs pure passes here (the "
+        "library's DLS finish after 10 passes is off), clamping every joint as it goes; with limits its "
+        "passes can crawl too, which is why the library normally hands over to DLS.";
     c.chain = seedChain();
     c.chain.limits.resize(4);
     const float l = glm::radians(60.0f);
     for (int j = 0; j < 3; ++j) c.chain.limits[j] = JointLimit::hinge({0.0f, 0.0f, 1.0f}, -l, l);
-    c.target = {-0.6f, 1.4f, 0.0f};
+    c.target = {0.42f, 2.19f, 0.0f};
     c.solvers = {IkSolver::Ccd, IkSolver::Fabrik};
     c.settings.fabrikFinishAfter = 0;
     out.push_back(c);
