@@ -214,6 +214,36 @@ TEST_F(CompareE2e, ThePlotShowsOneSeriesPerSolver) {
   }
 }
 
+TEST_F(CompareE2e, DraggingAJointSetsTheStartPoseOfEverySolver) {
+  Script idle;
+  idle.wait(2);
+  const json before = run(idle, "joint_before", "ccd-steps");
+  ASSERT_TRUE(before.is_object());
+  const json& c = before["compare"];
+  const glm::dvec3 base = vec3(c["base"]), joint1 = vec3(c["solvers"][0]["positions"][1]);
+  // Joint 1 dragged to one unit straight above the base: bone 1 turns to +Y (pi/2 from +X).
+  const glm::dvec2 from = figurePixel(c, 0, {joint1.x, joint1.y}), to = figurePixel(c, 0, {base.x, base.y + 1.0});
+  Script s;
+  s.wait(2).move(from).wait(1).down().path(from, to).wait(1).up().wait(2);
+  const json d = run(s, "joint_drag", "ccd-steps");
+  ASSERT_TRUE(d.is_object());
+  const json& angles = d["compare"]["start_angles"];
+  ASSERT_EQ(angles.size(), c["start_angles"].size());
+  EXPECT_NEAR(double(angles[0]), M_PI / 2, 1e-3);
+  for (size_t i = 1; i < angles.size(); ++i) EXPECT_EQ(angles[i], c["start_angles"][i]) << "bone " << i;
+  TeachingCase setup = presetWithTarget("ccd-steps", d["compare"]["target"]);
+  for (size_t i = 0; i < angles.size(); ++i) setup.chain.startAngles[i] = angles[i].get<float>();
+  for (IkSolver solver : setup.solvers) {
+    const json* state = solverIn(d, toString(solver));
+    ASSERT_NE(state, nullptr);
+    const json cli = cliTrace(dir_, setup, solver);
+    expectTraceEntry(*state, cli, 0, std::string("after the joint drag, ") + toString(solver));
+    EXPECT_EQ((*state)["iterations"], cli["iterations"]);
+    expectNear(vec3((*state)["positions"][1]), base + glm::dvec3(0, setup.chain.boneLengths[0], 0), 2e-3,
+               "joint 1 straight above the base");
+  }
+}
+
 // Pixels read off a 1280x720 screenshot (ImGui 1.86's default font): the Teach menu and its
 // item, the toolbar's preset combo and its sixth row ("A target near the root"), the 3D radio.
 const glm::dvec2 kTeachMenu{205, 9}, kCompareItem{240, 33}, kPresetCombo{385, 36}, kNearRootRow{330, 145};
