@@ -19,3 +19,5 @@ for shot in editor_fk_gizmo editor_ik_drag; do
     --script "$root/docs/images/$shot.jsonl" --frame-count 40 --screenshot "$root/docs/images/$shot.png"
 done
 rm -rf "$tmp"
+# docs/teaching/ (figures of docs/teaching.md): docs/teaching/regenerate.sh
+"$root/docs/teaching/regenerate.sh" "$kinema"
