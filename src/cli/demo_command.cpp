@@ -1,6 +1,9 @@
 #include "cli/demo_command.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <cstring>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -31,8 +34,12 @@ std::string presetNames() {
   return names;
 }
 
+// For /bin/sh: left bare only when every character is harmless there.
 std::string quoted(const std::string& s) {
-  if (s.find_first_of(" \t'\"$\\") == std::string::npos) return s;
+  const bool plain = !s.empty() && std::all_of(s.begin(), s.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || std::strchr("-_./,=:+@%", c) != nullptr;
+  });
+  if (plain) return s;
   std::string out = "'";
   for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return out + "'";
@@ -124,7 +131,7 @@ int runPreset(const TeachingCase& preset, const DemoOptions& o, int width, int h
         const std::string movie = (out / (name + "." + ext)).string();
         const std::string cmd = "ffmpeg -y -loglevel error -framerate 2 -pattern_type glob -i " +
                                 quoted((dir / "step_*.png").string()) +
-                                (std::string(ext) == "mp4" ? " -pix_fmt yuv420p -vf scale=trunc(iw/2)*2:trunc(ih/2)*2 " : " ") +
+                                (std::string(ext) == "mp4" ? " -pix_fmt yuv420p -vf " + quoted("scale=trunc(iw/2)*2:trunc(ih/2)*2") + " " : " ") +
                                 quoted(movie);
         if (std::system(cmd.c_str()) != 0) std::cerr << "kinema demo: ffmpeg failed to write " << movie << "\n";
       }

@@ -119,3 +119,30 @@ TEST(DemoCommand, SolverTableWritesEveryFormat) {
 
 }  // namespace
 }  // namespace kinema
+
+namespace kinema {
+namespace {
+
+// ffmpeg is optional: with one on PATH (here a stand-in that records its arguments and
+// writes its output file) each solver gets a GIF and an MP4 made from its step images.
+TEST(DemoCommand, MakesGifAndMp4WithFfmpegOnPath) {
+  const std::string dir = test::makeTempDir(), bin = test::makeTempDir();
+  test::writeFile(bin + "/ffmpeg",
+                  "#!/bin/sh\nfor a in \"$@\"; do printf '%s\\n' \"$a\"; done >> \"" + bin +
+                      "/args.txt\"\nfor a in \"$@\"; do last=$a; done\n: > \"$last\"\n");
+  ASSERT_EQ(test::runCommand("chmod +x " + bin + "/ffmpeg"), 0);
+  std::string out, err;
+  ASSERT_EQ(test::runCommand("PATH=" + bin + ":$PATH " + std::string(KINEMA_BINARY) + " demo fabrik-steps --out " + dir,
+                             &out, &err),
+            0)
+      << err;
+  for (const char* f : {"fabrik.gif", "fabrik.mp4", "ccd.gif", "ccd.mp4"})
+    EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(dir) / f)) << f;
+  const std::string args = test::readFile(bin + "/args.txt");
+  // The frame pattern reaches ffmpeg as one argument, unexpanded by the shell.
+  EXPECT_NE(args.find("\n" + dir + "/fabrik/step_*.png\n"), std::string::npos) << args;
+  EXPECT_EQ(err.find("not on PATH"), std::string::npos) << err;
+}
+
+}  // namespace
+}  // namespace kinema
