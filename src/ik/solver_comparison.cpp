@@ -189,9 +189,13 @@ void stepSubStep(SolverComparison& c) {
 void stepIteration(SolverComparison& c) {
   for (SolverRun& r : c.runs) {
     if (r.finished()) continue;
-    const int next = r.current().iteration + 1;
+    // Inside an iteration (a CCD sweep half done, a FABRIK backward pass shown): finish it,
+    // as a lecturer's "next iteration" means; at an iteration's end: the whole next one.
     const int last = static_cast<int>(r.trace.entries.size()) - 1;
-    while (r.cursor < last && r.trace.entries[r.cursor + 1].iteration <= next) ++r.cursor;
+    const int current = r.current().iteration;
+    const bool inside = current > 0 && r.trace.entries[r.cursor + 1].iteration == current;
+    const int goal = inside ? current : current + 1;
+    while (r.cursor < last && r.trace.entries[r.cursor + 1].iteration <= goal) ++r.cursor;
   }
 }
 

@@ -95,8 +95,9 @@ struct SolverComparison {
 std::string startComparison(const TeachingCase& setup, SolverComparison& out, int timingRepeats = 5);
 // One sub-step forward in every run that is not finished.
 void stepSubStep(SolverComparison& c);
-// Forward in every run to the last entry of iteration current().iteration + 1 (from the
-// start: the end of iteration 1); a run with no such iteration goes to its end.
+// Forward in every run to the end of the current iteration when the cursor is inside one,
+// else to the end of the next (from the start: the end of iteration 1); a run with no such
+// iteration goes to its end.
 void stepIteration(SolverComparison& c);
 void runToEnd(SolverComparison& c);
 void resetCursors(SolverComparison& c);

@@ -150,13 +150,16 @@ TEST(CompareMode, KeysStepResetAndRunEverySolver) {
   const int right = keyCodeFromName("RIGHT");
   EXPECT_TRUE(handleCompareKey(m, right, 0));
   for (const SolverRun& r : m.comparison.runs) EXPECT_EQ(r.cursor, 1) << toString(r.solver);
-  // Shift+Right from inside iteration 1: to the last entry of iteration 2 (solver_comparison.h).
+  // Shift+Right from inside iteration 1: to the last entry of iteration 1; again: of
+  // iteration 2 (solver_comparison.h).
   for (const SolverRun& r : m.comparison.runs) ASSERT_EQ(r.current().iteration, 1) << toString(r.solver);
-  EXPECT_TRUE(handleCompareKey(m, right, kModShift));
-  for (const SolverRun& r : m.comparison.runs) {
-    EXPECT_EQ(r.current().iteration, 2) << toString(r.solver);
-    if (!r.finished()) {
-      EXPECT_EQ(r.trace.entries[r.cursor + 1].iteration, 3) << toString(r.solver);
+  for (int expected = 1; expected <= 2; ++expected) {
+    EXPECT_TRUE(handleCompareKey(m, right, kModShift));
+    for (const SolverRun& r : m.comparison.runs) {
+      EXPECT_EQ(r.current().iteration, expected) << toString(r.solver);
+      if (!r.finished()) {
+        EXPECT_EQ(r.trace.entries[r.cursor + 1].iteration, expected + 1) << toString(r.solver);
+      }
     }
   }
   EXPECT_TRUE(handleCompareKey(m, keyCodeFromName("R"), 0));

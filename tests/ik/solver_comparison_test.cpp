@@ -138,8 +138,12 @@ TEST(SolverComparison, SubStepIterationStepAndConvergenceFollowTheTrace) {
   EXPECT_EQ(ccd.cursor, 1);
   EXPECT_EQ(fabrik.cursor, 1);
   EXPECT_EQ(ccd.previous(), &ccd.trace.entries[0]);
-  // From a sub-step inside iteration 1 to the end of iteration 2: CCD has 3 sub-steps per
-  // sweep (entries 4..6), FABRIK 2 passes (entries 3..4).
+  // From a sub-step inside iteration 1 to the end of iteration 1 (CCD has 3 sub-steps per
+  // sweep: entries 1..3, FABRIK 2 passes: entries 1..2), then to the end of iteration 2
+  // (entries 4..6 and 3..4).
+  stepIteration(cmp);
+  EXPECT_EQ(ccd.cursor, 3);
+  EXPECT_EQ(fabrik.cursor, 2);
   stepIteration(cmp);
   EXPECT_EQ(ccd.cursor, 6);
   EXPECT_EQ(fabrik.cursor, 4);
