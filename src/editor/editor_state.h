@@ -6,6 +6,7 @@
 #include "core/pose.h"
 #include "editor/document.h"
 #include "editor/bottom_panels.h"
+#include "editor/curve_editor.h"
 #include "editor/panel_state.h"
 #include "io/scene.h"
 #include "render/camera.h"
@@ -93,6 +94,7 @@ struct EditorState {
   int hoveredIkTarget = -1;
   EditorRequests requests;
   AnimationEditorKind animationEditor = AnimationEditorKind::None;
+  CurveEditorState curveEditor;  // the curve editor's view, channel toggles and key selection
   std::string statusMessage;  // one line for the status bar (errors included)
 
   // Derived each frame from the fields above: the document's pose, or the clip while it plays.
