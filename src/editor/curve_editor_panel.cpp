@@ -157,10 +157,23 @@ void keyPropertiesStrip(EditorState& state, const Clip& clip) {
     for (int i = 0; i < 3; ++i) {
       ImGui::SameLine();
       ImGui::SetNextItemWidth(70);
-      if (ImGui::SliderFloat(names[i], &tcb[i], -1.0f, 1.0f, "%.2f"))
-        editSelectedKeys(state, "Key TCB", [&](KeySettings& ks) {
-          (i == 0 ? ks.tension : i == 1 ? ks.continuity : ks.bias) = tcb[i];
+      // Dragging a slider is one undo step (a Document drag from press to release).
+      if (ImGui::SliderFloat(names[i], &tcb[i], -1.0f, 1.0f, "%.2f")) {
+        if (!state.doc.dragging()) state.doc.beginDrag("Key TCB");
+        const std::vector<CurveKeyRef> keys = state.curveEditor.selected;
+        const int clipIndex = state.clip;
+        state.doc.updateDrag([&](DocumentEdit& e) {
+          changeKeySettings(e.clips[clipIndex], keys, [&](KeySettings& ks) {
+            (i == 0 ? ks.tension : i == 1 ? ks.continuity : ks.bias) = tcb[i];
+          });
+          return std::string();
         });
+        reposeAtCurrentFrame(state);
+      }
+      if (ImGui::IsItemDeactivated() && state.doc.dragging()) {
+        state.doc.commitDrag();
+        reposeAtCurrentFrame(state);
+      }
     }
   } else if (s.interpolation == Interpolation::Bezier) {
     int left = static_cast<int>(s.leftHandleType), right = static_cast<int>(s.rightHandleType);
