@@ -275,5 +275,23 @@ TEST_F(CurveEditorE2e, ViewMenuOpensItAndTheRotationViewSwitches) {
   EXPECT_NEAR(double(q["curve_editor"]["curves"][6]["keys"][1]["value"]), std::cos(M_PI / 6), 1e-5);  // w
 }
 
+// The README's picture (docs/images/curve_editor.png): Hips and Spine in the normalized
+// Euler view (fit: -1.2 .. 1.2), the y curve's key 1 (normalized -1/3) set to Bezier with
+// its handle showing.
+TEST_F(CurveEditorE2e, ReadmeScreenshotNormalizedWithABezierKey) {
+  json normalizedView = opened_;
+  normalizedView["curve_editor"]["view"] = {{"t0", -0.1}, {"t1", 1.1}, {"v0", -1.2}, {"v1", 1.2}};
+  Script s;
+  s.click(kHipsRow).wait(1).keyDown("LEFT_SHIFT").click(kSpineRow).keyUp("LEFT_SHIFT").wait(1);
+  s.keyDown("LEFT_SHIFT").key("F6").keyUp("LEFT_SHIFT").wait(2).click(kNormalize).wait(2);
+  s.click(pixel(normalizedView, 1.0 / 3, -1.0 / 3)).wait(1).click(kInterpolationCombo).wait(2);
+  s.click(interpolationItem(kBezier)).wait(2).move({700, 300}).wait(2);
+  const json d = run(s, "curve_editor_readme");
+  ASSERT_TRUE(d.is_object());
+  EXPECT_EQ(d["curve_editor"]["normalized"], true);
+  EXPECT_EQ(d["curve_editor"]["curves"].size(), 6u);
+  EXPECT_EQ(yKey(d, 1)["interpolation"], "bezier");
+}
+
 }  // namespace
 }  // namespace kinema::test
