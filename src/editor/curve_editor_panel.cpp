@@ -481,7 +481,14 @@ void drawCurveEditorPanel(EditorState& state) {
         });
       }
     }
-    if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+    // Esc or a right click cancels (back to the start, nothing recorded), as in the 3D view.
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Right) || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) {
+      if (state.doc.dragging()) {
+        state.doc.cancelDrag();
+        if (ce.drag == CurveEditorState::Drag::Keys) ce.selected = ce.dragStartKeys;
+      }
+      ce.drag = CurveEditorState::Drag::None;
+    } else if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
       if (state.doc.dragging()) state.doc.commitDrag();
       ce.drag = CurveEditorState::Drag::None;
       reposeAtCurrentFrame(state);

@@ -282,6 +282,37 @@ TEST(CurveEditor, ShownChannelsAreThoseOfTheSelectedJoints) {
   EXPECT_EQ(shownChannels(clip, sel), (std::vector<int>{0, 1}));
 }
 
+TEST(CurveEditor, NlerpAndSquadApplyToRotationKeysOnly) {
+  Clip clip;
+  clip.channels.push_back(translationChannel());
+  clip.channels.push_back(rotationChannel({0.0f, 1.0f}, {xyzQuat(0, 0, 0), xyzQuat(0, 0, 1)}));
+  const int skipped = changeKeySettings(clip, {{0, 0, 0}, {1, 3, 0}}, [](KeySettings& s) {
+    s.interpolation = Interpolation::Squad;
+  });
+  EXPECT_EQ(skipped, 1);
+  EXPECT_TRUE(clip.channels[0].keys.empty());
+  ASSERT_EQ(clip.channels[1].keys.size(), 2u);
+  EXPECT_EQ(clip.channels[1].keys[0].interpolation, Interpolation::Squad);
+  EXPECT_EQ(clip.channels[1].keys[1].interpolation, Interpolation::Linear);  // the channel's, kept
+}
+
+TEST(CurveEditor, DraggingARotationKeyInTheEulerViewTurnsOnlyThatAngle) {
+  // Key 1 at XYZ angles (0.2, 0.1, 0.4); its Z curve dragged up by 0.3 in the view.
+  Clip clip;
+  clip.frameTime = 1.0 / 30;
+  clip.channels.push_back(rotationChannel({0.0f, 1.0f}, {xyzQuat(0, 0, 0), xyzQuat(0.2, 0.1, 0.4)}));
+  moveCurveKeys(clip, {{0, 2, 1}}, {0.4f}, {1.0f}, 0.0f, 0.3f, RotationView::Euler, EulerOrder::XYZ);
+  const glm::vec4 v = clip.channels[0].values[1];
+  EXPECT_NEAR(std::abs(glm::dot(glm::dquat(v.w, v.x, v.y, v.z), xyzQuat(0.2, 0.1, 0.7))), 1.0, 1e-6);
+  EXPECT_NEAR(glm::length(v), 1.0, 1e-6);
+  // In the normalized view a display step is scaled by half the curve's range (here 2).
+  Clip t;
+  t.frameTime = 1.0 / 30;
+  t.channels.push_back(translationChannel());
+  moveCurveKeys(t, {{0, 1, 1}}, {1.0f}, {2.0f}, 0.0f, 0.25f, RotationView::Euler, EulerOrder::XYZ);
+  EXPECT_FLOAT_EQ(t.channels[0].values[1].y, 1.5f);
+}
+
 Scene keyedScene() {
   Scene scene;
   scene.skeleton.addJoint("root", -1, Transform());
