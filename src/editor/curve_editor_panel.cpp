@@ -254,10 +254,10 @@ void drawCurveEditorPanel(EditorState& state) {
   // The curves of the selected joints' channels.
   std::vector<ShownCurve> curves;
   const std::vector<int> channels = shownChannels(clip, state.doc.selection);
-  const int samples = clip.channels.empty() || clip.duration() <= 0 ? 12 : 12;
   for (int c : channels) {
     const Channel& ch = clip.channels[c];
-    const int perSegment = ch.keyCount() > 200 ? 1 : samples;
+    // Dense keys (imported motion) are drawn through the keys; authored keys with 12 points per segment.
+    const int perSegment = ch.keyCount() > 200 ? 1 : 12;
     for (int i = 0; i < curveCount(ch, ce.rotationView); ++i) {
       ShownCurve s;
       s.ref = {c, i};
@@ -356,12 +356,20 @@ void drawCurveEditorPanel(EditorState& state) {
     if (line.front().x > line[1].x) line.front() = line[1];
     if (line.back().x < line[line.size() - 2].x) line.back() = line[line.size() - 2];
     dl->AddPolyline(line.data(), static_cast<int>(line.size()), colour, 0, curveSelected ? 2.0f : 1.5f);
-    for (size_t k = 0; k < s.points.keyTimes.size(); ++k) {
+    // Keys closer than a few pixels apart (imported motion, a key per frame) are not drawn
+    // unless selected: thousands of circles would cost more than the rest of the frame.
+    const size_t keyCount = s.points.keyTimes.size();
+    const float span = keyCount > 1 ? screen(s.points.keyTimes.back(), 0).x - screen(s.points.keyTimes.front(), 0).x : 0;
+    const bool denseKeys = keyCount > 1 && span / float(keyCount - 1) < 3 * kKeyRadius;
+    for (size_t k = 0; k < keyCount; ++k) {
       const CurveKeyRef ref{s.ref.channel, s.ref.component, static_cast<int>(k)};
       const ImVec2 p = screen(s.points.keyTimes[k], display(s, s.points.keyValues[k]));
       const bool sel = ce.isSelected(ref);
-      dl->AddCircleFilled(p, kKeyRadius, sel ? IM_COL32(255, 190, 50, 255) : IM_COL32(20, 20, 20, 255));
-      dl->AddCircle(p, kKeyRadius, sel ? IM_COL32(255, 255, 255, 255) : colour);
+      if (p.x < plot.x - kPickRadius || p.x > plot.x + plot.w + kPickRadius) continue;
+      if (!denseKeys || sel) {
+        dl->AddCircleFilled(p, kKeyRadius, sel ? IM_COL32(255, 190, 50, 255) : IM_COL32(20, 20, 20, 255), 8);
+        dl->AddCircle(p, kKeyRadius, sel ? IM_COL32(255, 255, 255, 255) : colour, 8);
+      }
       const float d = glm::length(glm::vec2(p.x, p.y) - mouse);
       if (d < bestKey) bestKey = d, keyUnderMouse = ref;
       if (sel)
