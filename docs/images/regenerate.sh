@@ -19,6 +19,9 @@ for shot in editor_fk_gizmo editor_ik_drag; do
     --script "$root/docs/images/$shot.jsonl" --frame-count 40 --screenshot "$root/docs/images/$shot.png"
 done
 rm -rf "$tmp"
+# The curve editor: the last frame of its README e2e test (tests/editor/curve_editor_e2e_test.cpp).
+"$root/build/tests/kinema_tests" --gtest_filter=CurveEditorE2e.ReadmeScreenshotNormalizedWithABezierKey
+cp "$root/build/curve_editor_e2e/curve_editor_readme.png" "$root/docs/images/curve_editor.png"
 # docs/teaching/ (figures of docs/teaching.md): docs/teaching/regenerate.sh
 "$root/docs/teaching/regenerate.sh" "$kinema"
 # Teach > Compare Solvers (docs/teaching-editor.md): the editor opened on a preset, stepped by

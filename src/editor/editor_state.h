@@ -7,6 +7,7 @@
 #include "editor/document.h"
 #include "editor/bottom_panels.h"
 #include "editor/compare_mode.h"
+#include "editor/curve_editor.h"
 #include "editor/panel_state.h"
 #include "io/scene.h"
 #include "render/camera.h"
@@ -95,6 +96,7 @@ struct EditorState {
   EditorRequests requests;
   AnimationEditorKind animationEditor = AnimationEditorKind::None;
   CompareMode compare;     // Teach > Compare Solvers: replaces the 3D view and the side panels while active
+  CurveEditorState curveEditor;  // the curve editor's view, channel toggles and key selection
   std::string statusMessage;  // one line for the status bar (errors included)
 
   // Derived each frame from the fields above: the document's pose, or the clip while it plays.

@@ -184,6 +184,10 @@ void drawMainMenuBar(EditorState& state) {
     ImGui::MenuItem("Weights of the Active Joint", "Alt+W", &state.view.showWeights);
     ImGui::MenuItem("Show Limits", nullptr, &state.view.showLimits);
     ImGui::MenuItem("Show Grid", nullptr, &state.view.showGrid);
+    ImGui::Separator();
+    if (ImGui::MenuItem("Curve Editor", "Shift+F6", state.animationEditor == AnimationEditorKind::CurveEditor))
+      state.animationEditor = state.animationEditor == AnimationEditorKind::CurveEditor ? AnimationEditorKind::None
+                                                                                          : AnimationEditorKind::CurveEditor;
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Pose")) {

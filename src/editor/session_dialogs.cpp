@@ -143,6 +143,7 @@ void helpWindow(EditorState& state) {
       {"Ctrl+C / Ctrl+V / Ctrl+Shift+V", "copy / paste / paste flipped pose"},
       {"Ctrl+N / Ctrl+O / Ctrl+S / Ctrl+Shift+S", "new / open / save / save as"},
       {"Double-click a joint in the outliner", "rename it"},
+      {"Shift+F6", "curve editor: click / drag keys and handles, wheel zoom, Home fit"},
   };
   if (ImGui::BeginTable("##controls", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
     for (const auto& row : rows) {
@@ -190,6 +191,7 @@ void drawEditorPanels(EditorState& state, float fps) {
   drawIkTargetsPanel(state);
   drawStatusBar(state, fps);
   drawTimelinePanel(state);
+  drawCurveEditorPanel(state);
   drawSessionDialogs(state);
 }
 

@@ -14,6 +14,45 @@ json vec(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
 json jointName(const EditorState& s, int j) {
   return j >= 0 && j < s.doc.skeleton().size() ? json(s.doc.skeleton().names[j]) : json(nullptr);
 }
+// The curve editor: open or not, view, plot rectangle, the shown curves with their keys in
+// display units (the e2e tests turn them into pixels), and the selected keys.
+json curveEditorJson(const EditorState& s) {
+  const CurveEditorState& ce = s.curveEditor;
+  json out;
+  out["open"] = s.animationEditor == AnimationEditorKind::CurveEditor;
+  out["rotation_view"] = ce.rotationView == RotationView::Euler ? "euler" : "quaternion";
+  out["euler_order"] = toString(ce.eulerOrder);
+  out["normalized"] = ce.normalized;
+  out["view"] = {{"t0", ce.view.t0}, {"t1", ce.view.t1}, {"v0", ce.view.v0}, {"v1", ce.view.v1}};
+  out["plot"] = {{"x", ce.plot.x}, {"y", ce.plot.y}, {"width", ce.plot.w}, {"height", ce.plot.h}};
+  json curves = json::array();
+  if (s.hasMotion()) {
+    const Clip& clip = s.doc.scene().clips[s.clip];
+    for (int c : shownChannels(clip, s.doc.selection)) {
+      const Channel& ch = clip.channels[c];
+      for (int i = 0; i < curveCount(ch, ce.rotationView); ++i) {
+        const CurvePoints p = curvePoints(ch, i, ce.rotationView, ce.eulerOrder);
+        const ValueRange r = curveRange(p);
+        json keys = json::array();
+        for (size_t k = 0; k < p.keyTimes.size(); ++k) {
+          const float v = ce.normalized ? normalizeValue(r, p.keyValues[k]) : p.keyValues[k];
+          keys.push_back({{"time", p.keyTimes[k]}, {"value", p.keyValues[k]}, {"display", v},
+                          {"interpolation", toString(ch.settings(int(k)).interpolation)}});
+        }
+        curves.push_back({{"channel", c},
+                          {"component", i},
+                          {"label", curveLabel(s.doc.skeleton(), ch, i, ce.rotationView, ce.eulerOrder)},
+                          {"visible", !ce.isHidden({c, i})},
+                          {"keys", keys}});
+      }
+    }
+  }
+  out["curves"] = curves;
+  json selected = json::array();
+  for (const CurveKeyRef& k : ce.selected) selected.push_back({{"channel", k.channel}, {"component", k.component}, {"key", k.key}});
+  out["selected_keys"] = selected;
+  return out;
+}
 }  // namespace
 
 std::string editorStateJson(const EditorState& s, int windowWidth, int windowHeight, long long frames) {
@@ -87,6 +126,7 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
     targets.push_back(e);
   }
   out["ik_targets"] = targets;
+  out["curve_editor"] = curveEditorJson(s);
   return out.dump(1) + "\n";
 }
 
