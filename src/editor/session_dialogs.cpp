@@ -4,6 +4,7 @@
 
 #include <ctime>
 
+#include "editor/dope_sheet_panel.h"
 #include "editor/editor_panels.h"
 
 namespace kinema {
@@ -182,6 +183,7 @@ void drawEditorPanels(EditorState& state, float fps) {
   drawIkTargetsPanel(state);
   drawStatusBar(state, fps);
   drawTimelinePanel(state);
+  drawDopeSheetPanel(state);
   drawSessionDialogs(state);
 }
 
