@@ -111,7 +111,8 @@ std::vector<KeyColumn> columnsOfCell(const std::vector<DopeSheetRow>& rows, int 
 
 std::vector<KeyColumn> columnsInBox(const Clip& clip, const std::vector<DopeSheetRow>& rows, double frameA,
                                     double frameB, int rowA, int rowB) {
-  const double f0 = std::min(frameA, frameB), f1 = std::max(frameA, frameB);
+  // Edges included, with a little slack for key times that are frames in float seconds.
+  const double f0 = std::min(frameA, frameB) - 1e-4, f1 = std::max(frameA, frameB) + 1e-4;
   const int r0 = std::max(std::min(rowA, rowB), 0), r1 = std::min(std::max(rowA, rowB), static_cast<int>(rows.size()) - 1);
   std::vector<KeyColumn> out;
   for (size_t r = 1; r < rows.size(); ++r) {

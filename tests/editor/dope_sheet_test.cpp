@@ -186,8 +186,7 @@ TEST(DopeSheet, MovingKeysPastEachOtherNeverLosesAMovingKey) {
   EXPECT_EQ(b.values[1], a0.values[1]);
   EXPECT_EQ(b.keys[0].interpolation, Interpolation::Step);
   EXPECT_EQ(b.keys[1].interpolation, Interpolation::Linear);
-  // Two keys swapping places: 10 by +2 and 12 by -2 is not one move; instead 10 and 12 by
-  // -5 pass over 5 (which stays, and is replaced by 10's key landing on it).
+  // 10 and 12 by -5 pass back over 5, which stays and is replaced by 10's key landing on it.
   clip = start;
   moveKeyColumns(clip, {{1, at(10)}, {1, at(12)}}, -5.0);
   EXPECT_EQ(framesOf(clip.channels[2]), (std::vector<double>{5, 7}));
