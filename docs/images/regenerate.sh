@@ -19,3 +19,7 @@ for shot in editor_fk_gizmo editor_ik_drag; do
     --script "$root/docs/images/$shot.jsonl" --frame-count 40 --screenshot "$root/docs/images/$shot.png"
 done
 rm -rf "$tmp"
+# The dope sheet: made by its end-to-end test (a clip written by the test, a box selection).
+build=$(cd "$(dirname "$kinema")/.." && pwd)
+"$build/tests/kinema_tests" --gtest_filter=DopeSheetE2e.ScreenshotForTheReadme >/dev/null
+cp "$build/dope_sheet_e2e/dope_sheet.png" "$root/docs/images/dope_sheet.png"
