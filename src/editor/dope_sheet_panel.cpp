@@ -210,6 +210,15 @@ void handleMouse(EditorState& state, const Clip& clip, const std::vector<DopeShe
     ds.gesture = G::Pan;
     return;
   }
+  // A click on a joint's name selects the joint (Shift: toggles), as the outliner does.
+  if (ImGui::IsMouseClicked(0) && mouse.x < view.x && mouse.y >= view.y) {
+    const int row = view.rowAt(mouse.y);
+    if (row >= 1 && row < static_cast<int>(rows.size())) {
+      if (io.KeyShift) state.doc.selection.shiftClick(rows[row].joint);
+      else state.doc.selection.click(rows[row].joint);
+    }
+    return;
+  }
   if (ImGui::IsMouseClicked(0) && mouse.x >= view.x && mouse.y >= view.y) {
     ds.gesture = G::Press;
     ds.pressMouse = mouse;

@@ -145,6 +145,26 @@ TEST_F(DopeSheetE2e, DraggingAKeyMovesItToTheFrameUnderTheMouse) {
   left.move(key(4, kLowerArmL)).down().path(key(4, kLowerArmL), key(1.4, kLowerArmL), 5).up().wait(2);
   d = run(left, "drag_key_left");
   EXPECT_EQ(framesOfRow(d, "LowerArm.L"), (Frames{1, 12, 20}));
+
+  // G: Head's key at 15 clicked, G, the mouse 31.2 px (2.6 frames) right: 17.6 rounds to 18;
+  // a left click confirms. Then the same with Esc: nothing moves and no step is added.
+  Script grab = opened();
+  grab.click(key(15, kHead)).wait(1).key("G").path(key(15, kHead), key(17.6, kHead), 3).wait(1);
+  Script cancelled = grab;
+  grab.down().up().wait(2);
+  d = run(grab, "grab_key");
+  EXPECT_EQ(framesOfRow(d, "Head"), (Frames{10, 18}));
+  EXPECT_EQ(int(d["undo_depth"]), 1);
+  cancelled.key("ESCAPE").wait(2);
+  d = run(cancelled, "grab_key_cancel");
+  EXPECT_EQ(framesOfRow(d, "Head"), (Frames{10, 15}));
+  EXPECT_EQ(int(d["undo_depth"]), 0);
+  EXPECT_EQ(selectedKeys(d), std::vector<std::string>{"Head@15"});
+  // A click on a joint's name selects that joint.
+  Script name = opened();
+  name.click({250 + 60, rowY(kLowerArmL)}).wait(2);
+  d = run(name, "click_name");
+  EXPECT_EQ(d["selection"], json::array({"LowerArm.L"}));
 }
 
 TEST_F(DopeSheetE2e, BoxSelectThenDeleteAndUndo) {
