@@ -19,6 +19,8 @@ for shot in editor_fk_gizmo editor_ik_drag; do
     --script "$root/docs/images/$shot.jsonl" --frame-count 40 --screenshot "$root/docs/images/$shot.png"
 done
 rm -rf "$tmp"
+# docs/teaching/ (figures of docs/teaching.md): docs/teaching/regenerate.sh
+"$root/docs/teaching/regenerate.sh" "$kinema"
 # The dope sheet: made by its end-to-end test (a clip written by the test, a box selection).
 build=$(cd "$(dirname "$kinema")/.." && pwd)
 "$build/tests/kinema_tests" --gtest_filter=DopeSheetE2e.ScreenshotForTheReadme >/dev/null
