@@ -161,10 +161,15 @@ void KeyColumnSelection::box(const std::vector<KeyColumn>& inside, BoxSelectMode
   columns_ = std::move(kept);
 }
 
-void KeyColumnSelection::prune(const Clip& clip) {
+void KeyColumnSelection::prune(const Clip& clip) { prune(dopeSheetRows(clip)); }
+
+void KeyColumnSelection::prune(const std::vector<DopeSheetRow>& rows) {
+  if (columns_.empty()) return;
   // Each selected column is matched to the clip's column within the tolerance (its time as
   // the rows show it), or dropped.
-  const std::vector<KeyColumn> all = allKeyColumns(clip);
+  std::vector<KeyColumn> all;
+  for (size_t r = 1; r < rows.size(); ++r)
+    for (float t : rows[r].times) all.push_back({rows[r].joint, t});
   std::vector<KeyColumn> kept;
   for (const KeyColumn& c : columns_) {
     auto it = std::lower_bound(all.begin(), all.end(), KeyColumn{c.joint, c.time - 2 * kKeyColumnTolerance});

@@ -66,8 +66,10 @@ class KeyColumnSelection {
   // deselect when all were selected, else add them.
   void click(const std::vector<KeyColumn>& cell, bool extend);
   void box(const std::vector<KeyColumn>& inside, BoxSelectMode mode);
-  // Drops columns that no longer hold keys (after undo, redo or edits elsewhere).
+  // Drops columns that no longer hold keys (after undo, redo or edits elsewhere); `rows`
+  // are the clip's dopeSheetRows.
   void prune(const Clip& clip);
+  void prune(const std::vector<DopeSheetRow>& rows);
 
  private:
   std::vector<KeyColumn> columns_;
@@ -173,7 +175,6 @@ struct DopeSheetState {
   glm::vec2 pressMouse{0.0f};
   double pressFrame = 0.0;
   bool pressExtend = false;
-  long long prunedAt = -1;  // the document's change count when the selection was last pruned
 };
 
 }  // namespace kinema

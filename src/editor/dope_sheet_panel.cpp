@@ -260,19 +260,25 @@ void drawDopeSheetPanel(EditorState& state) {
     return;
   }
   const Clip& clip = state.doc.scene().clips[state.clip];
-  if (ds.prunedAt != state.doc.changeCount()) {
-    if (!ds.move.active()) ds.selection.prune(clip);  // undo, redo or other edits removed keys
-    ds.prunedAt = state.doc.changeCount();
-  }
   const std::vector<DopeSheetRow> rows = dopeSheetRows(clip);
+  // Undo, redo, other edits or another file may have taken selected keys away.
+  if (!ds.move.active()) ds.selection.prune(rows);
+  const long long changeBefore = state.doc.changeCount();
   const bool hovered = ImGui::IsWindowHovered();
   const PanelRect ruler{view.x, r.y, view.width, kDopeSheetRulerHeight};
   if (hovered || ds.gesture != DopeSheetState::Gesture::None) {
     handleKeys(state, clip, ds);
     handleMouse(state, clip, rows, ds, hovered, ruler);
   }
-  const Clip& shown = state.doc.scene().clips[state.clip];  // after this frame's edits
-  const std::vector<DopeSheetRow> shownRows = dopeSheetRows(shown);
+  // After this frame's edits (the rows again only when there were some).
+  if (!state.hasMotion()) {
+    ImGui::End();
+    return;
+  }
+  const Clip& shown = state.doc.scene().clips[state.clip];
+  std::vector<DopeSheetRow> edited;
+  if (state.doc.changeCount() != changeBefore) edited = dopeSheetRows(shown);
+  const std::vector<DopeSheetRow>& shownRows = state.doc.changeCount() != changeBefore ? edited : rows;
 
   // Background: the key area, alternating rows, the names column, the ruler.
   const float right = r.x + r.w, bottom = r.y + r.h;
