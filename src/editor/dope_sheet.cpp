@@ -103,8 +103,10 @@ std::vector<KeyColumn> columnsOfCell(const std::vector<DopeSheetRow>& rows, int 
   if (row < 0 || row >= static_cast<int>(rows.size())) return out;
   for (size_t r = 1; r < rows.size(); ++r) {
     if (row != 0 && static_cast<int>(r) != row) continue;
-    for (float t : rows[r].times)
-      if (near(t, time)) out.push_back({rows[r].joint, t});
+    const std::vector<float>& times = rows[r].times;  // sorted: look near `time` only
+    for (auto it = std::lower_bound(times.begin(), times.end(), time - 2 * kKeyColumnTolerance);
+         it != times.end() && *it <= time + 2 * kKeyColumnTolerance; ++it)
+      if (near(*it, time)) out.push_back({rows[r].joint, *it});
   }
   return out;
 }
