@@ -143,6 +143,9 @@ void helpWindow(EditorState& state) {
       {"Ctrl+C / Ctrl+V / Ctrl+Shift+V", "copy / paste / paste flipped pose"},
       {"Ctrl+N / Ctrl+O / Ctrl+S / Ctrl+Shift+S", "new / open / save / save as"},
       {"Double-click a joint in the outliner", "rename it"},
+      {"Dope sheet (View menu): click / drag keys", "select (Shift: toggle) / move, snapped to frames"},
+      {"Dope sheet: drag on empty space, A / Alt+A", "box select, select all / none"},
+      {"Dope sheet: G, X, Ctrl+C / Ctrl+V", "move, delete, copy / paste at the current frame"},
   };
   if (ImGui::BeginTable("##controls", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
     for (const auto& row : rows) {
