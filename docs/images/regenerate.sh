@@ -32,3 +32,7 @@ XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp xvfb-run -a -s "-screen 0 1280x800x24" 
 XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp xvfb-run -a -s "-screen 0 1280x800x24" "$kinema" edit --compare near-root \
   --size 1280x720 --script "$root/docs/images/compare_solvers_near_root.jsonl" --frame-count 10 --screenshot "$root/docs/images/compare_solvers_near_root.png"
 rm -rf "$tmp"
+# The dope sheet: made by its end-to-end test (a clip written by the test, a box selection).
+build=$(cd "$(dirname "$kinema")/.." && pwd)
+"$build/tests/kinema_tests" --gtest_filter=DopeSheetE2e.ScreenshotForTheReadme >/dev/null
+cp "$build/dope_sheet_e2e/dope_sheet.png" "$root/docs/images/dope_sheet.png"

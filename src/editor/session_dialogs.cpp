@@ -4,6 +4,7 @@
 
 #include <ctime>
 
+#include "editor/dope_sheet_panel.h"
 #include "editor/editor_panels.h"
 #include "editor/compare_panel.h"
 
@@ -144,6 +145,9 @@ void helpWindow(EditorState& state) {
       {"Ctrl+N / Ctrl+O / Ctrl+S / Ctrl+Shift+S", "new / open / save / save as"},
       {"Double-click a joint in the outliner", "rename it"},
       {"Shift+F6", "curve editor: click / drag keys and handles, wheel zoom, Home fit"},
+      {"Dope sheet (View menu): click / drag keys", "select (Shift: toggle) / move, snapped to frames"},
+      {"Dope sheet: drag on empty space, A / Alt+A", "box select, select all / none"},
+      {"Dope sheet: G, X, Ctrl+C / Ctrl+V", "move, delete, copy / paste at the current frame"},
   };
   if (ImGui::BeginTable("##controls", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
     for (const auto& row : rows) {
@@ -192,6 +196,7 @@ void drawEditorPanels(EditorState& state, float fps) {
   drawStatusBar(state, fps);
   drawTimelinePanel(state);
   drawCurveEditorPanel(state);
+  drawDopeSheetPanel(state);
   drawSessionDialogs(state);
 }
 

@@ -53,6 +53,34 @@ json curveEditorJson(const EditorState& s) {
   out["selected_keys"] = selected;
   return out;
 }
+
+// The dope sheet: shown or not, its view (key area in window pixels, frame at its left edge,
+// pixels per frame, row height, scrolled rows), its rows with their key frames, the
+// selected key columns and how many keys the clipboard holds.
+json dopeSheetJson(const EditorState& s) {
+  static const char* const kGestures[] = {"none", "press", "box", "drag_keys", "grab_keys", "pan"};
+  const DopeSheetState& ds = s.dopeSheet;
+  const DopeSheetView& v = ds.view;
+  json out = {{"shown", s.animationEditor == AnimationEditorKind::DopeSheet},
+              {"view", {{"x", v.x}, {"y", v.y}, {"width", v.width}, {"height", v.height}, {"first_frame", v.firstFrame},
+                        {"pixels_per_frame", v.pixelsPerFrame}, {"row_height", v.rowHeight}, {"first_row", v.firstRow}}},
+              {"clipboard_keys", ds.clipboard.keys.size()},
+              {"gesture", kGestures[static_cast<int>(ds.gesture)]}};
+  json rows = json::array(), selected = json::array();
+  if (s.hasMotion()) {
+    const Clip& clip = s.doc.scene().clips[s.clip];
+    for (const DopeSheetRow& r : dopeSheetRows(clip)) {
+      json frames = json::array();
+      for (float t : r.times) frames.push_back(timeToFrame(clip, t));
+      rows.push_back({{"joint", r.joint < 0 ? json("Summary") : jointName(s, r.joint)}, {"frames", frames}});
+    }
+    for (const KeyColumn& c : ds.selection.columns())
+      selected.push_back({{"joint", jointName(s, c.joint)}, {"frame", timeToFrame(clip, c.time)}});
+  }
+  out["rows"] = rows;
+  out["selected"] = selected;
+  return out;
+}
 }  // namespace
 
 std::string editorStateJson(const EditorState& s, int windowWidth, int windowHeight, long long frames) {
@@ -70,6 +98,7 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
   out["playback"] = {{"clip", s.hasMotion() ? s.clip : -1}, {"time", s.time}, {"playing", s.playing}};
   out["tool"] = modalToolName(s.tool.mode);
   out["compare"] = compareStateJson(s.compare);  // Teach > Compare Solvers (docs/cli.md)
+  out["dope_sheet"] = dopeSheetJson(s);
   json selection = json::array();
   for (int j : doc.selection.joints()) selection.push_back(jointName(s, j));
   out["selection"] = selection;
