@@ -187,12 +187,13 @@ void drawMainMenuBar(EditorState& state) {
     ImGui::MenuItem("Show Limits", nullptr, &state.view.showLimits);
     ImGui::MenuItem("Show Grid", nullptr, &state.view.showGrid);
     ImGui::Separator();
-    if (ImGui::MenuItem("Curve Editor", "Shift+F6", state.animationEditor == AnimationEditorKind::CurveEditor))
-      state.animationEditor = state.animationEditor == AnimationEditorKind::CurveEditor ? AnimationEditorKind::None
-                                                                                          : AnimationEditorKind::CurveEditor;
+    // Blender's order: Dope Sheet, then Graph Editor.
     const bool dopeSheet = state.animationEditor == AnimationEditorKind::DopeSheet;
     if (ImGui::MenuItem("Dope Sheet", nullptr, dopeSheet))
       state.animationEditor = dopeSheet ? AnimationEditorKind::None : AnimationEditorKind::DopeSheet;
+    if (ImGui::MenuItem("Curve Editor", "Shift+F6", state.animationEditor == AnimationEditorKind::CurveEditor))
+      state.animationEditor = state.animationEditor == AnimationEditorKind::CurveEditor ? AnimationEditorKind::None
+                                                                                          : AnimationEditorKind::CurveEditor;
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Pose")) {

@@ -255,7 +255,7 @@ TEST_F(CurveEditorE2e, InterpolationChangesToStepAndLinear) {
 // The last frame is the README's screenshot (docs/images/curve_editor.png).
 TEST_F(CurveEditorE2e, ViewMenuOpensItAndTheRotationViewSwitches) {
   // View menu: the item after Show Grid and a separator (items 17 px apart, separators 4 px).
-  const glm::dvec2 kViewMenu{113, 9}, kViewCurveEditor{153, 304};
+  const glm::dvec2 kViewMenu{113, 9}, kViewCurveEditor{153, 321};
   Script s;
   s.click(kHipsRow).wait(1).keyDown("LEFT_SHIFT").click(kSpineRow).keyUp("LEFT_SHIFT").wait(1);
   s.menu(kViewMenu, kViewCurveEditor).wait(2);
