@@ -6,6 +6,9 @@
 #include "core/pose.h"
 #include "editor/document.h"
 #include "editor/bottom_panels.h"
+#include "editor/motion_control.h"
+#include "editor/motion_path.h"
+#include "editor/onion_skin.h"
 #include "editor/panel_state.h"
 #include "io/scene.h"
 #include "render/camera.h"
@@ -94,6 +97,11 @@ struct EditorState {
   EditorRequests requests;
   AnimationEditorKind animationEditor = AnimationEditorKind::None;
   std::string statusMessage;  // one line for the status bar (errors included)
+  // Onion skin, motion path, motion control (View menu; onion_skin.h, motion_path.h, motion_control.h).
+  OnionSkinSettings onionSkin;
+  MotionPathSettings motionPath;
+  MotionControlSettings motionControl;
+  bool onionSkinWindowOpen = false;  // View > Onion Skin && Motion Path...
 
   // Derived each frame from the fields above: the document's pose, or the clip while it plays.
   std::vector<glm::mat4> world;

@@ -184,6 +184,11 @@ void drawMainMenuBar(EditorState& state) {
     ImGui::MenuItem("Weights of the Active Joint", "Alt+W", &state.view.showWeights);
     ImGui::MenuItem("Show Limits", nullptr, &state.view.showLimits);
     ImGui::MenuItem("Show Grid", nullptr, &state.view.showGrid);
+    ImGui::Separator();
+    ImGui::MenuItem("Onion Skin", "Alt+O", &state.onionSkin.enabled);
+    ImGui::MenuItem("Motion Path", "Alt+P", &state.motionPath.enabled);
+    if (ImGui::MenuItem("Onion Skin && Motion Path...")) state.onionSkinWindowOpen = true;
+    if (ImGui::MenuItem("Motion Control...", "Alt+M")) state.motionControl.windowOpen = true;
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Pose")) {

@@ -182,6 +182,7 @@ void drawEditorPanels(EditorState& state, float fps) {
   drawIkTargetsPanel(state);
   drawStatusBar(state, fps);
   drawTimelinePanel(state);
+  drawAnimationDisplayWindows(state);
   drawSessionDialogs(state);
 }
 

@@ -102,6 +102,31 @@ void SkeletonRenderer::drawGrid(const FrameDescription& frame, const glm::mat4& 
   glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(gridCache_.size()));
 }
 
+void SkeletonRenderer::drawGhosts(const std::vector<SkeletonDrawList>& ghosts, const glm::mat4& viewProjection,
+                                  const glm::mat4& view) {
+  glUseProgram(shaded_.id());
+  glUniformMatrix4fv(shaded_.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
+  glUniformMatrix4fv(shaded_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
+  glEnable(GL_DEPTH_TEST);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  for (const SkeletonDrawList& g : ghosts) {
+    // Depth first, then the colour of the nearest surfaces only: a ghost's overlapping
+    // bones blend once, not once per layer.
+    glDisable(GL_BLEND);
+    glDepthFunc(GL_LESS);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    drawInstances(bone_, g.boneMatrices, g.boneColors);
+    drawInstances(sphere_, g.jointMatrices, g.jointColors);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glEnable(GL_BLEND);
+    glDepthFunc(GL_LEQUAL);
+    drawInstances(bone_, g.boneMatrices, g.boneColors);
+    drawInstances(sphere_, g.jointMatrices, g.jointColors);
+  }
+  glDisable(GL_BLEND);
+  glDepthFunc(GL_LESS);
+}
+
 void SkeletonRenderer::draw(const FrameDescription& frame) {
   if (frame.width <= 0 || frame.height <= 0) return;
   glViewport(frame.x, frame.y, frame.width, frame.height);
@@ -149,6 +174,7 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
       glDepthFunc(GL_LESS);
     }
   }
+  if (frame.ghosts && !frame.ghosts->empty()) drawGhosts(*frame.ghosts, viewProjection, view);
   if (frame.overlay) overlay_.draw(*frame.overlay, viewProjection, frame.width, frame.height);
   glBindVertexArray(0);
   glUseProgram(0);

@@ -29,6 +29,9 @@ struct FrameDescription {
   const MeshDraw* meshes = nullptr;  // shaded (skinned) meshes, drawn before the bones; may be null
   BoneDisplay bones = BoneDisplay::On;
   const OverlayDrawList* overlay = nullptr;             // gizmos, handles, ...; drawn last
+  // Onion-skin ghosts: whole skeletons blended by their colours' alpha after the bones,
+  // depth-tested against the scene (each ghost shows only its nearest surfaces). May be null.
+  const std::vector<SkeletonDrawList>* ghosts = nullptr;
 };
 
 // Draws grid, axes, bones and joints with OpenGL 3.3 core into whatever framebuffer is
@@ -53,6 +56,7 @@ class SkeletonRenderer {
   void createShape(ShapeBuffers& shape, const ShapeMesh& mesh);
   void drawInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices, const std::vector<glm::vec4>& colors);
   void drawGrid(const FrameDescription& frame, const glm::mat4& viewProjection);
+  void drawGhosts(const std::vector<SkeletonDrawList>& ghosts, const glm::mat4& viewProjection, const glm::mat4& view);
 
   ShaderProgram shaded_, lines_;
   OverlayRenderer overlay_;
