@@ -28,12 +28,11 @@ void addMotionPathOverlay(const MotionPath& path, const glm::vec4& color, Overla
   const glm::vec4 line(glm::vec3(color) * 0.8f, color.a);
   out.addPolyline(path.points, false, line, 2.0f);
   for (size_t i = 0; i < path.points.size(); ++i) {
-    if (path.keyed[i]) {
-      out.addHandle(path.points[i], 4.5f, color, OverlayDrawList::HandleShape::Disc);
-    } else {
-      out.addHandle(path.points[i], 2.0f, glm::vec4(1.0f), OverlayDrawList::HandleShape::Disc);
-      out.handles.back().outline.a = 0.0f;
-    }
+    // Keyed frames: a larger dot in the path's colour (mocap keys every frame: a bead chain);
+    // other frames: a small white dot. No outlines, which would turn dense paths black.
+    out.addHandle(path.points[i], path.keyed[i] ? 3.5f : 2.0f, path.keyed[i] ? color : glm::vec4(1.0f),
+                  OverlayDrawList::HandleShape::Disc);
+    out.handles.back().outline.a = 0.0f;
   }
 }
 

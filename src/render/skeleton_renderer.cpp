@@ -9,7 +9,7 @@
 namespace kinema {
 
 SkeletonRenderer::~SkeletonRenderer() {
-  for (ShapeBuffers* s : {&bone_, &sphere_}) {
+  for (ShapeBuffers* s : {&bone_, &sphere_, &ghostBone_, &ghostSphere_}) {
     if (s->vao) glDeleteVertexArrays(1, &s->vao);
     if (s->vertices) glDeleteBuffers(1, &s->vertices);
     if (s->instances) glDeleteBuffers(1, &s->instances);
@@ -25,6 +25,8 @@ std::string SkeletonRenderer::init() {
   if (!error.empty()) return error;
   createShape(bone_, makeOctahedralBone());
   createShape(sphere_, makeSphere(16, 10));
+  createShape(ghostBone_, makeOctahedralBone());
+  createShape(ghostSphere_, makeSphere(16, 10));
 
   glGenVertexArrays(1, &lineVao_);
   glGenBuffers(1, &lineVertices_);
@@ -67,9 +69,8 @@ void SkeletonRenderer::createShape(ShapeBuffers& shape, const ShapeMesh& mesh) {
   glBindVertexArray(0);
 }
 
-void SkeletonRenderer::drawInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices,
-                                     const std::vector<glm::vec4>& colors) {
-  if (matrices.empty()) return;
+void SkeletonRenderer::uploadInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices,
+                                       const std::vector<glm::vec4>& colors) {
   instanceScratch_.clear();
   for (size_t i = 0; i < matrices.size(); ++i) {
     const float* m = glm::value_ptr(matrices[i]);
@@ -81,6 +82,12 @@ void SkeletonRenderer::drawInstances(ShapeBuffers& shape, const std::vector<glm:
   glBindBuffer(GL_ARRAY_BUFFER, shape.instances);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(instanceScratch_.size() * sizeof(float)),
                instanceScratch_.data(), GL_STREAM_DRAW);
+}
+
+void SkeletonRenderer::drawInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices,
+                                     const std::vector<glm::vec4>& colors) {
+  if (matrices.empty()) return;
+  uploadInstances(shape, matrices, colors);
   glDrawArraysInstanced(GL_TRIANGLES, 0, shape.vertexCount, static_cast<GLsizei>(matrices.size()));
 }
 
@@ -104,24 +111,36 @@ void SkeletonRenderer::drawGrid(const FrameDescription& frame, const glm::mat4& 
 
 void SkeletonRenderer::drawGhosts(const std::vector<SkeletonDrawList>& ghosts, const glm::mat4& viewProjection,
                                   const glm::mat4& view) {
+  // All ghosts in one instance list per shape, uploaded once and drawn twice: depth first,
+  // then the colour of the nearest ghost surfaces only (overlapping bones blend once).
+  for (int k = 0; k < 2; ++k) {
+    ghostMatrices_[k].clear();
+    ghostColors_[k].clear();
+  }
+  for (const SkeletonDrawList& g : ghosts) {
+    ghostMatrices_[0].insert(ghostMatrices_[0].end(), g.boneMatrices.begin(), g.boneMatrices.end());
+    ghostColors_[0].insert(ghostColors_[0].end(), g.boneColors.begin(), g.boneColors.end());
+    ghostMatrices_[1].insert(ghostMatrices_[1].end(), g.jointMatrices.begin(), g.jointMatrices.end());
+    ghostColors_[1].insert(ghostColors_[1].end(), g.jointColors.begin(), g.jointColors.end());
+  }
   glUseProgram(shaded_.id());
   glUniformMatrix4fv(shaded_.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
   glUniformMatrix4fv(shaded_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
+  ShapeBuffers* shapes[2] = {&ghostBone_, &ghostSphere_};
+  for (int k = 0; k < 2; ++k)
+    if (!ghostMatrices_[k].empty()) uploadInstances(*shapes[k], ghostMatrices_[k], ghostColors_[k]);
   glEnable(GL_DEPTH_TEST);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-  for (const SkeletonDrawList& g : ghosts) {
-    // Depth first, then the colour of the nearest surfaces only: a ghost's overlapping
-    // bones blend once, not once per layer.
-    glDisable(GL_BLEND);
-    glDepthFunc(GL_LESS);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    drawInstances(bone_, g.boneMatrices, g.boneColors);
-    drawInstances(sphere_, g.jointMatrices, g.jointColors);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glEnable(GL_BLEND);
-    glDepthFunc(GL_LEQUAL);
-    drawInstances(bone_, g.boneMatrices, g.boneColors);
-    drawInstances(sphere_, g.jointMatrices, g.jointColors);
+  for (int pass = 0; pass < 2; ++pass) {
+    const bool colour = pass == 1;
+    glColorMask(colour, colour, colour, colour);
+    if (colour) glEnable(GL_BLEND);
+    glDepthFunc(colour ? GL_LEQUAL : GL_LESS);
+    for (int k = 0; k < 2; ++k) {
+      if (ghostMatrices_[k].empty()) continue;
+      glBindVertexArray(shapes[k]->vao);
+      glDrawArraysInstanced(GL_TRIANGLES, 0, shapes[k]->vertexCount, static_cast<GLsizei>(ghostMatrices_[k].size()));
+    }
   }
   glDisable(GL_BLEND);
   glDepthFunc(GL_LESS);

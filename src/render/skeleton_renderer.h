@@ -55,12 +55,18 @@ class SkeletonRenderer {
   };
   void createShape(ShapeBuffers& shape, const ShapeMesh& mesh);
   void drawInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices, const std::vector<glm::vec4>& colors);
+  void uploadInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices, const std::vector<glm::vec4>& colors);
   void drawGrid(const FrameDescription& frame, const glm::mat4& viewProjection);
   void drawGhosts(const std::vector<SkeletonDrawList>& ghosts, const glm::mat4& viewProjection, const glm::mat4& view);
 
   ShaderProgram shaded_, lines_;
   OverlayRenderer overlay_;
   ShapeBuffers bone_, sphere_;
+  // The ghosts' own instance buffers, uploaded once a frame: re-filling a buffer that a
+  // queued draw still reads makes llvmpipe finish the frame so far first.
+  ShapeBuffers ghostBone_, ghostSphere_;
+  std::vector<glm::mat4> ghostMatrices_[2];
+  std::vector<glm::vec4> ghostColors_[2];
   GLuint lineVao_ = 0, lineVertices_ = 0;
   std::vector<LineVertex> gridCache_;
   float gridCacheCell_ = 0.0f, gridCacheReach_ = 0.0f;

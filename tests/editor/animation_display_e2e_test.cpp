@@ -80,10 +80,11 @@ class AnimationDisplayE2e : public ::testing::Test {
     EXPECT_TRUE(png.ok()) << name;
     return png.ok() ? png.value() : Image();
   }
-  // Plays ~1 s (60 replay frames of 1/60 s), pauses, and frames the pose (Home).
+  // Plays ~1 s (60 replay frames of 1/60 s), pauses, frames the pose (Home) and zooms out
+  // so the ghosts 0.4 s away on either side are in the view.
   static Script playToAboutFrame10() {
     Script s;
-    s.key("SPACE").wait(59).key("SPACE").wait(2).key("HOME").wait(2);
+    s.key("SPACE").wait(59).key("SPACE").wait(2).key("HOME").wait(2).scroll(-3).wait(2);
     return s;
   }
   std::string dir_, bvh_;
