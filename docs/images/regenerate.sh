@@ -24,3 +24,13 @@ tmp=$(mktemp -d)
 XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp xvfb-run -a -s "-screen 0 1280x800x24" "$kinema" edit "$bvh" --size 1280x800 \
   --script "$root/docs/images/editor_onion_path.jsonl" --screenshot "$root/docs/images/editor_onion_path.png"
 rm -rf "$tmp"
+# docs/teaching/ (figures of docs/teaching.md): docs/teaching/regenerate.sh
+"$root/docs/teaching/regenerate.sh" "$kinema"
+# Teach > Compare Solvers (docs/teaching-editor.md): the editor opened on a preset, stepped by
+# recorded keys.
+tmp=$(mktemp -d)
+XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp xvfb-run -a -s "-screen 0 1280x800x24" "$kinema" edit --compare fabrik-steps \
+  --size 1280x720 --script "$root/docs/images/compare_solvers.jsonl" --frame-count 10 --screenshot "$root/docs/images/compare_solvers.png"
+XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp xvfb-run -a -s "-screen 0 1280x800x24" "$kinema" edit --compare near-root \
+  --size 1280x720 --script "$root/docs/images/compare_solvers_near_root.jsonl" --frame-count 10 --screenshot "$root/docs/images/compare_solvers_near_root.png"
+rm -rf "$tmp"

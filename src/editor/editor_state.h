@@ -9,6 +9,7 @@
 #include "editor/motion_control.h"
 #include "editor/motion_path.h"
 #include "editor/onion_skin.h"
+#include "editor/compare_mode.h"
 #include "editor/panel_state.h"
 #include "io/scene.h"
 #include "render/camera.h"
@@ -96,6 +97,7 @@ struct EditorState {
   int hoveredIkTarget = -1;
   EditorRequests requests;
   AnimationEditorKind animationEditor = AnimationEditorKind::None;
+  CompareMode compare;     // Teach > Compare Solvers: replaces the 3D view and the side panels while active
   std::string statusMessage;  // one line for the status bar (errors included)
   // Onion skin, motion path, motion control (View menu; onion_skin.h, motion_path.h, motion_control.h).
   OnionSkinSettings onionSkin;

@@ -205,6 +205,10 @@ void drawMainMenuBar(EditorState& state) {
       showEditorError(state, bindUnskinnedMeshes(doc));
     ImGui::EndMenu();
   }
+  if (ImGui::BeginMenu("Teach")) {
+    if (ImGui::MenuItem("Compare Solvers", "Esc leaves", state.compare.active)) state.compare.active = !state.compare.active;
+    ImGui::EndMenu();
+  }
   if (ImGui::BeginMenu("Help")) {
     if (ImGui::MenuItem("Controls", "F1", p.showHelp)) p.showHelp = !p.showHelp;
     ImGui::EndMenu();

@@ -5,6 +5,7 @@
 #include <ctime>
 
 #include "editor/editor_panels.h"
+#include "editor/compare_panel.h"
 
 namespace kinema {
 
@@ -175,6 +176,13 @@ void drawSessionDialogs(EditorState& state) {
 
 void drawEditorPanels(EditorState& state, float fps) {
   tickEditorSession(state, ImGui::GetTime());
+  if (state.compare.active) {  // Teach > Compare Solvers covers the side panels and the 3D view
+    drawMainMenuBar(state);
+    drawComparePanel(state);
+    drawStatusBar(state, fps);
+    drawSessionDialogs(state);
+    return;
+  }
   drawMainMenuBar(state);
   drawOutlinerPanel(state);
   drawHistoryPanel(state);

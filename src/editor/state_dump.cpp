@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "editor/compare_panel.h"
 #include "editor/editor_window.h"
 #include "ik/ik_solver.h"
 
@@ -48,6 +49,7 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
                      {"height", s.viewportRect.w}};
   out["playback"] = {{"clip", s.hasMotion() ? s.clip : -1}, {"time", s.time}, {"playing", s.playing}};
   out["tool"] = modalToolName(s.tool.mode);
+  out["compare"] = compareStateJson(s.compare);  // Teach > Compare Solvers (docs/cli.md)
   json selection = json::array();
   for (int j : doc.selection.joints()) selection.push_back(jointName(s, j));
   out["selection"] = selection;
