@@ -111,8 +111,7 @@ void SkeletonRenderer::drawGrid(const FrameDescription& frame, const glm::mat4& 
 
 void SkeletonRenderer::drawGhosts(const std::vector<SkeletonDrawList>& ghosts, const glm::mat4& viewProjection,
                                   const glm::mat4& view) {
-  // All ghosts in one instance list per shape, uploaded once and drawn twice: depth first,
-  // then the colour of the nearest ghost surfaces only (overlapping bones blend once).
+  // All ghosts in one instance list per shape, uploaded and drawn once.
   for (int k = 0; k < 2; ++k) {
     ghostMatrices_[k].clear();
     ghostColors_[k].clear();
@@ -129,19 +128,19 @@ void SkeletonRenderer::drawGhosts(const std::vector<SkeletonDrawList>& ghosts, c
   ShapeBuffers* shapes[2] = {&ghostBone_, &ghostSphere_};
   for (int k = 0; k < 2; ++k)
     if (!ghostMatrices_[k].empty()) uploadInstances(*shapes[k], ghostMatrices_[k], ghostColors_[k]);
+  // One blended pass with back faces culled: the shapes are closed and wound outward
+  // (shape_meshes.h), so a bone blends once where it is seen, at the cost of one pass only.
   glEnable(GL_DEPTH_TEST);
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-  for (int pass = 0; pass < 2; ++pass) {
-    const bool colour = pass == 1;
-    glColorMask(colour, colour, colour, colour);
-    if (colour) glEnable(GL_BLEND);
-    glDepthFunc(colour ? GL_LEQUAL : GL_LESS);
-    for (int k = 0; k < 2; ++k) {
-      if (ghostMatrices_[k].empty()) continue;
-      glBindVertexArray(shapes[k]->vao);
-      glDrawArraysInstanced(GL_TRIANGLES, 0, shapes[k]->vertexCount, static_cast<GLsizei>(ghostMatrices_[k].size()));
-    }
+  for (int k = 0; k < 2; ++k) {
+    if (ghostMatrices_[k].empty()) continue;
+    glBindVertexArray(shapes[k]->vao);
+    glDrawArraysInstanced(GL_TRIANGLES, 0, shapes[k]->vertexCount, static_cast<GLsizei>(ghostMatrices_[k].size()));
   }
+  glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
   glDepthFunc(GL_LESS);
 }

@@ -30,7 +30,7 @@ struct FrameDescription {
   BoneDisplay bones = BoneDisplay::On;
   const OverlayDrawList* overlay = nullptr;             // gizmos, handles, ...; drawn last
   // Onion-skin ghosts: whole skeletons blended by their colours' alpha after the bones,
-  // depth-tested against the scene (each ghost shows only its nearest surfaces). May be null.
+  // depth-tested against the scene, front faces only (each bone blends once). May be null.
   const std::vector<SkeletonDrawList>* ghosts = nullptr;
 };
 
