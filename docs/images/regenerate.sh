@@ -22,6 +22,11 @@ rm -rf "$tmp"
 # The curve editor: the last frame of its README e2e test (tests/editor/curve_editor_e2e_test.cpp).
 "$root/build/tests/kinema_tests" --gtest_filter=CurveEditorE2e.ReadmeScreenshotNormalizedWithABezierKey
 cp "$root/build/curve_editor_e2e/curve_editor_readme.png" "$root/docs/images/curve_editor.png"
+# Onion skin + the left hand's motion path on the CMU take (editor_onion_path.jsonl).
+tmp=$(mktemp -d)
+XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp xvfb-run -a -s "-screen 0 1280x800x24" "$kinema" edit "$bvh" --size 1280x800 \
+  --script "$root/docs/images/editor_onion_path.jsonl" --screenshot "$root/docs/images/editor_onion_path.png"
+rm -rf "$tmp"
 # docs/teaching/ (figures of docs/teaching.md): docs/teaching/regenerate.sh
 "$root/docs/teaching/regenerate.sh" "$kinema"
 # Teach > Compare Solvers (docs/teaching-editor.md): the editor opened on a preset, stepped by

@@ -17,7 +17,8 @@ void drawPropertiesPanel(EditorState& state); // active joint: rotation, locatio
 void drawIkTargetsPanel(EditorState& state);  // IK targets and their settings
 void drawHistoryPanel(EditorState& state);    // undo stack, click to jump
 void drawStatusBar(EditorState& state, float fps);
-void drawSessionDialogs(EditorState& state);  // file dialog, discard / recover modals, errors, help
+void drawSessionDialogs(EditorState& state);
+void drawAnimationDisplayWindows(EditorState& state);  // onion skin & motion path settings, motion control  // file dialog, discard / recover modals, errors, help
 
 // Older panels kept for the joint list view and playback.
 void drawJointListPanel(EditorState& state);

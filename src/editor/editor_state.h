@@ -6,6 +6,9 @@
 #include "core/pose.h"
 #include "editor/document.h"
 #include "editor/bottom_panels.h"
+#include "editor/motion_control.h"
+#include "editor/motion_path.h"
+#include "editor/onion_skin.h"
 #include "editor/compare_mode.h"
 #include "editor/curve_editor.h"
 #include "editor/dope_sheet.h"
@@ -100,6 +103,11 @@ struct EditorState {
   CurveEditorState curveEditor;  // the curve editor's view, channel toggles and key selection
   DopeSheetState dopeSheet;  // the dope sheet's selection, view, clipboard and mouse gesture
   std::string statusMessage;  // one line for the status bar (errors included)
+  // Onion skin, motion path, motion control (View menu; onion_skin.h, motion_path.h, motion_control.h).
+  OnionSkinSettings onionSkin;
+  MotionPathSettings motionPath;
+  MotionControlSettings motionControl;
+  bool onionSkinWindowOpen = false;  // View > Onion Skin && Motion Path...
 
   // Derived each frame from the fields above: the document's pose, or the clip while it plays.
   std::vector<glm::mat4> world;

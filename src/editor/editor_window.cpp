@@ -18,6 +18,7 @@
 #include "editor/panel_layout.h"
 #include "editor/state_dump.h"
 #include "editor/viewport_overlay.h"
+#include "editor/animation_display.h"
 #include "editor/viewport_controller.h"
 #include "editor/viewport_tools.h"
 #include "io/atomic_write.h"
@@ -283,6 +284,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     ViewportTools tools;
     SkeletonDrawList list;  // last frame's drawing: picking casts rays against it
     OverlayDrawList overlay;
+    AnimationDisplay animationDisplay;  // onion-skin ghosts, motion path (kept: the path is cached)
     evaluateEditorPose(state);
     int fbw = 0, fbh = 0, ww = 0, wh = 0;
     glfwGetFramebufferSize(window, &fbw, &fbh);
@@ -375,6 +377,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         buildViewportOverlay(state, ViewportView::of(state.camera, glm::vec2(vw, vh), glm::vec2(vp.x * sx, vp.y * sy)),
                              tools, overlay);
+        buildAnimationDisplay(state, skinJoints, animationDisplay, overlay);  // onion skin, motion path
         FrameDescription description;
         description.skeleton = &list;
         description.overlay = &overlay;
@@ -386,6 +389,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         description.sceneRadius = bounds.radius();
         description.showGrid = state.view.showGrid;
         description.meshes = meshes.empty() ? nullptr : &meshDraw;
+        description.ghosts = &animationDisplay.ghostLists;
         description.bones = !state.view.showBones ? BoneDisplay::None
                             : state.view.xrayBones ? BoneDisplay::XRay
                                                    : BoneDisplay::On;

@@ -194,6 +194,10 @@ void drawMainMenuBar(EditorState& state) {
     if (ImGui::MenuItem("Curve Editor", "Shift+F6", state.animationEditor == AnimationEditorKind::CurveEditor))
       state.animationEditor = state.animationEditor == AnimationEditorKind::CurveEditor ? AnimationEditorKind::None
                                                                                           : AnimationEditorKind::CurveEditor;
+    ImGui::MenuItem("Onion Skin", "Alt+O", &state.onionSkin.enabled);
+    ImGui::MenuItem("Motion Path", "Alt+P", &state.motionPath.enabled);
+    if (ImGui::MenuItem("Onion Skin && Motion Path...")) state.onionSkinWindowOpen = true;
+    if (ImGui::MenuItem("Motion Control...", "Alt+M")) state.motionControl.windowOpen = true;
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Pose")) {

@@ -197,6 +197,7 @@ void drawEditorPanels(EditorState& state, float fps) {
   drawTimelinePanel(state);
   drawCurveEditorPanel(state);
   drawDopeSheetPanel(state);
+  drawAnimationDisplayWindows(state);
   drawSessionDialogs(state);
 }
 

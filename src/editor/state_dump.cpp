@@ -81,6 +81,26 @@ json dopeSheetJson(const EditorState& s) {
   out["selected"] = selected;
   return out;
 }
+
+json rect(const glm::vec4& r) { return json::array({r.x, r.y, r.z, r.w}); }
+
+void addAnimationDisplayState(const EditorState& s, json& out) {
+  const OnionSkinSettings& o = s.onionSkin;
+  json ghosts = json::array();
+  if (o.enabled && s.hasMotion()) {
+    const Clip& clip = s.doc.scene().clips[s.clip];
+    for (const GhostFrame& g : ghostFrames(o, clipFrameAt(clip, s.time), clipFrameAt(clip, clip.duration()) + 1))
+      ghosts.push_back({{"frame", g.frame}, {"offset", g.offset}, {"color", json::array({g.color.r, g.color.g, g.color.b, g.color.a})}});
+  }
+  out["onion_skin"] = {{"enabled", o.enabled}, {"before", o.before}, {"after", o.after}, {"step", o.step},
+                       {"opacity", o.opacity}, {"ghosts", ghosts}};
+  out["motion_path"] = {{"enabled", s.motionPath.enabled}, {"whole_clip", s.motionPath.wholeClip}};
+  const MotionControlSettings& m = s.motionControl;
+  out["motion_control"] = {{"window_open", m.windowOpen}, {"profile", toString(m.profile)},
+                           {"show_ticks", m.showTicks},
+                           {"profile_rects", json::array({rect(m.profileRects[0]), rect(m.profileRects[1]), rect(m.profileRects[2])})},
+                           {"apply_rect", rect(m.applyRect)}};
+}
 }  // namespace
 
 std::string editorStateJson(const EditorState& s, int windowWidth, int windowHeight, long long frames) {
@@ -156,6 +176,7 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
   }
   out["ik_targets"] = targets;
   out["curve_editor"] = curveEditorJson(s);
+  addAnimationDisplayState(s, out);  // onion skin, motion path, motion control
   return out.dump(1) + "\n";
 }
 

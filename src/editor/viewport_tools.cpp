@@ -398,6 +398,15 @@ void ViewportTools::key(EditorState& state, const ViewportView& view, int key) {
     case GLFW_KEY_SPACE:
       if (state.hasMotion()) state.playing = !state.playing;
       break;
+    case GLFW_KEY_O:
+      if (alt) state.onionSkin.enabled = !state.onionSkin.enabled;  // onion skin (ghost poses)
+      break;
+    case GLFW_KEY_P:
+      if (alt) state.motionPath.enabled = !state.motionPath.enabled;  // the active joint's motion path
+      break;
+    case GLFW_KEY_M:
+      if (alt) state.motionControl.windowOpen = !state.motionControl.windowOpen;  // motion control window
+      break;
     default: break;
   }
 }

@@ -9,7 +9,7 @@
 namespace kinema {
 
 SkeletonRenderer::~SkeletonRenderer() {
-  for (ShapeBuffers* s : {&bone_, &sphere_}) {
+  for (ShapeBuffers* s : {&bone_, &sphere_, &ghostBone_, &ghostSphere_}) {
     if (s->vao) glDeleteVertexArrays(1, &s->vao);
     if (s->vertices) glDeleteBuffers(1, &s->vertices);
     if (s->instances) glDeleteBuffers(1, &s->instances);
@@ -25,6 +25,8 @@ std::string SkeletonRenderer::init() {
   if (!error.empty()) return error;
   createShape(bone_, makeOctahedralBone());
   createShape(sphere_, makeSphere(16, 10));
+  createShape(ghostBone_, makeOctahedralBone());
+  createShape(ghostSphere_, makeSphere(16, 10));
 
   glGenVertexArrays(1, &lineVao_);
   glGenBuffers(1, &lineVertices_);
@@ -67,9 +69,8 @@ void SkeletonRenderer::createShape(ShapeBuffers& shape, const ShapeMesh& mesh) {
   glBindVertexArray(0);
 }
 
-void SkeletonRenderer::drawInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices,
-                                     const std::vector<glm::vec4>& colors) {
-  if (matrices.empty()) return;
+void SkeletonRenderer::uploadInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices,
+                                       const std::vector<glm::vec4>& colors) {
   instanceScratch_.clear();
   for (size_t i = 0; i < matrices.size(); ++i) {
     const float* m = glm::value_ptr(matrices[i]);
@@ -81,6 +82,12 @@ void SkeletonRenderer::drawInstances(ShapeBuffers& shape, const std::vector<glm:
   glBindBuffer(GL_ARRAY_BUFFER, shape.instances);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(instanceScratch_.size() * sizeof(float)),
                instanceScratch_.data(), GL_STREAM_DRAW);
+}
+
+void SkeletonRenderer::drawInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices,
+                                     const std::vector<glm::vec4>& colors) {
+  if (matrices.empty()) return;
+  uploadInstances(shape, matrices, colors);
   glDrawArraysInstanced(GL_TRIANGLES, 0, shape.vertexCount, static_cast<GLsizei>(matrices.size()));
 }
 
@@ -100,6 +107,42 @@ void SkeletonRenderer::drawGrid(const FrameDescription& frame, const glm::mat4& 
   glUniformMatrix4fv(lines_.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
   glBindVertexArray(lineVao_);
   glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(gridCache_.size()));
+}
+
+void SkeletonRenderer::drawGhosts(const std::vector<SkeletonDrawList>& ghosts, const glm::mat4& viewProjection,
+                                  const glm::mat4& view) {
+  // All ghosts in one instance list per shape, uploaded and drawn once.
+  for (int k = 0; k < 2; ++k) {
+    ghostMatrices_[k].clear();
+    ghostColors_[k].clear();
+  }
+  for (const SkeletonDrawList& g : ghosts) {
+    ghostMatrices_[0].insert(ghostMatrices_[0].end(), g.boneMatrices.begin(), g.boneMatrices.end());
+    ghostColors_[0].insert(ghostColors_[0].end(), g.boneColors.begin(), g.boneColors.end());
+    ghostMatrices_[1].insert(ghostMatrices_[1].end(), g.jointMatrices.begin(), g.jointMatrices.end());
+    ghostColors_[1].insert(ghostColors_[1].end(), g.jointColors.begin(), g.jointColors.end());
+  }
+  glUseProgram(shaded_.id());
+  glUniformMatrix4fv(shaded_.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
+  glUniformMatrix4fv(shaded_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
+  ShapeBuffers* shapes[2] = {&ghostBone_, &ghostSphere_};
+  for (int k = 0; k < 2; ++k)
+    if (!ghostMatrices_[k].empty()) uploadInstances(*shapes[k], ghostMatrices_[k], ghostColors_[k]);
+  // One blended pass with back faces culled: the shapes are closed and wound outward
+  // (shape_meshes.h), so a bone blends once where it is seen, at the cost of one pass only.
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  for (int k = 0; k < 2; ++k) {
+    if (ghostMatrices_[k].empty()) continue;
+    glBindVertexArray(shapes[k]->vao);
+    glDrawArraysInstanced(GL_TRIANGLES, 0, shapes[k]->vertexCount, static_cast<GLsizei>(ghostMatrices_[k].size()));
+  }
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  glDepthFunc(GL_LESS);
 }
 
 void SkeletonRenderer::draw(const FrameDescription& frame) {
@@ -149,6 +192,7 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
       glDepthFunc(GL_LESS);
     }
   }
+  if (frame.ghosts && !frame.ghosts->empty()) drawGhosts(*frame.ghosts, viewProjection, view);
   if (frame.overlay) overlay_.draw(*frame.overlay, viewProjection, frame.width, frame.height);
   glBindVertexArray(0);
   glUseProgram(0);

@@ -29,6 +29,9 @@ struct FrameDescription {
   const MeshDraw* meshes = nullptr;  // shaded (skinned) meshes, drawn before the bones; may be null
   BoneDisplay bones = BoneDisplay::On;
   const OverlayDrawList* overlay = nullptr;             // gizmos, handles, ...; drawn last
+  // Onion-skin ghosts: whole skeletons blended by their colours' alpha after the bones,
+  // depth-tested against the scene, front faces only (each bone blends once). May be null.
+  const std::vector<SkeletonDrawList>* ghosts = nullptr;
 };
 
 // Draws grid, axes, bones and joints with OpenGL 3.3 core into whatever framebuffer is
@@ -52,11 +55,18 @@ class SkeletonRenderer {
   };
   void createShape(ShapeBuffers& shape, const ShapeMesh& mesh);
   void drawInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices, const std::vector<glm::vec4>& colors);
+  void uploadInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices, const std::vector<glm::vec4>& colors);
   void drawGrid(const FrameDescription& frame, const glm::mat4& viewProjection);
+  void drawGhosts(const std::vector<SkeletonDrawList>& ghosts, const glm::mat4& viewProjection, const glm::mat4& view);
 
   ShaderProgram shaded_, lines_;
   OverlayRenderer overlay_;
   ShapeBuffers bone_, sphere_;
+  // The ghosts' own instance buffers, uploaded once a frame: re-filling a buffer that a
+  // queued draw still reads makes llvmpipe finish the frame so far first.
+  ShapeBuffers ghostBone_, ghostSphere_;
+  std::vector<glm::mat4> ghostMatrices_[2];
+  std::vector<glm::vec4> ghostColors_[2];
   GLuint lineVao_ = 0, lineVertices_ = 0;
   std::vector<LineVertex> gridCache_;
   float gridCacheCell_ = 0.0f, gridCacheReach_ = 0.0f;

@@ -1,0 +1,43 @@
+#pragma once
+#include <vector>
+
+#include "core/math.h"
+#include "io/scene.h"
+
+namespace kinema {
+
+// Onion skin (Blender's / Maya's ghosting): translucent poses of the edited clip a few frames
+// before and after the current one, one tint for the past and another for the future,
+// fading with the distance from the current frame.
+struct OnionSkinSettings {
+  bool enabled = false;
+  int before = 2, after = 2;  // ghosts on each side
+  int step = 2;               // frames between ghosts (and from the current frame to the nearest)
+  float opacity = 0.6f;       // alpha of the nearest ghosts; the farthest fade towards 0
+  glm::vec3 beforeColor{0.20f, 0.85f, 0.30f};  // green: frames already played
+  glm::vec3 afterColor{0.25f, 0.50f, 1.00f};   // blue: frames to come
+};
+
+// One ghost: the clip frame it shows and how it is tinted.
+struct GhostFrame {
+  long long frame = 0;  // on the clip's frame grid (0 .. frameCount - 1)
+  int offset = 0;       // signed distance in ghosts: -1 the nearest before, +1 the nearest after
+  glm::vec4 color{1.0f};  // rgb tint, alpha = opacity faded with |offset|
+};
+
+// The ghosts around `current` (frames 0 .. frameCount - 1): before ones first, farthest to
+// nearest, then after ones nearest to farthest. Ghosts that would fall outside the clip are
+// dropped (not clamped onto its ends, where they would pile up). Nearest alpha = opacity,
+// the k-th of n on a side has opacity * (n - k + 1) / n.
+std::vector<GhostFrame> ghostFrames(const OnionSkinSettings& settings, long long current, long long frameCount);
+
+// Seconds per frame of a clip: its own frame time, or 1/30 s for clips without a grid.
+double clipFrameTime(const Clip& clip);
+// The clip frame nearest to `time` seconds.
+long long clipFrameAt(const Clip& clip, double time);
+
+// World transforms of every joint at each ghost's frame: the clip sampled over the rest
+// pose (what playback shows), then forward kinematics.
+std::vector<std::vector<glm::mat4>> ghostPoses(const Scene& scene, int clip, const std::vector<GhostFrame>& ghosts);
+
+}  // namespace kinema
