@@ -3,6 +3,8 @@
 #include <nlohmann/json.hpp>
 
 #include "editor/editor_window.h"
+#include "editor/panel_layout.h"
+#include "editor/timeline.h"
 #include "ik/ik_solver.h"
 
 namespace kinema {
@@ -13,6 +15,48 @@ json vec(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
 json jointName(const EditorState& s, int j) {
   return j >= 0 && j < s.doc.skeleton().size() ? json(s.doc.skeleton().names[j]) : json(nullptr);
 }
+// The timeline (timeline.h): frame, range, rate, playback switches, the ruler's pixels and
+// the edited clip's channels with their key times.
+json timelineJson(const EditorState& s, int windowWidth, int windowHeight) {
+  const TimelineRuler r = timelineRuler(s, timelineRect(ImVec2(float(windowWidth), float(windowHeight))));
+  const AutoKeySettings& a = s.doc.autoKey;
+  json t = {{"shown", s.timelineShown()},
+            {"frame", currentFrame(s)},
+            {"start", rangeStartFrame(s)},
+            {"end", rangeEndFrame(s)},
+            {"fps", timelineFps(s)},
+            {"loop", s.loop},
+            {"playing", s.playing},
+            {"auto_key", a.enabled},
+            {"key_interpolation", toString(a.preferences.interpolation)},
+            {"key_handles", toString(a.preferences.handles)},
+            {"animation_editor", s.animationEditor == AnimationEditorKind::DopeSheet     ? "dope-sheet"
+                                 : s.animationEditor == AnimationEditorKind::CurveEditor ? "curve-editor"
+                                                                                         : "none"},
+            {"ruler", {{"x", r.x}, {"y", r.y}, {"width", r.w}, {"height", r.h}, {"first", r.first}, {"last", r.last},
+                       {"margin", kTimelineRulerMargin}}}};
+  json keyFrames = json::array();
+  for (long long f : selectedKeyFrames(s)) keyFrames.push_back(f);
+  t["selected_key_frames"] = keyFrames;
+  json channels = json::array();
+  if (s.hasMotion()) {
+    const Clip& clip = s.doc.scene().clips[s.clip];
+    t["clip_name"] = clip.name;
+    for (const Channel& ch : clip.channels) {
+      json times = json::array();
+      for (float x : ch.times) times.push_back(x);
+      json interpolations = json::array();
+      for (int k = 0; k < ch.keyCount(); ++k) interpolations.push_back(toString(ch.settings(k).interpolation));
+      channels.push_back({{"joint", jointName(s, ch.joint)},
+                          {"target", toString(ch.target)},
+                          {"times", times},
+                          {"interpolations", interpolations}});
+    }
+  }
+  t["channels"] = channels;
+  return t;
+}
+
 }  // namespace
 
 std::string editorStateJson(const EditorState& s, int windowWidth, int windowHeight, long long frames) {
@@ -28,6 +72,7 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
   out["viewport"] = {{"x", s.viewportRect.x}, {"y", s.viewportRect.y}, {"width", s.viewportRect.z},
                      {"height", s.viewportRect.w}};
   out["playback"] = {{"clip", s.hasMotion() ? s.clip : -1}, {"time", s.time}, {"playing", s.playing}};
+  out["timeline"] = timelineJson(s, windowWidth, windowHeight);
   out["tool"] = modalToolName(s.tool.mode);
   json selection = json::array();
   for (int j : doc.selection.joints()) selection.push_back(jointName(s, j));
