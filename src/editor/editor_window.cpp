@@ -1,3 +1,4 @@
+#include "editor/timeline.h"
 #include "editor/editor_window.h"
 
 #include <glad/gl.h>
@@ -283,6 +284,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     ViewportTools tools;
     SkeletonDrawList list;  // last frame's drawing: picking casts rays against it
     OverlayDrawList overlay;
+    if (state.time == 0.0 && !state.playing) resetTimeline(state);  // frame 1 without a clip, as in Blender
     evaluateEditorPose(state);
     int fbw = 0, fbh = 0, ww = 0, wh = 0;
     glfwGetFramebufferSize(window, &fbw, &fbh);

@@ -64,6 +64,12 @@ void goToFrame(EditorState& s, long long frame) {
   if (!s.playing) poseAtPlayhead(s);
 }
 
+void resetTimeline(EditorState& s) {
+  s.playing = s.wasPlaying = s.sampleClip = false;
+  s.time = timeOfFrame(s, rangeStartFrame(s));
+  syncAutoKey(s);
+}
+
 void stepFrame(EditorState& s, int delta) { goToFrame(s, currentFrame(s) + delta); }
 void jumpToStart(EditorState& s) { goToFrame(s, rangeStartFrame(s)); }
 void jumpToEnd(EditorState& s) { goToFrame(s, rangeEndFrame(s)); }

@@ -27,6 +27,8 @@ long long rangeEndFrame(const EditorState& state);
 // Moves the playhead to `frame` (also the auto-key time) and poses the document from the
 // clip there (while not playing). Frames outside the range are allowed, as in Blender.
 void goToFrame(EditorState& state, long long frame);
+// A new or opened document: stopped at the range's start frame (frame 1 without a clip).
+void resetTimeline(EditorState& state);
 void stepFrame(EditorState& state, int delta);  // Left / Right: one frame, no wrap
 void jumpToStart(EditorState& state);           // Shift+Left
 void jumpToEnd(EditorState& state);             // Shift+Right

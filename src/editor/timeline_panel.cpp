@@ -61,10 +61,11 @@ void drawRuler(EditorState& state, const TimelineRuler& r) {
   long long step = 1;
   for (int i = 0; step * pxPerFrame < 40.0 && i < 30; ++i) step = (i % 3 == 1) ? step / 2 * 5 : step * 2;
   for (long long f = (r.first / step) * step; f <= r.last; f += step) {
-    if (f < r.first) continue;
+    if (f <= r.first) f = r.first;  // the first frame is always labelled
     const float x = r.xOfFrame(f);
     draw->AddLine(ImVec2(x, r.y), ImVec2(x, r.y + 5), kTickColor);
     draw->AddText(ImVec2(x + 2, r.y), kTickColor, std::to_string(f).c_str());
+    if (f == r.first && f % step != 0) f = (f / step) * step;  // back on the tick grid
   }
   const long long frame = currentFrame(state);
   if (frame >= r.first && frame <= r.last) {
@@ -108,15 +109,21 @@ void drawTimelinePanel(EditorState& state) {
   ImGui::SameLine();
   const ImGuiInputTextFlags enter = ImGuiInputTextFlags_EnterReturnsTrue;
   int start = static_cast<int>(rangeStartFrame(state)), end = static_cast<int>(rangeEndFrame(state));
-  ImGui::SetNextItemWidth(44);
-  if (ImGui::InputInt("Start", &start, 0, 0, enter)) status(setFrameRange(state, start, end));
+  ImGui::TextUnformatted("Start");
+  ImGui::SameLine(0, 3);
+  ImGui::SetNextItemWidth(40);
+  if (ImGui::InputInt("##start", &start, 0, 0, enter)) status(setFrameRange(state, start, end));
   ImGui::SameLine();
-  ImGui::SetNextItemWidth(44);
-  if (ImGui::InputInt("End", &end, 0, 0, enter)) status(setFrameRange(state, start, end));
+  ImGui::TextUnformatted("End");
+  ImGui::SameLine(0, 3);
+  ImGui::SetNextItemWidth(40);
+  if (ImGui::InputInt("##end", &end, 0, 0, enter)) status(setFrameRange(state, start, end));
   ImGui::SameLine();
+  ImGui::TextUnformatted("fps");
+  ImGui::SameLine(0, 3);
   int fps = static_cast<int>(std::lround(timelineFps(state)));
-  ImGui::SetNextItemWidth(32);
-  if (ImGui::InputInt("fps", &fps, 0, 0, enter)) status(setFrameRate(state, fps));
+  ImGui::SetNextItemWidth(28);
+  if (ImGui::InputInt("##fps", &fps, 0, 0, enter)) status(setFrameRate(state, fps));
   ImGui::SameLine();
   ImGui::Checkbox("Loop", &state.loop);
   ImGui::SameLine();
