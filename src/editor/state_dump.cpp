@@ -18,7 +18,8 @@ json jointName(const EditorState& s, int j) {
 // The timeline (timeline.h): frame, range, rate, playback switches, the ruler's pixels and
 // the edited clip's channels with their key times.
 json timelineJson(const EditorState& s, int windowWidth, int windowHeight) {
-  const TimelineRuler r = timelineRuler(s, timelineRect(ImVec2(float(windowWidth), float(windowHeight))));
+  const PanelRect strip = timelineRect(ImVec2(float(windowWidth), float(windowHeight)));
+  const TimelineRuler r = timelineRuler(s, strip.x, strip.y, strip.w, strip.h);
   const AutoKeySettings& a = s.doc.autoKey;
   json t = {{"shown", s.timelineShown()},
             {"frame", currentFrame(s)},

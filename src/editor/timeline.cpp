@@ -169,12 +169,12 @@ long long TimelineRuler::frameAtX(float px) const {
   return std::clamp(static_cast<long long>(std::llround(std::isfinite(f) ? f : 0.0)), first, last);
 }
 
-TimelineRuler timelineRuler(const EditorState& s, const PanelRect& t) {
+TimelineRuler timelineRuler(const EditorState& s, float x, float y, float w, float h) {
   TimelineRuler r;
-  r.x = t.x + 4;
-  r.w = std::max(t.w - 8, 1.0f);
+  r.x = x + 4;
+  r.w = std::max(w - 8, 1.0f);
   r.h = kTimelineRulerHeight;
-  r.y = t.y + t.h - kTimelineRulerHeight - 4;
+  r.y = y + h - kTimelineRulerHeight - 4;
   r.first = rangeStartFrame(s);
   r.last = std::max(rangeEndFrame(s), r.first + 1);
   return r;

@@ -2,7 +2,6 @@
 #include <string>
 #include <vector>
 
-#include "editor/panel_layout.h"
 
 namespace kinema {
 
@@ -62,7 +61,8 @@ struct TimelineRuler {
 };
 constexpr float kTimelineRulerHeight = 22.0f;  // under the row of buttons
 constexpr float kTimelineRulerMargin = 12.0f;  // left and right, so the end frames' diamonds fit
-TimelineRuler timelineRuler(const EditorState& state, const PanelRect& timeline);
+// `x, y, w, h`: the timeline strip (panel_layout.h timelineRect), window pixels.
+TimelineRuler timelineRuler(const EditorState& state, float x, float y, float w, float h);
 // Frames holding a key of a selected joint (one diamond each), in the edited clip.
 std::vector<long long> selectedKeyFrames(const EditorState& state);
 

@@ -144,7 +144,7 @@ void drawTimelinePanel(EditorState& state) {
   if (ImGui::Selectable("Curves", curves, 0, ImVec2(44, 0)))
     state.animationEditor = curves ? AnimationEditorKind::None : AnimationEditorKind::CurveEditor;
   ImGui::PopStyleVar();
-  drawRuler(state, timelineRuler(state, r));
+  drawRuler(state, timelineRuler(state, r.x, r.y, r.w, r.h));
   ImGui::End();
   ImGui::PopStyleVar();
 }
