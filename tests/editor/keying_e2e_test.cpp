@@ -84,9 +84,12 @@ class KeyingE2e : public ::testing::Test {
     const json& r = d["timeline"]["ruler"];
     return double(r["y"]) + double(r["height"]) / 2;
   }
+  // n presses of a key, one a frame. The editor handles a key's release a frame after its
+  // press, so n presses take 2n frames: wait for them before clicking (else a click lands
+  // in the same frame as its mouse move, judged by the previous frame's ImGui hover).
   static Script steps(Script s, const char* key, int n) {
     for (int i = 0; i < n; ++i) s.key(key);
-    return s;
+    return s.wait(n + 2);
   }
 
   static inline json front_;
@@ -207,14 +210,14 @@ TEST_F(KeyingE2e, DraggingInTheRulerScrubs) {
   EXPECT_EQ(d["undo_depth"], 0);  // scrubbing is not an edit
 }
 
-// Auto-key on (Pose > Auto-key), auto-IK on (Ctrl+I), frame 10, then drag the hand: keys at
+// Auto-IK on (Ctrl+I), frame 10, auto-key on (Pose > Auto-key), then drag the hand: keys at
 // frame 10 for exactly the joints the drag moved (the chain of 2 above the hand), one undo step.
 TEST_F(KeyingE2e, AutoKeyRecordsAnIkDrag) {
   const glm::dvec2 h = pixelOf("Hand.L");
   Script s;
   s.keyDown("LEFT_CONTROL").key("I").keyUp("LEFT_CONTROL");
-  s.menu({157, 9}, kPoseAutoKey);
   s = steps(s, "RIGHT", 9);
+  s.menu({157, 9}, kPoseAutoKey);
   s.move(h).down().path(h, h + glm::dvec2(-50, 70), 8).up().wait(2);
   json d = run(s, "auto_key_ik");
   ASSERT_TRUE(d.is_object());
