@@ -24,3 +24,20 @@ tmp=$(mktemp -d)
 XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp xvfb-run -a -s "-screen 0 1280x800x24" "$kinema" edit \
   --size 1280x800 --script "$root/docs/images/editor_timeline_keys.jsonl" --screenshot "$root/docs/images/editor_timeline_keys.png"
 rm -rf "$tmp"
+# The curve editor: the last frame of its README e2e test (tests/editor/curve_editor_e2e_test.cpp).
+"$root/build/tests/kinema_tests" --gtest_filter=CurveEditorE2e.ReadmeScreenshotNormalizedWithABezierKey
+cp "$root/build/curve_editor_e2e/curve_editor_readme.png" "$root/docs/images/curve_editor.png"
+# docs/teaching/ (figures of docs/teaching.md): docs/teaching/regenerate.sh
+"$root/docs/teaching/regenerate.sh" "$kinema"
+# Teach > Compare Solvers (docs/teaching-editor.md): the editor opened on a preset, stepped by
+# recorded keys.
+tmp=$(mktemp -d)
+XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp xvfb-run -a -s "-screen 0 1280x800x24" "$kinema" edit --compare fabrik-steps \
+  --size 1280x720 --script "$root/docs/images/compare_solvers.jsonl" --frame-count 10 --screenshot "$root/docs/images/compare_solvers.png"
+XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp xvfb-run -a -s "-screen 0 1280x800x24" "$kinema" edit --compare near-root \
+  --size 1280x720 --script "$root/docs/images/compare_solvers_near_root.jsonl" --frame-count 10 --screenshot "$root/docs/images/compare_solvers_near_root.png"
+rm -rf "$tmp"
+# The dope sheet: made by its end-to-end test (a clip written by the test, a box selection).
+build=$(cd "$(dirname "$kinema")/.." && pwd)
+"$build/tests/kinema_tests" --gtest_filter=DopeSheetE2e.ScreenshotForTheReadme >/dev/null
+cp "$build/dope_sheet_e2e/dope_sheet.png" "$root/docs/images/dope_sheet.png"

@@ -22,6 +22,7 @@ CLI::App* addEditCommand(CLI::App& app, EditOptions& o) {
   cmd->add_option("--size", o.size, "Window size WxH in pixels (default 1280x720)");
   cmd->add_flag("--report-frame-times", o.reportFrameTimes, "Print mean and median frame times (ms) on stderr at exit");
   cmd->add_flag("--empty-frame", o.emptyFrame, "Draw only an empty ImGui frame (baseline for --report-frame-times)");
+  cmd->add_option("--compare", o.compare, "Open in Teach > Compare Solvers with this preset (kinema demo list)");
   return cmd;
 }
 
@@ -54,6 +55,14 @@ int runEdit(const EditOptions& o) {
   if (!loaded) return badInput(loaded.error());
   EditorState state;
   state.doc = Document(std::move(loaded.value()), o.file);
+  if (!o.compare.empty()) {
+    if (!findTeachingPreset(o.compare)) {
+      std::cerr << "kinema edit: --compare '" << o.compare << "' is not a preset (kinema demo list); see --help\n";
+      return kExitUsage;
+    }
+    state.compare.active = true;
+    if (const std::string err = openComparePreset(state.compare, o.compare); !err.empty()) return badInput(err);
+  }
   options.frameCount = o.frameCount;
   options.screenshotPath = o.screenshot;
   options.dumpStatePath = o.dumpState;

@@ -14,6 +14,7 @@ struct EditOptions {
   std::string size;
   bool reportFrameTimes = false;
   bool emptyFrame = false;
+  std::string compare;  // open straight into Teach > Compare Solvers with this preset
   int width = 1280, height = 720;
 };
 

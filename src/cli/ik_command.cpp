@@ -61,6 +61,8 @@ CLI::App* addIkCommand(CLI::App& app, IkOptions& o) {
   cmd->add_option("--lambda", o.lambda, "jacobian-dls damping, as a fraction of the chain's reach (default 0.1)");
   cmd->add_option("--pole", o.pole, "two-bone: X,Y,Z point the middle joint bends towards");
   cmd->add_option("--soften", o.soften, "two-bone: soften distance near full extension (default 0)");
+  cmd->add_option("--fabrik-finish-after", o.fabrikFinishAfter,
+                  "fabrik with limits or several targets: DLS finishes after at most N passes (default 10; 0 = passes only)");
   cmd->add_option("--clip", o.clip, "Clip index (default 0)");
   o.timeOption = cmd->add_option("--time", o.time, "Start from the pose at this time (seconds)");
   o.frameOption = cmd->add_option("--frame", o.frame, "Start from the pose at this frame");
@@ -95,6 +97,7 @@ int runIk(const IkOptions& o) {
   if (!std::isfinite(o.lambda) || o.lambda < 0) return badInput("--lambda must be a finite number >= 0");
   if (!std::isfinite(o.soften) || o.soften < 0) return badInput("--soften must be a finite number >= 0");
   if (o.maxIterations == 0 || o.maxIterations < -1) return badInput("--max-iterations must be at least 1");
+  if (o.fabrikFinishAfter < 0) return badInput("--fabrik-finish-after must be >= 0");
 
   Result<Scene> loaded = loadSceneOrDefault(o.file);
   if (!loaded) return badInput(loaded.error());
@@ -142,6 +145,7 @@ int runIk(const IkOptions& o) {
   settings.maxIterations = o.maxIterations > 0 ? o.maxIterations : (*solver == IkSolver::JacobianTranspose ? 2000 : 100);
   settings.dlsLambda = static_cast<float>(o.lambda);
   settings.twoBoneSoften = static_cast<float>(o.soften);
+  settings.fabrikFinishAfter = o.fabrikFinishAfter;
   IkTrace trace;
   if (o.trace) settings.trace = &trace;
   const IkResult r = solveIk(*solver, problem, settings);

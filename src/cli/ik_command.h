@@ -14,6 +14,7 @@ struct IkOptions {
   int maxIterations = -1;  // -1: 100, or 2000 for jacobian-transpose
   double lambda = 0.1;
   double soften = 0.0;
+  int fabrikFinishAfter = 10;  // IkSettings::fabrikFinishAfter
   int clip = 0;
   double time = 0.0;
   long long frame = 0;

@@ -4,6 +4,7 @@
 
 #include "cli/command_line.h"
 #include "cli/convert_command.h"
+#include "cli/demo_command.h"
 #include "cli/edit_command.h"
 #include "cli/ik_command.h"
 #include "cli/plot_curves_command.h"
@@ -31,6 +32,8 @@ int main(int argc, char** argv) {
   CLI::App* convertCmd = kinema::cli::addConvertCommand(app, convert);
   kinema::cli::SkinOptions skin;
   CLI::App* skinCmd = kinema::cli::addSkinCommand(app, skin);
+  kinema::cli::DemoOptions demo;
+  CLI::App* demoCmd = kinema::cli::addDemoCommand(app, demo);
 
   try {
     app.parse(argc, argv);
@@ -52,5 +55,6 @@ int main(int argc, char** argv) {
   if (editCmd->parsed()) return kinema::cli::runEdit(edit);
   if (convertCmd->parsed()) return kinema::cli::runConvert(convert);
   if (skinCmd->parsed()) return kinema::cli::runSkin(skin);
+  if (demoCmd->parsed()) return kinema::cli::runDemo(demo);
   return kinema::cli::runDefault();
 }

@@ -22,6 +22,7 @@ void drawSessionDialogs(EditorState& state);  // file dialog, discard / recover 
 // Older panels kept for the joint list view and playback.
 void drawJointListPanel(EditorState& state);
 void drawTimelinePanel(EditorState& state);
+void drawCurveEditorPanel(EditorState& state);  // curve editor in the animation editor area (Shift+F6)
 void drawViewportHelp(const EditorState& state, float fps);
 
 // File actions, shared by the menu and its shortcuts (drawMainMenuBar handles Ctrl+N, O,

@@ -6,6 +6,9 @@
 #include "core/pose.h"
 #include "editor/document.h"
 #include "editor/bottom_panels.h"
+#include "editor/compare_mode.h"
+#include "editor/curve_editor.h"
+#include "editor/dope_sheet.h"
 #include "editor/panel_state.h"
 #include "io/scene.h"
 #include "render/camera.h"
@@ -93,6 +96,9 @@ struct EditorState {
   int hoveredIkTarget = -1;
   EditorRequests requests;
   AnimationEditorKind animationEditor = AnimationEditorKind::None;
+  CompareMode compare;     // Teach > Compare Solvers: replaces the 3D view and the side panels while active
+  CurveEditorState curveEditor;  // the curve editor's view, channel toggles and key selection
+  DopeSheetState dopeSheet;  // the dope sheet's selection, view, clipboard and mouse gesture
   std::string statusMessage;  // one line for the status bar (errors included)
 
   // Derived each frame from the fields above: the document's pose, or the clip while it plays.
@@ -111,6 +117,13 @@ struct EditorState {
     b.timeline = timelineShown();
     b.animationEditor = animationEditor != AnimationEditorKind::None;
     return b;
+  }
+  // Whether window pixel p is over the animation editor (right under the 3D view, when
+  // shown): keys pressed there go to that editor, not to the viewport (Blender).
+  bool animationEditorContains(glm::vec2 p) const {
+    return animationEditor != AnimationEditorKind::None && p.x >= viewportRect.x &&
+           p.x < viewportRect.x + viewportRect.z && p.y >= viewportRect.y + viewportRect.w &&
+           p.y < viewportRect.y + viewportRect.w + kAnimationEditorHeight;
   }
 };
 

@@ -322,7 +322,10 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       const bool mouseCaptured = io.WantCaptureMouse, keyboardCaptured = io.WantCaptureKeyboard;
       while (!live.queue.empty()) {
         if (!feedImGui(io, live.queue.front(), changed)) break;
-        tools.handle(state, live.queue.front(), view, list, mouseCaptured, keyboardCaptured);
+        if (state.compare.active)  // the compare mode takes the viewport's input
+          handleCompareEvent(state.compare, live.queue.front(), mouseCaptured, keyboardCaptured);
+        else
+          tools.handle(state, live.queue.front(), view, list, mouseCaptured, keyboardCaptured);
         live.queue.pop_front();
       }
       advancePlayback(state, dt);
@@ -388,7 +391,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         description.bones = !state.view.showBones ? BoneDisplay::None
                             : state.view.xrayBones ? BoneDisplay::XRay
                                                    : BoneDisplay::On;
-        renderer.draw(description);
+        if (!state.compare.active) renderer.draw(description);  // the compare mode draws with ImGui
       }
       imguiBackendsRenderDrawData(ImGui::GetDrawData());
 

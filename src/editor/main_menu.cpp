@@ -97,6 +97,8 @@ void handleMenuShortcuts(EditorState& state) {
   if (io.WantTextInput || !io.KeyCtrl || io.KeyAlt || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) return;
   const auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
   const bool shift = io.KeyShift;
+  // Over the dope sheet, Ctrl+C / Ctrl+V copy and paste keys (dope_sheet_panel.cpp).
+  if (state.animationEditorContains(glm::vec2(io.MousePos.x, io.MousePos.y)) && (pressed(GLFW_KEY_C) || pressed(GLFW_KEY_V))) return;
   if (pressed(GLFW_KEY_N)) requestNewDocument(state);
   else if (pressed(GLFW_KEY_O)) requestOpenDialog(state);
   else if (pressed(GLFW_KEY_S)) shift ? requestSaveAs(state) : requestSave(state);
@@ -185,6 +187,13 @@ void drawMainMenuBar(EditorState& state) {
     ImGui::MenuItem("Weights of the Active Joint", "Alt+W", &state.view.showWeights);
     ImGui::MenuItem("Show Limits", nullptr, &state.view.showLimits);
     ImGui::MenuItem("Show Grid", nullptr, &state.view.showGrid);
+    ImGui::Separator();
+    if (ImGui::MenuItem("Curve Editor", "Shift+F6", state.animationEditor == AnimationEditorKind::CurveEditor))
+      state.animationEditor = state.animationEditor == AnimationEditorKind::CurveEditor ? AnimationEditorKind::None
+                                                                                          : AnimationEditorKind::CurveEditor;
+    const bool dopeSheet = state.animationEditor == AnimationEditorKind::DopeSheet;
+    if (ImGui::MenuItem("Dope Sheet", nullptr, dopeSheet))
+      state.animationEditor = dopeSheet ? AnimationEditorKind::None : AnimationEditorKind::DopeSheet;
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Pose")) {
@@ -206,6 +215,10 @@ void drawMainMenuBar(EditorState& state) {
     if (ImGui::MenuItem("Delete Keyframe", "Alt+I", false, !doc.selection.empty()))
       state.statusMessage = deleteSelectedJointKeys(state);
     ImGui::MenuItem("Auto-key", nullptr, &state.doc.autoKey.enabled);
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Teach")) {
+    if (ImGui::MenuItem("Compare Solvers", "Esc leaves", state.compare.active)) state.compare.active = !state.compare.active;
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {

@@ -4,7 +4,9 @@
 
 #include <ctime>
 
+#include "editor/dope_sheet_panel.h"
 #include "editor/editor_panels.h"
+#include "editor/compare_panel.h"
 
 namespace kinema {
 
@@ -142,6 +144,10 @@ void helpWindow(EditorState& state) {
       {"Ctrl+C / Ctrl+V / Ctrl+Shift+V", "copy / paste / paste flipped pose"},
       {"Ctrl+N / Ctrl+O / Ctrl+S / Ctrl+Shift+S", "new / open / save / save as"},
       {"Double-click a joint in the outliner", "rename it"},
+      {"Shift+F6", "curve editor: click / drag keys and handles, wheel zoom, Home fit"},
+      {"Dope sheet (View menu): click / drag keys", "select (Shift: toggle) / move, snapped to frames"},
+      {"Dope sheet: drag on empty space, A / Alt+A", "box select, select all / none"},
+      {"Dope sheet: G, X, Ctrl+C / Ctrl+V", "move, delete, copy / paste at the current frame"},
   };
   if (ImGui::BeginTable("##controls", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
     for (const auto& row : rows) {
@@ -175,6 +181,13 @@ void drawSessionDialogs(EditorState& state) {
 
 void drawEditorPanels(EditorState& state, float fps) {
   tickEditorSession(state, ImGui::GetTime());
+  if (state.compare.active) {  // Teach > Compare Solvers covers the side panels and the 3D view
+    drawMainMenuBar(state);
+    drawComparePanel(state);
+    drawStatusBar(state, fps);
+    drawSessionDialogs(state);
+    return;
+  }
   drawMainMenuBar(state);
   drawOutlinerPanel(state);
   drawHistoryPanel(state);
@@ -182,6 +195,8 @@ void drawEditorPanels(EditorState& state, float fps) {
   drawIkTargetsPanel(state);
   drawStatusBar(state, fps);
   drawTimelinePanel(state);
+  drawCurveEditorPanel(state);
+  drawDopeSheetPanel(state);
   drawSessionDialogs(state);
 }
 

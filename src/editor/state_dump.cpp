@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "editor/compare_panel.h"
 #include "editor/editor_window.h"
 #include "editor/panel_layout.h"
 #include "editor/timeline.h"
@@ -58,6 +59,73 @@ json timelineJson(const EditorState& s, int windowWidth, int windowHeight) {
   return t;
 }
 
+// The curve editor: open or not, view, plot rectangle, the shown curves with their keys in
+// display units (the e2e tests turn them into pixels), and the selected keys.
+json curveEditorJson(const EditorState& s) {
+  const CurveEditorState& ce = s.curveEditor;
+  json out;
+  out["open"] = s.animationEditor == AnimationEditorKind::CurveEditor;
+  out["rotation_view"] = ce.rotationView == RotationView::Euler ? "euler" : "quaternion";
+  out["euler_order"] = toString(ce.eulerOrder);
+  out["normalized"] = ce.normalized;
+  out["view"] = {{"t0", ce.view.t0}, {"t1", ce.view.t1}, {"v0", ce.view.v0}, {"v1", ce.view.v1}};
+  out["plot"] = {{"x", ce.plot.x}, {"y", ce.plot.y}, {"width", ce.plot.w}, {"height", ce.plot.h}};
+  json curves = json::array();
+  if (s.hasMotion()) {
+    const Clip& clip = s.doc.scene().clips[s.clip];
+    for (int c : shownChannels(clip, s.doc.selection)) {
+      const Channel& ch = clip.channels[c];
+      for (int i = 0; i < curveCount(ch, ce.rotationView); ++i) {
+        const CurvePoints p = curvePoints(ch, i, ce.rotationView, ce.eulerOrder);
+        const ValueRange r = curveRange(p);
+        json keys = json::array();
+        for (size_t k = 0; k < p.keyTimes.size(); ++k) {
+          const float v = ce.normalized ? normalizeValue(r, p.keyValues[k]) : p.keyValues[k];
+          keys.push_back({{"time", p.keyTimes[k]}, {"value", p.keyValues[k]}, {"display", v},
+                          {"interpolation", toString(ch.settings(int(k)).interpolation)}});
+        }
+        curves.push_back({{"channel", c},
+                          {"component", i},
+                          {"label", curveLabel(s.doc.skeleton(), ch, i, ce.rotationView, ce.eulerOrder)},
+                          {"visible", !ce.isHidden({c, i})},
+                          {"keys", keys}});
+      }
+    }
+  }
+  out["curves"] = curves;
+  json selected = json::array();
+  for (const CurveKeyRef& k : ce.selected) selected.push_back({{"channel", k.channel}, {"component", k.component}, {"key", k.key}});
+  out["selected_keys"] = selected;
+  return out;
+}
+
+// The dope sheet: shown or not, its view (key area in window pixels, frame at its left edge,
+// pixels per frame, row height, scrolled rows), its rows with their key frames, the
+// selected key columns and how many keys the clipboard holds.
+json dopeSheetJson(const EditorState& s) {
+  static const char* const kGestures[] = {"none", "press", "box", "drag_keys", "grab_keys", "pan"};
+  const DopeSheetState& ds = s.dopeSheet;
+  const DopeSheetView& v = ds.view;
+  json out = {{"shown", s.animationEditor == AnimationEditorKind::DopeSheet},
+              {"view", {{"x", v.x}, {"y", v.y}, {"width", v.width}, {"height", v.height}, {"first_frame", v.firstFrame},
+                        {"pixels_per_frame", v.pixelsPerFrame}, {"row_height", v.rowHeight}, {"first_row", v.firstRow}}},
+              {"clipboard_keys", ds.clipboard.keys.size()},
+              {"gesture", kGestures[static_cast<int>(ds.gesture)]}};
+  json rows = json::array(), selected = json::array();
+  if (s.hasMotion()) {
+    const Clip& clip = s.doc.scene().clips[s.clip];
+    for (const DopeSheetRow& r : dopeSheetRows(clip)) {
+      json frames = json::array();
+      for (float t : r.times) frames.push_back(timeToFrame(clip, t));
+      rows.push_back({{"joint", r.joint < 0 ? json("Summary") : jointName(s, r.joint)}, {"frames", frames}});
+    }
+    for (const KeyColumn& c : ds.selection.columns())
+      selected.push_back({{"joint", jointName(s, c.joint)}, {"frame", timeToFrame(clip, c.time)}});
+  }
+  out["rows"] = rows;
+  out["selected"] = selected;
+  return out;
+}
 }  // namespace
 
 std::string editorStateJson(const EditorState& s, int windowWidth, int windowHeight, long long frames) {
@@ -75,6 +143,8 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
   out["playback"] = {{"clip", s.hasMotion() ? s.clip : -1}, {"time", s.time}, {"playing", s.playing}};
   out["timeline"] = timelineJson(s, windowWidth, windowHeight);
   out["tool"] = modalToolName(s.tool.mode);
+  out["compare"] = compareStateJson(s.compare);  // Teach > Compare Solvers (docs/cli.md)
+  out["dope_sheet"] = dopeSheetJson(s);
   json selection = json::array();
   for (int j : doc.selection.joints()) selection.push_back(jointName(s, j));
   out["selection"] = selection;
@@ -131,6 +201,7 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
     targets.push_back(e);
   }
   out["ik_targets"] = targets;
+  out["curve_editor"] = curveEditorJson(s);
   return out.dump(1) + "\n";
 }
 

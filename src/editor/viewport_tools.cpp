@@ -471,6 +471,7 @@ void ViewportTools::handle(EditorState& state, const InputEvent& e, const Viewpo
       if (e.key == GLFW_KEY_LEFT_SHIFT || e.key == GLFW_KEY_RIGHT_SHIFT) heldMods_ |= kModShift;
       else if (e.key == GLFW_KEY_LEFT_CONTROL || e.key == GLFW_KEY_RIGHT_CONTROL) heldMods_ |= kModCtrl;
       else if (e.key == GLFW_KEY_LEFT_ALT || e.key == GLFW_KEY_RIGHT_ALT) heldMods_ |= kModAlt;
+      else if (!toolRunning && state.animationEditorContains(mouse_)) {}  // the animation editor's keys
       else if (!keyboardCaptured || toolRunning) key(state, view, e.key);
       break;
     case InputEventType::KeyUp:

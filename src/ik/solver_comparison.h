@@ -13,22 +13,26 @@
 namespace kinema {
 
 // A chain for the board: joint 0 at `base`, then one joint per bone end; the last joint is
-// the effector. At rest every bone points along +X; startAngles turn each joint about Z
-// (planar) so the chain starts bent as the seed figures draw it.
+// the effector. With all angles 0 every bone points along +X; startAngles turn each joint
+// about Z so the chain starts bent as the seed figures draw it. A planar chain stays in the
+// z = base.z plane because its target is put there (no hinge is needed for that).
 struct TeachingChain {
   std::vector<float> boneLengths;   // root to effector, each > 0
   std::vector<float> startAngles;   // radians, one per bone, relative to the parent bone (about Z)
   glm::vec3 base{0.0f};
   bool planar = true;               // joints turn about Z only (hinges, the board); false: ball joints in 3D
-  std::vector<JointLimit> limits;   // empty or one per joint of the skeleton (bones + 1)
+  // Empty or one per joint of the skeleton (bones + 1). Hinge limits about Z give the
+  // allowed angle relative to the parent bone (the board's angle, not relative to the start).
+  std::vector<JointLimit> limits;
 
   std::string validate() const;
   float reach() const;  // sum of bone lengths
 };
 
 // The chain as a skeleton ("j0" .. "jN", "jN" the effector), its start pose and its rig
-// (limits; planar chains get Z hinges). Used by the solvers here and saved by `kinema demo`
-// as a .kinema so `kinema ik FILE --trace` reproduces every step.
+// (limits). The skeleton's rest pose IS the start pose (rest rotations = startAngles), so
+// the .kinema `kinema demo` saves starts there under `kinema ik FILE --trace`; limits are
+// converted to be relative to that rest pose.
 struct TeachingSkeleton {
   Skeleton skeleton;
   Pose start;
@@ -55,6 +59,13 @@ struct TeachingCase {
 const std::vector<TeachingCase>& teachingPresets();
 const TeachingCase* findTeachingPreset(const std::string& name);  // nullptr when unknown
 
+// The settings a case runs `solver` with (trace not set): the case's settings, with
+// FABRIK's DLS finish as the case asks and jacobian-transpose's larger iteration cap.
+IkSettings settingsFor(const TeachingCase& setup, IkSolver solver);
+// The arguments after FILE that make `kinema ik FILE ... --json --trace` run exactly this
+// solver on this case (the file being makeTeachingSkeleton's skeleton saved as .kinema).
+std::vector<std::string> ikCommandArguments(const TeachingCase& setup, IkSolver solver);
+
 // One solver's recorded run, replayed through `cursor`.
 struct SolverRun {
   IkSolver solver = IkSolver::Ccd;
@@ -78,12 +89,15 @@ struct SolverComparison {
   std::vector<SolverRun> runs;  // one per setup.solvers entry, same order
 };
 
-// Solves the case with every solver (tracing, then timing untraced); cursors at 0. Returns
+// Solves the case with every solver (tracing, then timing the untraced solve: median of
+// `timingRepeats`); cursors at 0. Returns
 // "" or a one-line error (an invalid case: nothing is run).
-std::string startComparison(const TeachingCase& setup, SolverComparison& out);
+std::string startComparison(const TeachingCase& setup, SolverComparison& out, int timingRepeats = 5);
 // One sub-step forward in every run that is not finished.
 void stepSubStep(SolverComparison& c);
-// Forward in every run to the last entry of the next iteration.
+// Forward in every run to the end of the current iteration when the cursor is inside one,
+// else to the end of the next (from the start: the end of iteration 1); a run with no such
+// iteration goes to its end.
 void stepIteration(SolverComparison& c);
 void runToEnd(SolverComparison& c);
 void resetCursors(SolverComparison& c);

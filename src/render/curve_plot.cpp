@@ -8,72 +8,15 @@
 #include "anim/easing.h"
 #include "anim/sampling.h"
 
-#include <stb_easy_font.h>
+#include "render/raster_draw.h"
 
 namespace kinema {
 
-namespace {
-
-// Blends `color` into pixel (x, y) with coverage a in [0, 1].
-void blend(Image& img, int x, int y, const Rgb& color, float a) {
-  if (x < 0 || y < 0 || x >= img.width || y >= img.height || a <= 0.0f) return;
-  a = std::min(1.0f, a);
-  std::uint8_t* p = img.pixel(x, y);
-  for (int i = 0; i < 3; ++i) p[i] = static_cast<std::uint8_t>(std::lround(p[i] + (color[i] - p[i]) * a));
-  p[3] = 255;
-}
-
-// A line of the given width with anti-aliased edges: coverage from the distance of each
-// pixel centre to the segment (clipped to the rectangle `clip`).
-void line(Image& img, glm::vec2 a, glm::vec2 b, float width, const Rgb& color, const glm::ivec4& clip) {
-  const float r = 0.5f * width;
-  const int x0 = std::max(clip.x, static_cast<int>(std::floor(std::min(a.x, b.x) - r - 1)));
-  const int x1 = std::min(clip.z, static_cast<int>(std::ceil(std::max(a.x, b.x) + r + 1)));
-  const int y0 = std::max(clip.y, static_cast<int>(std::floor(std::min(a.y, b.y) - r - 1)));
-  const int y1 = std::min(clip.w, static_cast<int>(std::ceil(std::max(a.y, b.y) + r + 1)));
-  const glm::vec2 d = b - a;
-  const float len2 = glm::dot(d, d);
-  for (int y = y0; y < y1; ++y)
-    for (int x = x0; x < x1; ++x) {
-      const glm::vec2 p(x + 0.5f, y + 0.5f);
-      const float t = len2 > 0 ? std::clamp(glm::dot(p - a, d) / len2, 0.0f, 1.0f) : 0.0f;
-      const float dist = glm::length(p - (a + t * d));
-      blend(img, x, y, color, r + 0.5f - dist);
-    }
-}
-
-void dot(Image& img, glm::vec2 c, float radius, const Rgb& color) {
-  for (int y = static_cast<int>(c.y - radius - 1); y <= static_cast<int>(c.y + radius + 1); ++y)
-    for (int x = static_cast<int>(c.x - radius - 1); x <= static_cast<int>(c.x + radius + 1); ++x)
-      blend(img, x, y, color, radius + 0.5f - glm::length(glm::vec2(x + 0.5f, y + 0.5f) - c));
-}
-
-void rect(Image& img, int x0, int y0, int x1, int y1, const Rgb& color) {
-  for (int y = std::max(0, y0); y < std::min(img.height, y1); ++y)
-    for (int x = std::max(0, x0); x < std::min(img.width, x1); ++x) blend(img, x, y, color, 1.0f);
-}
-
-// stb_easy_font builds glyphs from axis-aligned quads; each is filled at `scale`.
-void text(Image& img, int x, int y, const std::string& s, const Rgb& color, int scale = 1) {
-  static thread_local std::vector<char> buffer(60000);
-  std::string copy = s;
-  unsigned char c[4] = {0, 0, 0, 255};
-  const int quads = stb_easy_font_print(0, 0, copy.data(), c, buffer.data(), static_cast<int>(buffer.size()));
-  const float* v = reinterpret_cast<const float*>(buffer.data());
-  for (int q = 0; q < quads; ++q) {
-    const float* a = v + q * 16;  // 4 vertices of (x, y, z, color) = 4 floats each
-    const float qx0 = a[0], qy0 = a[1], qx1 = a[8], qy1 = a[9];
-    rect(img, x + static_cast<int>(qx0 * scale), y + static_cast<int>(qy0 * scale), x + static_cast<int>(qx1 * scale),
-         y + static_cast<int>(qy1 * scale), color);
-  }
-}
-
-int textWidth(const std::string& s) {
-  std::string copy = s;
-  return stb_easy_font_width(copy.data());
-}
-
-}  // namespace
+using raster::dot;
+using raster::line;
+using raster::rect;
+using raster::text;
+using raster::textWidth;
 
 Image plotPanels(const std::vector<PlotPanel>& panels, int columns, int pw, int ph) {
   const int rows = (static_cast<int>(panels.size()) + columns - 1) / columns;

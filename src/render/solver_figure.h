@@ -37,6 +37,7 @@ struct FigureText {
   glm::vec2 at{0.0f};  // figure units, text's top left
   std::string text;
   Rgba color{0, 0, 0, 255};
+  int scale = 2;       // rasterised: pixels per stb_easy_font pixel (titles 2, labels 1)
 };
 
 // In figure units (the chain's own, Y up); a view maps [min, max] into its pixels keeping
@@ -68,6 +69,12 @@ Figure drawConvergencePlot(const SolverComparison& comparison, const FigureStyle
 
 // The colour each solver is drawn in (figures, plot, editor).
 Rgba solverColor(IkSolver solver);
+
+// Where figure point p lands in a width x height image (pixel units, y down): [min, max]
+// scaled uniformly to fit and centred. rasterizeFigure and tests use the same mapping.
+glm::vec2 figureToPixel(const Figure& figure, int width, int height, glm::vec2 p);
+// Where a 3D chain position lands on the figure plane (x, y for the board's view along Z).
+glm::vec2 projectToFigure(const glm::vec3& p, const FigureStyle& style);
 
 // Anti-aliased CPU rasterisation into a width x height RGBA image (background white when
 // style.slides, else dark).

@@ -1,0 +1,148 @@
+// `kinema demo`: the presets' figures and numbers, and that they replay under `kinema ik`.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "ik/solver_comparison.h"
+#include "io/image.h"
+#include "render/solver_figure.h"
+#include "test_support.h"
+
+namespace kinema {
+namespace {
+
+using Json = nlohmann::json;
+namespace fs = std::filesystem;
+
+int kinema(const std::string& args, std::string* out = nullptr, std::string* err = nullptr) {
+  return test::runCommand(std::string(KINEMA_BINARY) + " " + args, out, err);
+}
+
+TEST(DemoCommand, ListsThePresets) {
+  std::string out;
+  ASSERT_EQ(kinema("demo list", &out), 0);
+  for (const TeachingCase& c : teachingPresets()) EXPECT_NE(out.find(c.name), std::string::npos) << c.name;
+  ASSERT_EQ(kinema("demo list --json", &out), 0);
+  const Json list = Json::parse(out);
+  ASSERT_EQ(list.size(), teachingPresets().size());
+  EXPECT_EQ(list[0]["name"], teachingPresets()[0].name);
+  EXPECT_EQ(list[0]["title"], teachingPresets()[0].title);
+}
+
+TEST(DemoCommand, UnknownPresetIsBadInputAndBadFlagsAreUsage) {
+  std::string out, err;
+  const std::string dir = test::makeTempDir();
+  EXPECT_EQ(kinema("demo no-such-case --out " + dir, &out, &err), 1);
+  EXPECT_NE(err.find("ccd-steps"), std::string::npos) << err;  // the line lists the names
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  EXPECT_EQ(kinema("demo ccd-steps --out " + dir + " --bogus", &out, &err), 2);
+  EXPECT_EQ(kinema("demo ccd-steps --out " + dir + " --size big", &out, &err), 2);
+  EXPECT_EQ(kinema("demo ccd-steps --out " + dir + " --size 10x10", &out, &err), 1);
+  EXPECT_EQ(kinema("demo ccd-steps", &out, &err), 2);  // no --out
+}
+
+TEST(DemoCommand, WritesStepsPlotNumbersAndACaseThatKinemaIkReplays) {
+  const std::string dir = test::makeTempDir();
+  std::string out, err;
+  ASSERT_EQ(kinema("demo ccd-steps --out " + dir + " --size 640x480", &out, &err), 0) << err;
+  EXPECT_NE(err.find("ccd"), std::string::npos);  // progress on stderr
+  for (const char* f : {"convergence.png", "numbers.json", "numbers.csv", "case.kinema", "commands.txt", "ccd/step_000.png",
+                        "fabrik/step_000.png"})
+    EXPECT_TRUE(fs::exists(fs::path(dir) / f)) << f;
+  const Json numbers = Json::parse(test::readFile(dir + "/numbers.json"));
+  ASSERT_EQ(numbers["solvers"].size(), 2u);
+  for (const Json& s : numbers["solvers"]) {
+    const int entries = static_cast<int>(s["trace"].size());
+    // One image per trace entry, numbered by entry.
+    for (int k = 0; k < entries; ++k) {
+      char name[32];
+      std::snprintf(name, sizeof name, "step_%03d.png", k);
+      EXPECT_TRUE(fs::exists(fs::path(dir) / s["solver"].get<std::string>() / name)) << name;
+    }
+    // The recorded command, run by the real binary in that folder, prints the same trace.
+    std::string command = s["command"].get<std::string>();
+    ASSERT_EQ(command.rfind("kinema ik ", 0), 0u) << command;
+    std::string replay;
+    ASSERT_EQ(test::runCommand("cd " + dir + " && " + std::string(KINEMA_BINARY) + command.substr(6), &replay, &err), 0)
+        << command << "\n" << err;
+    const Json ik = Json::parse(replay);
+    EXPECT_EQ(ik["trace"], s["trace"]) << s["solver"];
+    EXPECT_EQ(ik["trace_joints"], s["trace_joints"]);
+    EXPECT_EQ(ik["iterations"], s["iterations"]);
+    EXPECT_EQ(ik["error"], s["error"]);
+  }
+  // numbers.csv: one row per trace entry plus a total per solver, and the header.
+  const std::string csv = test::readFile(dir + "/numbers.csv");
+  const size_t rows = std::count(csv.begin(), csv.end(), '\n');
+  EXPECT_EQ(rows, 1 + numbers["solvers"][0]["trace"].size() + numbers["solvers"][1]["trace"].size() + 2);
+
+  // Golden pixels: the CLI's first CCD turn, where the figure's mapping puts the chain.
+  SolverComparison cmp;
+  ASSERT_EQ(startComparison(*findTeachingPreset("ccd-steps"), cmp, 1), "");
+  cmp.runs[0].cursor = 1;
+  const Figure f = drawSolverStep(cmp, 0, FigureStyle{});
+  Result<Image> png = loadPng(dir + "/ccd/step_001.png");
+  ASSERT_TRUE(png) << png.error();
+  ASSERT_EQ(png->width, 640);
+  ASSERT_EQ(png->height, 480);
+  const Json& entry = numbers["solvers"][0]["trace"][1];
+  for (int b = 0; b < 3; ++b) {
+    const glm::vec2 mid(0.5f * (entry["positions"][b][0].get<float>() + entry["positions"][b + 1][0].get<float>()),
+                        0.5f * (entry["positions"][b][1].get<float>() + entry["positions"][b + 1][1].get<float>()));
+    const glm::vec2 p = figureToPixel(f, 640, 480, mid);
+    const std::uint8_t* px = png->pixel(static_cast<int>(p.x), static_cast<int>(p.y));
+    const Rgba ccd = solverColor(IkSolver::Ccd);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(px[i], ccd[i], 40) << "bone " << b;
+  }
+  const glm::vec2 t = figureToPixel(f, 640, 480, {numbers["target"][0].get<float>(), numbers["target"][1].get<float>()});
+  const std::uint8_t* tp = png->pixel(static_cast<int>(t.x), static_cast<int>(t.y));
+  EXPECT_GT(tp[0], 180);
+  EXPECT_LT(tp[1], 110);
+}
+
+TEST(DemoCommand, SolverTableWritesEveryFormat) {
+  const std::string dir = test::makeTempDir();
+  std::string out, err;
+  ASSERT_EQ(kinema("demo solver-table --out " + dir + " --targets 3", &out, &err), 0) << err;
+  const Json table = Json::parse(test::readFile(dir + "/solver_table.json"));
+  ASSERT_EQ(table["rows"].size(), 10u);  // 5 solvers x (reachable, unreachable)
+  for (const Json& r : table["rows"]) {
+    EXPECT_EQ(r["count"], 3);
+    if (r["targets"] == "unreachable") {
+      EXPECT_EQ(r["converged"], 0) << r["solver"];
+    }
+  }
+  for (const char* f : {"solver_table.md", "solver_table.csv", "solver_table.png"})
+    EXPECT_TRUE(fs::exists(fs::path(dir) / f)) << f;
+}
+
+}  // namespace
+}  // namespace kinema
+
+namespace kinema {
+namespace {
+
+// ffmpeg is optional: with one on PATH (here a stand-in that records its arguments and
+// writes its output file) each solver gets a GIF and an MP4 made from its step images.
+TEST(DemoCommand, MakesGifAndMp4WithFfmpegOnPath) {
+  const std::string dir = test::makeTempDir(), bin = test::makeTempDir();
+  test::writeFile(bin + "/ffmpeg",
+                  "#!/bin/sh\nfor a in \"$@\"; do printf '%s\\n' \"$a\"; done >> \"" + bin +
+                      "/args.txt\"\nfor a in \"$@\"; do last=$a; done\n: > \"$last\"\n");
+  ASSERT_EQ(test::runCommand("chmod +x " + bin + "/ffmpeg"), 0);
+  std::string out, err;
+  ASSERT_EQ(test::runCommand("PATH=" + bin + ":$PATH " + std::string(KINEMA_BINARY) + " demo fabrik-steps --out " + dir,
+                             &out, &err),
+            0)
+      << err;
+  for (const char* f : {"fabrik.gif", "fabrik.mp4", "ccd.gif", "ccd.mp4"})
+    EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(dir) / f)) << f;
+  const std::string args = test::readFile(bin + "/args.txt");
+  // The frame pattern reaches ffmpeg as one argument, unexpanded by the shell.
+  EXPECT_NE(args.find("\n" + dir + "/fabrik/step_*.png\n"), std::string::npos) << args;
+  EXPECT_EQ(err.find("not on PATH"), std::string::npos) << err;
+}
+
+}  // namespace
+}  // namespace kinema

@@ -1,0 +1,304 @@
+// End-to-end tests of Teach > Compare Solvers: the real `kinema edit --compare PRESET` runs
+// under xvfb-run on --script replay. Each solver's state in --dump-state is checked against
+// `kinema ik CASE --json --trace` run on the same case (the case's chain saved as .kinema
+// here, the CLI arguments from ikCommandArguments), after sub-steps, an iteration and a
+// target drag; the plot is checked in the screenshot's pixels (each solver's colour).
+#include <algorithm>
+#include <cmath>
+
+#include "editor/e2e_harness.h"
+#include "io/image.h"
+#include "io/kinema_file.h"
+#include "ik/solver_comparison.h"
+
+namespace kinema::test {
+namespace {
+
+using namespace e2e;
+
+// The editor on --compare `preset` (the harness's runEditor with the extra flag).
+json runCompare(const std::string& dir, const std::string& shotDir, const Script& script, const std::string& name,
+                const std::string& preset) {
+  const std::string scriptPath = dir + "/" + name + ".jsonl", dump = dir + "/" + name + ".json";
+  std::ofstream(scriptPath) << script.text();
+  std::string out, err;
+  const std::string xdg = "XDG_STATE_HOME=" + dir + " XDG_CONFIG_HOME=" + dir + " ";
+  const int rc = runCommand(kXvfb + "env " + xdg + kSoftware + KINEMA_BINARY + " edit --compare " + preset +
+                                " --size 1280x720 --script " + scriptPath + " --dump-state " + dump + " --screenshot " +
+                                shotDir + "/" + name + ".png",
+                            &out, &err);
+  EXPECT_EQ(rc, 0) << err;
+  return rc == 0 ? readJson(dump) : json();
+}
+
+// `kinema ik` on the case (its chain written as .kinema) with `solver`: the JSON with "trace".
+json cliTrace(const std::string& dir, TeachingCase setup, IkSolver solver) {
+  const TeachingSkeleton chain = makeTeachingSkeleton(setup.chain);
+  Scene scene;
+  scene.skeleton = chain.skeleton;
+  scene.ik = chain.rig;
+  const std::string file = dir + "/case.kinema";
+  EXPECT_EQ(saveKinemaFile(file, scene), "");
+  std::string command = std::string(KINEMA_BINARY) + " ik '" + file + "'";
+  for (const std::string& a : ikCommandArguments(setup, solver)) command += " '" + a + "'";
+  command += " --json --trace";
+  std::string out, err;
+  EXPECT_EQ(runCommand(command, &out, &err), 0) << command << "\n" << err;
+  json j = json::parse(out, nullptr, false);
+  EXPECT_FALSE(j.is_discarded()) << out.substr(0, 200);
+  return j.is_discarded() ? json() : j;
+}
+
+const json* solverIn(const json& dump, const char* solver) {
+  for (const json& s : dump["compare"]["solvers"])
+    if (s["solver"] == solver) return &s;
+  ADD_FAILURE() << "no solver " << solver << " in the dump";
+  return nullptr;
+}
+
+// The dumped solver state equals trace entry `index` of the CLI's run.
+void expectTraceEntry(const json& solver, const json& cli, int index, const std::string& what) {
+  const json& trace = cli["trace"];
+  ASSERT_LT(index, static_cast<int>(trace.size())) << what;
+  const json& e = trace[index];
+  EXPECT_EQ(solver["cursor"], index) << what;
+  EXPECT_EQ(solver["entries"], trace.size()) << what << ": the same number of sub-steps";
+  EXPECT_EQ(solver["iteration"], e["iteration"]) << what;
+  EXPECT_EQ(solver["step"], e["step"]) << what;
+  EXPECT_NEAR(double(solver["error"]), double(e["error"]), 1e-5) << what;
+  ASSERT_EQ(solver["positions"].size(), e["positions"].size()) << what;
+  for (size_t k = 0; k < e["positions"].size(); ++k)
+    expectNear(vec3(solver["positions"][k]), vec3(e["positions"][k]), 1e-5, what + ": joint " + std::to_string(k));
+}
+
+TeachingCase presetWithTarget(const char* name, const json& target) {
+  const TeachingCase* p = findTeachingPreset(name);
+  EXPECT_NE(p, nullptr) << name;
+  TeachingCase c = p ? *p : TeachingCase{};
+  if (target.is_array()) c.target = glm::vec3(vec3(target));
+  return c;
+}
+
+// Window pixel of a figure point in view `v`, from the dumped view rect and figure bounds:
+// the bounds fitted into the rect less 12 px margins, aspect kept, centred, Y up.
+glm::dvec2 figurePixel(const json& compare, int v, glm::dvec2 p) {
+  const json& r = compare["views"][v];
+  const glm::dvec2 lo(compare["figure"]["min"][0], compare["figure"]["min"][1]);
+  const glm::dvec2 hi(compare["figure"]["max"][0], compare["figure"]["max"][1]);
+  const double w = double(r["width"]) - 24, h = double(r["height"]) - 24;
+  const double ppu = std::min(w / (hi.x - lo.x), h / (hi.y - lo.y));
+  const glm::dvec2 c = (lo + hi) / 2.0;
+  return {double(r["x"]) + double(r["width"]) / 2 + (p.x - c.x) * ppu,
+          double(r["y"]) + double(r["height"]) / 2 - (p.y - c.y) * ppu};
+}
+
+class CompareE2e : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (runCommand("command -v xvfb-run") != 0) GTEST_SKIP() << "SKIPPED: xvfb-run is not installed";
+    dir_ = makeTempDir();
+  }
+  void TearDown() override {
+    if (!dir_.empty()) runCommand("rm -rf '" + dir_ + "'");
+  }
+  static std::string shotDir() {
+    const std::string dir = std::string(KINEMA_BUILD_DIR) + "/compare_e2e";
+    runCommand("mkdir -p '" + dir + "'");
+    return dir;
+  }
+  json run(const Script& s, const std::string& name, const std::string& preset) {
+    return runCompare(dir_, shotDir(), s, name, preset);
+  }
+  std::string dir_;
+};
+
+TEST_F(CompareE2e, SubStepsFollowTheTraceOfEverySolver) {
+  // Right twice: two sub-steps (CCD: two joint rotations; FABRIK: a backward and a forward pass).
+  Script s;
+  s.wait(4).key("RIGHT").wait(2).key("RIGHT").wait(2);
+  const json d = run(s, "ccd_two_substeps", "ccd-steps");
+  ASSERT_TRUE(d.is_object());
+  EXPECT_EQ(d["compare"]["active"], true);
+  EXPECT_EQ(d["compare"]["preset"], "ccd-steps");
+  const TeachingCase setup = presetWithTarget("ccd-steps", d["compare"]["target"]);
+  ASSERT_EQ(d["compare"]["solvers"].size(), setup.solvers.size());
+  for (IkSolver solver : setup.solvers) {
+    const json* state = solverIn(d, toString(solver));
+    ASSERT_NE(state, nullptr);
+    expectTraceEntry(*state, cliTrace(dir_, setup, solver), 2, std::string("ccd-steps, ") + toString(solver));
+  }
+}
+
+TEST_F(CompareE2e, AnIterationFinishesTheCurrentIterationInTheTrace) {
+  // One sub-step, then Shift+Right: the rest of that iteration (FABRIK: the forward pass).
+  Script s;
+  s.wait(4).key("RIGHT").wait(2).keyDown("LEFT_SHIFT").key("RIGHT").keyUp("LEFT_SHIFT").wait(2);
+  const json d = run(s, "fabrik_iteration", "fabrik-steps");
+  ASSERT_TRUE(d.is_object());
+  const TeachingCase setup = presetWithTarget("fabrik-steps", d["compare"]["target"]);
+  for (IkSolver solver : setup.solvers) {
+    const json cli = cliTrace(dir_, setup, solver);
+    const json& trace = cli["trace"];
+    ASSERT_GE(trace.size(), 2u);
+    // From entry 1 (iteration i): the last entry of iteration i when entry 2 is still in
+    // it (the iteration is finished), else the last entry of iteration i + 1.
+    const int i = int(trace[1]["iteration"]);
+    const int next = trace.size() > 2u && int(trace[2]["iteration"]) == i ? i : i + 1;
+    int expected = 1;
+    while (expected + 1 < int(trace.size()) && int(trace[expected + 1]["iteration"]) <= next) ++expected;
+    const json* state = solverIn(d, toString(solver));
+    ASSERT_NE(state, nullptr);
+    expectTraceEntry(*state, cli, expected, std::string("fabrik-steps, ") + toString(solver));
+  }
+}
+
+TEST_F(CompareE2e, DraggingTheTargetRestartsEverySolverOnTheNewTarget) {
+  // Where the target is drawn, from a run that only steps.
+  Script steps;
+  steps.wait(4).key("RIGHT").key("RIGHT").key("RIGHT").wait(2);
+  const json before = run(steps, "drag_before", "ccd-steps");
+  ASSERT_TRUE(before.is_object());
+  const json& c = before["compare"];
+  for (const json& s : c["solvers"]) EXPECT_EQ(s["cursor"], 3);
+  const glm::dvec3 target = vec3(c["target"]);
+  const glm::dvec2 from = figurePixel(c, 1, {target.x, target.y}), to = from + glm::dvec2(-40, 30);
+
+  // The same steps, then a left drag of the target in the second view.
+  Script s = steps;
+  s.move(from).wait(1).down().path(from, to).wait(1).up().wait(2);
+  const json d = run(s, "drag_target", "ccd-steps");
+  ASSERT_TRUE(d.is_object());
+  const glm::dvec3 moved = vec3(d["compare"]["target"]);
+  // Where the mouse let go, in figure units of the bounds the drag started with.
+  const json& r = c["views"][1];
+  const glm::dvec2 lo(c["figure"]["min"][0], c["figure"]["min"][1]), hi(c["figure"]["max"][0], c["figure"]["max"][1]);
+  const double ppu = std::min((double(r["width"]) - 24) / (hi.x - lo.x), (double(r["height"]) - 24) / (hi.y - lo.y));
+  expectNear(moved, target + glm::dvec3(-40 / ppu, -30 / ppu, 0), 2e-3, "the target follows the mouse");
+  const TeachingCase setup = presetWithTarget("ccd-steps", d["compare"]["target"]);
+  for (IkSolver solver : setup.solvers) {
+    const json* state = solverIn(d, toString(solver));
+    ASSERT_NE(state, nullptr);
+    const json cli = cliTrace(dir_, setup, solver);
+    const std::string what = std::string("after the drag, ") + toString(solver);
+    expectTraceEntry(*state, cli, 0, what);  // back at the start, solved again for the new target
+    EXPECT_EQ((*state)["iterations"], cli["iterations"]) << what;
+    EXPECT_NEAR(double((*state)["final_error"]), double(cli["error"]), 1e-5) << what;
+  }
+}
+
+TEST_F(CompareE2e, ThePlotShowsOneSeriesPerSolver) {
+  // Run to convergence (End) so every series is complete, then count each solver's colour
+  // inside the plot rectangle of the screenshot.
+  Script s;
+  s.wait(4).key("END").wait(3);
+  const json d = run(s, "plot_series", "near-root");
+  ASSERT_TRUE(d.is_object());
+  const auto shot = loadPng(shotDir() + "/plot_series.png");
+  ASSERT_TRUE(shot.ok()) << shot.error();
+  const Image& img = shot.value();
+  const json& p = d["compare"]["plot"];
+  const int x0 = int(p["x"]), y0 = int(p["y"]), x1 = x0 + int(p["width"]), y1 = y0 + int(p["height"]);
+  ASSERT_GE(d["compare"]["solvers"].size(), 2u);
+  for (const json& solver : d["compare"]["solvers"]) {
+    const json& col = solver["color"];
+    int inside = 0, outsideViews = 0;
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x) {
+        const std::uint8_t* px = &img.rgba[(size_t(y) * img.width + x) * 4];
+        const bool match = std::abs(px[0] - int(col[0])) <= 24 && std::abs(px[1] - int(col[1])) <= 24 &&
+                           std::abs(px[2] - int(col[2])) <= 24;
+        if (!match) continue;
+        if (x >= x0 && x < x1 && y >= y0 && y < y1) ++inside;
+        else if (y >= y1) ++outsideViews;
+      }
+    EXPECT_GE(inside, 30) << solver["solver"] << ": its series in the plot";
+    EXPECT_EQ(outsideViews, 0) << solver["solver"] << ": nothing below the plot has its colour";
+  }
+}
+
+TEST_F(CompareE2e, DraggingAJointSetsTheStartPoseOfEverySolver) {
+  Script idle;
+  idle.wait(2);
+  const json before = run(idle, "joint_before", "ccd-steps");
+  ASSERT_TRUE(before.is_object());
+  const json& c = before["compare"];
+  const glm::dvec3 base = vec3(c["base"]), joint1 = vec3(c["solvers"][0]["positions"][1]);
+  // Joint 1 dragged to one unit straight above the base: bone 1 turns to +Y (pi/2 from +X).
+  const glm::dvec2 from = figurePixel(c, 0, {joint1.x, joint1.y}), to = figurePixel(c, 0, {base.x, base.y + 1.0});
+  Script s;
+  s.wait(2).move(from).wait(1).down().path(from, to).wait(1).up().wait(2);
+  const json d = run(s, "joint_drag", "ccd-steps");
+  ASSERT_TRUE(d.is_object());
+  const json& angles = d["compare"]["start_angles"];
+  ASSERT_EQ(angles.size(), c["start_angles"].size());
+  EXPECT_NEAR(double(angles[0]), M_PI / 2, 1e-3);
+  for (size_t i = 1; i < angles.size(); ++i) EXPECT_EQ(angles[i], c["start_angles"][i]) << "bone " << i;
+  TeachingCase setup = presetWithTarget("ccd-steps", d["compare"]["target"]);
+  for (size_t i = 0; i < angles.size(); ++i) setup.chain.startAngles[i] = angles[i].get<float>();
+  for (IkSolver solver : setup.solvers) {
+    const json* state = solverIn(d, toString(solver));
+    ASSERT_NE(state, nullptr);
+    const json cli = cliTrace(dir_, setup, solver);
+    expectTraceEntry(*state, cli, 0, std::string("after the joint drag, ") + toString(solver));
+    EXPECT_EQ((*state)["iterations"], cli["iterations"]);
+    expectNear(vec3((*state)["positions"][1]), base + glm::dvec3(0, setup.chain.boneLengths[0], 0), 2e-3,
+               "joint 1 straight above the base");
+  }
+}
+
+// Pixels read off a 1280x720 screenshot (ImGui 1.86's default font): the Teach menu and its
+// item, the toolbar's preset combo and its sixth row ("A target near the root"), the 3D radio.
+const glm::dvec2 kTeachMenu{205, 9}, kCompareItem{240, 33}, kPresetCombo{385, 36}, kNearRootRow{330, 145};
+const glm::dvec2 k3dRadio{574, 59};
+
+TEST_F(CompareE2e, TheTeachMenuOpensTheModeAndTheComboChoosesAPreset) {
+  Script s;
+  s.menu(kTeachMenu, kCompareItem).click(kPresetCombo).wait(2).click(kNearRootRow).wait(2).key("RIGHT").wait(2);
+  const json d = runEditor(dir_, shotDir(), s, "menu_near_root");
+  ASSERT_TRUE(d.is_object());
+  EXPECT_EQ(d["compare"]["active"], true);
+  EXPECT_EQ(d["compare"]["preset"], "near-root");
+  const TeachingCase setup = presetWithTarget("near-root", d["compare"]["target"]);
+  expectNear(vec3(d["compare"]["target"]), glm::dvec3(glm::vec3(findTeachingPreset("near-root")->target)), 1e-6,
+             "the preset's own target");
+  for (IkSolver solver : setup.solvers) {
+    const json* state = solverIn(d, toString(solver));
+    ASSERT_NE(state, nullptr);
+    expectTraceEntry(*state, cliTrace(dir_, setup, solver), 1, std::string("near-root, ") + toString(solver));
+  }
+}
+
+TEST_F(CompareE2e, The3dSwitchSolvesBallJointsAndADragOrbitsTheViews) {
+  // 3D, then a left drag on empty space in the first view: 60 px right, 20 px up.
+  const glm::dvec2 a{300, 420}, b{360, 400};
+  Script s;
+  s.wait(2).click(k3dRadio).wait(2).move(a).wait(1).down().path(a, b).wait(1).up().wait(2);
+  const json d = run(s, "orbit_3d", "ccd-steps");
+  ASSERT_TRUE(d.is_object());
+  EXPECT_EQ(d["compare"]["view"], "3d");
+  EXPECT_EQ(d["compare"]["planar"], false);
+  // Orbit: yaw -0.01 rad per px right, pitch +0.01 per px down -> yaw -0.6, pitch -0.2.
+  const double yaw = -0.6, pitch = -0.2;
+  expectNear(vec3(d["compare"]["view_direction"]),
+             {std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw)}, 1e-4,
+             "the view direction after the orbit");
+  TeachingCase setup = presetWithTarget("ccd-steps", d["compare"]["target"]);
+  setup.chain.planar = false;
+  for (IkSolver solver : setup.solvers) {
+    const json* state = solverIn(d, toString(solver));
+    ASSERT_NE(state, nullptr);
+    const json cli = cliTrace(dir_, setup, solver);
+    expectTraceEntry(*state, cli, 0, std::string("3D, ") + toString(solver));
+    EXPECT_EQ((*state)["iterations"], cli["iterations"]);
+  }
+}
+
+TEST_F(CompareE2e, AnUnknownPresetIsABadUsage) {
+  std::string out, err;
+  const int rc = runCommand(std::string(KINEMA_BINARY) + " edit --compare no-such-case --frame-count 1", &out, &err);
+  EXPECT_EQ(rc, 2) << err;
+  EXPECT_NE(err.find("no-such-case"), std::string::npos) << err;
+}
+
+}  // namespace
+}  // namespace kinema::test

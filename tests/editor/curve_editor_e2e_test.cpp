@@ -1,0 +1,297 @@
+// End-to-end tests of the curve editor: the real `kinema edit` under xvfb-run on a small
+// keyed file written here, driven by --script (select the joint in the outliner, Shift+F6
+// opens the curve editor), checked in --dump-state and in the saved file. Key pixels come
+// from the dumped plot rectangle and view (the test's own mapping); widget pixels from the
+// fixed layout at 1280x800 with ImGui 1.86's default font, read off a screenshot once.
+// Expected values are derived by hand in the comments (Kochanek-Bartels with tension 1 has
+// zero tangents, so the segment is a cubic Hermite with zero tangents).
+#include <cmath>
+
+#include "anim/sampling.h"
+#include "editor/e2e_harness.h"
+#include "io/kinema_file.h"
+
+namespace kinema::test {
+namespace {
+
+using namespace e2e;
+
+const std::string kSize = "1280x800";
+// Hips's translation y: 1, 2, 4, 3 at frames 0, 10, 20, 30 (30 fps); x = z = 0.
+const char* kFile = R"({"format": "kinema", "version": 1,
+ "skeleton": {"joints": [
+   {"name": "Hips", "parent": -1, "translation": [0, 1, 0]},
+   {"name": "Spine", "parent": 0, "translation": [0, 0.3, 0]},
+   {"name": "Head", "parent": 1, "translation": [0, 0.3, 0]}]},
+ "clips": [{"name": "bounce", "frame_time": 0.0333333333333,
+   "channels": [
+     {"joint": "Hips", "target": "translation", "interpolation": "linear",
+      "times": [0, 0.333333333333, 0.666666666667, 1.0],
+      "values": [[0, 1, 0], [0, 2, 0], [0, 4, 0], [0, 3, 0]]},
+     {"joint": "Spine", "target": "rotation", "interpolation": "linear",
+      "times": [0, 1.0], "values": [[0, 0, 0, 1], [0, 0, 0.5, 0.8660254]]}]}]})";
+
+const glm::dvec2 kHipsRow{150, 76}, kSpineRow{150, 93};  // the outliner's first rows
+// The curve editor at 1280x800 (the animation editor area from y = 476): the toolbar, then
+// the key properties strip (interpolation combo, then the TCB sliders or handle types).
+const glm::dvec2 kFit{493, 493}, kNormalize{551, 493}, kRotationView{690, 493};
+const glm::dvec2 kInterpolationCombo{500, 516};
+// The combo's list opens below it, 17 px per item: Step, Linear, Hermite, Catmull-Rom, TCB, Bezier, ...
+enum Item { kStep = 0, kLinear = 1, kTcb = 4, kBezier = 5 };
+glm::dvec2 interpolationItem(int i) { return {500, 540 + 17.0 * i}; }
+const glm::dvec2 kTensionMax{633, 516};  // the T slider's right end: tension 1 (range -1..1)
+
+class CurveEditorE2e : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    if (runCommand("command -v xvfb-run") != 0) return;
+    const std::string dir = makeTempDir();
+    const std::string file = dir + "/anim.kinema";
+    std::ofstream(file) << kFile;
+    const json d = runEditor(dir, shotDir(), open(Script()), "curve_open", kSize, file);
+    if (d.is_object()) opened_ = d;
+    runCommand("rm -rf '" + dir + "'");
+  }
+  void SetUp() override {
+    if (runCommand("command -v xvfb-run") != 0) GTEST_SKIP() << "SKIPPED: xvfb-run is not installed";
+    ASSERT_TRUE(opened_.is_object()) << "the opening run failed";
+    dir_ = makeTempDir();
+    file_ = dir_ + "/anim.kinema";
+    std::ofstream(file_) << kFile;
+  }
+  void TearDown() override {
+    if (!dir_.empty()) runCommand("rm -rf '" + dir_ + "'");
+  }
+  static std::string shotDir() {
+    const std::string dir = std::string(KINEMA_BUILD_DIR) + "/curve_editor_e2e";
+    runCommand("mkdir -p '" + dir + "'");
+    return dir;
+  }
+  // Selects Hips in the outliner and opens the curve editor with Shift+F6.
+  static Script& open(Script&& s) { return open(s); }
+  static Script& open(Script& s) {
+    return s.click(kHipsRow).wait(1).keyDown("LEFT_SHIFT").key("F6").keyUp("LEFT_SHIFT").wait(3);
+  }
+  json run(Script& s, const std::string& name) { return runEditor(dir_, shotDir(), s, name, kSize, file_); }
+  static Script& save(Script& s) { return s.keyDown("LEFT_CONTROL").key("S").keyUp("LEFT_CONTROL").wait(3); }
+
+  // The pixel of a (time, display value) point in a dump's curve editor plot.
+  static glm::dvec2 pixel(const json& d, double t, double v) {
+    const json& ce = d["curve_editor"];
+    const json &p = ce["plot"], &w = ce["view"];
+    const double x0 = p["x"], y0 = p["y"], pw = p["width"], ph = p["height"];
+    const double t0 = w["t0"], t1 = w["t1"], v0 = w["v0"], v1 = w["v1"];
+    return {x0 + (t - t0) / (t1 - t0) * pw, y0 + ph - (v - v0) / (v1 - v0) * ph};
+  }
+  // Pixels per second and per display unit in a dump's plot.
+  static glm::dvec2 scale(const json& d) {
+    const json& ce = d["curve_editor"];
+    return {double(ce["plot"]["width"]) / (double(ce["view"]["t1"]) - double(ce["view"]["t0"])),
+            double(ce["plot"]["height"]) / (double(ce["view"]["v1"]) - double(ce["view"]["v0"]))};
+  }
+  // The y curve's key k (Hips location Y: curve 1).
+  static const json& yKey(const json& d, int k) { return d["curve_editor"]["curves"][1]["keys"][k]; }
+  glm::dvec2 yKeyPixel(int k) const { return pixel(opened_, yKey(opened_, k)["time"], yKey(opened_, k)["display"]); }
+
+  static inline json opened_;
+  std::string dir_, file_;
+};
+
+TEST_F(CurveEditorE2e, OpensOnTheSelectedJointsChannelsFittedToTheirKeys) {
+  const json& ce = opened_["curve_editor"];
+  ASSERT_EQ(ce["open"], true);
+  ASSERT_EQ(ce["curves"].size(), 3u);  // Hips location x, y, z
+  EXPECT_EQ(ce["curves"][1]["label"], "Hips Location Y");
+  // Fit: times 0..1 s and values 0..4 (x = z = 0, y 1..4) with 10 % margins.
+  EXPECT_NEAR(double(ce["view"]["t0"]), -0.1, 1e-5);
+  EXPECT_NEAR(double(ce["view"]["t1"]), 1.1, 1e-5);
+  EXPECT_NEAR(double(ce["view"]["v0"]), -0.4, 1e-5);
+  EXPECT_NEAR(double(ce["view"]["v1"]), 4.4, 1e-5);
+}
+
+// The Hips translation channel of a saved file.
+Channel savedChannel(const std::string& path) {
+  const Result<Scene> scene = loadKinemaFile(path);
+  EXPECT_TRUE(scene.ok()) << scene.error();
+  if (!scene.ok() || scene.value().clips.empty() || scene.value().clips[0].channels.empty()) return Channel();
+  return scene.value().clips[0].channels[0];
+}
+
+// Keys 1 and 2 of the y curve (frames 10 and 20, values 2 and 4, both interior) set to TCB
+// with tension 1 through the panel: both tangents of the segment between them are
+// (1 - T)(...) = 0, so it is the Hermite cubic with zero tangents,
+//   y(u) = 2 + (4 - 2)(3u^2 - 2u^3),  at u = 1/4 (frame 12.5): 2 + 2 * 5/32 = 2.3125.
+TEST_F(CurveEditorE2e, TcbWithTensionOneThroughThePanelGivesTheZeroTangentHermite) {
+  Script s;
+  open(s).click(yKeyPixel(1)).wait(1).keyDown("LEFT_SHIFT").click(yKeyPixel(2)).keyUp("LEFT_SHIFT").wait(1);
+  s.click(kInterpolationCombo).wait(2).click(interpolationItem(kTcb)).wait(2);
+  s.click(kTensionMax).wait(2);
+  save(s);
+  const json d = run(s, "curve_tcb");
+  ASSERT_TRUE(d.is_object());
+  EXPECT_EQ(d["curve_editor"]["selected_keys"].size(), 2u);
+  EXPECT_EQ(yKey(d, 1)["interpolation"], "tcb");
+  EXPECT_EQ(yKey(d, 2)["interpolation"], "tcb");
+  EXPECT_EQ(yKey(d, 0)["interpolation"], "linear");
+  EXPECT_EQ(d["undo_depth"], 2);  // the interpolation, then the tension slider
+  EXPECT_EQ(d["dirty"], false);  // saved
+  const Channel ch = savedChannel(file_);
+  ASSERT_EQ(ch.keys.size(), 4u);
+  EXPECT_EQ(ch.keys[1].interpolation, Interpolation::TCB);
+  EXPECT_EQ(ch.keys[1].tension, 1.0f);
+  EXPECT_EQ(ch.keys[2].tension, 1.0f);
+  EXPECT_NEAR(sampleChannel(ch, 12.5f / 30.0f).y, 2.3125, 1e-5);
+  // The key values are untouched.
+  EXPECT_FLOAT_EQ(ch.values[1].y, 2.0f);
+  EXPECT_FLOAT_EQ(ch.values[2].y, 4.0f);
+}
+
+// Dragging the last y key 2 frames right and 1 unit up: time snapped to frame 32, value
+// free (to the pixel); the x and z components of that key move in time only.
+TEST_F(CurveEditorE2e, DraggingAKeyMovesItsTimeSnappedAndItsValueFree) {
+  const glm::dvec2 sc = scale(opened_), from = yKeyPixel(3);
+  const glm::dvec2 to = from + glm::dvec2(2.2 / 30.0 * sc.x, -1.0 * sc.y);
+  Script s;
+  open(s).move(from).down().path(from, to, 8).up().wait(2);
+  const json d = run(s, "curve_drag_key");
+  ASSERT_TRUE(d.is_object());
+  EXPECT_NEAR(double(yKey(d, 3)["time"]), 32.0 / 30.0, 1e-5);
+  EXPECT_NEAR(double(yKey(d, 3)["value"]), 4.0, 1.0 / sc.y);
+  EXPECT_NEAR(double(d["curve_editor"]["curves"][0]["keys"][3]["time"]), 32.0 / 30.0, 1e-5);
+  EXPECT_NEAR(double(d["curve_editor"]["curves"][0]["keys"][3]["value"]), 0.0, 1e-6);
+  EXPECT_EQ(d["undo_depth"], 1);  // the whole drag is one step
+}
+
+// Key 1 set to Bezier shows its right handle where the auto-clamped rule puts it: a third of
+// the interval (1/9 s) along the neighbours' chord, slope (4 - 1) / (2/3 s) = 4.5 per second,
+// so at (+1/9 s, +0.5). Dragging it by (dx, dy) pixels makes both handles aligned: the right
+// one at (1/9 + dx/sx, 0.5 + dy/sy), the left one turned to stay collinear with its length
+// (in frames x value) kept: |(-10/3 frames, -0.5)|.
+TEST_F(CurveEditorE2e, DraggingABezierHandleAlignsTheOtherOne) {
+  const glm::dvec2 sc = scale(opened_);
+  const double t1 = 1.0 / 3, handleT = 1.0 / 9, handleV = 0.5;
+  const glm::dvec2 handle = pixel(opened_, t1 + handleT, 2.0 + handleV);
+  const glm::dvec2 delta{30, -24};
+  Script s;
+  open(s).click(yKeyPixel(1)).wait(1).click(kInterpolationCombo).wait(2).click(interpolationItem(kBezier)).wait(2);
+  s.move(handle).down().path(handle, handle + delta, 6).up().wait(2);
+  save(s);
+  const json d = run(s, "curve_drag_handle");
+  ASSERT_TRUE(d.is_object());
+  EXPECT_EQ(d["undo_depth"], 2);
+  const Channel ch = savedChannel(file_);
+  ASSERT_EQ(ch.keys.size(), 4u);
+  const KeySettings& k = ch.keys[1];
+  EXPECT_EQ(k.interpolation, Interpolation::Bezier);
+  EXPECT_EQ(k.leftHandleType, HandleType::Aligned);
+  EXPECT_EQ(k.rightHandleType, HandleType::Aligned);
+  EXPECT_NEAR(k.rightHandleTime, handleT + delta.x / sc.x, 1e-4);
+  EXPECT_NEAR(k.rightHandleValue.y, handleV - delta.y / sc.y, 1e-3);
+  const double fps = 30, lt = k.leftHandleTime * fps, lv = k.leftHandleValue.y;
+  const double rt = k.rightHandleTime * fps, rv = k.rightHandleValue.y;
+  EXPECT_NEAR(lt * rv - lv * rt, 0.0, 1e-4);  // collinear
+  EXPECT_LT(lt, 0.0);
+  EXPECT_NEAR(std::hypot(lt, lv), std::hypot(10.0 / 3, 0.5), 1e-4);
+  EXPECT_FLOAT_EQ(ch.values[1].y, 2.0f);  // the key stays
+}
+
+// Wheel zooms both axes about the mouse (1.15 per notch), Ctrl+wheel the time axis only,
+// a middle drag pans, and Home over the plot fits all curves again.
+TEST_F(CurveEditorE2e, WheelZoomsCtrlWheelZoomsTimeAndHomeFits) {
+  const json& v0 = opened_["curve_editor"]["view"];
+  const double fitT = double(v0["t1"]) - double(v0["t0"]), fitV = double(v0["v1"]) - double(v0["v0"]);
+  const glm::dvec2 centre = pixel(opened_, 0.5, 2.0);
+  Script zoom;
+  open(zoom).move(centre).scroll(2).wait(1).keyDown("LEFT_CONTROL").scroll(1).keyUp("LEFT_CONTROL").wait(2);
+  const json z = run(zoom, "curve_zoom");
+  ASSERT_TRUE(z.is_object());
+  const json& v = z["curve_editor"]["view"];
+  EXPECT_NEAR(double(v["t1"]) - double(v["t0"]), fitT / std::pow(1.15, 3), 1e-4);
+  EXPECT_NEAR(double(v["v1"]) - double(v["v0"]), fitV / std::pow(1.15, 2), 1e-4);
+  Script home;
+  open(home).move(centre).scroll(3).wait(1).down("middle").path(centre, centre + glm::dvec2(40, 10), 4).up("middle");
+  home.wait(1).key("HOME").wait(2);
+  const json h = run(home, "curve_home");
+  ASSERT_TRUE(h.is_object());
+  for (const char* k : {"t0", "t1", "v0", "v1"})
+    EXPECT_NEAR(double(h["curve_editor"]["view"][k]), double(v0[k]), 1e-5) << k;
+}
+
+// Normalize maps each curve onto [-1, 1]: the y keys 1, 2, 4, 3 show as -1, -1/3, 1, 1/3,
+// the flat x and z curves at 0; the fit then spans -1.2 .. 1.2.
+TEST_F(CurveEditorE2e, NormalizeTogglesTheNormalizedView) {
+  Script s;
+  open(s).click(kNormalize).wait(2);
+  const json d = run(s, "curve_normalized");
+  ASSERT_TRUE(d.is_object());
+  const json& ce = d["curve_editor"];
+  EXPECT_EQ(ce["normalized"], true);
+  const double expected[4] = {-1.0, -1.0 / 3, 1.0, 1.0 / 3};
+  for (int k = 0; k < 4; ++k) EXPECT_NEAR(double(yKey(d, k)["display"]), expected[k], 1e-5) << k;
+  EXPECT_NEAR(double(ce["curves"][0]["keys"][2]["display"]), 0.0, 1e-6);
+  EXPECT_NEAR(double(ce["view"]["v0"]), -1.2, 1e-5);
+  EXPECT_NEAR(double(ce["view"]["v1"]), 1.2, 1e-5);
+}
+
+// Step then Linear on key 1 through the combo: the file saved in between holds Step (the
+// value holds at 2 until frame 20), the final state Linear; two undo steps.
+TEST_F(CurveEditorE2e, InterpolationChangesToStepAndLinear) {
+  Script s;
+  open(s).click(yKeyPixel(1)).wait(1).click(kInterpolationCombo).wait(2).click(interpolationItem(kStep)).wait(2);
+  save(s);
+  s.click(kInterpolationCombo).wait(2).click(interpolationItem(kLinear)).wait(2);
+  const json d = run(s, "curve_step_linear");
+  ASSERT_TRUE(d.is_object());
+  EXPECT_EQ(yKey(d, 1)["interpolation"], "linear");
+  EXPECT_EQ(d["undo_depth"], 2);
+  const Channel ch = savedChannel(file_);
+  ASSERT_EQ(ch.keys.size(), 4u);
+  EXPECT_EQ(ch.keys[1].interpolation, Interpolation::Step);
+  EXPECT_FLOAT_EQ(sampleChannel(ch, 19.0f / 30.0f).y, 2.0f);
+}
+
+// The View menu's item opens it too; with Hips and Spine selected, the quaternion view shows
+// Spine's rotation as x, y, z, w (3 + 4 curves), the Euler view as three angles (3 + 3).
+// The last frame is the README's screenshot (docs/images/curve_editor.png).
+TEST_F(CurveEditorE2e, ViewMenuOpensItAndTheRotationViewSwitches) {
+  // View menu: the item after Show Grid and a separator (items 17 px apart, separators 4 px).
+  const glm::dvec2 kViewMenu{113, 9}, kViewCurveEditor{153, 304};
+  Script s;
+  s.click(kHipsRow).wait(1).keyDown("LEFT_SHIFT").click(kSpineRow).keyUp("LEFT_SHIFT").wait(1);
+  s.menu(kViewMenu, kViewCurveEditor).wait(2);
+  const json euler = run(s, "curve_euler_view");
+  ASSERT_TRUE(euler.is_object());
+  ASSERT_EQ(euler["curve_editor"]["open"], true);
+  ASSERT_EQ(euler["curve_editor"]["curves"].size(), 6u);
+  EXPECT_EQ(euler["curve_editor"]["curves"][5]["label"], "Spine Rotation Z (XYZ)");
+  // Spine turns 60 degrees about Z: its Euler Z key goes 0 -> pi/3.
+  EXPECT_NEAR(double(euler["curve_editor"]["curves"][5]["keys"][1]["value"]), M_PI / 3, 1e-5);
+  s.click(kRotationView).wait(2);
+  // A key of the y curve selected, Bezier, so that the screenshot shows handles.
+  const json q = run(s, "curve_quaternion_view");
+  ASSERT_TRUE(q.is_object());
+  EXPECT_EQ(q["curve_editor"]["rotation_view"], "quaternion");
+  ASSERT_EQ(q["curve_editor"]["curves"].size(), 7u);
+  EXPECT_NEAR(double(q["curve_editor"]["curves"][6]["keys"][1]["value"]), std::cos(M_PI / 6), 1e-5);  // w
+}
+
+// The README's picture (docs/images/curve_editor.png): Hips and Spine in the normalized
+// Euler view (fit: -1.2 .. 1.2), the y curve's key 1 (normalized -1/3) set to Bezier with
+// its handle showing.
+TEST_F(CurveEditorE2e, ReadmeScreenshotNormalizedWithABezierKey) {
+  json normalizedView = opened_;
+  normalizedView["curve_editor"]["view"] = {{"t0", -0.1}, {"t1", 1.1}, {"v0", -1.2}, {"v1", 1.2}};
+  Script s;
+  s.click(kHipsRow).wait(1).keyDown("LEFT_SHIFT").click(kSpineRow).keyUp("LEFT_SHIFT").wait(1);
+  s.keyDown("LEFT_SHIFT").key("F6").keyUp("LEFT_SHIFT").wait(2).click(kNormalize).wait(2);
+  s.click(pixel(normalizedView, 1.0 / 3, -1.0 / 3)).wait(1).click(kInterpolationCombo).wait(2);
+  s.click(interpolationItem(kBezier)).wait(2).move({700, 300}).wait(2);
+  const json d = run(s, "curve_editor_readme");
+  ASSERT_TRUE(d.is_object());
+  EXPECT_EQ(d["curve_editor"]["normalized"], true);
+  EXPECT_EQ(d["curve_editor"]["curves"].size(), 6u);
+  EXPECT_EQ(yKey(d, 1)["interpolation"], "bezier");
+}
+
+}  // namespace
+}  // namespace kinema::test

@@ -1,0 +1,273 @@
+// End-to-end tests of the dope sheet: the real `kinema edit` under xvfb-run on --script
+// replay (and once by xdotool through the X server) with a .kinema file written here (the
+// default character with a clip keyed on five joints). Outcomes are read from --dump-state
+// (its dope_sheet rows, selection and view) or from the saved file.
+//
+// Pixels come from the fixed layout, not from the editor's mapping: at 1280x800 with a clip
+// the timeline (40 px) and the animation editor (260 px) sit over the status bar (24 px), so
+// the 3D view is 757 - 300 = 457 px high and the dope sheet spans x 250..970, y 476..736.
+// Inside it the joint names take 160 px and the frame ruler 22 px: the key area starts at
+// (410, 498). The view opens at frame -2 on the left edge with 12 px per frame, rows 20 px
+// high, the summary row first; so frame f is at x = 410 + (f + 2) * 12 and row r's centre
+// at y = 498 + 20 r + 10.
+#include <cmath>
+#include <fstream>
+
+#include "editor/e2e_harness.h"
+
+namespace kinema::test {
+namespace {
+
+using namespace e2e;
+
+const std::string kSize = "1280x800";
+constexpr double kKeyAreaX = 250 + 160, kKeyAreaY = 476 + 22, kFirstFrame = -2, kPixelsPerFrame = 12, kRowHeight = 20;
+double frameX(double frame) { return kKeyAreaX + (frame - kFirstFrame) * kPixelsPerFrame; }
+double rowY(int row) { return kKeyAreaY + kRowHeight * row + kRowHeight / 2; }
+glm::dvec2 key(double frame, int row) { return {frameX(frame), rowY(row)}; }
+const glm::dvec2 kViewMenu{113, 9}, kViewDopeSheet{153, 304};
+constexpr double kRulerY = 476 + 11;
+// Rows of the clip below (skeleton order under the summary).
+enum Row { kSummary = 0, kHips = 1, kSpine = 2, kHead = 3, kUpperArmL = 4, kLowerArmL = 5 };
+
+// The clip: rotation keys (frame time 1/24 s) on Hips 0, 10, 20; Spine 5, 10; Head 10, 15;
+// UpperArm.L 0, 8, 16, 24; LowerArm.L 4, 12, 20.
+json clipJson() {
+  const auto channel = [](const char* joint, std::vector<int> frames) {
+    json times = json::array(), values = json::array();
+    for (size_t i = 0; i < frames.size(); ++i) {
+      times.push_back(frames[i] / 24.0);
+      const double a = 0.3 * ((i % 2) ? 1 : -1);  // +-0.3 rad about Z, alternating
+      values.push_back({0.0, 0.0, std::sin(a / 2), std::cos(a / 2)});
+    }
+    return json{{"joint", joint}, {"target", "rotation"}, {"times", times}, {"values", values}};
+  };
+  return json::array({json{{"name", "wave"},
+                           {"frame_time", 1.0 / 24.0},
+                           {"channels", json::array({channel("Hips", {0, 10, 20}), channel("Spine", {5, 10}),
+                                                     channel("Head", {10, 15}), channel("UpperArm.L", {0, 8, 16, 24}),
+                                                     channel("LowerArm.L", {4, 12, 20})})}}});
+}
+
+std::vector<double> framesOfRow(const json& d, const std::string& joint) {
+  for (const json& r : d["dope_sheet"]["rows"])
+    if (r["joint"] == joint) {
+      std::vector<double> out;
+      for (const json& f : r["frames"]) out.push_back(std::round(double(f) * 1000) / 1000);
+      return out;
+    }
+  return {};
+}
+
+std::vector<std::string> selectedKeys(const json& d) {
+  std::vector<std::string> out;
+  for (const json& s : d["dope_sheet"]["selected"])
+    out.push_back(std::string(s["joint"]) + "@" + std::to_string(std::lround(double(s["frame"]))));
+  return out;
+}
+
+using Frames = std::vector<double>;
+
+class DopeSheetE2e : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (runCommand("command -v xvfb-run") != 0) GTEST_SKIP() << "SKIPPED: xvfb-run is not installed";
+    dir_ = makeTempDir();
+    std::ifstream in(std::string(KINEMA_SOURCE_DIR) + "/assets/default_character.kinema");
+    json file = json::parse(in, nullptr, false);
+    ASSERT_FALSE(file.is_discarded());
+    file["clips"] = clipJson();
+    file_ = dir_ + "/wave.kinema";
+    std::ofstream(file_) << file.dump(1);
+  }
+  void TearDown() override {
+    if (!dir_.empty()) runCommand("rm -rf '" + dir_ + "'");
+  }
+  static std::string shotDir() {
+    const std::string dir = std::string(KINEMA_BUILD_DIR) + "/dope_sheet_e2e";
+    runCommand("mkdir -p '" + dir + "'");
+    return dir;
+  }
+  json run(const Script& script, const std::string& name) {
+    return runEditor(dir_, shotDir(), script, name, kSize, file_);
+  }
+  // A script that opens the dope sheet from the View menu.
+  static Script opened() {
+    Script s;
+    s.menu(kViewMenu, kViewDopeSheet);
+    return s;
+  }
+  std::string dir_, file_;
+};
+
+TEST_F(DopeSheetE2e, TheViewMenuOpensItOverTheTimelineWithTheClipsRows) {
+  json d = run(opened(), "open");
+  ASSERT_TRUE(d.is_object());
+  const json& ds = d["dope_sheet"];
+  EXPECT_TRUE(ds["shown"].get<bool>());
+  // The layout the pixels below are derived from.
+  EXPECT_EQ(double(d["viewport"]["height"]), 457.0);
+  EXPECT_EQ(double(ds["view"]["x"]), kKeyAreaX);
+  EXPECT_EQ(double(ds["view"]["y"]), kKeyAreaY);
+  EXPECT_EQ(double(ds["view"]["first_frame"]), kFirstFrame);
+  EXPECT_EQ(double(ds["view"]["pixels_per_frame"]), kPixelsPerFrame);
+  ASSERT_EQ(ds["rows"].size(), 6u);
+  EXPECT_EQ(ds["rows"][0]["joint"], "Summary");
+  EXPECT_EQ(ds["rows"][kSpine]["joint"], "Spine");
+  EXPECT_EQ(ds["rows"][kLowerArmL]["joint"], "LowerArm.L");
+  EXPECT_EQ(framesOfRow(d, "Summary"), (Frames{0, 4, 5, 8, 10, 12, 15, 16, 20, 24}));
+  EXPECT_EQ(int(d["undo_depth"]), 0);
+  // The menu item again closes it.
+  d = run(opened().menu(kViewMenu, kViewDopeSheet), "close");
+  EXPECT_FALSE(d["dope_sheet"]["shown"].get<bool>());
+  EXPECT_EQ(double(d["viewport"]["height"]), 457.0 + 260.0);
+}
+
+TEST_F(DopeSheetE2e, DraggingAKeyMovesItToTheFrameUnderTheMouse) {
+  // Spine's key at 5, dragged 100.8 px to the right (8.4 frames): snapped to frame 13,
+  // past Spine's key at 10, which stays. One undo step.
+  Script s = opened();
+  s.move(key(5, kSpine)).down().path(key(5, kSpine), key(13.4, kSpine), 8).up().wait(2);
+  json d = run(s, "drag_key");
+  ASSERT_TRUE(d.is_object());
+  EXPECT_EQ(framesOfRow(d, "Spine"), (Frames{10, 13}));
+  EXPECT_EQ(framesOfRow(d, "Hips"), (Frames{0, 10, 20}));
+  EXPECT_EQ(selectedKeys(d), std::vector<std::string>{"Spine@13"});
+  EXPECT_EQ(int(d["undo_depth"]), 1);
+  EXPECT_TRUE(d["dirty"].get<bool>());
+  // Ctrl+Z puts it back.
+  s.keyDown("LEFT_CONTROL").key("Z").keyUp("LEFT_CONTROL").wait(2);
+  d = run(s, "drag_key_undo");
+  EXPECT_EQ(framesOfRow(d, "Spine"), (Frames{5, 10}));
+  EXPECT_EQ(int(d["undo_depth"]), 0);
+  // A drag to the left, 2.6 frames: 4 - 2.6 = 1.4 -> frame 1 (LowerArm.L's first key).
+  Script left = opened();
+  left.move(key(4, kLowerArmL)).down().path(key(4, kLowerArmL), key(1.4, kLowerArmL), 5).up().wait(2);
+  d = run(left, "drag_key_left");
+  EXPECT_EQ(framesOfRow(d, "LowerArm.L"), (Frames{1, 12, 20}));
+
+  // G: Head's key at 15 clicked, G, the mouse 31.2 px (2.6 frames) right: 17.6 rounds to 18;
+  // a left click confirms. Then the same with Esc: nothing moves and no step is added.
+  Script grab = opened();
+  grab.click(key(15, kHead)).wait(1).key("G").path(key(15, kHead), key(17.6, kHead), 3).wait(1);
+  Script cancelled = grab;
+  grab.down().up().wait(2);
+  d = run(grab, "grab_key");
+  EXPECT_EQ(framesOfRow(d, "Head"), (Frames{10, 18}));
+  EXPECT_EQ(int(d["undo_depth"]), 1);
+  cancelled.key("ESCAPE").wait(2);
+  d = run(cancelled, "grab_key_cancel");
+  EXPECT_EQ(framesOfRow(d, "Head"), (Frames{10, 15}));
+  EXPECT_EQ(int(d["undo_depth"]), 0);
+  EXPECT_EQ(selectedKeys(d), std::vector<std::string>{"Head@15"});
+  // A click on a joint's name selects that joint.
+  Script name = opened();
+  name.click({250 + 60, rowY(kLowerArmL)}).wait(2);
+  d = run(name, "click_name");
+  EXPECT_EQ(d["selection"], json::array({"LowerArm.L"}));
+}
+
+TEST_F(DopeSheetE2e, BoxSelectThenDeleteAndUndo) {
+  // A box from frame 8 on the Spine row to frame 16 on the Head row (started on empty space)
+  // takes Spine@10, Head@10 and Head@15; X deletes them (Head has no keys left: its row goes).
+  Script s = opened();
+  const glm::dvec2 a(frameX(8), kKeyAreaY + 2 * kRowHeight + 3), b(frameX(16), kKeyAreaY + 4 * kRowHeight - 3);
+  s.move(a).down().path(a, b, 6).up().wait(2);
+  json d = run(s, "box_select");
+  ASSERT_TRUE(d.is_object());
+  EXPECT_EQ(selectedKeys(d), (std::vector<std::string>{"Spine@10", "Head@10", "Head@15"}));
+  EXPECT_EQ(int(d["undo_depth"]), 0) << "selecting is not an edit";
+  s.key("X").wait(2);
+  d = run(s, "box_delete");
+  EXPECT_EQ(framesOfRow(d, "Spine"), (Frames{5}));
+  EXPECT_EQ(framesOfRow(d, "Head"), (Frames{}));
+  EXPECT_EQ(d["dope_sheet"]["rows"].size(), 5u);
+  EXPECT_EQ(framesOfRow(d, "Summary"), (Frames{0, 4, 5, 8, 10, 12, 16, 20, 24}));  // Hips keeps 10
+  EXPECT_EQ(int(d["undo_depth"]), 1);
+  s.keyDown("LEFT_CONTROL").key("Z").keyUp("LEFT_CONTROL").wait(2);
+  d = run(s, "box_delete_undo");
+  EXPECT_EQ(framesOfRow(d, "Spine"), (Frames{5, 10}));
+  EXPECT_EQ(framesOfRow(d, "Head"), (Frames{10, 15}));
+  EXPECT_EQ(int(d["undo_depth"]), 0);
+  EXPECT_EQ(int(d["redo_depth"]), 1);
+  // A and Alt+A select all and nothing.
+  Script all = opened();
+  all.move(key(30, kHips)).key("A").wait(2);
+  d = run(all, "select_all");
+  EXPECT_EQ(d["dope_sheet"]["selected"].size(), 3u + 2 + 2 + 4 + 3);
+  all.keyDown("LEFT_ALT").key("A").keyUp("LEFT_ALT").wait(2);
+  d = run(all, "select_none");
+  EXPECT_EQ(d["dope_sheet"]["selected"].size(), 0u);
+  EXPECT_EQ(d["selection"].size(), 0u) << "A over the dope sheet is not the viewport's select all";
+}
+
+TEST_F(DopeSheetE2e, CopyPasteAtTheCurrentFrame) {
+  // Hips@10 clicked, Head@15 Shift-clicked, Ctrl+C; the current frame set to 30 in the
+  // ruler; Ctrl+V: the earliest copied key lands on 30, the other 5 frames later.
+  Script s = opened();
+  s.click(key(10, kHips)).wait(1);
+  s.move(key(15, kHead)).keyDown("LEFT_SHIFT").down().up().keyUp("LEFT_SHIFT").wait(1);
+  s.keyDown("LEFT_CONTROL").key("C").keyUp("LEFT_CONTROL").wait(1);
+  s.click({frameX(30), kRulerY}).wait(2);
+  s.move(key(40, kSpine)).keyDown("LEFT_CONTROL").key("V").keyUp("LEFT_CONTROL").wait(2);
+  json d = run(s, "copy_paste");
+  ASSERT_TRUE(d.is_object());
+  EXPECT_NEAR(double(d["playback"]["time"]), 30 / 24.0, 1e-9);
+  EXPECT_EQ(framesOfRow(d, "Hips"), (Frames{0, 10, 20, 30}));
+  EXPECT_EQ(framesOfRow(d, "Head"), (Frames{10, 15, 35}));
+  EXPECT_EQ(framesOfRow(d, "Spine"), (Frames{5, 10}));
+  EXPECT_EQ(selectedKeys(d), (std::vector<std::string>{"Hips@30", "Head@35"}));
+  EXPECT_EQ(int(d["dope_sheet"]["clipboard_keys"]), 2);
+  EXPECT_TRUE(d["selection"].empty()) << "Ctrl+C over the dope sheet is not Copy Pose";
+  const int depth = d["undo_depth"];
+  // Ctrl+Z undoes the paste alone.
+  s.keyDown("LEFT_CONTROL").key("Z").keyUp("LEFT_CONTROL").wait(2);
+  d = run(s, "copy_paste_undo");
+  EXPECT_EQ(framesOfRow(d, "Hips"), (Frames{0, 10, 20}));
+  EXPECT_EQ(framesOfRow(d, "Head"), (Frames{10, 15}));
+  EXPECT_EQ(int(d["undo_depth"]), depth - 1);
+}
+
+TEST_F(DopeSheetE2e, ScreenshotForTheReadme) {
+  // Keys of the arm selected by a box (frames 7..13 on UpperArm.L and LowerArm.L), the
+  // current frame at 12.
+  Script s = opened();
+  s.click({frameX(12), kRulerY}).wait(2);
+  const glm::dvec2 a(frameX(6.5), kKeyAreaY + 4 * kRowHeight + 2), b(frameX(13.5), kKeyAreaY + 6 * kRowHeight - 2);
+  s.move(a).down().path(a, b, 4).up().wait(3);
+  const json d = run(s, "dope_sheet");
+  ASSERT_TRUE(d.is_object());
+  EXPECT_EQ(selectedKeys(d), (std::vector<std::string>{"UpperArm.L@8", "LowerArm.L@12"}));
+}
+
+TEST_F(DopeSheetE2e, XdotoolDragsAKeyThroughTheXServer) {
+  if (runCommand("command -v xdotool") != 0) GTEST_SKIP() << "SKIPPED: xdotool is not installed";
+  // A real user's path: View > Dope Sheet, LowerArm.L's key at 20 dragged 5 frames right,
+  // Ctrl+S, Ctrl+Q; the saved file holds the key at frame 25.
+  const std::string sh = dir_ + "/drive.sh";
+  const auto at = [](glm::dvec2 p) { return std::to_string(std::lround(p.x)) + " " + std::to_string(std::lround(p.y)); };
+  std::ofstream(sh) << "set -e\n"
+                    << "env XDG_STATE_HOME=" << dir_ << " XDG_CONFIG_HOME=" << dir_ << " " << kSoftware << KINEMA_BINARY
+                    << " edit '" << file_ << "' --size " << kSize << " --frame-count 100000 --dump-state " << dir_
+                    << "/xdotool.json & pid=$!\n"
+                    << "for i in $(seq 100); do w=$(xdotool search --name 'Kinema - ' | head -1) && [ -n \"$w\" ] && break; sleep 0.1; done\n"
+                    << "xdotool windowfocus --sync $w || true\nsleep 0.5\n"
+                    << "xdotool mousemove --window $w " << at(kViewMenu) << " click 1\nsleep 0.4\n"
+                    << "xdotool mousemove --window $w " << at(kViewDopeSheet) << " click 1\nsleep 0.4\n"
+                    << "xdotool mousemove --window $w " << at(key(20, kLowerArmL)) << "\nsleep 0.3\nxdotool mousedown 1\nsleep 0.3\n"
+                    << "xdotool mousemove --window $w " << at(key(22, kLowerArmL)) << "\nsleep 0.2\n"
+                    << "xdotool mousemove --window $w " << at(key(25, kLowerArmL)) << "\nsleep 0.3\nxdotool mouseup 1\nsleep 0.4\n"
+                    << "xdotool key --window $w ctrl+s\nsleep 0.5\nxdotool key --window $w ctrl+q\nwait $pid\n";
+  std::string out, err;
+  ASSERT_EQ(runCommand(kXvfb + "sh " + sh, &out, &err), 0) << err;
+  const json saved = readJson(file_);
+  ASSERT_TRUE(saved.is_object());
+  std::vector<double> frames;
+  for (const json& ch : saved["clips"][0]["channels"])
+    if (ch["joint"] == "LowerArm.L")
+      for (const json& t : ch["times"]) frames.push_back(std::round(double(t) * 24 * 1000) / 1000);
+  EXPECT_EQ(frames, (Frames{4, 12, 25}));
+}
+
+}  // namespace
+}  // namespace kinema::test
