@@ -4,7 +4,7 @@ namespace kinema {
 
 // What sits under the 3D view: the timeline strip, and above it the animation editor area
 // (dope sheet or curve editor, one at a time, as in Blender's bottom editor).
-constexpr float kTimelineHeight = 64.0f;  // the timeline strip: a row of buttons over the frame ruler
+constexpr float kTimelineHeight = 40.0f;  // the timeline strip
 constexpr float kAnimationEditorHeight = 260.0f;
 struct BottomPanels {
   bool timeline = false;

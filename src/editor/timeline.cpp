@@ -174,7 +174,7 @@ TimelineRuler timelineRuler(const EditorState& s, float x, float y, float w, flo
   r.x = x + 4;
   r.w = std::max(w - 8, 1.0f);
   r.h = kTimelineRulerHeight;
-  r.y = y + h - kTimelineRulerHeight - 4;
+  r.y = y + h - kTimelineRulerHeight - 2;
   r.first = rangeStartFrame(s);
   r.last = std::max(rangeEndFrame(s), r.first + 1);
   return r;

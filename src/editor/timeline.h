@@ -59,7 +59,7 @@ struct TimelineRuler {
   float xOfFrame(long long frame) const;
   long long frameAtX(float px) const;  // nearest frame, clamped to first..last
 };
-constexpr float kTimelineRulerHeight = 22.0f;  // under the row of buttons
+constexpr float kTimelineRulerHeight = 19.0f;  // under the row of buttons (the strip is 40 px)
 constexpr float kTimelineRulerMargin = 12.0f;  // left and right, so the end frames' diamonds fit
 // `x, y, w, h`: the timeline strip (panel_layout.h timelineRect), window pixels.
 TimelineRuler timelineRuler(const EditorState& state, float x, float y, float w, float h);

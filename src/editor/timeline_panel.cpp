@@ -22,7 +22,7 @@ const ImU32 kTickColor = IM_COL32(95, 95, 95, 255);
 const ImU32 kPlayheadColor = IM_COL32(71, 114, 179, 255);  // Blender's playhead blue
 const ImU32 kDiamondFill = IM_COL32(240, 180, 50, 255);    // keys of the selected joints
 const ImU32 kDiamondOutline = IM_COL32(0, 0, 0, 255);
-constexpr float kDiamondRadius = 5.0f;
+constexpr float kDiamondRadius = 4.5f;
 
 const Interpolation kPreferenceChoices[] = {Interpolation::Bezier, Interpolation::Linear, Interpolation::Step,
                                             Interpolation::CatmullRom, Interpolation::Ease};
@@ -72,7 +72,7 @@ void drawRuler(EditorState& state, const TimelineRuler& r) {
     const float x = r.xOfFrame(frame);
     draw->AddLine(ImVec2(x, r.y), ImVec2(x, r.y + r.h), kPlayheadColor, 2.0f);
   }
-  const float cy = r.y + r.h * 0.5f + 3.0f;
+  const float cy = r.y + r.h * 0.5f + 2.0f;  // below the tick labels' middle
   for (long long f : selectedKeyFrames(state)) {
     if (f < r.first || f > r.last) continue;
     const float x = r.xOfFrame(f), d = kDiamondRadius;
@@ -89,9 +89,9 @@ void drawTimelinePanel(EditorState& state) {
   const PanelRect r = timelineRect(ImGui::GetIO().DisplaySize);
   ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(r.w, r.h), ImGuiCond_Always);
-  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 4));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 2));
   ImGui::Begin("Timeline", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
-  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(4, 2));
+  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(4, 1));
   auto status = [&](const std::string& message) {
     if (!message.empty()) state.statusMessage = message;
   };

@@ -105,8 +105,8 @@ TEST_F(KeyingE2e, TheTimelineIsThereWithoutMotionAtFrameOne) {
   EXPECT_EQ(t["fps"], 24.0);
   EXPECT_FALSE(bool(t["auto_key"]));
   EXPECT_TRUE(t["channels"].empty());
-  // The 3D view ends where the timeline begins (64 px above the 24 px status bar).
-  EXPECT_EQ(double(front_["viewport"]["y"]) + double(front_["viewport"]["height"]), 800.0 - 24 - 64);
+  // The 3D view ends where the timeline begins (40 px above the 24 px status bar).
+  EXPECT_EQ(double(front_["viewport"]["y"]) + double(front_["viewport"]["height"]), 800.0 - 24 - 40);
 }
 
 // Pose -> I at frame 1 -> pose -> I at frame 24 -> Ctrl+S: the file has both keys; frame 12
@@ -273,7 +273,7 @@ TEST_F(KeyingE2e, KeyframeDiamondsAreDrawnOnTheKeyedFrames) {
   EXPECT_EQ(d["timeline"]["selected_key_frames"], json::array({1, 24, 60}));
   Result<Image> shot = loadPng(shotDir() + "/diamonds.png");
   ASSERT_TRUE(shot.ok()) << shot.error();
-  const int y = static_cast<int>(std::lround(rulerMiddle(d) + 3));
+  const int y = static_cast<int>(std::lround(rulerMiddle(d) + 2));
   auto isDiamond = [&](double x) {
     const std::uint8_t* p = shot.value().pixel(static_cast<int>(std::lround(x)), y);
     return p[0] > 200 && p[1] > 140 && p[1] < 220 && p[2] < 100;

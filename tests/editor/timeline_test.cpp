@@ -140,7 +140,7 @@ TEST(Timeline, FrameChangesPoseTheDocumentWithoutAnUndoStep) {
 
 TEST(Timeline, RulerMapsFramesToPixelsAndBack) {
   EditorState s = newState();
-  const TimelineRuler r = timelineRuler(s, 250, 700, 720, 64);
+  const TimelineRuler r = timelineRuler(s, 250, 700, 720, 40);
   EXPECT_EQ(r.first, 1);
   EXPECT_EQ(r.last, 250);
   EXPECT_FLOAT_EQ(r.xOfFrame(1), r.x + kTimelineRulerMargin);
@@ -148,7 +148,7 @@ TEST(Timeline, RulerMapsFramesToPixelsAndBack) {
   for (long long f : {1LL, 2LL, 100LL, 249LL, 250LL}) EXPECT_EQ(r.frameAtX(r.xOfFrame(f)), f);
   EXPECT_EQ(r.frameAtX(r.x - 100), 1);  // clamped to the range
   EXPECT_EQ(r.frameAtX(r.x + r.w + 100), 250);
-  EXPECT_LE(r.y + r.h, 700 + 64);
+  EXPECT_LE(r.y + r.h, 700 + 40);
 }
 
 TEST(Timeline, DiamondsAreTheFramesOfTheSelectedJointsKeys) {
