@@ -19,6 +19,11 @@ for shot in editor_fk_gizmo editor_ik_drag; do
     --script "$root/docs/images/$shot.jsonl" --frame-count 40 --screenshot "$root/docs/images/$shot.png"
 done
 rm -rf "$tmp"
+# The timeline with the keyframe diamonds of the selected joint (issue 9).
+tmp=$(mktemp -d)
+XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp xvfb-run -a -s "-screen 0 1280x800x24" "$kinema" edit \
+  --size 1280x800 --script "$root/docs/images/editor_timeline_keys.jsonl" --screenshot "$root/docs/images/editor_timeline_keys.png"
+rm -rf "$tmp"
 # The curve editor: the last frame of its README e2e test (tests/editor/curve_editor_e2e_test.cpp).
 "$root/build/tests/kinema_tests" --gtest_filter=CurveEditorE2e.ReadmeScreenshotNormalizedWithABezierKey
 cp "$root/build/curve_editor_e2e/curve_editor_readme.png" "$root/docs/images/curve_editor.png"

@@ -21,13 +21,14 @@ KeySettings defaultsFor(ChannelTarget target) {
   return s;
 }
 
-void key(Clip& clip, int joint, ChannelTarget target, float time, glm::vec4 value) {
+void key(Clip& clip, int joint, ChannelTarget target, float time, glm::vec4 value,
+         const std::optional<KeySettings>& settings = std::nullopt) {
   Channel* ch = findChannel(clip, joint, target);
   if (!ch) {
     Channel c;
     c.joint = joint;
     c.target = target;
-    c.interpolation = defaultsFor(target).interpolation;
+    c.interpolation = settings ? settings->interpolation : defaultsFor(target).interpolation;
     clip.channels.push_back(c);
     ch = &clip.channels.back();
   }
@@ -40,7 +41,8 @@ void key(Clip& clip, int joint, ChannelTarget target, float time, glm::vec4 valu
     if (target == ChannelTarget::Euler)
       for (int i = 0; i < 3; ++i) value[i] -= kTwoPi * std::round((value[i] - ref[i]) / kTwoPi);
   }
-  insertKey(*ch, time, value);
+  if (settings) insertKey(*ch, time, value, *settings);
+  else insertKey(*ch, time, value);
 }
 
 }  // namespace
@@ -60,21 +62,22 @@ int insertKeyframe(Clip& clip, const InsertKeyframeJob& job, const Pose& pose) {
     if (j < 0 || j >= pose.size()) continue;
     const Transform& t = pose.local[j];
     if (job.translation) {
-      key(clip, j, ChannelTarget::Translation, job.time, glm::vec4(t.translation, 0.0f));
+      key(clip, j, ChannelTarget::Translation, job.time, glm::vec4(t.translation, 0.0f), job.settings);
       ++written;
     }
     if (job.rotation) {
       // A joint keyed as Euler angles stays Euler.
       if (Channel* e = findChannel(clip, j, ChannelTarget::Euler)) {
-        key(clip, j, ChannelTarget::Euler, job.time, glm::vec4(quatToEuler(t.rotation, e->eulerOrder), 0.0f));
+        key(clip, j, ChannelTarget::Euler, job.time, glm::vec4(quatToEuler(t.rotation, e->eulerOrder), 0.0f),
+            job.settings);
       } else {
         const glm::quat q = glm::normalize(t.rotation);
-        key(clip, j, ChannelTarget::Rotation, job.time, glm::vec4(q.x, q.y, q.z, q.w));
+        key(clip, j, ChannelTarget::Rotation, job.time, glm::vec4(q.x, q.y, q.z, q.w), job.rotationSettings);
       }
       ++written;
     }
     if (job.scale) {
-      key(clip, j, ChannelTarget::Scale, job.time, glm::vec4(t.scale, 0.0f));
+      key(clip, j, ChannelTarget::Scale, job.time, glm::vec4(t.scale, 0.0f), job.settings);
       ++written;
     }
   }

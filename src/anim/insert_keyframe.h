@@ -1,4 +1,6 @@
 #pragma once
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "anim/clip.h"
@@ -11,6 +13,10 @@ struct InsertKeyframeJob {
   std::vector<int> joints;
   bool translation = true, rotation = true, scale = false;
   float time = 0.0f;
+  // When set, every key written carries these settings (the editor's key preferences):
+  // `settings` for translation, scale and Euler keys, `rotationSettings` for quaternion
+  // keys (whose interpolation must suit rotations). Unset: the defaults described below.
+  std::optional<KeySettings> settings, rotationSettings;
 
   std::string validate(const Skeleton& skeleton, const Pose& pose) const;
 };

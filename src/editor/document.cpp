@@ -6,6 +6,7 @@
 
 #include "core/forward_kinematics.h"
 #include "editor/ik_posing.h"
+#include "editor/keying.h"
 
 namespace kinema {
 
@@ -136,6 +137,7 @@ DocumentEdit Document::editView() {
 }
 
 std::string Document::runChange(const std::function<std::string(DocumentEdit&)>& change, bool /*driven*/) {
+  const std::vector<Transform> poseBefore = pose_.local;  // what auto-key compares with
   DocumentEdit view = editView();
   std::string error = change(view);
   if (!error.empty()) return error;
@@ -171,6 +173,17 @@ std::string Document::runChange(const std::function<std::string(DocumentEdit&)>&
     in.settings = ikSettings;
     in.settings.trace = nullptr;
     ikReports_ = solveIkPosing(in, pose_);
+  }
+  if (autoKey.enabled) {
+    std::vector<int> changed;
+    for (int j = 0; j < n; ++j)
+      if (!sameBits(poseBefore[j], pose_.local[j])) changed.push_back(j);
+    int clip = autoKey.clip;
+    if (keyJoints(scene_.clips, clip, scene_.skeleton, pose_, changed, autoKey.time, autoKey.preferences) > 0) {
+      autoKey.clip = clip;  // a new "Action" when the scene had no clip
+      const std::string bad = scene_.clips[clip].validate(scene_.skeleton);
+      if (!bad.empty()) return "auto-key: clip " + std::to_string(clip) + ": " + bad;
+    }
   }
   return {};
 }

@@ -7,6 +7,7 @@
 #include "core/pose.h"
 #include "editor/edit_history.h"
 #include "editor/joint_selection.h"
+#include "editor/key_preferences.h"
 #include "editor/pose_ik_target.h"
 #include "io/scene.h"
 
@@ -114,6 +115,9 @@ class Document {
   bool autoSolveIk = true;    // solve the active IK targets after every change
   IkSettings ikSettings;      // tolerance and iteration cap of those solves
   JointSelection selection;
+  // Auto-key: applied inside every edit and drag update after the change and its IK solve,
+  // so the keys are part of the same undo step (keying.h).
+  AutoKeySettings autoKey;
   const std::vector<IkTargetReport>& lastIkReports() const { return ikReports_; }
 
  private:

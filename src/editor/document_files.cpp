@@ -66,7 +66,8 @@ Clip poseClip(const Skeleton& skeleton, const Pose& pose) {
 
 }  // namespace
 
-std::string exportDocument(const Document& doc, const std::string& path, std::vector<std::string>* report) {
+std::string exportDocument(const Document& doc, const std::string& path, std::vector<std::string>* report,
+                           int bvhClip) {
   const std::string ext = lowerExtension(path);
   if (ext != ".gltf" && ext != ".glb" && ext != ".bvh")
     return path + ": export writes .gltf, .glb or .bvh (save .kinema with Save As)";
@@ -80,7 +81,8 @@ std::string exportDocument(const Document& doc, const std::string& path, std::ve
     report->push_back("the working pose is not exported: the scene's clips are");
   }
   try {
-    if (ext == ".bvh") return saveBvh(path, scene.skeleton, &scene.clips.front(), BvhWriteOptions{}, report);
+    if (bvhClip < 0 || bvhClip >= static_cast<int>(scene.clips.size())) bvhClip = 0;
+    if (ext == ".bvh") return saveBvh(path, scene.skeleton, &scene.clips[bvhClip], BvhWriteOptions{}, report);
     GltfWriteOptions options;
     options.binary = ext == ".glb";
     return saveGltf(path, scene, options, report);

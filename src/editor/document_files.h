@@ -23,7 +23,9 @@ std::string saveDocument(Document& doc);
 std::string saveDocumentAs(Document& doc, const std::string& path);
 // Export to .gltf, .glb or .bvh through the io writers. The document keeps its path and
 // dirty flag. `report` receives what the format could not hold.
-std::string exportDocument(const Document& doc, const std::string& path, std::vector<std::string>* report = nullptr);
+// BVH holds one clip: `bvhClip` (the timeline's, EditorState::clip), the first when out of range.
+std::string exportDocument(const Document& doc, const std::string& path, std::vector<std::string>* report = nullptr,
+                           int bvhClip = 0);
 
 // The window title: the file's name (or "untitled"), a "*" when dirty, then " - Kinema".
 std::string documentTitle(const Document& doc);

@@ -5,6 +5,7 @@
 
 #include "core/forward_kinematics.h"
 #include "editor/pose_edits.h"
+#include "editor/timeline.h"
 
 namespace kinema {
 
@@ -34,34 +35,17 @@ long long EditorState::frameCount() const {
 void evaluateEditorPose(EditorState& state) {
   if (state.wasPlaying && !state.playing) state.sampleClip = true;  // paused: edit from this frame
   state.wasPlaying = state.playing;
-  if (state.hasMotion() && state.sampleClip && !state.playing) {
-    const std::string error = poseFromClip(state.doc, state.clip, state.time);
-    if (!error.empty()) state.statusMessage = error;
+  syncAutoKey(state);
+  if (state.hasMotion() && (state.sampleClip || state.playing)) {
+    // Joints the clip does not animate keep their pose (Blender re-evaluates the action).
+    Pose pose = state.doc.pose();
+    sampleClip(state.doc.scene().clips[state.clip], static_cast<float>(state.time), pose);
+    state.doc.setAnimatedPose(pose);
   }
   state.sampleClip = false;
-  if (state.hasMotion() && state.playing) {
-    Pose pose = Pose::rest(state.doc.skeleton());
-    sampleClip(state.doc.scene().clips[state.clip], static_cast<float>(state.time), pose);
-    computeWorld(state.doc.skeleton(), pose, state.world);
-  } else {
-    state.world = state.doc.worldTransforms();
-  }
+  state.world = state.doc.worldTransforms();
 }
 
-void advancePlayback(EditorState& state, double dt) {
-  if (!state.playing || !state.hasMotion()) return;
-  // Playback runs over the clip's range (0 .. duration unless the file sets one).
-  const Clip& clip = state.doc.scene().clips[state.clip];
-  const double start = clip.playStart(), end = clip.playEnd();
-  state.time += dt;
-  if (state.time < start) state.time = start;
-  if (state.time <= end) return;
-  if (state.loop && end > start) {
-    state.time = start + std::fmod(state.time - start, end - start);
-  } else {
-    state.time = end;
-    state.playing = false;
-  }
-}
+void advancePlayback(EditorState& state, double dt) { advanceTimeline(state, dt); }
 
 }  // namespace kinema

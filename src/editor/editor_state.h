@@ -118,7 +118,8 @@ struct EditorState {
   double frameTime() const;      // the clip's frame time, or 1/30 s
   long long frameCount() const;  // frames on the clip's grid, at least 1
   // The panels under the 3D view this frame (layout: panel_layout.h).
-  bool timelineShown() const { return hasMotion(); }
+  // The timeline is there whenever a skeleton is, so a pose can be keyed (timeline.h).
+  bool timelineShown() const { return hasMotion() || doc.skeleton().size() > 0; }
   BottomPanels bottomPanels() const {
     BottomPanels b;
     b.timeline = timelineShown();
@@ -134,9 +135,9 @@ struct EditorState {
   }
 };
 
-// state.world: the clip sampled at state.time while it plays (the document is not edited by
-// playback), else the document's pose. When the timeline moved (sampleClip), the document's
-// pose becomes that frame (one undo step).
+// state.world: the document's pose. While the clip plays, and when the timeline moved
+// (sampleClip) or playback stopped, the document's pose becomes the clip's at state.time
+// through Document::setAnimatedPose (not an undo step, not a change to save).
 void evaluateEditorPose(EditorState& state);
 // Advances playback by dt seconds (wrapping or stopping at the end).
 void advancePlayback(EditorState& state, double dt);

@@ -1,3 +1,4 @@
+#include "editor/timeline.h"
 #include "editor/editor_window.h"
 
 #include <glad/gl.h>
@@ -285,6 +286,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     SkeletonDrawList list;  // last frame's drawing: picking casts rays against it
     OverlayDrawList overlay;
     AnimationDisplay animationDisplay;  // onion-skin ghosts, motion path (kept: the path is cached)
+    if (state.time == 0.0 && !state.playing) resetTimeline(state);  // frame 1 without a clip, as in Blender
     evaluateEditorPose(state);
     int fbw = 0, fbh = 0, ww = 0, wh = 0;
     glfwGetFramebufferSize(window, &fbw, &fbh);

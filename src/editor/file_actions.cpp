@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "editor/timeline.h"
 #include "editor/editor_panels.h"
 #include "editor/panel_layout.h"
 #include "editor/viewport_controller.h"
@@ -24,6 +25,7 @@ void replaceDocument(EditorState& state, Document doc) {
   state.time = 0.0;
   state.playing = false;
   state.sampleClip = false;
+  resetTimeline(state);
   // The new file framed from the current direction, as Home does.
   const PanelRect view = viewportRect(ImGui::GetIO().DisplaySize, state.bottomPanels());
   ViewportController().frameAll(state.camera, jointBounds(state.doc.worldTransforms()), view.w / view.h);
@@ -148,7 +150,7 @@ void finishFileDialog(EditorState& state, const std::string& path) {
     return;
   }
   std::vector<std::string> report;
-  if (const std::string error = exportDocument(state.doc, path, &report); !error.empty()) {
+  if (const std::string error = exportDocument(state.doc, path, &report, state.clip); !error.empty()) {
     showEditorError(state, error);
     return;
   }

@@ -10,6 +10,7 @@
 #include "editor/editor_panels.h"
 #include "editor/panel_layout.h"
 #include "editor/pose_edits.h"
+#include "editor/timeline.h"
 #include "editor/viewport_controller.h"
 
 namespace kinema {
@@ -212,6 +213,13 @@ void drawMainMenuBar(EditorState& state) {
     for (const MeshInstance& m : doc.scene().meshInstances) unskinned = unskinned || m.skin < 0;
     if (ImGui::MenuItem("Bind to Skeleton with Automatic Weights", "Ctrl+P", false, unskinned))
       showEditorError(state, bindUnskinnedMeshes(doc));
+    // Keying (timeline.h): at the playhead, with the timeline's key preferences.
+    ImGui::Separator();
+    if (ImGui::MenuItem("Insert Keyframe", "I", false, !doc.selection.empty())) state.statusMessage = keySelectedJoints(state);
+    if (ImGui::MenuItem("Insert Keys on All Joints")) state.statusMessage = keyAllJoints(state);
+    if (ImGui::MenuItem("Delete Keyframe", "Alt+I", false, !doc.selection.empty()))
+      state.statusMessage = deleteSelectedJointKeys(state);
+    ImGui::MenuItem("Auto-key", nullptr, &state.doc.autoKey.enabled);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Teach")) {

@@ -134,17 +134,6 @@ std::string resetToRestPose(Document& doc) {
   });
 }
 
-std::string poseFromClip(Document& doc, int clip, double time) {
-  if (!std::isfinite(time)) return "the time is not finite";
-  const Scene& scene = doc.scene();
-  const Clip* c = clip >= 0 && clip < static_cast<int>(scene.clips.size()) ? &scene.clips[clip] : nullptr;
-  return doc.edit("Pose from clip", [&](DocumentEdit& e) {
-    e.pose = Pose::rest(e.skeleton);
-    if (c) sampleClip(*c, static_cast<float>(time), e.pose);
-    return std::string();
-  });
-}
-
 std::string renameJoint(Document& doc, int joint, const std::string& name) {
   const std::string error = jointError(doc, joint);
   if (!error.empty()) return error;

@@ -23,8 +23,6 @@ std::string clearRotations(Document& doc, const std::vector<int>& joints);
 std::string clearTranslations(Document& doc, const std::vector<int>& joints);
 // Every joint back to its rest transform.
 std::string resetToRestPose(Document& doc);
-// The working pose = clip `clip` sampled at `time` (rest pose when there is no such clip).
-std::string poseFromClip(Document& doc, int clip, double time);
 // Renames a joint: non-empty, unique (a clash is refused with the clashing joint's name).
 std::string renameJoint(Document& doc, int joint, const std::string& name);
 

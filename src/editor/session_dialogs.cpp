@@ -148,6 +148,10 @@ void helpWindow(EditorState& state) {
       {"Dope sheet (View menu): click / drag keys", "select (Shift: toggle) / move, snapped to frames"},
       {"Dope sheet: drag on empty space, A / Alt+A", "box select, select all / none"},
       {"Dope sheet: G, X, Ctrl+C / Ctrl+V", "move, delete, copy / paste at the current frame"},
+      {"Space / Left, Right / Shift+Left, Right", "play, pause / step a frame / jump to start, end"},
+      {"Drag in the timeline's ruler", "scrub"},
+      {"I / Alt+I", "insert / delete keys of the selected joints at the current frame"},
+      {"Timeline: Auto-key", "record every posing edit as keys (same undo step)"},
   };
   if (ImGui::BeginTable("##controls", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
     for (const auto& row : rows) {

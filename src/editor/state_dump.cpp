@@ -4,6 +4,8 @@
 
 #include "editor/compare_panel.h"
 #include "editor/editor_window.h"
+#include "editor/panel_layout.h"
+#include "editor/timeline.h"
 #include "ik/ik_solver.h"
 
 namespace kinema {
@@ -14,6 +16,49 @@ json vec(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
 json jointName(const EditorState& s, int j) {
   return j >= 0 && j < s.doc.skeleton().size() ? json(s.doc.skeleton().names[j]) : json(nullptr);
 }
+// The timeline (timeline.h): frame, range, rate, playback switches, the ruler's pixels and
+// the edited clip's channels with their key times.
+json timelineJson(const EditorState& s, int windowWidth, int windowHeight) {
+  const PanelRect strip = timelineRect(ImVec2(float(windowWidth), float(windowHeight)));
+  const TimelineRuler r = timelineRuler(s, strip.x, strip.y, strip.w, strip.h);
+  const AutoKeySettings& a = s.doc.autoKey;
+  json t = {{"shown", s.timelineShown()},
+            {"frame", currentFrame(s)},
+            {"start", rangeStartFrame(s)},
+            {"end", rangeEndFrame(s)},
+            {"fps", timelineFps(s)},
+            {"loop", s.loop},
+            {"playing", s.playing},
+            {"auto_key", a.enabled},
+            {"key_interpolation", toString(a.preferences.interpolation)},
+            {"key_handles", toString(a.preferences.handles)},
+            {"animation_editor", s.animationEditor == AnimationEditorKind::DopeSheet     ? "dope-sheet"
+                                 : s.animationEditor == AnimationEditorKind::CurveEditor ? "curve-editor"
+                                                                                         : "none"},
+            {"ruler", {{"x", r.x}, {"y", r.y}, {"width", r.w}, {"height", r.h}, {"first", r.first}, {"last", r.last},
+                       {"margin", kTimelineRulerMargin}}}};
+  json keyFrames = json::array();
+  for (long long f : selectedKeyFrames(s)) keyFrames.push_back(f);
+  t["selected_key_frames"] = keyFrames;
+  json channels = json::array();
+  if (s.hasMotion()) {
+    const Clip& clip = s.doc.scene().clips[s.clip];
+    t["clip_name"] = clip.name;
+    for (const Channel& ch : clip.channels) {
+      json times = json::array();
+      for (float x : ch.times) times.push_back(x);
+      json interpolations = json::array();
+      for (int k = 0; k < ch.keyCount(); ++k) interpolations.push_back(toString(ch.settings(k).interpolation));
+      channels.push_back({{"joint", jointName(s, ch.joint)},
+                          {"target", toString(ch.target)},
+                          {"times", times},
+                          {"interpolations", interpolations}});
+    }
+  }
+  t["channels"] = channels;
+  return t;
+}
+
 // The curve editor: open or not, view, plot rectangle, the shown curves with their keys in
 // display units (the e2e tests turn them into pixels), and the selected keys.
 json curveEditorJson(const EditorState& s) {
@@ -116,6 +161,7 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
   out["viewport"] = {{"x", s.viewportRect.x}, {"y", s.viewportRect.y}, {"width", s.viewportRect.z},
                      {"height", s.viewportRect.w}};
   out["playback"] = {{"clip", s.hasMotion() ? s.clip : -1}, {"time", s.time}, {"playing", s.playing}};
+  out["timeline"] = timelineJson(s, windowWidth, windowHeight);
   out["tool"] = modalToolName(s.tool.mode);
   out["compare"] = compareStateJson(s.compare);  // Teach > Compare Solvers (docs/cli.md)
   out["dope_sheet"] = dopeSheetJson(s);

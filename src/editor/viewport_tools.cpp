@@ -12,6 +12,7 @@
 #include "editor/mesh_picking.h"
 #include "editor/picking.h"
 #include "editor/pose_edits.h"
+#include "editor/timeline.h"
 #include "editor/translate_drag.h"
 #include "editor/viewport_controller.h"
 
@@ -371,6 +372,8 @@ void ViewportTools::key(EditorState& state, const ViewportView& view, int key) {
         const std::string error = addIkTargetAtEffector(doc, doc.selection.active(), length,
                                                         length == 2 ? IkSolver::TwoBone : IkSolver::JacobianDls);
         if (!error.empty()) state.statusMessage = error;
+      } else if (!shift) {
+        state.statusMessage = alt ? deleteSelectedJointKeys(state) : keySelectedJoints(state);  // I / Alt+I
       }
       break;
     case GLFW_KEY_A:
@@ -396,7 +399,13 @@ void ViewportTools::key(EditorState& state, const ViewportView& view, int key) {
       if (alt) state.view.showWeights = !state.view.showWeights;  // heat colours of the active joint
       break;
     case GLFW_KEY_SPACE:
-      if (state.hasMotion()) state.playing = !state.playing;
+      if (state.timelineShown()) togglePlayback(state);
+      break;
+    case GLFW_KEY_LEFT:  // a frame back; Shift: to the start frame (Blender)
+      if (state.timelineShown()) shift ? jumpToStart(state) : stepFrame(state, -1);
+      break;
+    case GLFW_KEY_RIGHT:
+      if (state.timelineShown()) shift ? jumpToEnd(state) : stepFrame(state, 1);
       break;
     case GLFW_KEY_O:
       if (alt) state.onionSkin.enabled = !state.onionSkin.enabled;  // onion skin (ghost poses)

@@ -25,7 +25,7 @@ constexpr double kKeyAreaX = 250 + 160, kKeyAreaY = 476 + 22, kFirstFrame = -2, 
 double frameX(double frame) { return kKeyAreaX + (frame - kFirstFrame) * kPixelsPerFrame; }
 double rowY(int row) { return kKeyAreaY + kRowHeight * row + kRowHeight / 2; }
 glm::dvec2 key(double frame, int row) { return {frameX(frame), rowY(row)}; }
-const glm::dvec2 kViewMenu{113, 9}, kViewDopeSheet{153, 304};
+const glm::dvec2 kViewMenu{113, 9}, kViewDopeSheet{153, 304};  // the first item after Show Grid
 constexpr double kRulerY = 476 + 11;
 // Rows of the clip below (skeleton order under the summary).
 enum Row { kSummary = 0, kHips = 1, kSpine = 2, kHead = 3, kUpperArmL = 4, kLowerArmL = 5 };

@@ -24,8 +24,9 @@ const std::string kSoftware =
 const std::string kXvfb = "xvfb-run -a -s '-screen 0 1280x800x24' ";
 constexpr double kW = 1280, kH = 720;  // the editor's default window size
 // The 3D view between the panels (panel_layout.h: left column 250 px, right column 310 px,
-// menu bar 19 px, status bar 24 px): x 250..970, y 19..696.
-constexpr double kViewX = 250, kViewY = 19, kViewW = kW - 250 - 310, kViewH = kH - 19 - 24;
+// menu bar 19 px, status bar 24 px, the 40 px timeline above the status bar, there whenever
+// a skeleton is): x 250..970, y 19..656.
+constexpr double kViewX = 250, kViewY = 19, kViewW = kW - 250 - 310, kViewH = kH - 19 - 24 - 40;
 
 std::string shotDir() {
   const std::string dir = std::string(KINEMA_BUILD_DIR) + "/editor_e2e";

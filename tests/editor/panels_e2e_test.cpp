@@ -509,3 +509,40 @@ TEST_F(PanelsE2e, KillDashNineThenRestartOffersTheRecoveryFile) {
 
 }  // namespace
 }  // namespace kinema::test
+
+namespace kinema::test {
+namespace {
+
+// Issue 9: a clip authored in the editor (UpperArm.L keyed at Rz(40) on frame 1 and Rz(-20)
+// on frame 24 with I, the Right key stepping between) goes out through File > Export as
+// GLB and BVH; read back, frame 12 (0.5 s) is the slerp of the two keys at 11/23, about Z
+// by 40 - 60 * 11/23 degrees (two squad keys without neighbours are a slerp). The status
+// bar shows the export and its report.
+TEST_F(PanelsE2e, TheAuthoredClipExportsThroughTheFileMenu) {
+  const std::pair<double, std::string> formats[] = {{kExportGlbY, "/authored.glb"}, {kExportBvhY, "/authored.bvh"}};
+  for (const auto& [itemY, name] : formats) {
+    Script s;
+    s.select(kUpperArmL).euler(2, 40.0).select(kUpperArmL).key("I");
+    for (int i = 0; i < 23; ++i) s.key("RIGHT");
+    s.select(kUpperArmL).euler(2, -20.0).select(kUpperArmL).key("I");
+    s.click(kFileMenu).wait(2).move(menuItem(kFileMenu, kFileExportY)).wait(3).move({kSubmenuX, kFileExportY}).wait(2);
+    s.click({kSubmenuX, itemY}).wait(3).type(dir_ + name).key("ENTER").wait(3);
+    const nlohmann::json d = runAndDump(s, "export_authored_" + name.substr(name.size() - 3));
+    EXPECT_EQ(d["timeline"]["frame"], 24);
+    EXPECT_NE(d["status"].get<std::string>().find("Exported"), std::string::npos) << d["status"];
+    const Result<Scene> exported = loadScene(dir_ + name);
+    ASSERT_TRUE(exported.ok()) << exported.error();
+    ASSERT_FALSE(exported->clips.empty()) << name;
+    const int arm = exported->skeleton.find("UpperArm.L");
+    ASSERT_GE(arm, 0) << name;
+    for (const auto& [time, degrees] : {std::pair<float, double>{1.0f / 24, 40.0}, {0.5f, 40.0 - 60.0 * 11 / 23},
+                                        {1.0f, -20.0}}) {
+      Pose pose = Pose::rest(exported->skeleton);
+      sampleClip(exported->clips[0], time, pose);
+      EXPECT_ROTATION(glm::dquat(pose.local[arm].rotation), rotZ(degrees));
+    }
+  }
+}
+
+}  // namespace
+}  // namespace kinema::test

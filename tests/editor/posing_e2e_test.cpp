@@ -85,7 +85,7 @@ TEST_F(PosingE2e, TheDefaultCharacterRestsWithIdentityRotations) {
   }
   EXPECT_NEAR(glm::length(rest("LowerArm.L") - rest("UpperArm.L")), 0.28, 1e-6);
   EXPECT_NEAR(glm::length(rest("Hand.L") - rest("LowerArm.L")), 0.26, 1e-6);
-  EXPECT_EQ(double(front_["viewport"]["height"]), 800.0 - 19 - 24);
+  EXPECT_EQ(double(front_["viewport"]["height"]), 800.0 - 19 - 24 - 40);  // the timeline is always there
 }
 
 TEST_F(PosingE2e, XMirrorEditingRotatesTheMirrorPartnerInTheSameUndoStep) {
@@ -269,7 +269,7 @@ TEST_F(PosingE2e, OrthographicToggleAndFrameSelectedFromTheViewMenuAndKeys) {
   // The joint is at the middle of the 3D view (between the panels), not of the window.
   const glm::dvec2 centre = DumpCamera(d).pixel(rest("LowerArm.R"));
   EXPECT_NEAR(centre.x, 250 + (1280 - 250 - 310) / 2.0, 0.5);
-  EXPECT_NEAR(centre.y, 19 + (800 - 19 - 24) / 2.0, 0.5);
+  EXPECT_NEAR(centre.y, 19 + (800 - 19 - 24 - 40) / 2.0, 0.5);  // above the 40 px timeline
   menus.key("KP_5");
   d = run(menus, "view_menu_ortho_then_numpad5");
   EXPECT_FALSE(d["camera"]["orthographic"].get<bool>());
@@ -410,8 +410,9 @@ TEST_F(PosingE2e, AChosenIkRootSetsTheChain) {
 TEST_F(PosingE2e, TimelinePlaysAFilesMotion) {
   KINEMA_REQUIRE_SHARED_DATA();
   const std::string bvh = sharedDataDir() + "/bvh/cmu_01_01_first720.bvh";
-  // Layout at 1280x800: menu bar 19, status bar 24, timeline 40 px; Play is its first button.
-  const glm::dvec2 play{275, 800 - 24 - 40 + 17};
+  // Layout at 1280x800: menu bar 19, status bar 24, timeline 40 px; Play is its third
+  // button (after |< and <), on the row at the timeline's top.
+  const glm::dvec2 play{312, 800 - 24 - 40 + 9};
   Script s;
   s.click(play).wait(60).click(play).wait(2);
   const json d = runEditor(dir_, shotDir(), s, "timeline_play", kSize, bvh);

@@ -95,8 +95,10 @@ TEST(EditorState, PlaybackWrapsWhenLoopingAndStopsOtherwise) {
 }
 
 TEST(EditorPlayback, PausingHandsTheFrameToTheDocument) {
-  // A root moving 1 unit per second along X: after playing to t = 1.5 and pausing, the
-  // document's pose (what edits start from) is that frame, as one undo step.
+  // A root moving 1 unit per second along X: while playing, and after pausing at t = 1.5,
+  // the document's pose (what edits start from) is the clip's frame, set with
+  // Document::setAnimatedPose: no undo step and nothing unsaved (Blender re-evaluates the
+  // action on a frame change).
   Scene scene;
   scene.skeleton.addJoint("Root", -1, Transform{});
   Clip clip;
@@ -110,11 +112,12 @@ TEST(EditorPlayback, PausingHandsTheFrameToTheDocument) {
   advancePlayback(s, 1.5);
   evaluateEditorPose(s);
   EXPECT_VEC3_NEAR(glm::vec3(s.world[0][3]), glm::vec3(1.5f, 0, 0), 1e-6f);
-  EXPECT_VEC3_NEAR(s.doc.pose().local[0].translation, glm::vec3(0.0f), 1e-6f);  // playback only shows
+  EXPECT_VEC3_NEAR(s.doc.pose().local[0].translation, glm::vec3(1.5f, 0, 0), 1e-6f);
   s.playing = false;
   evaluateEditorPose(s);
   EXPECT_VEC3_NEAR(s.doc.pose().local[0].translation, glm::vec3(1.5f, 0, 0), 1e-6f);
-  EXPECT_EQ(s.doc.historyPosition(), 1);
+  EXPECT_EQ(s.doc.historyPosition(), 0);
+  EXPECT_FALSE(s.doc.dirty());
 }
 
 TEST(EditorPlayback, LoopsOverTheClipsPlaybackRange) {

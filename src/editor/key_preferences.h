@@ -1,0 +1,25 @@
+#pragma once
+#include "anim/clip.h"
+
+namespace kinema {
+
+// What newly inserted keys carry (Blender: Edit > Preferences > Animation > F-Curves).
+// Default: Bezier with auto-clamped handles, Blender's default. Rotation channels
+// (quaternions) do not accept Bezier: they get rotationInterpolation() of the choice.
+struct KeyPreferences {
+  Interpolation interpolation = Interpolation::Bezier;
+  HandleType handles = HandleType::AutoClamped;
+  bool locRotOnly = false;  // key translation + rotation only (else also scale where it differs from rest)
+};
+
+// Auto-key (the timeline's record button): while enabled, every posing edit and drag keys
+// the joints whose local transform it changed, at `time` in clips[clip] (created as
+// "Action" when the scene has none), in the same undo step as the edit.
+struct AutoKeySettings {
+  bool enabled = false;
+  int clip = 0;
+  float time = 0.0f;
+  KeyPreferences preferences;
+};
+
+}  // namespace kinema

@@ -1,0 +1,69 @@
+#pragma once
+#include <string>
+#include <vector>
+
+
+namespace kinema {
+
+struct EditorState;
+
+// The timeline model (Blender's timeline): the current frame of EditorState::time, the
+// frame range and rate of the edited clip (EditorState::clip; saved in .kinema as the clip's
+// hasRange/rangeStart/rangeEnd and frameTime), play/pause, step, jump and scrub. Without a
+// clip it shows Blender's defaults (frames 1..250 at 24 fps) so a user can start keying;
+// the first key creates the clip ("Action", keying.h). Frame N is at time N * frameTime.
+// Changing the frame poses the document from the clip with Document::setAnimatedPose: not
+// an undo step, joints the clip does not animate keep their pose.
+
+double timelineFrameTime(const EditorState& state);  // the clip's, or 1/24 s without one
+double timelineFps(const EditorState& state);
+long long frameAtTime(const EditorState& state, double time);  // the nearest frame
+double timeOfFrame(const EditorState& state, long long frame);
+long long currentFrame(const EditorState& state);
+long long rangeStartFrame(const EditorState& state);
+long long rangeEndFrame(const EditorState& state);
+
+// Moves the playhead to `frame` (also the auto-key time) and poses the document from the
+// clip there (while not playing). Frames outside the range are allowed, as in Blender.
+void goToFrame(EditorState& state, long long frame);
+// A new or opened document: stopped at the range's start frame (frame 1 without a clip).
+void resetTimeline(EditorState& state);
+void stepFrame(EditorState& state, int delta);  // Left / Right: one frame, no wrap
+void jumpToStart(EditorState& state);           // Shift+Left
+void jumpToEnd(EditorState& state);             // Shift+Right
+// Space: play from the current frame; pausing lands on the nearest frame and poses the
+// document there.
+void togglePlayback(EditorState& state);
+// Playback: advances by dt seconds within the range, wrapping when looping, else stopping
+// at the end.
+void advanceTimeline(EditorState& state, double dt);
+// Keeps the document's auto-key settings on the playhead and the edited clip.
+void syncAutoKey(EditorState& state);
+
+// The frame range and rate are part of the clip (undo steps; a clip is created when the
+// scene has none). Errors are one line for the status bar.
+std::string setFrameRange(EditorState& state, long long start, long long end);
+std::string setFrameRate(EditorState& state, double fps);
+
+// The keying commands at the playhead with the document's key preferences (doc.autoKey.
+// preferences), one undo step each; a status line back ("" when nothing to say).
+std::string keySelectedJoints(EditorState& state);        // I
+std::string keyAllJoints(EditorState& state);             // Animation > Insert keys on all joints
+std::string deleteSelectedJointKeys(EditorState& state);  // Alt+I
+
+// The frame ruler in the timeline strip (window pixels): frames first..last spread over
+// its width, so scrubbing and the keyframe diamonds agree with the dump's numbers.
+struct TimelineRuler {
+  float x = 0, y = 0, w = 1, h = 1;
+  long long first = 0, last = 1;
+  float xOfFrame(long long frame) const;
+  long long frameAtX(float px) const;  // nearest frame, clamped to first..last
+};
+constexpr float kTimelineRulerHeight = 19.0f;  // under the row of buttons (the strip is 40 px)
+constexpr float kTimelineRulerMargin = 12.0f;  // left and right, so the end frames' diamonds fit
+// `x, y, w, h`: the timeline strip (panel_layout.h timelineRect), window pixels.
+TimelineRuler timelineRuler(const EditorState& state, float x, float y, float w, float h);
+// Frames holding a key of a selected joint (one diamond each), in the edited clip.
+std::vector<long long> selectedKeyFrames(const EditorState& state);
+
+}  // namespace kinema
