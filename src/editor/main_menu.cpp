@@ -103,6 +103,7 @@ void handleMenuShortcuts(EditorState& state) {
   else if (pressed(GLFW_KEY_O)) requestOpenDialog(state);
   else if (pressed(GLFW_KEY_S)) shift ? requestSaveAs(state) : requestSave(state);
   else if (pressed(GLFW_KEY_Q)) requestQuit(state);
+  else if (state.compare.active) return;  // the document is hidden: no undo or pose clipboard on it
   else if (pressed(GLFW_KEY_Z)) shift ? redo(state) : undo(state);
   else if (pressed(GLFW_KEY_Y)) redo(state);
   else if (pressed(GLFW_KEY_C)) copySelection(state);

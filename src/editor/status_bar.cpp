@@ -12,6 +12,8 @@ namespace kinema {
 namespace {
 
 const char* toolHint(const EditorState& state) {
+  if (state.compare.active)
+    return "Compare: Right step, Shift+Right iteration, Space play, End run, R reset, drag the target, Esc leaves";
   switch (state.tool.mode) {
     case ModalTool::Rotate: return "Rotate: move the mouse, X/Y/Z constrain, click/Enter confirms, Esc cancels";
     case ModalTool::Grab: return "Move: move the mouse, X/Y/Z constrain, click/Enter confirms, Esc cancels";

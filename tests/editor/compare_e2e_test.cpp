@@ -293,6 +293,25 @@ TEST_F(CompareE2e, The3dSwitchSolvesBallJointsAndADragOrbitsTheViews) {
   }
 }
 
+TEST_F(CompareE2e, CtrlZInTheModeLeavesTheHiddenDocumentAlone) {
+  // Leave the mode, key every joint (one undo step), come back: Ctrl+Z there must not undo
+  // the keys nobody can see; after Esc it does.
+  const glm::dvec2 inView{600, 300};
+  Script s;
+  s.wait(4).key("ESCAPE").wait(2).move(inView).wait(1).key("A").wait(2).key("I").wait(3);
+  s.menu(kTeachMenu, kCompareItem).wait(2).move(inView).wait(1);
+  s.keyDown("LEFT_CONTROL").key("Z").keyUp("LEFT_CONTROL").wait(3);
+  const json inside = run(s, "ctrl_z_inside", "ccd-steps");
+  ASSERT_TRUE(inside.is_object());
+  EXPECT_EQ(inside["compare"]["active"], true);
+  EXPECT_EQ(inside["undo_depth"], 1) << "the keys were inserted once and not undone";
+  s.key("ESCAPE").wait(2).move(inView).wait(1).keyDown("LEFT_CONTROL").key("Z").keyUp("LEFT_CONTROL").wait(3);
+  const json outside = run(s, "ctrl_z_outside", "ccd-steps");
+  ASSERT_TRUE(outside.is_object());
+  EXPECT_EQ(outside["compare"]["active"], false);
+  EXPECT_EQ(outside["undo_depth"], 0);
+}
+
 TEST_F(CompareE2e, AnUnknownPresetIsABadUsage) {
   std::string out, err;
   const int rc = runCommand(std::string(KINEMA_BINARY) + " edit --compare no-such-case --frame-count 1", &out, &err);
