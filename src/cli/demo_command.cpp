@@ -131,7 +131,11 @@ int runPreset(const TeachingCase& preset, const DemoOptions& o, int width, int h
         const std::string movie = (out / (name + "." + ext)).string();
         const std::string cmd = "ffmpeg -y -loglevel error -framerate 2 -pattern_type glob -i " +
                                 quoted((dir / "step_*.png").string()) +
-                                (std::string(ext) == "mp4" ? " -pix_fmt yuv420p -vf " + quoted("scale=trunc(iw/2)*2:trunc(ih/2)*2") + " " : " ") +
+                                // GIF: a palette made from the frames themselves (ffmpeg's default
+                                // palette for RGBA input turns greys and black into yellow).
+                                (std::string(ext) == "mp4"
+                                     ? " -pix_fmt yuv420p -vf " + quoted("scale=trunc(iw/2)*2:trunc(ih/2)*2") + " "
+                                     : " -vf " + quoted("split[a][b];[a]palettegen=reserve_transparent=0[p];[b][p]paletteuse") + " ") +
                                 quoted(movie);
         if (std::system(cmd.c_str()) != 0) std::cerr << "kinema demo: ffmpeg failed to write " << movie << "\n";
       }

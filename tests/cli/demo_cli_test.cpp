@@ -144,5 +144,48 @@ TEST(DemoCommand, MakesGifAndMp4WithFfmpegOnPath) {
   EXPECT_EQ(err.find("not on PATH"), std::string::npos) << err;
 }
 
+// Without ffmpeg the demo still writes everything else and says, in one line, why there is
+// no GIF or MP4.
+TEST(DemoCommand, SaysSoWhenFfmpegIsAbsent) {
+  const std::string dir = test::makeTempDir(), empty = test::makeTempDir();
+  std::string out, err;
+  ASSERT_EQ(test::runCommand("PATH=" + empty + " " + std::string(KINEMA_BINARY) + " demo ccd-steps --out " + dir, &out, &err),
+            0)
+      << err;
+  EXPECT_NE(err.find("ffmpeg is not on PATH"), std::string::npos) << err;
+  EXPECT_FALSE(std::filesystem::exists(std::filesystem::path(dir) / "ccd.gif"));
+  EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(dir) / "ccd" / "step_000.png"));
+}
+
+// With the real ffmpeg (.ci installs it), the GIF's frames keep the figure's colours: its
+// first frame, decoded again by ffmpeg, matches step_000.png on the drawn (non-white) pixels.
+// ffmpeg's default GIF palette for RGBA frames once turned black and grey into yellow.
+TEST(DemoCommand, TheGifKeepsTheFiguresColours) {
+  if (test::runCommand("command -v ffmpeg >/dev/null 2>&1 && ffmpeg -version | grep -q '^ffmpeg version'") != 0)
+    GTEST_SKIP() << "ffmpeg is not installed (optional Debian package): no GIF to check";
+  const std::string dir = test::makeTempDir();
+  std::string out, err;
+  ASSERT_EQ(test::runCommand(std::string(KINEMA_BINARY) + " demo ccd-steps --out " + dir, &out, &err), 0) << err;
+  ASSERT_EQ(test::runCommand("ffmpeg -v error -y -i " + dir + "/ccd.gif -vframes 1 " + dir + "/gif_frame0.png", &out, &err), 0)
+      << err;
+  const Result<Image> png = loadPng(dir + "/ccd/step_000.png"), gif = loadPng(dir + "/gif_frame0.png");
+  ASSERT_TRUE(png.ok()) << png.error();
+  ASSERT_TRUE(gif.ok()) << gif.error();
+  ASSERT_EQ(png.value().width, gif.value().width);
+  ASSERT_EQ(png.value().height, gif.value().height);
+  double sum = 0.0;
+  long drawn = 0;
+  for (int y = 0; y < png.value().height; ++y)
+    for (int x = 0; x < png.value().width; ++x) {
+      const std::uint8_t* a = png.value().pixel(x, y);
+      const std::uint8_t* b = gif.value().pixel(x, y);
+      if (a[0] > 245 && a[1] > 245 && a[2] > 245) continue;  // background
+      ++drawn;
+      for (int c = 0; c < 3; ++c) sum += std::abs(int(a[c]) - int(b[c]));
+    }
+  ASSERT_GT(drawn, 1000);
+  EXPECT_LT(sum / (3.0 * drawn), 12.0) << "mean difference per channel on " << drawn << " drawn pixels";
+}
+
 }  // namespace
 }  // namespace kinema
