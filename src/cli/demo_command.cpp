@@ -1,5 +1,7 @@
 #include "cli/demo_command.h"
 
+#include "cli/ik_trace_json.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -56,21 +58,6 @@ bool onPath(const std::string& program) {
   return false;
 }
 
-nlohmann::ordered_json traceJson(const IkTrace& trace) {
-  nlohmann::ordered_json steps = nlohmann::ordered_json::array();
-  for (const IkTraceEntry& e : trace.entries) {
-    nlohmann::ordered_json s;
-    s["iteration"] = e.iteration;
-    s["step"] = toString(e.step);
-    if (e.joint >= 0) s["joint"] = e.joint;
-    s["error"] = jsonFloat(e.error);
-    nlohmann::ordered_json ps = nlohmann::ordered_json::array();
-    for (const glm::vec3& p : e.positions) ps.push_back({jsonFloat(p.x), jsonFloat(p.y), jsonFloat(p.z)});
-    s["positions"] = std::move(ps);
-    steps.push_back(std::move(s));
-  }
-  return steps;
-}
 
 std::string ikCommand(const TeachingCase& setup, IkSolver solver, const std::string& file) {
   std::string cmd = "kinema ik " + quoted(file);
@@ -151,7 +138,7 @@ int runPreset(const TeachingCase& preset, const DemoOptions& o, int width, int h
     nlohmann::ordered_json joints = nlohmann::ordered_json::array();
     for (int j : run.trace.joints) joints.push_back(j);
     s["trace_joints"] = std::move(joints);
-    s["trace"] = traceJson(run.trace);
+    s["trace"] = ikTraceJson(run.trace);
     solvers.push_back(std::move(s));
     for (int k = 0; k < entries; ++k) {
       const IkTraceEntry& e = run.trace.entries[k];

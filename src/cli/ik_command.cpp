@@ -1,5 +1,7 @@
 #include "cli/ik_command.h"
 
+#include "cli/ik_trace_json.h"
+
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -162,19 +164,7 @@ int runIk(const IkOptions& o) {
       nlohmann::ordered_json names = nlohmann::ordered_json::array();
       for (int j : trace.joints) names.push_back(scene.fileIndexOf(j));  // glTF: node indices
       out["trace_joints"] = std::move(names);  // indices into "joints" of each trace position
-      nlohmann::ordered_json steps = nlohmann::ordered_json::array();
-      for (const IkTraceEntry& e : trace.entries) {
-        nlohmann::ordered_json s;
-        s["iteration"] = e.iteration;
-        s["step"] = toString(e.step);
-        if (e.joint >= 0) s["joint"] = e.joint;
-        s["error"] = jsonFloat(e.error);
-        nlohmann::ordered_json ps = nlohmann::ordered_json::array();
-        for (const glm::vec3& p : e.positions) ps.push_back({jsonFloat(p.x), jsonFloat(p.y), jsonFloat(p.z)});
-        s["positions"] = std::move(ps);
-        steps.push_back(std::move(s));
-      }
-      out["trace"] = std::move(steps);
+      out["trace"] = ikTraceJson(trace);
     }
     out["joints"] = jointsJson(scene, world);
     std::cout << out.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";

@@ -3,6 +3,7 @@
 // xvfb-run with Mesa's llvmpipe on a --script, reading its --dump-state, and the test's own
 // camera (rebuilt from the dumped eye, target, field of view and viewport rectangle) that
 // turns world points into the window pixels a script clicks, independently of the editor.
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -146,6 +147,41 @@ inline json runEditor(const std::string& dir, const std::string& shotDir, const 
   EXPECT_EQ(rc, 0) << err;
   return rc == 0 ? readJson(dump) : json();
 }
+
+// A suite whose tests start from the editor's front view on the default character: the
+// editor runs once for the suite (front_: its dump, the camera for pixel maths), each test
+// gets a fresh temporary folder (dir_), and screenshots go to the build dir's
+// Suite::kShotFolder. Suite names kShotFolder and kWindowSize ("WxH").
+template <typename Suite>
+class FrontViewSuite : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    if (runCommand("command -v xvfb-run") != 0) return;
+    const std::string dir = makeTempDir();
+    const json d = runEditor(dir, shotDir(), Script(), "front", Suite::kWindowSize);
+    if (d.is_object()) front_ = d;
+    runCommand("rm -rf '" + dir + "'");
+  }
+  void SetUp() override {
+    if (runCommand("command -v xvfb-run") != 0) GTEST_SKIP() << "SKIPPED: xvfb-run is not installed";
+    ASSERT_TRUE(front_.is_object()) << "the front-view run failed";
+    dir_ = makeTempDir();
+  }
+  void TearDown() override {
+    if (!dir_.empty()) runCommand("rm -rf '" + dir_ + "'");
+  }
+  static std::string shotDir() {
+    const std::string dir = std::string(KINEMA_BUILD_DIR) + "/" + Suite::kShotFolder;
+    runCommand("mkdir -p '" + dir + "'");
+    return dir;
+  }
+  json run(const Script& script, const std::string& name, const std::string& file = "") {
+    return runEditor(dir_, shotDir(), script, name, Suite::kWindowSize, file);
+  }
+
+  static inline json front_;
+  std::string dir_;
+};
 
 inline glm::dvec3 jointIn(const json& d, const std::string& name, const char* field = "world_position") {
   for (const json& j : d["joints"])

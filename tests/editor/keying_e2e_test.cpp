@@ -18,7 +18,6 @@ namespace {
 
 using namespace e2e;
 
-const std::string kSize = "1280x800";
 // The outliner's rows (depth-first order of the default character), 17 px apart.
 glm::dvec2 outlinerRow(int row) { return {150.0, 76.0 + 17.0 * row}; }
 constexpr int kUpperArmLRow = 8;
@@ -40,31 +39,12 @@ const Channel* channelOf(const Scene& s, int joint, ChannelTarget target) {
 
 glm::quat quatOf(const glm::vec4& v) { return glm::quat(v.w, v.x, v.y, v.z); }
 
-class KeyingE2e : public ::testing::Test {
+class KeyingE2e : public FrontViewSuite<KeyingE2e> {
+ public:
+  static constexpr const char* kShotFolder = "keying_e2e";
+  static constexpr const char* kWindowSize = "1280x800";
+
  protected:
-  static void SetUpTestSuite() {
-    if (runCommand("command -v xvfb-run") != 0) return;
-    const std::string dir = makeTempDir();
-    const json d = runEditor(dir, shotDir(), Script(), "front", kSize);
-    if (d.is_object()) front_ = d;
-    runCommand("rm -rf '" + dir + "'");
-  }
-  void SetUp() override {
-    if (runCommand("command -v xvfb-run") != 0) GTEST_SKIP() << "SKIPPED: xvfb-run is not installed";
-    ASSERT_TRUE(front_.is_object()) << "the front-view run failed";
-    dir_ = makeTempDir();
-  }
-  void TearDown() override {
-    if (!dir_.empty()) runCommand("rm -rf '" + dir_ + "'");
-  }
-  static std::string shotDir() {
-    const std::string dir = std::string(KINEMA_BUILD_DIR) + "/keying_e2e";
-    runCommand("mkdir -p '" + dir + "'");
-    return dir;
-  }
-  json run(const Script& script, const std::string& name, const std::string& file = "") {
-    return runEditor(dir_, shotDir(), script, name, kSize, file);
-  }
   // The default character saved as .kinema, so that Ctrl+S saves in place.
   std::string characterFile() {
     Document doc = newDocument();
@@ -92,8 +72,6 @@ class KeyingE2e : public ::testing::Test {
     return s.wait(n + 2);
   }
 
-  static inline json front_;
-  std::string dir_;
 };
 
 TEST_F(KeyingE2e, TheTimelineIsThereWithoutMotionAtFrameOne) {

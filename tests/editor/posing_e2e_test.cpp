@@ -35,37 +35,16 @@ const glm::dvec2 kIkChainMinus{1129, 618}, kIkRootCombo{1060, 641}, kIkRootUpper
 const glm::dvec2 kIkPositionBelowRoot[3] = {{1007, 710}, {1069, 710}, {1131, 710}};
 const glm::dvec2 kIkPole[3] = {{1007, 733}, {1069, 733}, {1131, 733}};
 
-class PosingE2e : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    if (runCommand("command -v xvfb-run") != 0) return;
-    const std::string dir = makeTempDir();
-    const json d = runEditor(dir, shotDir(), Script(), "front", kSize);
-    if (d.is_object()) front_ = d;
-    runCommand("rm -rf '" + dir + "'");
-  }
-  void SetUp() override {
-    if (runCommand("command -v xvfb-run") != 0) GTEST_SKIP() << "SKIPPED: xvfb-run is not installed";
-    ASSERT_TRUE(front_.is_object()) << "the front-view run failed";
-    dir_ = makeTempDir();
-  }
-  void TearDown() override {
-    if (!dir_.empty()) runCommand("rm -rf '" + dir_ + "'");
-  }
-  static std::string shotDir() {
-    const std::string dir = std::string(KINEMA_BUILD_DIR) + "/posing_e2e";
-    runCommand("mkdir -p '" + dir + "'");
-    return dir;
-  }
-  json run(const Script& script, const std::string& name) { return runEditor(dir_, shotDir(), script, name, kSize); }
+class PosingE2e : public FrontViewSuite<PosingE2e> {
+ public:
+  static constexpr const char* kShotFolder = "posing_e2e";
+  static constexpr const char* kWindowSize = "1280x800";
 
+ protected:
   DumpCamera camera() const { return DumpCamera(front_); }
   glm::dvec3 rest(const std::string& name) const { return jointIn(front_, name); }
   glm::dvec2 pixelOf(const std::string& name) const { return camera().pixel(rest(name)); }
   glm::dvec2 midpoint(const std::string& a, const std::string& b) const { return (pixelOf(a) + pixelOf(b)) * 0.5; }
-
-  static inline json front_;
-  std::string dir_;
 };
 
 // The point of the line p + s * axis nearest to the ray o + t * d (both directions unit).
