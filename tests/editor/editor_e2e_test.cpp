@@ -28,11 +28,6 @@ constexpr double kW = 1280, kH = 720;  // the editor's default window size
 // a skeleton is): x 250..970, y 19..656.
 constexpr double kViewX = 250, kViewY = 19, kViewW = kW - 250 - 310, kViewH = kH - 19 - 24 - 40;
 
-std::string shotDir() {
-  const std::string dir = std::string(KINEMA_BUILD_DIR) + "/editor_e2e";
-  runCommand("mkdir -p '" + dir + "'");
-  return dir;
-}
 
 json readJson(const std::string& path) {
   std::ifstream in(path);
@@ -76,43 +71,21 @@ struct TestCamera {
 
 // The script builder shared by the editor e2e suites.
 using e2e::Script;
+using e2e::FrontViewSuite;
+using e2e::runEditor;
 
-class EditorE2e : public ::testing::Test {
+class EditorE2e : public FrontViewSuite<EditorE2e> {
+ public:
+  static constexpr const char* kShotFolder = "editor_e2e";
+  static constexpr const char* kWindowSize = "1280x720";
+
  protected:
-  static void SetUpTestSuite() {
-    if (runCommand("command -v xvfb-run") != 0) return;
-    // The front view framed on the default character: the camera every script starts from.
-    const std::string dir = makeTempDir();
-    json d = runScript(dir, Script(), "front");
-    if (d.is_object()) front_ = d;
-    runCommand("rm -rf '" + dir + "'");
-  }
-  void SetUp() override {
-    if (runCommand("command -v xvfb-run") != 0) GTEST_SKIP() << "SKIPPED: xvfb-run is not installed";
-    ASSERT_TRUE(front_.is_object()) << "the front-view run failed";
-    dir_ = makeTempDir();
-  }
-  void TearDown() override {
-    if (!dir_.empty()) runCommand("rm -rf '" + dir_ + "'");
-  }
-
-  // Runs the script on the default character; the last frame goes to the build dir as
-  // editor_e2e/NAME.png. Returns the dumped state.
+  // Runs the script on the default character (or `file`); the last frame goes to the build
+  // dir as editor_e2e/NAME.png. Returns the dumped state.
   static json runScript(const std::string& dir, const Script& script, const std::string& name,
                         const std::string& file = "") {
-    const std::string scriptPath = dir + "/" + name + ".jsonl", dump = dir + "/" + name + ".json";
-    std::ofstream(scriptPath) << script.text();
-    std::string out, err;
-    // Recent files and recovery files go to the test's folder, not the user's.
-    const std::string xdg = "XDG_STATE_HOME=" + dir + " XDG_CONFIG_HOME=" + dir + " ";
-    const int rc = runCommand(kXvfb + "env " + xdg + kSoftware + KINEMA_BINARY + " edit " +
-                                  (file.empty() ? std::string() : "'" + file + "' ") + "--script " + scriptPath +
-                                  " --dump-state " + dump + " --screenshot " + shotDir() + "/" + name + ".png",
-                              &out, &err);
-    EXPECT_EQ(rc, 0) << err;
-    return rc == 0 ? readJson(dump) : json();
+    return runEditor(dir, FrontViewSuite::shotDir(), script, name, kWindowSize, file);
   }
-  json run(const Script& script, const std::string& name) { return runScript(dir_, script, name); }
 
   static glm::dvec3 joint(const json& d, const std::string& name, const char* field = "world_position") {
     for (const json& j : d["joints"])
@@ -129,9 +102,6 @@ class EditorE2e : public ::testing::Test {
   TestCamera camera() const { return TestCamera(front_); }
   glm::dvec2 pixelOf(const std::string& name) const { return camera().pixel(joint(front_, name)); }
   glm::dvec2 midpoint(const std::string& a, const std::string& b) const { return (pixelOf(a) + pixelOf(b)) * 0.5; }
-
-  static inline json front_;
-  std::string dir_;
 };
 
 void expectNear(glm::dvec3 a, glm::dvec3 b, double tol, const std::string& what) {
