@@ -5,7 +5,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 kinema=${1:-$root/build/src/kinema}
-file=${2:-/work/shared/data/bvh/cmu_01_01_first720.bvh}
+file=${2:-$root/../shared/data/bvh/cmu_01_01_first720.bvh}
 tmp=$(mktemp -d)
 # The same playback with Alt+O pressed before Space.
 sed 's/{"frame": 3, "type": "key", "key": "SPACE"}/{"frame": 3, "type": "key", "key": "O", "mods": ["alt"]}\n{"frame": 4, "type": "key", "key": "SPACE"}/' \
