@@ -163,17 +163,6 @@ int runPreset(const TeachingCase& preset, const DemoOptions& o, int width, int h
   return kExitOk;
 }
 
-std::string solverLabel(IkSolver s) {
-  switch (s) {
-    case IkSolver::Ccd: return "CCD";
-    case IkSolver::Fabrik: return "FABRIK";
-    case IkSolver::JacobianTranspose: return "J^T";
-    case IkSolver::JacobianPinv: return "J pinv";
-    case IkSolver::JacobianDls: return "J DLS";
-    default: return toString(s);
-  }
-}
-
 // Two panels of grouped bars (reachable, unreachable per solver), log scale: mean
 // iterations and mean milliseconds per solve.
 Figure solverTableChart(const std::vector<SolverTableRow>& rows, const SolverTableOptions& opt) {
@@ -211,7 +200,7 @@ Figure solverTableChart(const std::vector<SolverTableRow>& rows, const SolverTab
       Rgba c = solverColor(r.solver);
       if (!r.reachable) c[3] = 110;
       f.polygons.push_back({{{bx, y0}, {bx + bw, y0}, {bx + bw, y(v)}, {bx, y(v)}}, c});
-      if (r.reachable) f.texts.push_back({{bx, y0 - 0.02f}, solverLabel(r.solver), ink, 1});
+      if (r.reachable) f.texts.push_back({{bx, y0 - 0.02f}, solverDisplayName(r.solver, true), ink, 1});
     }
   }
   char buf[200];

@@ -32,19 +32,6 @@ std::string format(const char* fmt, double a) {
   return buf;
 }
 
-std::string solverName(IkSolver s) {
-  switch (s) {
-    case IkSolver::Ccd: return "CCD";
-    case IkSolver::Fabrik: return "FABRIK";
-    case IkSolver::TwoBone: return "Two-bone (analytic)";
-    case IkSolver::JacobianTranspose: return "Jacobian transpose";
-    case IkSolver::JacobianPinv: return "Jacobian pseudo-inverse";
-    case IkSolver::JacobianDls: return "Jacobian DLS";
-    case IkSolver::JacobianSdls: return "Jacobian SDLS";
-  }
-  return toString(s);
-}
-
 void addChain(Figure& f, const std::vector<glm::vec2>& pts, Rgba color, float width, bool dashed, float dot) {
   for (size_t i = 1; i < pts.size(); ++i) f.lines.push_back({pts[i - 1], pts[i], color, width, dashed});
   for (const glm::vec2& p : pts) {
@@ -155,6 +142,19 @@ void addElbowSolutions(Figure& f, const SolverComparison& c, const FigureStyle& 
 }
 
 }  // namespace
+
+std::string solverDisplayName(IkSolver s, bool abbreviated) {
+  switch (s) {
+    case IkSolver::Ccd: return "CCD";
+    case IkSolver::Fabrik: return "FABRIK";
+    case IkSolver::TwoBone: return abbreviated ? "two-bone" : "Two-bone (analytic)";
+    case IkSolver::JacobianTranspose: return abbreviated ? "J^T" : "Jacobian transpose";
+    case IkSolver::JacobianPinv: return abbreviated ? "J pinv" : "Jacobian pseudo-inverse";
+    case IkSolver::JacobianDls: return abbreviated ? "J DLS" : "Jacobian DLS";
+    case IkSolver::JacobianSdls: return abbreviated ? "J SDLS" : "Jacobian SDLS";
+  }
+  return toString(s);
+}
 
 Rgba solverColor(IkSolver solver) {
   switch (solver) {
@@ -280,7 +280,7 @@ Figure drawSolverStep(const SolverComparison& c, int runIndex, const FigureStyle
   const glm::vec2 size = f.max - f.min;
   FigureText title;
   title.at = {f.min.x + 0.02f * size.x, f.max.y - 0.015f * size.y};
-  title.text = solverName(run.solver) + "  it " + std::to_string(e.iteration) + "  step " +
+  title.text = solverDisplayName(run.solver) + "  it " + std::to_string(e.iteration) + "  step " +
                std::to_string(run.cursor) + "/" + std::to_string(run.trace.entries.size() - 1) +
                format("  error %.3g", static_cast<double>(e.error));
   title.color = pal.ink;
@@ -365,7 +365,7 @@ Figure drawConvergencePlot(const SolverComparison& c, const FigureStyle& style) 
     }
     FigureText legend;
     legend.at = {hi.x + 0.04f, hi.y - 0.08f * static_cast<float>(r)};
-    legend.text = solverName(c.runs[r].solver) + " (" + std::to_string(c.runs[r].result.iterations) + ")";
+    legend.text = solverDisplayName(c.runs[r].solver) + " (" + std::to_string(c.runs[r].result.iterations) + ")";
     legend.color = col;
     legend.scale = 1;
     f.texts.push_back(legend);

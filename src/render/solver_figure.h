@@ -67,6 +67,9 @@ Figure drawSolverStep(const SolverComparison& comparison, int run, const FigureS
 // Error against iteration, log scale, one series per run, in the solvers' colours.
 Figure drawConvergencePlot(const SolverComparison& comparison, const FigureStyle& style);
 
+// A solver's name on figures ("Jacobian DLS"; abbreviated: "J DLS", for narrow labels).
+std::string solverDisplayName(IkSolver solver, bool abbreviated = false);
+
 // The colour each solver is drawn in (figures, plot, editor).
 Rgba solverColor(IkSolver solver);
 
