@@ -51,10 +51,12 @@ kinema_install_packages() {
   kinema_phase_end
 }
 
-# kinema_build [extra cmake args...]
+# kinema_build [extra cmake args...]; KINEMA_BUILD_TARGETS (space-separated) builds only those.
 kinema_build() {
   kinema_phase_start "configure + build ($(basename "$KINEMA_BUILD"))"
   cmake -S "$KINEMA_ROOT" -B "$KINEMA_BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release -DKINEMA_WERROR=ON "$@" >/dev/null
-  cmake --build "$KINEMA_BUILD" -j2
+  local targets=()
+  for t in ${KINEMA_BUILD_TARGETS:-}; do targets+=(--target "$t"); done
+  cmake --build "$KINEMA_BUILD" -j2 "${targets[@]}"
   kinema_phase_end
 }

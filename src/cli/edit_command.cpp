@@ -6,8 +6,8 @@
 
 #include "cli/command_line.h"
 #include "cli/render_command.h"
-#include "editor/editor_window.h"
-#include "editor/input_events.h"
+#include "editor/window/editor_window.h"
+#include "editor/model/input_events.h"
 
 namespace kinema::cli {
 

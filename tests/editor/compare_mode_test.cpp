@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "editor/compare_mode.h"
+#include "editor/model/compare_mode.h"
 #include "render/solver_figure.h"
 
 namespace kinema {

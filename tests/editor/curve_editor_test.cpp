@@ -10,8 +10,8 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "anim/sampling.h"
-#include "editor/curve_editor.h"
-#include "editor/document.h"
+#include "editor/model/curve_editor.h"
+#include "editor/model/document.h"
 
 namespace kinema {
 namespace {

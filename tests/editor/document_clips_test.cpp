@@ -4,8 +4,8 @@
 
 #include <cstring>
 
-#include "editor/document.h"
-#include "editor/document_files.h"
+#include "editor/model/document.h"
+#include "editor/model/document_files.h"
 
 namespace kinema {
 namespace {

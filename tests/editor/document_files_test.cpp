@@ -7,8 +7,8 @@
 
 #include "anim/clip.h"
 #include "core/forward_kinematics.h"
-#include "editor/document_files.h"
-#include "editor/pose_edits.h"
+#include "editor/model/document_files.h"
+#include "editor/model/pose_edits.h"
 #include "test_support.h"
 
 namespace kinema {

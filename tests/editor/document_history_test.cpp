@@ -6,10 +6,10 @@
 #include <random>
 
 #include "core/default_character.h"
-#include "editor/document_files.h"
-#include "editor/ik_posing.h"
-#include "editor/pose_clipboard.h"
-#include "editor/pose_edits.h"
+#include "editor/model/document_files.h"
+#include "editor/model/ik_posing.h"
+#include "editor/model/pose_clipboard.h"
+#include "editor/model/pose_edits.h"
 #include "test_support.h"
 
 namespace kinema {

@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "editor/document.h"
-#include "editor/dope_sheet.h"
+#include "editor/model/document.h"
+#include "editor/model/dope_sheet.h"
 
 namespace kinema {
 namespace {

@@ -1,4 +1,4 @@
-#include "editor/folder_listing.h"
+#include "editor/model/folder_listing.h"
 
 #include <cstdlib>
 
@@ -6,7 +6,7 @@
 
 #include <filesystem>
 
-#include "editor/editor_panels.h"
+#include "editor/panels/editor_panels.h"
 #include "test_support.h"
 
 namespace kinema::test {

@@ -3,9 +3,9 @@
 #include <gtest/gtest.h>
 
 #include "core/forward_kinematics.h"
-#include "editor/document_files.h"
-#include "editor/ik_posing.h"
-#include "editor/pose_edits.h"
+#include "editor/model/document_files.h"
+#include "editor/model/ik_posing.h"
+#include "editor/model/pose_edits.h"
 #include "test_support.h"
 
 namespace kinema {

@@ -3,9 +3,9 @@
 #include <GLFW/glfw3.h>
 
 #include "core/default_character.h"
-#include "editor/input_events.h"
-#include "editor/viewport_tools.h"
-#include "editor/document.h"
+#include "editor/model/input_events.h"
+#include "editor/viewport/viewport_tools.h"
+#include "editor/model/document.h"
 #include "test_support.h"
 
 namespace kinema::test {

@@ -1,7 +1,7 @@
 // Selection rules (Blender pose mode): click replaces, Shift-click toggles, box modes.
 #include <gtest/gtest.h>
 
-#include "editor/joint_selection.h"
+#include "editor/model/joint_selection.h"
 
 namespace kinema {
 namespace {

@@ -8,7 +8,7 @@
 
 #include "anim/clip.h"
 #include "core/forward_kinematics.h"
-#include "editor/document_files.h"
+#include "editor/model/document_files.h"
 #include "editor/e2e_harness.h"
 #include "io/image.h"
 #include "io/scene.h"

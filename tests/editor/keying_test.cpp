@@ -8,10 +8,10 @@
 #include <set>
 
 #include "anim/sampling.h"
-#include "editor/document_files.h"
-#include "editor/ik_posing.h"
-#include "editor/keying.h"
-#include "editor/pose_edits.h"
+#include "editor/model/document_files.h"
+#include "editor/model/ik_posing.h"
+#include "editor/model/keying.h"
+#include "editor/model/pose_edits.h"
 
 namespace kinema {
 namespace {

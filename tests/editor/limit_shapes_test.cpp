@@ -1,5 +1,5 @@
 // Joint-limit drawing geometry from src/ik/joint_limits.h limits.
-#include "editor/limit_shapes.h"
+#include "editor/viewport/limit_shapes.h"
 #include "test_support.h"
 
 namespace kinema::test {

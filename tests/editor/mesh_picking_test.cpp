@@ -2,7 +2,7 @@
 // vertices at x = 0 belong to skin slot 0, at x = 1 to slots 0 (0.4) and 1 (0.6), at x = 2
 // to slot 1; the skin maps slot 0 to skeleton joint 2 and slot 1 to joint 1. Rays straight
 // down -Z from z = 5: the hit is at distance 5 and the corner nearest it decides.
-#include "editor/mesh_picking.h"
+#include "editor/viewport/mesh_picking.h"
 #include "test_support.h"
 
 namespace kinema::test {

@@ -1,7 +1,7 @@
 // Mirror-partner names as Blender's "flip names" finds them; expected values by hand.
 #include <gtest/gtest.h>
 
-#include "editor/mirror_names.h"
+#include "editor/model/mirror_names.h"
 
 namespace kinema {
 namespace {

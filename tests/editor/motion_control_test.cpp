@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "editor/document.h"
-#include "editor/motion_control.h"
+#include "editor/model/document.h"
+#include "editor/model/motion_control.h"
 
 namespace kinema {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "editor/motion_path.h"
+#include "editor/model/motion_path.h"
 
 namespace kinema {
 namespace {

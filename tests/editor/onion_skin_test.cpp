@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "editor/onion_skin.h"
+#include "editor/model/onion_skin.h"
 
 namespace kinema {
 namespace {

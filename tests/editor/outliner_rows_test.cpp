@@ -1,4 +1,4 @@
-#include "editor/outliner_rows.h"
+#include "editor/model/outliner_rows.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // The overlay lists the editor builds: gizmo rings, IK target handles, limit shapes, box rectangle.
-#include "editor/overlay_builder.h"
+#include "editor/viewport/overlay_builder.h"
 #include "editor/viewport_test_views.h"
 #include "test_support.h"
 

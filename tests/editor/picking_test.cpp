@@ -4,9 +4,9 @@
 // (+-0.2, 0.2, +-0.2) and the front face (the one between the two +z corners and the tail)
 // sits at z = 0.2 (2 - y) / 1.8 for y in [0.2, 2]. Joint radius: a tenth of the shortest bone
 // (0.2) clamped to 0.025 * size with size = 2 (half of the box's diagonal, 4): 0.05.
-#include "editor/box_select.h"
-#include "editor/picking.h"
-#include "editor/viewport_controller.h"
+#include "editor/viewport/box_select.h"
+#include "editor/viewport/picking.h"
+#include "editor/viewport/viewport_controller.h"
 #include "editor/viewport_test_views.h"
 #include "test_support.h"
 

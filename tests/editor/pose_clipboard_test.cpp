@@ -2,9 +2,9 @@
 // forward kinematics (T * R per joint, parents first) instead of the library's.
 #include <gtest/gtest.h>
 
-#include "editor/document_files.h"
-#include "editor/pose_clipboard.h"
-#include "editor/pose_edits.h"
+#include "editor/model/document_files.h"
+#include "editor/model/pose_clipboard.h"
+#include "editor/model/pose_edits.h"
 #include "test_support.h"
 
 namespace kinema {

@@ -3,8 +3,8 @@
 // partner that is itself in the list keeps its own rotation.
 #include <gtest/gtest.h>
 
-#include "editor/document_files.h"
-#include "editor/pose_edits.h"
+#include "editor/model/document_files.h"
+#include "editor/model/pose_edits.h"
 
 namespace kinema {
 namespace {

@@ -8,9 +8,9 @@
 #include <cstring>
 #include <filesystem>
 
-#include "editor/document_files.h"
-#include "editor/pose_edits.h"
-#include "editor/recovery_file.h"
+#include "editor/model/document_files.h"
+#include "editor/model/pose_edits.h"
+#include "editor/model/recovery_file.h"
 #include "test_support.h"
 
 namespace kinema {

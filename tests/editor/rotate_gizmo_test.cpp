@@ -1,7 +1,7 @@
 // The rotate gizmo and R-mode on the hand camera (viewport_test_views.h): eye on +Z looking
 // down -Z, so screen right = +X, screen up = +Y and the Z axis points at the viewer. With the
 // orthographic view a ring of 80 px has world radius 8 (0.1 units per pixel).
-#include "editor/rotate_gizmo.h"
+#include "editor/viewport/rotate_gizmo.h"
 #include "editor/viewport_test_views.h"
 #include "test_support.h"
 

@@ -5,11 +5,11 @@
 
 #include <cmath>
 
-#include "editor/document_files.h"
-#include "editor/editor_state.h"
-#include "editor/keying.h"
-#include "editor/pose_edits.h"
-#include "editor/timeline.h"
+#include "editor/model/document_files.h"
+#include "editor/model/editor_state.h"
+#include "editor/model/keying.h"
+#include "editor/model/pose_edits.h"
+#include "editor/model/timeline.h"
 #include "test_support.h"
 
 namespace kinema {

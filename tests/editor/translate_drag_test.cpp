@@ -1,6 +1,6 @@
 // View-plane and axis drags on the hand camera (viewport_test_views.h): at depth D a pixel
 // spans D / 100 world units (perspective, tan 45 = 1, 200 px high), 0.1 units (orthographic).
-#include "editor/translate_drag.h"
+#include "editor/viewport/translate_drag.h"
 #include "editor/viewport_test_views.h"
 #include "test_support.h"
 

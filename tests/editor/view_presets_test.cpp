@@ -1,5 +1,5 @@
 // Numpad views, orthographic toggle and frame selected over OrbitCamera.
-#include "editor/viewport_controller.h"
+#include "editor/viewport/viewport_controller.h"
 #include "editor/viewport_test_views.h"
 #include "test_support.h"
 

@@ -1,6 +1,6 @@
 // Viewport navigation and picking as plain math (no window, no GL).
-#include "editor/editor_state.h"
-#include "editor/viewport_controller.h"
+#include "editor/model/editor_state.h"
+#include "editor/viewport/viewport_controller.h"
 #include "test_support.h"
 
 namespace kinema::test {

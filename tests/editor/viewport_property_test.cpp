@@ -3,8 +3,8 @@
 // and a ring drag turns the ring point under the cursor round the pivot the way the cursor went.
 #include <random>
 
-#include "editor/rotate_gizmo.h"
-#include "editor/translate_drag.h"
+#include "editor/viewport/rotate_gizmo.h"
+#include "editor/viewport/translate_drag.h"
 #include "test_support.h"
 
 namespace kinema::test {

@@ -4,7 +4,7 @@
 //   perspective:  (x, y, z) -> pixel (100 + 100 x / (10 - z), 100 - 100 y / (10 - z)),
 //   orthographic: half-height 10 * tan 45 = 10, so (x, y, z) -> pixel (100 + 10 x, 100 - 10 y);
 // both take 0.1 world units per pixel at the origin's depth.
-#include "editor/viewport_view.h"
+#include "editor/viewport/viewport_view.h"
 
 namespace kinema::test {
 

@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "editor/input_events.h"
+#include "editor/model/input_events.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

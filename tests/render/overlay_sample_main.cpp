@@ -8,7 +8,7 @@
 
 #include "core/default_character.h"
 #include "core/forward_kinematics.h"
-#include "editor/overlay_builder.h"
+#include "editor/viewport/overlay_builder.h"
 #include "io/image.h"
 #include "render/headless_renderer.h"
 #include "render/skeleton_view.h"

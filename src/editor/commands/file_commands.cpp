@@ -1,0 +1,212 @@
+// New / Open / Save / Save As / Export / Quit as the menu and its shortcuts run them, the
+// "discard unsaved changes?" guard, recent files, and the autosave + recovery session.
+#include <cstdlib>
+#include <filesystem>
+
+#include "editor/model/timeline.h"
+#include "editor/commands/file_commands.h"
+#include "editor/viewport/viewport_controller.h"
+
+namespace kinema {
+
+namespace {
+
+// A freshly loaded document replaces the old one; everything that pointed into the old
+// skeleton is reset.
+void replaceDocument(EditorState& state, Document doc) {
+  state.doc = std::move(doc);
+  state.tool = ToolState{};  // a running tool refers to the old skeleton
+  state.hoveredJoint = -1;
+  state.hoveredIkTarget = -1;
+  state.clip = 0;
+  state.time = 0.0;
+  state.playing = false;
+  state.sampleClip = false;
+  resetTimeline(state);
+  // The new file framed from the current direction, as Home does.
+  const float aspect = state.viewportRect.w > 0 ? state.viewportRect.z / state.viewportRect.w : 1.0f;
+  ViewportController().frameAll(state.camera, jointBounds(state.doc.worldTransforms()), aspect);
+  PanelState& p = state.panels;
+  p.collapsed.clear();
+  p.renaming = -1;
+  p.renameError.clear();
+  p.selectedIkTarget = -1;
+}
+
+void rememberRecent(EditorState& state, const std::string& path) {
+  std::error_code ec;
+  const std::string absolute = std::filesystem::absolute(path, ec).lexically_normal().string();
+  state.panels.recent.add(ec ? path : absolute);
+  // A recent list that cannot be written is not worth an error popup on every save.
+  state.panels.recent.save();
+}
+
+void openNow(EditorState& state, const std::string& path) {
+  Result<Document> opened = openDocument(path);
+  if (!opened) {
+    showEditorError(state, opened.error());
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) {  // a recent file that went away leaves the list
+      state.panels.recent.remove(path);
+      state.panels.recent.save();
+    }
+    return;
+  }
+  replaceDocument(state, std::move(opened.value()));
+  rememberRecent(state, path);
+  state.statusMessage = "Opened " + path;
+}
+
+// Runs `action` now when nothing unsaved would be lost, else asks first.
+void guarded(EditorState& state, PendingFileAction action, const std::string& path = "") {
+  PanelState& p = state.panels;
+  p.pending = action;
+  p.pendingPath = path;
+  if (state.doc.needsConfirmationToDiscard()) {
+    p.askDiscard = true;
+    return;
+  }
+  runPendingFileAction(state);
+}
+
+}  // namespace
+
+void runPendingFileAction(EditorState& state) {
+  PanelState& p = state.panels;
+  const PendingFileAction action = p.pending;
+  p.pending = PendingFileAction::None;
+  switch (action) {
+    case PendingFileAction::None: break;
+    case PendingFileAction::New:
+      replaceDocument(state, newDocument());
+      state.statusMessage = "New document";
+      break;
+    case PendingFileAction::Open:
+      openFileDialog(p.fileDialog, FileDialogPurpose::Open, state.doc.path());
+      break;
+    case PendingFileAction::OpenPath: openNow(state, p.pendingPath); break;
+    case PendingFileAction::Quit:
+      // A clean exit (or changes the user chose to discard) leaves no recovery file behind.
+      if (p.autosaver) p.autosaver->removeFiles();
+      p.quitApproved = true;
+      break;
+  }
+}
+
+std::string documentTitle(const EditorState& state) {
+  const std::string& path = state.doc.path();
+  if (path.empty()) return "untitled";
+  return std::filesystem::path(path).filename().string();
+}
+
+void showEditorError(EditorState& state, const std::string& message) {
+  if (message.empty()) return;
+  state.panels.errors.push_back(message);
+  state.statusMessage = message;
+}
+
+void requestNewDocument(EditorState& state) { guarded(state, PendingFileAction::New); }
+void requestOpenDialog(EditorState& state) { guarded(state, PendingFileAction::Open); }
+void requestOpenPath(EditorState& state, const std::string& path) { guarded(state, PendingFileAction::OpenPath, path); }
+void requestQuit(EditorState& state) { guarded(state, PendingFileAction::Quit); }
+
+void requestSave(EditorState& state) {
+  if (!canSaveInPlace(state.doc)) {
+    requestSaveAs(state);
+    return;
+  }
+  if (const std::string error = saveDocument(state.doc); !error.empty()) {
+    showEditorError(state, error);
+    return;
+  }
+  rememberRecent(state, state.doc.path());
+  state.statusMessage = "Saved " + state.doc.path();
+}
+
+void requestSaveAs(EditorState& state) {
+  openFileDialog(state.panels.fileDialog, FileDialogPurpose::SaveAs, state.doc.path());
+}
+
+void requestExport(EditorState& state, FileDialogPurpose format) {
+  openFileDialog(state.panels.fileDialog, format, state.doc.path());
+}
+
+void finishFileDialog(EditorState& state, const std::string& path) {
+  const FileDialogPurpose purpose = state.panels.fileDialog.purpose;
+  if (purpose == FileDialogPurpose::Open) {
+    openNow(state, path);  // the discard question was asked before the dialog opened
+    return;
+  }
+  if (purpose == FileDialogPurpose::SaveAs) {
+    if (const std::string error = saveDocumentAs(state.doc, path); !error.empty()) {
+      showEditorError(state, error);
+      return;
+    }
+    rememberRecent(state, path);
+    state.statusMessage = "Saved " + path;
+    return;
+  }
+  std::vector<std::string> report;
+  if (const std::string error = exportDocument(state.doc, path, &report, state.clip); !error.empty()) {
+    showEditorError(state, error);
+    return;
+  }
+  state.statusMessage = "Exported " + path;
+  for (const std::string& line : report) state.statusMessage += "; " + line;
+}
+
+double autosaveIntervalSeconds() {
+  const char* text = std::getenv("KINEMA_AUTOSAVE_SECONDS");
+  if (!text || !*text) return 60.0;
+  char* end = nullptr;
+  const double seconds = std::strtod(text, &end);
+  return end && *end == '\0' && seconds > 0 && seconds < 1e7 ? seconds : 60.0;
+}
+
+void tickEditorSession(EditorState& state, double nowSeconds) {
+  PanelState& p = state.panels;
+  if (!p.recoveryChecked) {
+    p.recoveryChecked = true;
+    if (!p.recentLoaded) {
+      p.recentLoaded = true;
+      p.recent.load();  // a corrupt list is ignored; it is only a convenience
+    }
+    const std::string dir = defaultRecoveryDir();
+    if (!dir.empty()) {
+      p.autosaver.emplace(dir, autosaveIntervalSeconds());
+      std::string message;
+      p.recovery = findRecoverableSession(dir, &message);
+      if (p.recovery) p.askRecovery = true;
+      if (!message.empty()) state.statusMessage = message;
+    }
+  }
+  // No autosave while the recovery question is open: the session's files are not ours yet.
+  if (p.autosaver && !p.recovery && !p.quitApproved) {
+    if (const std::string error = p.autosaver->tick(state.doc, nowSeconds); !error.empty())
+      state.statusMessage = "autosave failed: " + error;
+  }
+}
+
+void acceptRecovery(EditorState& state) {
+  PanelState& p = state.panels;
+  if (!p.recovery || !p.autosaver) return;
+  Result<Document> recovered = recover(*p.recovery, *p.autosaver);
+  const std::string when = p.recovery->recoveryPath;
+  p.recovery.reset();
+  if (!recovered) {
+    showEditorError(state, recovered.error());
+    return;
+  }
+  replaceDocument(state, std::move(recovered.value()));
+  state.statusMessage = "Recovered unsaved work from " + when;
+}
+
+void declineRecovery(EditorState& state) {
+  PanelState& p = state.panels;
+  if (!p.recovery) return;
+  const std::string error = discardRecovery(*p.recovery);
+  p.recovery.reset();
+  showEditorError(state, error);
+}
+
+}  // namespace kinema

@@ -1,0 +1,39 @@
+#pragma once
+#include <string>
+
+#include "editor/model/editor_state.h"
+#include "editor/model/file_dialog_state.h"
+
+namespace kinema {
+
+// File actions, shared by the menu and its shortcuts (drawMainMenuBar handles Ctrl+N, O,
+// S, Shift+S, Q, Z, Shift+Z, Y, C, V, Shift+V itself). Anything that would drop unsaved
+// changes asks first. The window's close button calls requestQuit() and closes once
+// state.panels.quitApproved is set.
+void requestNewDocument(EditorState& state);
+void requestOpenDialog(EditorState& state);
+void requestOpenPath(EditorState& state, const std::string& path);
+void requestSave(EditorState& state);
+void requestSaveAs(EditorState& state);
+void requestExport(EditorState& state, FileDialogPurpose format);
+void requestQuit(EditorState& state);
+// Shows a one-line error in the error popup (and the status bar).
+void showEditorError(EditorState& state, const std::string& message);
+
+// Called by drawEditorPanels each frame: on the first call, loads the recent files and
+// looks for a crashed session's recovery file (offered in a modal); afterwards writes the
+// autosave every KINEMA_AUTOSAVE_SECONDS (default 60) while the document is dirty.
+void tickEditorSession(EditorState& state, double nowSeconds);
+// Autosave interval in seconds: KINEMA_AUTOSAVE_SECONDS when it is a positive number, else 60.
+double autosaveIntervalSeconds();
+
+// The document's file name ("untitled" for a new one), for titles and questions.
+std::string documentTitle(const EditorState& state);
+
+// The steps behind the session dialogs' buttons.
+void runPendingFileAction(EditorState& state);  // after "discard changes?" said yes (or nothing to lose)
+void finishFileDialog(EditorState& state, const std::string& path);  // open / save as / export to `path`
+void acceptRecovery(EditorState& state);
+void declineRecovery(EditorState& state);
+
+}  // namespace kinema

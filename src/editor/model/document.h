@@ -1,0 +1,162 @@
+#pragma once
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/pose.h"
+#include "editor/model/edit_history.h"
+#include "editor/model/joint_selection.h"
+#include "editor/model/key_preferences.h"
+#include "editor/model/pose_ik_target.h"
+#include "io/scene.h"
+
+namespace kinema {
+
+// Per target, what the last IK solve did (for the status bar).
+struct IkTargetReport {
+  int target = -1;  // index into Document::ikTargets(), -1 for the auto-IK drag target
+  int iterations = 0;
+  float error = 0.0f;        // effector distance to the target after the solve
+  double milliseconds = 0.0; // time spent solving it
+  bool converged = false;
+};
+
+// The parts of a document an edit may change, handed to an edit's change function.
+struct DocumentEdit {
+  const Skeleton& skeleton;            // read-only (use names for renames)
+  std::vector<std::string>& names;     // joint names (renames keep them unique)
+  Pose& pose;                          // the working pose
+  std::vector<JointLimit>& limits;     // empty or one per joint
+  std::vector<PoseIkTarget>& targets;  // the IK targets
+  std::vector<SkinningMethod>& skinning;  // one per scene mesh instance (linear blend / dual quaternion)
+  std::vector<Clip>& clips;            // the scene's clips: keys, ranges, names (validated after the change)
+};
+
+// The scene being edited plus everything the editor adds to it: the working pose, the IK
+// targets with their editor settings, the undo history, the selection, the file path and
+// the dirty flag. No GL, no window: every operation is a plain call (tests drive it).
+//
+// Every change to the pose, names, limits or targets goes through edit() or a drag, so it
+// is one undo step. After each change the active IK targets are solved (ik_posing.h) in
+// the same step, unless autoSolveIk is off.
+class Document {
+ public:
+  Document();  // an empty scene
+  explicit Document(Scene scene, std::string path = "");
+
+  const Scene& scene() const { return scene_; }
+  const Skeleton& skeleton() const { return scene_.skeleton; }
+  const Pose& pose() const { return pose_; }
+  const std::vector<PoseIkTarget>& ikTargets() const { return targets_; }
+  const IkRig& rig() const { return scene_.ik; }  // limits (targets live in ikTargets())
+  // World transforms of the working pose (FK each call).
+  std::vector<glm::mat4> worldTransforms() const;
+  // The scene as it is saved: skeleton names (and the glTF node names of renamed
+  // joints), pose, limits and targets written back.
+  Scene sceneForSaving() const;
+
+  // The file this document was opened from or last saved to ("" for a new one).
+  const std::string& path() const { return path_; }
+  void setPath(std::string path) { path_ = std::move(path); }
+  bool dirty() const;
+  bool needsConfirmationToDiscard() const { return dirty(); }
+  void markSaved();  // the current state is what the file holds
+  void markModified();  // dirty until the next save (a recovered document)
+  // Grows with every change of content (edits, undo, redo, drag updates): autosave compares it.
+  long long changeCount() const { return changeCount_; }
+
+  // ---- edits ----
+  // Runs `change` as one undo step named `label`. `change` returns "" or a one-line
+  // error; on error everything it did is reverted and the error returned. An edit that
+  // changes nothing adds no step. Refused while a drag is in progress.
+  std::string edit(const std::string& label, const std::function<std::string(DocumentEdit&)>& change);
+
+  // Replaces the scene's meshes, skins and mesh instances as one undo step: `change` edits a
+  // copy of the scene (only those three arrays are taken back; the instance count must stay).
+  std::string editMeshes(const std::string& label, const std::function<std::string(Scene&)>& change);
+  // Grows whenever the meshes, skins or instances were replaced (GPU copies must upload again).
+  long long meshRevision() const { return meshRevision_; }
+
+  // An interactive drag is one undo step: begin, any number of updates (each starts from
+  // the state at begin, so the result depends only on the latest update), then commit or
+  // cancel (Esc / right click: back to the start, nothing recorded).
+  std::string beginDrag(const std::string& label);
+  std::string updateDrag(const std::function<std::string(DocumentEdit&)>& change);
+  void commitDrag();
+  void cancelDrag();
+  bool dragging() const { return drag_.has_value(); }
+
+  // The auto-IK drag's temporary target (shown while dragging; cleared by commit/cancel).
+  const std::optional<PoseIkTarget>& temporaryIkTarget() const { return temporaryTarget_; }
+  void setTemporaryIkTarget(std::optional<PoseIkTarget> target) { temporaryTarget_ = std::move(target); }
+  // The IK target an edit or drag drives (solved first, never "follows"); -1 none.
+  void setDrivenIkTarget(int target) { drivenTarget_ = target; }
+  int drivenIkTarget() const { return drivenTarget_; }
+
+  // The working pose set from the animation at the current frame (scrubbing, stepping,
+  // pausing): not an undo step and not a change to save, as Blender re-evaluates the action
+  // on a frame change. Refused (false) during a drag or when the pose does not fit.
+  bool setAnimatedPose(const Pose& pose);
+
+  // ---- history ----
+  bool canUndo() const;
+  bool canRedo() const;
+  bool undo();
+  bool redo();
+  // Labels of the history, oldest first; historyPosition() of them are applied.
+  std::vector<std::string> historyLabels() const;
+  int historyPosition() const { return history_.position(); }
+  // Undoes or redoes until `position` entries are applied (0: the original state).
+  bool jumpToHistory(int position);
+
+  // ---- settings, selection, IK status (not undo steps) ----
+  bool xMirror = false;       // rotation edits also set the mirror partner (mirror_names.h)
+  bool autoSolveIk = true;    // solve the active IK targets after every change
+  IkSettings ikSettings;      // tolerance and iteration cap of those solves
+  JointSelection selection;
+  // Auto-key: applied inside every edit and drag update after the change and its IK solve,
+  // so the keys are part of the same undo step (keying.h).
+  AutoKeySettings autoKey;
+  const std::vector<IkTargetReport>& lastIkReports() const { return ikReports_; }
+
+ private:
+  struct Snapshot {
+    std::vector<std::string> names;
+    std::vector<Transform> pose;
+    std::vector<JointLimit> limits;
+    std::vector<PoseIkTarget> targets;
+    std::vector<SkinningMethod> skinning;
+    std::vector<Clip> clips;
+  };
+  struct Drag {
+    std::string label;
+    Snapshot start;
+  };
+  Snapshot capture() const;
+  void syncSkinning();  // skinning_ -> scene_.meshInstances[i].skinning
+  void restore(const Snapshot& s);
+  DocumentEdit editView();
+  std::string runChange(const std::function<std::string(DocumentEdit&)>& change, bool driven);
+  EditRecord diff(const std::string& label, const Snapshot& before) const;
+  void pushRecord(EditRecord record);
+  void apply(const EditRecord& record, bool forward);
+
+  Scene scene_;
+  std::vector<std::string> loadedNames_;  // joint names as loaded: renames update glTF node names
+  Pose pose_;
+  std::vector<PoseIkTarget> targets_;
+  long long meshRevision_ = 0;
+  std::vector<SkinningMethod> skinning_;  // edited here, written into scene_.meshInstances after each change
+  std::string path_;
+  EditHistory history_;
+  long long savedAt_ = 0;    // history_.dropped() + position() when last saved
+  bool savedReachable_ = true;
+  long long changeCount_ = 0;
+  std::optional<Drag> drag_;
+  std::optional<PoseIkTarget> temporaryTarget_;
+  int drivenTarget_ = -1;
+  std::vector<IkTargetReport> ikReports_;
+};
+
+}  // namespace kinema

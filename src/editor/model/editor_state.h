@@ -1,0 +1,146 @@
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/pose.h"
+#include "editor/model/document.h"
+#include "editor/model/bottom_panels.h"
+#include "editor/model/motion_control.h"
+#include "editor/model/motion_path.h"
+#include "editor/model/onion_skin.h"
+#include "editor/model/compare_mode.h"
+#include "editor/model/curve_editor.h"
+#include "editor/model/dope_sheet.h"
+#include "editor/model/item_rects.h"
+#include "editor/model/panel_state.h"
+#include "io/scene.h"
+#include "render/camera.h"
+
+namespace kinema {
+
+// The modal tool the viewport is in (Blender pose mode). Only one runs at a time; input
+// goes to it until it is confirmed or cancelled.
+enum class ModalTool {
+  None,
+  Rotate,      // R: rotate the selection with the mouse
+  Grab,        // G: move the root joint
+  BoxSelect,   // left drag on empty space
+  IkDrag,      // dragging an IK target handle (or a joint with auto-IK)
+  GizmoDrag,   // dragging a ring of the rotate gizmo
+  Navigate,    // orbit / pan with the mouse
+};
+
+// An axis a modal tool is constrained to (X/Y/Z pressed during R, G or an IK drag).
+enum class AxisConstraint { None, X, Y, Z };
+
+const char* modalToolName(ModalTool tool);  // "none", "rotate", ... (for --dump-state)
+
+// What the running tool needs between frames. Cleared when the tool ends.
+struct ToolState {
+  ModalTool mode = ModalTool::None;
+  AxisConstraint axis = AxisConstraint::None;
+  bool localAxes = false;   // the constraint axis is the joint's own (press the axis key twice)
+  glm::vec2 startMouse{0}, mouse{0};  // window pixels, origin top left
+  int ring = -1;            // GizmoDrag: the GizmoPart (rotate_gizmo.h) as an int
+  int ikTarget = -1;        // IkDrag: the target's index in doc.ikTargets(); -1 = auto-IK
+  std::string typed;        // numbers typed during R (degrees)
+  glm::vec3 startPoint{0.0f};  // Grab / IkDrag: where the dragged point was at the start
+};
+
+// The editor shown in the area between the 3D view and the timeline (Blender's bottom area).
+enum class AnimationEditorKind { None, DopeSheet, CurveEditor };
+
+// Display switches of the viewport (panels and menus toggle them).
+struct ViewOptions {
+  bool showGrid = true;
+  bool xrayBones = false;   // bones drawn over everything
+  bool showBones = true;    // off: the body alone (bones none / on / x-ray, Alt+Z cycles)
+  bool showWeights = false; // the active joint's skin weights as heat colours on the meshes
+  bool showLimits = true;   // joint-limit cones and arcs of the selection
+  bool showGizmo = true;
+  bool localGizmo = false;  // the gizmo's rings turn with the joint (else world axes)
+  bool autoIk = false;      // dragging a joint moves it by IK up the chain
+  int autoIkChainLength = 2;
+};
+
+// Requests the panels raise; the window acts on them between frames (dialogs, files,
+// camera moves) and clears them.
+struct EditorRequests {
+  bool newFile = false, open = false, save = false, saveAs = false, exportFile = false, quit = false;
+  std::string path;          // open / save-as / export target chosen in a dialog
+  bool frameSelected = false, frameAll = false;
+  int viewPreset = 0;        // 0 none, 1 front, 3 side (right), 7 top; negative = the opposite
+  bool toggleOrtho = false;
+  bool undo = false, redo = false;
+  bool copyPose = false, pastePose = false, pasteFlipped = false;
+  bool clearRotation = false, resetPose = false;
+};
+
+// Everything the editor shows and edits, owned by the caller (no globals). Panels read and
+// write it; the window turns input into edits of it and evaluateEditorPose() into world
+// transforms.
+struct EditorState {
+  Document doc;        // the scene being edited: pose, IK targets, selection, history, path, dirty
+  PanelState panels;   // the panels' own state: dialogs, buffers, clipboard, autosave (editor_panels.h)
+
+  // --- Playback (files with motion) ---
+  int clip = 0;            // the clip the timeline plays, when the scene has clips
+  double time = 0.0;       // seconds
+  bool playing = false;
+  bool loop = true;        // playback wraps at the clip's end (sampling itself always clamps)
+  bool sampleClip = false; // the timeline moved: the next evaluate poses the document at `time`
+
+  // --- Viewport ---
+  OrbitCamera camera;      // camera.orthographic: numpad 5
+  glm::vec4 viewportRect{0.0f};  // the 3D view in window pixels (x, y, width, height), set each frame
+  ViewOptions view;
+  ToolState tool;
+  int hoveredJoint = -1;   // under the mouse (drawn highlighted)
+  int hoveredIkTarget = -1;
+  EditorRequests requests;
+  AnimationEditorKind animationEditor = AnimationEditorKind::None;
+  CompareMode compare;     // Teach > Compare Solvers: replaces the 3D view and the side panels while active
+  CurveEditorState curveEditor;  // the curve editor's view, channel toggles and key selection
+  DopeSheetState dopeSheet;  // the dope sheet's selection, view, clipboard and mouse gesture
+  std::string statusMessage;  // one line for the status bar (errors included)
+  ItemRects items;  // where the named widgets were drawn (scripts click them by name; item_rects.h)
+  // Onion skin, motion path, motion control (View menu; onion_skin.h, motion_path.h, motion_control.h).
+  OnionSkinSettings onionSkin;
+  MotionPathSettings motionPath;
+  MotionControlSettings motionControl;
+  bool onionSkinWindowOpen = false;  // View > Onion Skin && Motion Path...
+
+  // Derived each frame from the fields above: the document's pose, or the clip while it plays.
+  std::vector<glm::mat4> world;
+  bool wasPlaying = false;  // playback stopped since the last evaluate: the document takes the frame
+
+  bool hasMotion() const { return clip >= 0 && clip < static_cast<int>(doc.scene().clips.size()); }
+  double duration() const;       // the clip's length in seconds, 0 without motion
+  double frameTime() const;      // the clip's frame time, or 1/30 s
+  long long frameCount() const;  // frames on the clip's grid, at least 1
+  // The panels under the 3D view this frame (layout: panel_layout.h).
+  // The timeline is there whenever a skeleton is, so a pose can be keyed (timeline.h).
+  bool timelineShown() const { return hasMotion() || doc.skeleton().size() > 0; }
+  BottomPanels bottomPanels() const {
+    BottomPanels b;
+    b.timeline = timelineShown();
+    b.animationEditor = animationEditor != AnimationEditorKind::None;
+    return b;
+  }
+  // Whether window pixel p is over the animation editor (right under the 3D view, when
+  // shown): keys pressed there go to that editor, not to the viewport (Blender).
+  bool animationEditorContains(glm::vec2 p) const {
+    return animationEditor != AnimationEditorKind::None && p.x >= viewportRect.x &&
+           p.x < viewportRect.x + viewportRect.z && p.y >= viewportRect.y + viewportRect.w &&
+           p.y < viewportRect.y + viewportRect.w + kAnimationEditorHeight;
+  }
+};
+
+// state.world: the document's pose. While the clip plays, and when the timeline moved
+// (sampleClip) or playback stopped, the document's pose becomes the clip's at state.time
+// through Document::setAnimatedPose (not an undo step, not a change to save).
+void evaluateEditorPose(EditorState& state);
+// Advances playback by dt seconds (wrapping or stopping at the end).
+void advancePlayback(EditorState& state, double dt);
+}  // namespace kinema

@@ -1,0 +1,144 @@
+#include "editor/model/keying.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "anim/insert_keyframe.h"
+#include "editor/model/document.h"
+
+namespace kinema {
+
+namespace {
+
+constexpr float kSameKeyTime = 1e-4f;  // seconds: a key "at" a frame's time
+
+bool hasChannel(const Clip& clip, int joint, ChannelTarget target) {
+  for (const Channel& c : clip.channels)
+    if (c.joint == joint && c.target == target) return true;
+  return false;
+}
+
+bool contains(const std::vector<int>& joints, int j) { return std::find(joints.begin(), joints.end(), j) != joints.end(); }
+
+}  // namespace
+
+Interpolation rotationInterpolation(Interpolation preferred) {
+  switch (preferred) {
+    case Interpolation::Step:
+    case Interpolation::Linear:
+    case Interpolation::Nlerp:
+    case Interpolation::Squad:
+    case Interpolation::Hermite:
+    case Interpolation::Ease: return preferred;
+    case Interpolation::Bezier:
+    case Interpolation::CatmullRom:
+    case Interpolation::TCB: return Interpolation::Squad;
+  }
+  return Interpolation::Squad;
+}
+
+KeySettings keySettingsFor(const KeyPreferences& preferences, ChannelTarget target) {
+  KeySettings s;
+  Interpolation i = preferences.interpolation;
+  if (target == ChannelTarget::Rotation) i = rotationInterpolation(i);
+  else if (i == Interpolation::Nlerp || i == Interpolation::Squad) i = Interpolation::Linear;  // rotations only
+  s.interpolation = i;
+  s.leftHandleType = s.rightHandleType = preferences.handles;
+  return s;
+}
+
+Clip newActionClip() {
+  Clip c;
+  c.name = kNewClipName;
+  c.frameTime = 1.0 / kNewClipFps;
+  c.hasRange = true;
+  c.rangeStart = c.frameToTime(kNewClipStartFrame);
+  c.rangeEnd = c.frameToTime(kNewClipEndFrame);
+  return c;
+}
+
+int keyJoints(std::vector<Clip>& clips, int& clip, const Skeleton& skeleton, const Pose& pose,
+              const std::vector<int>& joints, float time, const KeyPreferences& preferences) {
+  if (joints.empty()) return 0;
+  if (clip < 0 || clip >= static_cast<int>(clips.size())) {
+    clips.push_back(newActionClip());
+    clip = static_cast<int>(clips.size()) - 1;
+  }
+  Clip& c = clips[clip];
+  InsertKeyframeJob job;
+  job.time = time;
+  job.settings = keySettingsFor(preferences, ChannelTarget::Translation);
+  job.rotationSettings = keySettingsFor(preferences, ChannelTarget::Rotation);
+  job.scale = false;
+  int written = 0;
+  for (int j : joints) {
+    if (j < 0 || j >= pose.size() || j >= skeleton.size()) continue;
+    job.joints = {j};
+    const bool scaled = std::memcmp(&pose.local[j].scale, &skeleton.rest[j].scale, sizeof(glm::vec3)) != 0;
+    job.scale = !preferences.locRotOnly && (scaled || hasChannel(c, j, ChannelTarget::Scale));
+    written += insertKeyframe(c, job, pose);
+  }
+  return written;
+}
+
+int deleteJointKeys(Clip& clip, const std::vector<int>& joints, float time) {
+  int deleted = 0;
+  for (Channel& ch : clip.channels) {
+    if (!contains(joints, ch.joint)) continue;
+    for (int k = ch.keyCount() - 1; k >= 0; --k)
+      if (std::abs(ch.times[k] - time) <= kSameKeyTime) {
+        deleteKey(ch, k);
+        ++deleted;
+      }
+  }
+  // A channel left without keys animates nothing: drop it (Blender deletes empty F-curves).
+  clip.channels.erase(std::remove_if(clip.channels.begin(), clip.channels.end(),
+                                     [](const Channel& ch) { return ch.times.empty(); }),
+                      clip.channels.end());
+  return deleted;
+}
+
+std::vector<float> jointKeyTimes(const Clip& clip, const std::vector<int>& joints) {
+  std::vector<float> times;
+  for (const Channel& ch : clip.channels)
+    if (contains(joints, ch.joint)) times.insert(times.end(), ch.times.begin(), ch.times.end());
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  return times;
+}
+
+std::string insertKeys(Document& doc, int& clip, float time, const std::vector<int>& joints,
+                       const KeyPreferences& preferences) {
+  if (joints.empty()) return "select the joints to key first";
+  if (!std::isfinite(time)) return "the key time is not a finite number";
+  for (int j : joints)
+    if (j < 0 || j >= doc.skeleton().size()) return "joint " + std::to_string(j) + " does not exist";
+  int target = clip;
+  const std::string error = doc.edit("Insert keyframes", [&](DocumentEdit& e) {
+    keyJoints(e.clips, target, e.skeleton, e.pose, joints, time, preferences);
+    return std::string();
+  });
+  if (error.empty()) clip = target;
+  return error;
+}
+
+std::string insertKeysOnAllJoints(Document& doc, int& clip, float time, const KeyPreferences& preferences) {
+  std::vector<int> all(static_cast<size_t>(doc.skeleton().size()));
+  for (size_t j = 0; j < all.size(); ++j) all[j] = static_cast<int>(j);
+  return insertKeys(doc, clip, time, all, preferences);
+}
+
+std::string deleteKeys(Document& doc, int clip, float time, const std::vector<int>& joints) {
+  if (joints.empty()) return "select the joints whose keys to delete first";
+  if (clip < 0 || clip >= static_cast<int>(doc.scene().clips.size())) return "the scene has no clip to delete keys from";
+  Clip trial = doc.scene().clips[clip];
+  if (deleteJointKeys(trial, joints, time) == 0)
+    return "no keys of the selected joints on this frame";
+  return doc.edit("Delete keyframes", [&](DocumentEdit& e) {
+    deleteJointKeys(e.clips[clip], joints, time);
+    return std::string();
+  });
+}
+
+}  // namespace kinema

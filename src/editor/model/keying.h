@@ -1,0 +1,44 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "anim/clip.h"
+#include "editor/model/key_preferences.h"
+
+namespace kinema {
+
+class Document;
+
+constexpr const char* kNewClipName = "Action";  // Blender's name for a new action
+constexpr double kNewClipFps = 24.0;            // a new clip's frame rate (Blender's default)
+constexpr long long kNewClipStartFrame = 1, kNewClipEndFrame = 250;  // Blender's default range
+
+// The interpolation a rotation (quaternion) key gets for a preferred one. Clip::validate
+// accepts Step, Linear, Nlerp, Squad, Hermite and Ease on rotations; Bezier, Catmull-Rom
+// and TCB (splines through the keys) become Squad, the spherical spline through the keys.
+Interpolation rotationInterpolation(Interpolation preferred);
+// The settings a new key of `target` carries under `preferences`.
+KeySettings keySettingsFor(const KeyPreferences& preferences, ChannelTarget target);
+
+// A new empty clip as the first key creates it: "Action", 24 fps, range frames 1..250.
+Clip newActionClip();
+
+// Keys the joints' local transforms of `pose` at `time` into clips[clip]; when `clip` is
+// not a clip of `clips`, a new "Action" is appended and `clip` set to it. Translation and
+// rotation always; scale where it differs from the rest pose or is keyed already (unless
+// locRotOnly). Returns the number of keys written.
+int keyJoints(std::vector<Clip>& clips, int& clip, const Skeleton& skeleton, const Pose& pose,
+              const std::vector<int>& joints, float time, const KeyPreferences& preferences);
+// Deletes the keys of the joints' channels at `time` (within 1e-4 s). Returns how many.
+int deleteJointKeys(Clip& clip, const std::vector<int>& joints, float time);
+// Sorted times holding a key of any channel of the joints (the timeline's diamonds).
+std::vector<float> jointKeyTimes(const Clip& clip, const std::vector<int>& joints);
+
+// The editor's commands, each one undo step. `clip` may name no clip yet: the first key
+// creates "Action" and `clip` is set to its index.
+std::string insertKeys(Document& doc, int& clip, float time, const std::vector<int>& joints,
+                       const KeyPreferences& preferences);
+std::string insertKeysOnAllJoints(Document& doc, int& clip, float time, const KeyPreferences& preferences);
+std::string deleteKeys(Document& doc, int clip, float time, const std::vector<int>& joints);
+
+}  // namespace kinema

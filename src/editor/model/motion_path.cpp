@@ -1,0 +1,55 @@
+#include "editor/model/motion_path.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "anim/sampling.h"
+#include "core/forward_kinematics.h"
+#include "editor/model/onion_skin.h"
+
+namespace kinema {
+
+void motionPathRange(const MotionPathSettings& s, const Clip& clip, long long current, long long& first,
+                     long long& last) {
+  const long long count = clipFrameAt(clip, clip.duration()) + 1;
+  if (s.wholeClip) {
+    first = clipFrameAt(clip, clip.playStart());
+    last = clipFrameAt(clip, clip.playEnd());
+  } else {
+    first = current - std::max(s.before, 0);
+    last = current + std::max(s.after, 0);
+  }
+  first = std::clamp(first, 0LL, count - 1);
+  last = std::clamp(last, 0LL, count - 1);
+}
+
+MotionPath computeMotionPath(const Scene& scene, int clip, int joint, long long first, long long last) {
+  MotionPath path;
+  if (clip < 0 || clip >= static_cast<int>(scene.clips.size()) || joint < 0 || joint >= scene.skeleton.size() ||
+      last < first)
+    return path;
+  const Clip& c = scene.clips[clip];
+  const double dt = clipFrameTime(c);
+  // A key "is at" a frame when it is within half a frame of it (keys of frame-based clips are exact).
+  std::vector<float> keyTimes;
+  for (const Channel& ch : c.channels)
+    if (ch.joint == joint) keyTimes.insert(keyTimes.end(), ch.times.begin(), ch.times.end());
+  std::sort(keyTimes.begin(), keyTimes.end());
+  path.joint = joint;
+  SamplingCache cache;
+  Pose pose = Pose::rest(scene.skeleton);
+  std::vector<glm::mat4> world;
+  for (long long f = first; f <= last; ++f) {
+    const double t = static_cast<double>(f) * dt;
+    pose = Pose::rest(scene.skeleton);
+    sampleClip(c, static_cast<float>(t), pose, cache);
+    computeWorld(scene.skeleton, pose, world);
+    path.frames.push_back(f);
+    path.points.push_back(glm::vec3(world[joint][3]));
+    const auto k = std::lower_bound(keyTimes.begin(), keyTimes.end(), static_cast<float>(t - 0.5 * dt));
+    path.keyed.push_back(k != keyTimes.end() && *k < t + 0.5 * dt ? 1 : 0);
+  }
+  return path;
+}
+
+}  // namespace kinema

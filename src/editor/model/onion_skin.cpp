@@ -1,0 +1,50 @@
+#include "editor/model/onion_skin.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/forward_kinematics.h"
+#include "anim/sampling.h"
+
+namespace kinema {
+
+namespace {
+float fade(const OnionSkinSettings& s, int k, int count) {
+  return s.opacity * static_cast<float>(count - k + 1) / static_cast<float>(std::max(count, 1));
+}
+}  // namespace
+
+std::vector<GhostFrame> ghostFrames(const OnionSkinSettings& s, long long current, long long frameCount) {
+  std::vector<GhostFrame> out;
+  const int step = std::max(s.step, 1);
+  const int before = std::clamp(s.before, 0, 64), after = std::clamp(s.after, 0, 64);
+  for (int k = before; k >= 1; --k) {
+    const long long f = current - static_cast<long long>(k) * step;
+    if (f >= 0 && f < frameCount) out.push_back({f, -k, glm::vec4(s.beforeColor, fade(s, k, before))});
+  }
+  for (int k = 1; k <= after; ++k) {
+    const long long f = current + static_cast<long long>(k) * step;
+    if (f >= 0 && f < frameCount) out.push_back({f, k, glm::vec4(s.afterColor, fade(s, k, after))});
+  }
+  return out;
+}
+
+double clipFrameTime(const Clip& clip) { return clip.frameTime > 0 ? clip.frameTime : 1.0 / 30.0; }
+
+long long clipFrameAt(const Clip& clip, double time) { return std::llround(time / clipFrameTime(clip)); }
+
+std::vector<std::vector<glm::mat4>> ghostPoses(const Scene& scene, int clip, const std::vector<GhostFrame>& ghosts) {
+  std::vector<std::vector<glm::mat4>> out;
+  if (clip < 0 || clip >= static_cast<int>(scene.clips.size())) return out;
+  const Clip& c = scene.clips[clip];
+  SamplingCache cache;
+  out.resize(ghosts.size());
+  for (size_t g = 0; g < ghosts.size(); ++g) {
+    Pose pose = Pose::rest(scene.skeleton);
+    sampleClip(c, static_cast<float>(static_cast<double>(ghosts[g].frame) * clipFrameTime(c)), pose, cache);
+    computeWorld(scene.skeleton, pose, out[g]);
+  }
+  return out;
+}
+
+}  // namespace kinema

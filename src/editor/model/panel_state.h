@@ -1,0 +1,68 @@
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/rotation.h"
+#include "editor/model/document_files.h"
+#include "editor/model/file_dialog_state.h"
+#include "editor/model/pose_clipboard.h"
+#include "editor/model/recovery_file.h"
+
+namespace kinema {
+
+// What the panels remember between frames that is not part of the document: widget
+// buffers, open dialogs, the clipboard, recent files, autosave and recovery.
+enum class PendingFileAction { None, New, Open, OpenPath, Quit };
+
+struct PanelState {
+  // Outliner
+  char search[128] = {};
+  std::vector<bool> collapsed;  // by joint
+  int renaming = -1;            // the joint whose name is being edited inline
+  bool renameFocus = false;
+  char renameBuffer[256] = {};
+  std::string renameError;
+
+  // Properties
+  EulerOrder eulerOrder = EulerOrder::XYZ;
+  bool quaternionEntry = false;
+  bool dragging = false;  // a property drag is one undo step: begun on activate, committed on release
+  float heldEuler[3] = {};  // the Euler field's own numbers while it is held
+  int heldJoint = -1;
+  float typedQuaternion[4] = {};  // x y z w being typed, applied when the field is left
+  bool quaternionEditing = false;  // typed but not applied yet
+  int quaternionJoint = -1;
+  char nameBuffer[256] = {};
+  int nameJoint = -1;
+  bool nameEditing = false;
+
+  // IK panel
+  int ikChainLength = 2;  // for "Add IK Target"
+  int selectedIkTarget = -1;
+
+  // Files
+  FileDialogState fileDialog;
+  RecentFiles recent;
+  bool recentLoaded = false;
+  PoseClipboard clipboard;
+  // An action waiting for "Discard unsaved changes?" to be answered.
+  PendingFileAction pending = PendingFileAction::None;
+  std::string pendingPath;
+  bool askDiscard = false;  // OpenPopup on the next frame
+  bool resumeAfterSaveAs = false;  // "Save first" needed Save As: the action waits for it
+
+  // Autosave and recovery
+  std::optional<Autosaver> autosaver;
+  bool recoveryChecked = false;
+  std::optional<RecoverableSession> recovery;  // offered in a modal until answered
+  bool askRecovery = false;
+
+  // Errors: every failure lands here and shows in a popup (never only on stderr).
+  std::vector<std::string> errors;
+  bool showHelp = false;
+  bool quitApproved = false;  // the window closes once this is set
+  std::string lastAction;     // the last menu action, for the status bar
+};
+
+}  // namespace kinema

@@ -1,0 +1,192 @@
+#include "editor/model/timeline.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "editor/model/editor_state.h"
+#include "editor/model/keying.h"
+
+namespace kinema {
+
+namespace {
+
+const Clip* editedClip(const EditorState& s) { return s.hasMotion() ? &s.doc.scene().clips[s.clip] : nullptr; }
+
+// Poses the document from the clip at the playhead (joints it does not animate keep theirs).
+void poseAtPlayhead(EditorState& s) {
+  const Clip* clip = editedClip(s);
+  if (!clip) return;
+  Pose pose = s.doc.pose();
+  sampleClip(*clip, static_cast<float>(s.time), pose);
+  s.doc.setAnimatedPose(pose);
+}
+
+}  // namespace
+
+double timelineFrameTime(const EditorState& s) {
+  const Clip* clip = editedClip(s);
+  return clip && clip->frameTime > 0 ? clip->frameTime : 1.0 / kNewClipFps;
+}
+
+double timelineFps(const EditorState& s) { return 1.0 / timelineFrameTime(s); }
+
+long long frameAtTime(const EditorState& s, double time) {
+  const double f = time / timelineFrameTime(s);
+  return std::isfinite(f) ? std::llround(std::clamp(f, -1e12, 1e12)) : 0;
+}
+
+double timeOfFrame(const EditorState& s, long long frame) {
+  const Clip* clip = editedClip(s);
+  return clip && clip->frameTime > 0 ? clip->frameToTime(frame) : frame * timelineFrameTime(s);
+}
+
+long long currentFrame(const EditorState& s) { return frameAtTime(s, s.time); }
+
+long long rangeStartFrame(const EditorState& s) {
+  const Clip* clip = editedClip(s);
+  return clip ? frameAtTime(s, clip->playStart()) : kNewClipStartFrame;
+}
+
+long long rangeEndFrame(const EditorState& s) {
+  const Clip* clip = editedClip(s);
+  if (!clip) return kNewClipEndFrame;
+  return std::max(frameAtTime(s, clip->playEnd()), rangeStartFrame(s));
+}
+
+void syncAutoKey(EditorState& s) {
+  s.doc.autoKey.time = static_cast<float>(s.time);
+  s.doc.autoKey.clip = s.clip;
+}
+
+void goToFrame(EditorState& s, long long frame) {
+  s.time = timeOfFrame(s, frame);
+  syncAutoKey(s);
+  if (!s.playing) poseAtPlayhead(s);
+}
+
+void resetTimeline(EditorState& s) {
+  s.playing = s.wasPlaying = s.sampleClip = false;
+  s.time = timeOfFrame(s, rangeStartFrame(s));
+  syncAutoKey(s);
+}
+
+void stepFrame(EditorState& s, int delta) { goToFrame(s, currentFrame(s) + delta); }
+void jumpToStart(EditorState& s) { goToFrame(s, rangeStartFrame(s)); }
+void jumpToEnd(EditorState& s) { goToFrame(s, rangeEndFrame(s)); }
+
+void togglePlayback(EditorState& s) {
+  s.playing = !s.playing;
+  if (!s.playing) goToFrame(s, currentFrame(s));
+}
+
+void advanceTimeline(EditorState& s, double dt) {
+  if (!s.playing) return;
+  const double start = timeOfFrame(s, rangeStartFrame(s)), end = timeOfFrame(s, rangeEndFrame(s));
+  s.time += dt;
+  if (s.time < start) s.time = start;
+  if (s.time > end) {
+    if (s.loop && end > start) {
+      s.time = start + std::fmod(s.time - start, end - start);
+    } else {
+      s.time = end;
+      s.playing = false;  // evaluateEditorPose poses the document at the end frame
+    }
+  }
+  syncAutoKey(s);
+}
+
+std::string setFrameRange(EditorState& s, long long start, long long end) {
+  if (start > end) return "the start frame must not be after the end frame";
+  if (std::llabs(start) > 100000000LL || std::llabs(end) > 100000000LL) return "frames must be within +-100000000";
+  const double frameTime = timelineFrameTime(s);
+  int clip = s.clip;
+  const std::string error = s.doc.edit("Set frame range", [&](DocumentEdit& e) {
+    if (clip < 0 || clip >= static_cast<int>(e.clips.size())) {
+      e.clips.push_back(newActionClip());
+      clip = static_cast<int>(e.clips.size()) - 1;
+    }
+    Clip& c = e.clips[clip];
+    c.hasRange = true;
+    c.rangeStart = static_cast<float>(start * frameTime);
+    c.rangeEnd = static_cast<float>(end * frameTime);
+    return std::string();
+  });
+  if (error.empty()) s.clip = clip;
+  syncAutoKey(s);
+  return error;
+}
+
+std::string setFrameRate(EditorState& s, double fps) {
+  if (!std::isfinite(fps) || fps < 1.0 || fps > 1000.0) return "the frame rate must be 1 to 1000 frames per second";
+  // The range keeps its frame numbers; keys keep their times (seconds), as in Blender
+  // without "time stretching".
+  const long long start = rangeStartFrame(s), end = rangeEndFrame(s), frame = currentFrame(s);
+  int clip = s.clip;
+  const std::string error = s.doc.edit("Set frame rate", [&](DocumentEdit& e) {
+    if (clip < 0 || clip >= static_cast<int>(e.clips.size())) {
+      e.clips.push_back(newActionClip());
+      clip = static_cast<int>(e.clips.size()) - 1;
+    }
+    Clip& c = e.clips[clip];
+    c.frameTime = 1.0 / fps;
+    c.hasRange = true;
+    c.rangeStart = c.frameToTime(start);
+    c.rangeEnd = c.frameToTime(end);
+    return std::string();
+  });
+  if (!error.empty()) return error;
+  s.clip = clip;
+  goToFrame(s, frame);
+  return {};
+}
+
+std::string keySelectedJoints(EditorState& s) {
+  const std::string error = insertKeys(s.doc, s.clip, static_cast<float>(s.time), s.doc.selection.joints(),
+                                       s.doc.autoKey.preferences);
+  syncAutoKey(s);
+  return error.empty() ? "Inserted keys on frame " + std::to_string(currentFrame(s)) : error;
+}
+
+std::string keyAllJoints(EditorState& s) {
+  const std::string error = insertKeysOnAllJoints(s.doc, s.clip, static_cast<float>(s.time), s.doc.autoKey.preferences);
+  syncAutoKey(s);
+  return error.empty() ? "Inserted keys on all joints on frame " + std::to_string(currentFrame(s)) : error;
+}
+
+std::string deleteSelectedJointKeys(EditorState& s) {
+  const std::string error = deleteKeys(s.doc, s.clip, static_cast<float>(s.time), s.doc.selection.joints());
+  return error.empty() ? "Deleted keys on frame " + std::to_string(currentFrame(s)) : error;
+}
+
+float TimelineRuler::xOfFrame(long long frame) const {
+  const double span = static_cast<double>(std::max(last - first, 1LL));
+  return static_cast<float>(x + kTimelineRulerMargin + (frame - first) / span * (w - 2 * kTimelineRulerMargin));
+}
+
+long long TimelineRuler::frameAtX(float px) const {
+  const double span = static_cast<double>(std::max(last - first, 1LL)), inner = std::max(w - 2 * kTimelineRulerMargin, 1.0f);
+  const double f = first + (px - x - kTimelineRulerMargin) / inner * span;
+  return std::clamp(static_cast<long long>(std::llround(std::isfinite(f) ? f : 0.0)), first, last);
+}
+
+TimelineRuler timelineRuler(const EditorState& s, float x, float y, float w, float h) {
+  TimelineRuler r;
+  r.x = x + 4;
+  r.w = std::max(w - 8, 1.0f);
+  r.h = kTimelineRulerHeight;
+  r.y = y + h - kTimelineRulerHeight - 2;
+  r.first = rangeStartFrame(s);
+  r.last = std::max(rangeEndFrame(s), r.first + 1);
+  return r;
+}
+
+std::vector<long long> selectedKeyFrames(const EditorState& s) {
+  std::vector<long long> frames;
+  const Clip* clip = editedClip(s);
+  if (!clip) return frames;
+  for (float t : jointKeyTimes(*clip, s.doc.selection.joints())) frames.push_back(frameAtTime(s, t));
+  frames.erase(std::unique(frames.begin(), frames.end()), frames.end());
+  return frames;
+}
+
+}  // namespace kinema

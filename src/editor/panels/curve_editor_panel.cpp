@@ -1,0 +1,509 @@
+// The curve editor (Blender's Graph Editor) in the animation editor area under the 3D view:
+// channel list with visibility toggles on the left, the curve plot (keys, handles, current
+// frame, grid) on the right, a toolbar and a key properties strip above it. The logic is in
+// curve_editor.h; this file turns mouse and widgets into its calls, each edit one undo step.
+#include "editor/model/key_codes.h"
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "anim/bezier_handles.h"
+#include "anim/sampling.h"
+#include "editor/model/curve_editor.h"
+#include "editor/panels/editor_panels.h"
+#include "editor/panels/panel_layout.h"
+
+namespace kinema {
+
+namespace {
+
+constexpr float kChannelListWidth = 190.0f;
+constexpr float kKeyRadius = 4.0f, kPickRadius = 7.0f;
+
+ImU32 curveColour(const Channel& ch, int component, bool selectedCurve) {
+  static const ImU32 base[4] = {IM_COL32(230, 80, 80, 255), IM_COL32(110, 210, 90, 255), IM_COL32(90, 140, 240, 255),
+                                IM_COL32(220, 200, 80, 255)};
+  ImU32 c = ch.target == ChannelTarget::Scalar ? IM_COL32(200, 200, 200, 255) : base[std::clamp(component, 0, 3)];
+  if (!selectedCurve) c = (c & 0x00FFFFFF) | 0xB0000000;
+  return c;
+}
+
+// A "nice" grid step (1, 2, 5 x 10^n) giving about `target` lines over `extent`.
+float gridStep(float extent, float target) {
+  const float raw = extent / std::max(target, 1.0f);
+  const float p = std::pow(10.0f, std::floor(std::log10(std::max(raw, 1e-9f))));
+  for (float m : {1.0f, 2.0f, 5.0f, 10.0f})
+    if (raw <= m * p) return m * p;
+  return 10.0f * p;
+}
+
+// One shown curve this frame.
+struct ShownCurve {
+  CurveRef ref;
+  CurvePoints points;
+  ValueRange range;
+};
+
+const char* const kInterpolationNames[] = {"Step", "Linear", "Hermite", "Catmull-Rom", "TCB",
+                                           "Bezier", "Ease", "Nlerp", "Squad"};
+const char* const kHandleNames[] = {"Free", "Aligned", "Vector", "Auto", "Auto Clamped"};
+const char* const kEasingNames[] = {"Sine", "Quad", "Cubic", "Quart", "Quint", "Expo", "Circ", "Back", "Bounce", "Elastic"};
+const char* const kEasingModeNames[] = {"In", "Out", "In Out"};
+const char* const kEulerOrderNames[] = {"XYZ", "XZY", "YXZ", "YZX", "ZXY", "ZYX"};
+
+// After a key edit the working pose shows the edited clip at the current frame (not an undo step).
+void reposeAtCurrentFrame(EditorState& state) {
+  if (!state.hasMotion()) return;
+  Pose pose = state.doc.pose();
+  sampleClip(state.doc.scene().clips[state.clip], static_cast<float>(state.time), pose);
+  state.doc.setAnimatedPose(pose);
+}
+
+// Applies `change` to the selected keys' settings as one undo step.
+void editSelectedKeys(EditorState& state, const char* label, const std::function<void(KeySettings&)>& change) {
+  CurveEditorState& ce = state.curveEditor;
+  int skipped = 0;
+  const int clip = state.clip;
+  const std::string error = state.doc.edit(label, [&](DocumentEdit& e) {
+    skipped = changeKeySettings(e.clips[clip], ce.selected, change);
+    return std::string();
+  });
+  if (!error.empty()) showEditorError(state, error);
+  else if (skipped > 0) state.statusMessage = std::to_string(skipped) + " key(s) left alone: the interpolation does not suit their channel";
+  reposeAtCurrentFrame(state);
+}
+
+struct HandleHit {
+  CurveKeyRef key;
+  bool right = false, hermite = false;
+  glm::vec2 offset{0.0f};  // (time, display value) relative to the key
+};
+
+// The handles shown for a selected key: Bezier handles on the sides whose segment is
+// Bezier, Hermite tangents on the sides whose segment is Hermite (not in the Euler view
+// of rotations, where tangents of quaternion components have no single angle).
+std::vector<HandleHit> handlesOf(const Channel& ch, const CurveKeyRef& k, const ShownCurve& c, bool normalized,
+                                 RotationView view) {
+  std::vector<HandleHit> out;
+  if (ch.target == ChannelTarget::Rotation && view == RotationView::Euler) return out;
+  const int n = ch.keyCount();
+  const float scale = 1.0f / displayToValueScale(c.range, normalized);
+  const KeySettings s = ch.settings(k.key);
+  const bool leftBezier = k.key > 0 && ch.settings(k.key - 1).interpolation == Interpolation::Bezier;
+  const bool rightBezier = k.key + 1 < n && s.interpolation == Interpolation::Bezier;
+  if (leftBezier || rightBezier) {
+    const BezierHandles h = effectiveHandles(ch, k.key);
+    if (leftBezier) out.push_back({k, false, false, {h.leftTime, h.leftValue[k.component] * scale}});
+    if (rightBezier) out.push_back({k, true, false, {h.rightTime, h.rightValue[k.component] * scale}});
+  }
+  if (k.key > 0 && ch.settings(k.key - 1).interpolation == Interpolation::Hermite) {
+    const float ht = -(ch.times[k.key] - ch.times[k.key - 1]) / 3.0f;
+    out.push_back({k, false, true, {ht, s.inTangent[k.component] * ht * scale}});
+  }
+  if (k.key + 1 < n && s.interpolation == Interpolation::Hermite) {
+    const float ht = (ch.times[k.key + 1] - ch.times[k.key]) / 3.0f;
+    out.push_back({k, true, true, {ht, s.outTangent[k.component] * ht * scale}});
+  }
+  return out;
+}
+
+void drawGrid(ImDrawList* dl, const CurveView& v, const PlotRect& r, double frameTime) {
+  const ImU32 line = IM_COL32(70, 70, 70, 255), text = IM_COL32(160, 160, 160, 255);
+  // Time lines in frames (labels are frame numbers, as in Blender).
+  const float framesPerSecond = static_cast<float>(1.0 / frameTime);
+  const float f0 = v.t0 * framesPerSecond, f1 = v.t1 * framesPerSecond;
+  const float fs = std::max(1.0f, gridStep(f1 - f0, r.w / 70.0f));
+  char label[32];
+  for (float f = std::ceil(f0 / fs) * fs; f <= f1; f += fs) {
+    const float x = curveToScreen(v, r, f / framesPerSecond, 0).x;
+    dl->AddLine(ImVec2(x, r.y), ImVec2(x, r.y + r.h), line);
+    std::snprintf(label, sizeof label, "%.0f", f == 0.0f ? 0.0f : f);  // no "-0"
+    dl->AddText(ImVec2(x + 2, r.y + r.h - 14), text, label);
+  }
+  const float vs = gridStep(v.v1 - v.v0, r.h / 40.0f);
+  for (float val = std::ceil(v.v0 / vs) * vs; val <= v.v1; val += vs) {
+    const float y = curveToScreen(v, r, 0, val).y;
+    dl->AddLine(ImVec2(r.x, y), ImVec2(r.x + r.w, y), line);
+    std::snprintf(label, sizeof label, "%.3g", std::abs(val) < vs * 1e-3f ? 0.0f : val);
+    dl->AddText(ImVec2(r.x + 2, y - 14), text, label);
+  }
+}
+
+void keyPropertiesStrip(EditorState& state, const Clip& clip) {
+  CurveEditorState& ce = state.curveEditor;
+  ImGui::AlignTextToFramePadding();  // the same row height with or without widgets: the plot stays put
+  if (ce.selected.empty()) {
+    ImGui::TextDisabled("Click a key to select it (Shift: add), drag to move; middle drag: pan, wheel: zoom");
+    return;
+  }
+  const CurveKeyRef k = ce.selected.front();
+  if (k.channel < 0 || k.channel >= static_cast<int>(clip.channels.size()) ||
+      k.key >= clip.channels[k.channel].keyCount()) {
+    ce.selected.clear();
+    return;
+  }
+  const Channel& ch = clip.channels[k.channel];
+  const KeySettings s = ch.settings(k.key);
+  int interpolation = static_cast<int>(s.interpolation);
+  ImGui::SetNextItemWidth(100);
+  if (ImGui::Combo("##interpolation", &interpolation, kInterpolationNames, IM_ARRAYSIZE(kInterpolationNames),
+                   IM_ARRAYSIZE(kInterpolationNames)))
+    editSelectedKeys(state, "Key interpolation", [&](KeySettings& ks) { ks.interpolation = Interpolation(interpolation); });
+  if (s.interpolation == Interpolation::TCB) {
+    float tcb[3] = {s.tension, s.continuity, s.bias};
+    const char* names[3] = {"T##tension", "C##continuity", "B##bias"};
+    for (int i = 0; i < 3; ++i) {
+      ImGui::SameLine();
+      ImGui::SetNextItemWidth(70);
+      // Dragging a slider is one undo step (a Document drag from press to release).
+      if (ImGui::SliderFloat(names[i], &tcb[i], -1.0f, 1.0f, "%.2f")) {
+        if (!state.doc.dragging()) state.doc.beginDrag("Key TCB");
+        const std::vector<CurveKeyRef> keys = state.curveEditor.selected;
+        const int clipIndex = state.clip;
+        state.doc.updateDrag([&](DocumentEdit& e) {
+          changeKeySettings(e.clips[clipIndex], keys, [&](KeySettings& ks) {
+            (i == 0 ? ks.tension : i == 1 ? ks.continuity : ks.bias) = tcb[i];
+          });
+          return std::string();
+        });
+        reposeAtCurrentFrame(state);
+      }
+      if (ImGui::IsItemDeactivated() && state.doc.dragging()) {
+        state.doc.commitDrag();
+        reposeAtCurrentFrame(state);
+      }
+    }
+  } else if (s.interpolation == Interpolation::Bezier) {
+    int left = static_cast<int>(s.leftHandleType), right = static_cast<int>(s.rightHandleType);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(95);
+    if (ImGui::Combo("L##lefthandle", &left, kHandleNames, IM_ARRAYSIZE(kHandleNames)))
+      editSelectedKeys(state, "Key handle type", [&](KeySettings& ks) { ks.leftHandleType = HandleType(left); });
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(95);
+    if (ImGui::Combo("R##righthandle", &right, kHandleNames, IM_ARRAYSIZE(kHandleNames)))
+      editSelectedKeys(state, "Key handle type", [&](KeySettings& ks) { ks.rightHandleType = HandleType(right); });
+  } else if (s.interpolation == Interpolation::Ease) {
+    int easing = static_cast<int>(s.easing), mode = static_cast<int>(s.easingMode);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(80);
+    if (ImGui::Combo("##easing", &easing, kEasingNames, IM_ARRAYSIZE(kEasingNames)))
+      editSelectedKeys(state, "Key easing", [&](KeySettings& ks) { ks.easing = EasingFunction(easing); });
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(70);
+    if (ImGui::Combo("##easingmode", &mode, kEasingModeNames, IM_ARRAYSIZE(kEasingModeNames)))
+      editSelectedKeys(state, "Key easing", [&](KeySettings& ks) { ks.easingMode = EasingMode(mode); });
+  }
+  // The first selected key's time (frames) and value.
+  const double ft = clip.frameTime > 0.0 ? clip.frameTime : 1.0 / 30.0;
+  int frame = static_cast<int>(std::llround(ch.times[k.key] / ft));
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(60);
+  if (ImGui::InputInt("##frame", &frame, 0, 0, ImGuiInputTextFlags_EnterReturnsTrue)) {
+    const int clipIndex = state.clip;
+    std::vector<CurveKeyRef> moved;
+    const std::string error = state.doc.edit("Key time", [&](DocumentEdit& e) {
+      Channel& c = e.clips[clipIndex].channels[k.channel];
+      const int to = moveKey(c, k.key, snapToFrame(e.clips[clipIndex], static_cast<float>(frame * ft)));
+      moved.push_back({k.channel, k.component, to});
+      return std::string();
+    });
+    if (!error.empty()) showEditorError(state, error);
+    else ce.selected = moved;
+    reposeAtCurrentFrame(state);
+  }
+  float value = keyDisplayValue(ch, k.key, k.component, ce.rotationView, ce.eulerOrder);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(80);
+  if (ImGui::InputFloat("##value", &value, 0, 0, "%.4f", ImGuiInputTextFlags_EnterReturnsTrue)) {
+    const int clipIndex = state.clip;
+    const std::string error = state.doc.edit("Key value", [&](DocumentEdit& e) {
+      setKeyDisplayValue(e.clips[clipIndex].channels[k.channel], k.key, k.component, ce.rotationView, ce.eulerOrder, value);
+      return std::string();
+    });
+    if (!error.empty()) showEditorError(state, error);
+    reposeAtCurrentFrame(state);
+  }
+}
+
+}  // namespace
+
+void drawCurveEditorPanel(EditorState& state) {
+  const ImGuiIO& io = ImGui::GetIO();
+  // Shift+F6 toggles the curve editor (Blender's Graph Editor key).
+  if (!io.WantTextInput && io.KeyShift && ImGui::IsKeyPressed(keys::F6, false))
+    state.animationEditor = state.animationEditor == AnimationEditorKind::CurveEditor ? AnimationEditorKind::None
+                                                                                        : AnimationEditorKind::CurveEditor;
+  if (state.animationEditor != AnimationEditorKind::CurveEditor) return;
+  CurveEditorState& ce = state.curveEditor;
+  const PanelRect r = animationEditorRect(io.DisplaySize, state.bottomPanels());
+  ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(r.w, r.h), ImGuiCond_Always);
+  ImGui::Begin("Curve Editor", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
+                                            ImGuiWindowFlags_NoScrollWithMouse);
+  if (!state.hasMotion()) {
+    ImGui::TextDisabled("Curve editor: the scene has no animation (key a pose first)");
+    ImGui::End();
+    return;
+  }
+  const Clip& clip = state.doc.scene().clips[state.clip];
+  const Skeleton& skeleton = state.doc.skeleton();
+
+  // The curves of the selected joints' channels.
+  std::vector<ShownCurve> curves;
+  const std::vector<int> channels = shownChannels(clip, state.doc.selection);
+  for (int c : channels) {
+    const Channel& ch = clip.channels[c];
+    // Dense keys (imported motion) are drawn through the keys; authored keys with 12 points per segment.
+    const int perSegment = ch.keyCount() > 200 ? 1 : 12;
+    for (int i = 0; i < curveCount(ch, ce.rotationView); ++i) {
+      ShownCurve s;
+      s.ref = {c, i};
+      s.points = curvePoints(ch, i, ce.rotationView, ce.eulerOrder, perSegment);
+      s.range = curveRange(s.points);
+      curves.push_back(std::move(s));
+    }
+  }
+  // Drop selected keys that no longer exist (undo, other edits) or are not shown.
+  ce.selected.erase(std::remove_if(ce.selected.begin(), ce.selected.end(),
+                                   [&](const CurveKeyRef& k) {
+                                     return std::find(channels.begin(), channels.end(), k.channel) == channels.end() ||
+                                            k.key >= clip.channels[k.channel].keyCount() ||
+                                            k.component >= curveCount(clip.channels[k.channel], ce.rotationView);
+                                   }),
+                    ce.selected.end());
+  if (static_cast<int>(curves.size()) != ce.lastChannelCount) ce.fitPending = true, ce.lastChannelCount = int(curves.size());
+  auto fit = [&] {
+    std::vector<CurvePoints> visible;
+    for (const ShownCurve& s : curves)
+      if (!ce.isHidden(s.ref)) visible.push_back(s.points);
+    ce.view = fitView(visible, ce.normalized);
+    ce.fitPending = false;
+  };
+  auto display = [&](const ShownCurve& s, float v) { return ce.normalized ? normalizeValue(s.range, v) : v; };
+
+  // Left: the channel list (a checkbox per curve).
+  ImGui::BeginChild("##curve_channels", ImVec2(kChannelListWidth, 0), true);
+  if (curves.empty()) ImGui::TextDisabled("Select joints to see their curves");
+  for (const ShownCurve& s : curves) {
+    const Channel& ch = clip.channels[s.ref.channel];
+    bool visible = !ce.isHidden(s.ref);
+    ImGui::PushStyleColor(ImGuiCol_Text, curveColour(ch, s.ref.component, true));
+    const std::string label = curveLabel(skeleton, ch, s.ref.component, ce.rotationView, ce.eulerOrder);
+    if (ImGui::Checkbox(label.c_str(), &visible)) ce.toggleHidden(s.ref);
+    ImGui::PopStyleColor();
+  }
+  ImGui::EndChild();
+  ImGui::SameLine();
+  ImGui::BeginGroup();
+  // Toolbar.
+  if (ImGui::Button("Fit (Home)")) ce.fitPending = true;
+  ImGui::SameLine();
+  if (ImGui::Checkbox("Normalize", &ce.normalized)) ce.fitPending = true;
+  ImGui::SameLine();
+  if (ImGui::Button(ce.rotationView == RotationView::Euler ? "Rotation: Euler" : "Rotation: Quaternion")) {
+    ce.rotationView = ce.rotationView == RotationView::Euler ? RotationView::Quaternion : RotationView::Euler;
+    ce.selected.clear();
+    ce.fitPending = true;
+  }
+  if (ce.rotationView == RotationView::Euler) {
+    int order = static_cast<int>(ce.eulerOrder);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(60);
+    if (ImGui::Combo("##eulerorder", &order, kEulerOrderNames, IM_ARRAYSIZE(kEulerOrderNames))) {
+      ce.eulerOrder = EulerOrder(order);
+      ce.fitPending = true;
+    }
+  }
+  keyPropertiesStrip(state, clip);
+
+  // The plot.
+  const ImVec2 cursor = ImGui::GetCursorScreenPos(), avail = ImGui::GetContentRegionAvail();
+  const PlotRect plot{cursor.x, cursor.y, std::max(avail.x, 10.0f), std::max(avail.y, 10.0f)};
+  ce.plot = plot;
+  ImGui::InvisibleButton("##curve_plot", ImVec2(plot.w, plot.h),
+                         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonMiddle);
+  const bool hovered = ImGui::IsItemHovered();
+  if (hovered && !io.WantTextInput && ImGui::IsKeyPressed(keys::HOME, false)) ce.fitPending = true;
+  if (ce.fitPending) fit();
+  const CurveView view = ce.view;
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->PushClipRect(ImVec2(plot.x, plot.y), ImVec2(plot.x + plot.w, plot.y + plot.h), true);
+  dl->AddRectFilled(ImVec2(plot.x, plot.y), ImVec2(plot.x + plot.w, plot.y + plot.h), IM_COL32(40, 40, 40, 255));
+  drawGrid(dl, view, plot, clip.frameTime > 0.0 ? clip.frameTime : 1.0 / 30.0);
+
+  const glm::vec2 mouse(io.MousePos.x, io.MousePos.y);
+  auto screen = [&](float t, float v) {
+    const glm::vec2 p = curveToScreen(view, plot, t, v);
+    return ImVec2(p.x, p.y);
+  };
+  // Curves, extended flat before the first and after the last key (constant extrapolation).
+  CurveKeyRef keyUnderMouse;
+  float bestKey = kPickRadius;
+  std::vector<HandleHit> handles;
+  for (const ShownCurve& s : curves) {
+    if (ce.isHidden(s.ref) || s.points.times.empty()) continue;
+    const Channel& ch = clip.channels[s.ref.channel];
+    bool curveSelected = false;
+    for (const CurveKeyRef& k : ce.selected) curveSelected = curveSelected || (k.channel == s.ref.channel && k.component == s.ref.component);
+    const ImU32 colour = curveColour(ch, s.ref.component, curveSelected);
+    std::vector<ImVec2> line;
+    line.push_back(screen(view.t0, display(s, s.points.values.front())));
+    for (size_t i = 0; i < s.points.times.size(); ++i) line.push_back(screen(s.points.times[i], display(s, s.points.values[i])));
+    line.push_back(screen(view.t1, display(s, s.points.values.back())));
+    if (line.front().x > line[1].x) line.front() = line[1];
+    if (line.back().x < line[line.size() - 2].x) line.back() = line[line.size() - 2];
+    dl->AddPolyline(line.data(), static_cast<int>(line.size()), colour, 0, curveSelected ? 2.0f : 1.5f);
+    // Keys closer than a few pixels apart (imported motion, a key per frame) are not drawn
+    // unless selected: thousands of circles would cost more than the rest of the frame.
+    const size_t keyCount = s.points.keyTimes.size();
+    const float span = keyCount > 1 ? screen(s.points.keyTimes.back(), 0).x - screen(s.points.keyTimes.front(), 0).x : 0;
+    const bool denseKeys = keyCount > 1 && span / float(keyCount - 1) < 3 * kKeyRadius;
+    for (size_t k = 0; k < keyCount; ++k) {
+      const CurveKeyRef ref{s.ref.channel, s.ref.component, static_cast<int>(k)};
+      const ImVec2 p = screen(s.points.keyTimes[k], display(s, s.points.keyValues[k]));
+      const bool sel = ce.isSelected(ref);
+      if (p.x < plot.x - kPickRadius || p.x > plot.x + plot.w + kPickRadius) continue;
+      if (!denseKeys || sel) {
+        dl->AddCircleFilled(p, kKeyRadius, sel ? IM_COL32(255, 190, 50, 255) : IM_COL32(20, 20, 20, 255), 8);
+        dl->AddCircle(p, kKeyRadius, sel ? IM_COL32(255, 255, 255, 255) : colour, 8);
+      }
+      const float d = glm::length(glm::vec2(p.x, p.y) - mouse);
+      if (d < bestKey) bestKey = d, keyUnderMouse = ref;
+      if (sel)
+        for (const HandleHit& h : handlesOf(ch, ref, s, ce.normalized, ce.rotationView)) {
+          const ImVec2 hp = screen(s.points.keyTimes[k] + h.offset.x, display(s, s.points.keyValues[k]) + h.offset.y);
+          dl->AddLine(p, hp, IM_COL32(200, 200, 200, 200));
+          if (h.hermite) dl->AddRectFilled(ImVec2(hp.x - 3, hp.y - 3), ImVec2(hp.x + 3, hp.y + 3), IM_COL32(230, 230, 230, 255));
+          else dl->AddCircleFilled(hp, 3.5f, IM_COL32(230, 230, 230, 255));
+          handles.push_back(h);
+        }
+    }
+  }
+  // The current frame.
+  const float nowX = screen(static_cast<float>(state.time), 0).x;
+  dl->AddLine(ImVec2(nowX, plot.y), ImVec2(nowX, plot.y + plot.h), IM_COL32(80, 140, 255, 255), 2.0f);
+  dl->PopClipRect();
+
+  // Handle under the mouse (handles win over keys: they sit on top).
+  const HandleHit* handleUnderMouse = nullptr;
+  float bestHandle = kPickRadius;
+  for (const HandleHit& h : handles) {
+    const ShownCurve* s = nullptr;
+    for (const ShownCurve& c : curves)
+      if (c.ref.channel == h.key.channel && c.ref.component == h.key.component) s = &c;
+    if (!s) continue;
+    const ImVec2 hp = screen(s->points.keyTimes[h.key.key] + h.offset.x, display(*s, s->points.keyValues[h.key.key]) + h.offset.y);
+    const float d = glm::length(glm::vec2(hp.x, hp.y) - mouse);
+    if (d < bestHandle) bestHandle = d, handleUnderMouse = &h;
+  }
+
+  const int clipIndex = state.clip;
+  auto curveOf = [&](const CurveKeyRef& k) -> const ShownCurve* {
+    for (const ShownCurve& c : curves)
+      if (c.ref.channel == k.channel && c.ref.component == k.component) return &c;
+    return nullptr;
+  };
+  // Mouse: press on a handle / key starts a drag, on empty space clears the selection.
+  if (hovered && ce.drag == CurveEditorState::Drag::None && !state.doc.dragging()) {
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+      if (handleUnderMouse) {
+        ce.drag = CurveEditorState::Drag::Handle;
+        ce.dragHandleKey = handleUnderMouse->key;
+        ce.dragHandleRight = handleUnderMouse->right;
+        ce.dragHandleHermite = handleUnderMouse->hermite;
+        ce.dragHandleStart = handleUnderMouse->offset;
+        ce.dragStart = mouse;
+      } else if (keyUnderMouse.key >= 0) {
+        if (io.KeyShift) {
+          if (ce.isSelected(keyUnderMouse)) ce.selected.erase(std::find(ce.selected.begin(), ce.selected.end(), keyUnderMouse));
+          else ce.selected.push_back(keyUnderMouse);
+        } else if (!ce.isSelected(keyUnderMouse)) {
+          ce.selected = {keyUnderMouse};
+        }
+        if (ce.isSelected(keyUnderMouse)) {
+          ce.drag = CurveEditorState::Drag::Keys;
+          ce.dragStart = mouse;
+        }
+      } else if (!io.KeyShift) {
+        ce.selected.clear();
+      }
+    } else if (ImGui::IsMouseClicked(ImGuiMouseButton_Middle)) {
+      ce.drag = CurveEditorState::Drag::Pan;
+      ce.dragStart = mouse;
+    }
+    if (io.MouseWheel != 0.0f) {
+      const float factor = std::pow(1.15f, io.MouseWheel);
+      // Ctrl+wheel zooms time only, Shift+wheel values only.
+      zoomView(ce.view, plot, mouse, factor, !io.KeyShift, !io.KeyCtrl);
+    }
+  }
+  if (ce.drag == CurveEditorState::Drag::Pan) {
+    panView(ce.view, plot, glm::vec2(io.MouseDelta.x, io.MouseDelta.y));
+    if (!ImGui::IsMouseDown(ImGuiMouseButton_Middle)) ce.drag = CurveEditorState::Drag::None;
+  }
+  if (ce.drag == CurveEditorState::Drag::Keys || ce.drag == CurveEditorState::Drag::Handle) {
+    const glm::vec2 delta = mouse - ce.dragStart;
+    const bool moved = glm::length(delta) >= 3.0f;
+    if (moved && !state.doc.dragging()) {
+      const std::string error = state.doc.beginDrag(ce.drag == CurveEditorState::Drag::Keys ? "Move keys" : "Move handle");
+      if (!error.empty()) showEditorError(state, error), ce.drag = CurveEditorState::Drag::None;
+      // The keys' display values and ranges at the start (the drag restarts from them).
+      ce.dragRanges.clear();
+      for (const CurveKeyRef& k : ce.selected) {
+        const ShownCurve* s = curveOf(k);
+        ce.dragRanges.push_back(s ? s->range : ValueRange{});
+      }
+      ce.dragStartValues.clear();
+      for (const CurveKeyRef& k : ce.selected) {
+        const ShownCurve* s = curveOf(k);
+        ce.dragStartValues.push_back(s ? s->points.keyValues[k.key] : 0.0f);
+      }
+      ce.dragStartKeys = ce.selected;
+    }
+    if (state.doc.dragging()) {
+      const glm::vec2 d = handleDeltaFromPixels(view, plot, delta);
+      if (ce.drag == CurveEditorState::Drag::Keys) {
+        std::vector<float> scales;
+        for (const ValueRange& range : ce.dragRanges) scales.push_back(displayToValueScale(range, ce.normalized));
+        std::vector<CurveKeyRef> moved;
+        state.doc.updateDrag([&](DocumentEdit& e) {
+          moved = moveCurveKeys(e.clips[clipIndex], ce.dragStartKeys, ce.dragStartValues, scales, d.x, d.y,
+                                ce.rotationView, ce.eulerOrder);
+          return std::string();
+        });
+        if (!moved.empty()) ce.selected = moved;
+      } else {
+        const CurveKeyRef k = ce.dragHandleKey;
+        const ShownCurve* s = curveOf(k);
+        const float scale = s ? displayToValueScale(s->range, ce.normalized) : 1.0f;
+        const glm::vec2 offset = ce.dragHandleStart + d;
+        const float fps = static_cast<float>(1.0 / (clip.frameTime > 0.0 ? clip.frameTime : 1.0 / 30.0));
+        state.doc.updateDrag([&](DocumentEdit& e) {
+          Channel& ch = e.clips[clipIndex].channels[k.channel];
+          if (ce.dragHandleHermite) setHermiteTangentFromHandle(ch, k.key, ce.dragHandleRight, k.component, offset.x, offset.y * scale);
+          else dragBezierHandle(ch, k.key, ce.dragHandleRight, k.component, offset.x, offset.y * scale, fps);
+          return std::string();
+        });
+      }
+    }
+    // Esc or a right click cancels (back to the start, nothing recorded), as in the 3D view.
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Right) || ImGui::IsKeyPressed(keys::ESCAPE, false)) {
+      if (state.doc.dragging()) {
+        state.doc.cancelDrag();
+        if (ce.drag == CurveEditorState::Drag::Keys) ce.selected = ce.dragStartKeys;
+      }
+      ce.drag = CurveEditorState::Drag::None;
+    } else if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+      if (state.doc.dragging()) state.doc.commitDrag();
+      ce.drag = CurveEditorState::Drag::None;
+      reposeAtCurrentFrame(state);
+    }
+  }
+  ImGui::EndGroup();
+  ImGui::End();
+}
+
+}  // namespace kinema

@@ -1,0 +1,140 @@
+// The file dialog's window (ImGui): the path field, the folder listing and the recent files
+// over FileDialogState (model/file_dialog_state.h).
+#include "editor/panels/file_dialog.h"
+
+#include <imgui.h>
+
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "io/scene.h"
+
+namespace kinema {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+void setField(FileDialogState& d, const std::string& text) {
+  std::snprintf(d.path, sizeof(d.path), "%s", text.c_str());
+}
+
+bool isSave(FileDialogPurpose p) { return p != FileDialogPurpose::Open; }
+
+void relist(FileDialogState& d, const std::string& folder) {
+  Result<FolderListing> listing = listFolder(folder, fileDialogExtensions(d.purpose));
+  if (!listing) {
+    d.listingError = listing.error();
+    return;
+  }
+  d.listingError.clear();
+  d.listing = std::move(listing.value());
+  d.folder = d.listing.folder;
+}
+
+}  // namespace
+
+bool drawFileDialog(FileDialogState& d, const std::vector<std::string>& recentFiles, std::string& chosen) {
+  if (!d.visible) return false;
+  const char* title = fileDialogTitle(d.purpose);
+  if (d.justOpened) {
+    ImGui::OpenPopup(title);
+    d.justOpened = false;
+  }
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(ImVec2(560, 440), ImGuiCond_Appearing);
+  bool stillOpen = true;
+  if (!ImGui::BeginPopupModal(title, &stillOpen)) {
+    d.visible = false;
+    return false;
+  }
+  bool done = false;
+  ImGui::TextUnformatted(d.folder.c_str());
+  if (ImGui::Button("Up")) relist(d, fs::path(d.folder).parent_path().string());
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-1);
+  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+  bool accept = ImGui::InputText("##path", d.path, sizeof(d.path),
+                                 ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
+  if (!d.listingError.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", d.listingError.c_str());
+
+  const float recentHeight = recentFiles.empty() || isSave(d.purpose) ? 0.0f : 96.0f;
+  if (ImGui::BeginListBox("##folder", ImVec2(-1, -ImGui::GetFrameHeightWithSpacing() * 2 - recentHeight))) {
+    for (const FolderEntry& e : d.listing.entries) {
+      const std::string label = e.isFolder ? e.name + "/" : e.name;
+      const bool selected = !e.isFolder && e.name == d.path;
+      if (ImGui::Selectable(label.c_str(), selected, ImGuiSelectableFlags_AllowDoubleClick)) {
+        if (e.isFolder) {
+          relist(d, (fs::path(d.folder) / e.name).string());  // one click enters a folder
+          break;  // the listing changed under the loop
+        } else {
+          setField(d, e.name);
+          if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) accept = true;
+        }
+      }
+    }
+    ImGui::EndListBox();
+  }
+  if (recentHeight > 0) {
+    ImGui::TextDisabled("Recent files");
+    if (ImGui::BeginListBox("##recent", ImVec2(-1, recentHeight - ImGui::GetTextLineHeightWithSpacing()))) {
+      for (const std::string& r : recentFiles)
+        if (ImGui::Selectable(r.c_str(), false, ImGuiSelectableFlags_AllowDoubleClick)) {
+          setField(d, r);
+          if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) accept = true;
+        }
+      ImGui::EndListBox();
+    }
+  }
+  if (ImGui::Button(isSave(d.purpose) ? "Save" : "Open", ImVec2(120, 0))) accept = true;
+  ImGui::SameLine();
+  const bool escape = d.confirmOverwrite.empty() && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
+  if (ImGui::Button("Cancel", ImVec2(120, 0)) || escape) {
+    ImGui::CloseCurrentPopup();
+    d.visible = false;
+  }
+
+  if (accept && d.visible) {
+    const std::string path = resolveDialogPath(d);
+    std::error_code ec;
+    if (path.empty()) {
+      // Nothing typed: stay open.
+    } else if (fs::is_directory(path, ec)) {
+      relist(d, path);
+      setField(d, "");
+    } else if (isSave(d.purpose) && fs::exists(path, ec)) {
+      d.confirmOverwrite = path;
+      ImGui::OpenPopup("Replace file?");
+    } else {
+      chosen = path;
+      done = true;
+    }
+  }
+  // Nested modal: asked before a save replaces an existing file.
+  if (ImGui::BeginPopupModal("Replace file?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("%s already exists.", d.confirmOverwrite.c_str());
+    ImGui::TextUnformatted("Replace it?");
+    if (ImGui::Button("Replace", ImVec2(120, 0))) {
+      chosen = d.confirmOverwrite;
+      done = true;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
+      d.confirmOverwrite.clear();
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+  }
+  if (done) {
+    d.visible = false;
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
+  if (!stillOpen) d.visible = false;
+  return done;
+}
+
+}  // namespace kinema

@@ -1,0 +1,42 @@
+// The undo history: every step by label, the applied ones bright, the redoable ones dim;
+// clicking a step undoes or redoes up to it (Blender's Undo History).
+#include <imgui.h>
+
+#include <string>
+
+#include "editor/panels/editor_panels.h"
+#include "editor/panels/panel_layout.h"
+
+namespace kinema {
+
+void drawHistoryPanel(EditorState& state) {
+  Document& doc = state.doc;
+  const PanelRect r = historyRect(ImGui::GetIO().DisplaySize);
+  ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(r.w, r.h), ImGuiCond_Always);
+  if (!ImGui::Begin("History", nullptr, kPanelFlags)) {
+    ImGui::End();
+    return;
+  }
+  const std::vector<std::string> labels = doc.historyLabels();
+  const int position = doc.historyPosition();
+  int jump = -1;
+  // Row k (0 = the original document) is the state with k steps applied.
+  for (int k = 0; k <= static_cast<int>(labels.size()); ++k) {
+    ImGui::PushID(k);
+    const bool applied = k <= position;
+    if (!applied) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+    const std::string label = k == 0 ? "(original)" : std::to_string(k) + ". " + labels[k - 1];
+    if (ImGui::Selectable(label.c_str(), k == position)) jump = k;
+    if (!applied) ImGui::PopStyleColor();
+    ImGui::PopID();
+  }
+  if (ImGui::GetScrollY() >= ImGui::GetScrollMaxY() && position == static_cast<int>(labels.size()))
+    ImGui::SetScrollHereY(1.0f);  // keep the newest step in view
+  if (jump >= 0 && jump != position && !doc.dragging()) {
+    if (doc.jumpToHistory(jump)) state.statusMessage = "History: " + std::to_string(jump) + " step(s) applied";
+  }
+  ImGui::End();
+}
+
+}  // namespace kinema

@@ -1,0 +1,198 @@
+// The IK targets of the document: a list, add / remove, and per target its effector, chain
+// (length or IK root), solver, pole (two-bone), pinned and active switches, and how its
+// last solve went. Every change is one undo step (setIkTarget); drags of the position and
+// pole fields are one step each.
+#include <imgui.h>
+
+#include <string>
+
+#include "editor/panels/editor_panels.h"
+#include "editor/model/ik_posing.h"
+#include "editor/panels/panel_drag.h"
+#include "editor/panels/panel_layout.h"
+#include "editor/model/pose_edits.h"
+
+namespace kinema {
+
+namespace {
+
+constexpr IkSolver kSolvers[] = {IkSolver::TwoBone, IkSolver::Ccd, IkSolver::Fabrik, IkSolver::JacobianDls,
+                                 IkSolver::JacobianTranspose, IkSolver::JacobianPinv, IkSolver::JacobianSdls};
+
+const char* jointName(const Skeleton& s, int joint) {
+  return joint >= 0 && joint < s.size() ? s.names[joint].c_str() : "(none)";
+}
+
+void apply(EditorState& state, int t, const PoseIkTarget& settings) {
+  showEditorError(state, setIkTarget(state.doc, t, settings));
+}
+
+void targetSettings(EditorState& state, int t) {
+  Document& doc = state.doc;
+  const Skeleton& s = doc.skeleton();
+  const PoseIkTarget current = doc.ikTargets()[t];
+  PoseIkTarget next = current;
+
+  if (ImGui::BeginCombo("Effector", jointName(s, current.target.effector))) {
+    for (int j = 0; j < s.size(); ++j)
+      if (ImGui::Selectable(s.names[j].c_str(), j == current.target.effector)) {
+        next.target.effector = j;
+        next.target.root = -1;
+        next.target.mid = -1;
+        apply(state, t, next);
+      }
+    ImGui::EndCombo();
+  }
+  // Chain: a length up from the effector, or 0 and an explicit IK root among its ancestors.
+  int length = current.chainLength;
+  if (ImGui::InputInt("Chain length", &length) && length >= 0 && length <= s.size()) {
+    next = current;
+    next.chainLength = length;
+    apply(state, t, next);
+  }
+  if (current.chainLength == 0) {
+    const int root = current.target.root;
+    if (ImGui::BeginCombo("IK root", root < 0 ? "(automatic)" : jointName(s, root))) {
+      if (ImGui::Selectable("(automatic)", root < 0)) {
+        next = current;
+        next.target.root = -1;
+        apply(state, t, next);
+      }
+      for (int j = s.parents[current.target.effector]; j >= 0; j = s.parents[j])
+        if (ImGui::Selectable(s.names[j].c_str(), j == root)) {
+          next = current;
+          next.target.root = j;
+          apply(state, t, next);
+        }
+      ImGui::EndCombo();
+    }
+  }
+  if (ImGui::BeginCombo("Solver", toString(current.solver))) {
+    for (IkSolver solver : kSolvers)
+      if (ImGui::Selectable(toString(solver), solver == current.solver)) {
+        next = current;
+        next.solver = solver;
+        apply(state, t, next);
+      }
+    ImGui::EndCombo();
+  }
+  bool pinned = current.pinned, active = current.active;
+  if (ImGui::Checkbox("Pinned", &pinned)) {
+    next = current;
+    next.pinned = pinned;
+    apply(state, t, next);
+  }
+  ImGui::SameLine();
+  if (ImGui::Checkbox("Active", &active)) {
+    next = current;
+    next.active = active;
+    apply(state, t, next);
+  }
+
+  // Position: a drag moves the target and solves, one undo step.
+  float position[3] = {current.target.position.x, current.target.position.y, current.target.position.z};
+  const bool moved = ImGui::DragFloat3("Position", position, 0.01f, 0.0f, 0.0f, "%.3f");
+  dragAsOneStep(
+      state, moved, [&] { return beginIkTargetDrag(doc, t); },
+      [&] { return updateIkTargetDrag(doc, t, glm::vec3(position[0], position[1], position[2])); });
+
+  if (current.solver == IkSolver::TwoBone) {
+    bool hasPole = current.target.hasPole;
+    if (ImGui::Checkbox("Pole target", &hasPole)) {
+      next = current;
+      next.target.hasPole = hasPole;
+      if (hasPole && current.target.pole == glm::vec3(0.0f)) {
+        // Start the pole in front of the middle joint, where knees and elbows usually point.
+        const int mid = current.target.mid >= 0 ? current.target.mid : s.parents[current.target.effector];
+        if (mid >= 0) next.target.pole = glm::vec3(doc.worldTransforms()[mid][3]) + glm::vec3(0, 0, 0.5f);
+      }
+      apply(state, t, next);
+    }
+    if (current.target.hasPole) {
+      float pole[3] = {current.target.pole.x, current.target.pole.y, current.target.pole.z};
+      const bool changed = ImGui::DragFloat3("Pole", pole, 0.01f, 0.0f, 0.0f, "%.3f");
+      dragAsOneStep(
+          state, changed, [&] { return doc.beginDrag("IK pole " + std::string(jointName(s, current.target.effector))); },
+          [&] {
+            return doc.updateDrag([&](DocumentEdit& e) {
+              e.targets[t].target.pole = glm::vec3(pole[0], pole[1], pole[2]);
+              return std::string();
+            });
+          });
+    }
+  }
+
+  // How the last solve went (Document::lastIkReports, also in the status bar).
+  for (const IkTargetReport& report : doc.lastIkReports())
+    if (report.target == t)
+      ImGui::TextDisabled("%s: %d it, error %.1e, %.2f ms", report.converged ? "reached" : "missed",
+                          report.iterations, report.error, report.milliseconds);
+}
+
+}  // namespace
+
+void drawIkTargetsPanel(EditorState& state) {
+  Document& doc = state.doc;
+  PanelState& p = state.panels;
+  const PanelRect r = ikTargetsRect(ImGui::GetIO().DisplaySize);
+  ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(r.w, r.h), ImGuiCond_Always);
+  if (!ImGui::Begin("IK Targets", nullptr, kPanelFlags)) {
+    ImGui::End();
+    return;
+  }
+  const Skeleton& s = doc.skeleton();
+  const auto& targets = doc.ikTargets();
+  const int active = doc.selection.active();
+  if (ImGui::Button("Add to selected") && active >= 0) {
+    int index = -1;
+    const IkSolver solver = p.ikChainLength == 2 ? IkSolver::TwoBone : IkSolver::JacobianDls;
+    const std::string error = addIkTargetAtEffector(doc, active, p.ikChainLength, solver, &index);
+    showEditorError(state, error);
+    if (error.empty()) p.selectedIkTarget = index;
+  }
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(70);
+  ImGui::InputInt("bones", &p.ikChainLength);
+  if (p.ikChainLength < 1) p.ikChainLength = 1;
+  ImGui::SameLine();
+  const bool haveSelected = p.selectedIkTarget >= 0 && p.selectedIkTarget < static_cast<int>(targets.size());
+  if (ImGui::Button("Remove") && haveSelected) {
+    showEditorError(state, removeIkTarget(doc, p.selectedIkTarget));
+    p.selectedIkTarget = -1;
+  }
+  if (ImGui::BeginListBox("##targets", ImVec2(-1, 4.5f * ImGui::GetTextLineHeightWithSpacing()))) {
+    for (size_t i = 0; i < targets.size(); ++i) {
+      const PoseIkTarget& t = targets[i];
+      const std::string label = std::to_string(i) + ": " + jointName(s, t.target.effector) + "  (" +
+                                toString(t.solver) + (t.pinned ? ", pinned" : "") + (t.active ? "" : ", off") + ")";
+      if (ImGui::Selectable(label.c_str(), p.selectedIkTarget == static_cast<int>(i))) p.selectedIkTarget = static_cast<int>(i);
+    }
+    if (targets.empty()) ImGui::TextDisabled("no targets: select a joint, then Add");
+    ImGui::EndListBox();
+  }
+  // The document solves every target with one tolerance and iteration cap (not undo steps).
+  if (ImGui::TreeNode("Solver limits (all targets)")) {
+    ImGui::PushItemWidth(-110);
+    float tolerance = doc.ikSettings.tolerance;
+    if (ImGui::DragFloat("Tolerance", &tolerance, 1e-5f, 1e-6f, 1.0f, "%.6f", ImGuiSliderFlags_Logarithmic) &&
+        tolerance > 0.0f)
+      doc.ikSettings.tolerance = tolerance;
+    int iterations = doc.ikSettings.maxIterations;
+    if (ImGui::InputInt("Iterations", &iterations) && iterations >= 1 && iterations <= 100000)
+      doc.ikSettings.maxIterations = iterations;
+    ImGui::PopItemWidth();
+    ImGui::TreePop();
+  }
+  if (p.selectedIkTarget >= 0 && p.selectedIkTarget < static_cast<int>(targets.size())) {
+    ImGui::Separator();
+    ImGui::PushID(p.selectedIkTarget);
+    ImGui::PushItemWidth(-110);
+    targetSettings(state, p.selectedIkTarget);
+    ImGui::PopItemWidth();
+    ImGui::PopID();
+  }
+  ImGui::End();
+}
+
+}  // namespace kinema

@@ -1,0 +1,166 @@
+// The timeline (Blender's): transport buttons, frame range and rate, loop, auto-key and key
+// preferences on one row; below them the frame ruler with the keyframe diamonds of the
+// selected joints and the current frame line. Dragging in the ruler scrubs. The logic is
+// in timeline.h (window-free); this file only draws and forwards clicks.
+#include <imgui.h>
+
+#include <cmath>
+#include <string>
+
+#include "editor/panels/editor_panels.h"
+#include "editor/model/keying.h"
+#include "editor/panels/panel_layout.h"
+#include "editor/model/timeline.h"
+
+namespace kinema {
+
+namespace {
+
+const ImU32 kRulerBackground = IM_COL32(40, 40, 40, 255);
+const ImU32 kRulerRange = IM_COL32(58, 58, 58, 255);
+const ImU32 kTickColor = IM_COL32(95, 95, 95, 255);
+const ImU32 kPlayheadColor = IM_COL32(71, 114, 179, 255);  // Blender's playhead blue
+const ImU32 kDiamondFill = IM_COL32(240, 180, 50, 255);    // keys of the selected joints
+const ImU32 kDiamondOutline = IM_COL32(0, 0, 0, 255);
+constexpr float kDiamondRadius = 4.5f;
+
+const Interpolation kPreferenceChoices[] = {Interpolation::Bezier, Interpolation::Linear, Interpolation::Step,
+                                            Interpolation::CatmullRom, Interpolation::Ease};
+
+void keyPreferencesPopup(EditorState& state) {
+  if (!ImGui::BeginPopup("Key preferences")) return;
+  KeyPreferences& p = state.doc.autoKey.preferences;
+  ImGui::TextUnformatted("New keys");
+  for (Interpolation i : kPreferenceChoices)
+    if (ImGui::RadioButton(toString(i), p.interpolation == i)) p.interpolation = i;
+  if (p.interpolation == Interpolation::Bezier) {
+    const HandleType handles[] = {HandleType::AutoClamped, HandleType::Auto, HandleType::Vector};
+    for (HandleType h : handles)
+      if (ImGui::RadioButton((std::string("handles: ") + toString(h)).c_str(), p.handles == h)) p.handles = h;
+  }
+  ImGui::Checkbox("Location + rotation only", &p.locRotOnly);
+  ImGui::TextDisabled("Rotations (quaternions) take %s", toString(rotationInterpolation(p.interpolation)));
+  ImGui::EndPopup();
+}
+
+void drawRuler(EditorState& state, const TimelineRuler& r) {
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  ImGui::SetCursorScreenPos(ImVec2(r.x, r.y));
+  ImGui::InvisibleButton("##ruler", ImVec2(r.w, r.h));
+  if (ImGui::IsItemActive()) {
+    const long long f = r.frameAtX(ImGui::GetIO().MousePos.x);
+    if (f != currentFrame(state)) {
+      state.playing = false;
+      goToFrame(state, f);
+    }
+  }
+  draw->AddRectFilled(ImVec2(r.x, r.y), ImVec2(r.x + r.w, r.y + r.h), kRulerBackground);
+  draw->AddRectFilled(ImVec2(r.xOfFrame(r.first), r.y), ImVec2(r.xOfFrame(r.last), r.y + r.h), kRulerRange);
+  // Ticks every 1, 2, 5, 10, 20, 50... frames, at least 40 px apart.
+  const double pxPerFrame = (r.w - 2 * kTimelineRulerMargin) / double(std::max(r.last - r.first, 1LL));
+  long long step = 1;
+  for (int i = 0; step * pxPerFrame < 40.0 && i < 30; ++i) step = (i % 3 == 1) ? step / 2 * 5 : step * 2;
+  for (long long f = (r.first / step) * step; f <= r.last; f += step) {
+    if (f <= r.first) f = r.first;  // the first frame is always labelled
+    const float x = r.xOfFrame(f);
+    draw->AddLine(ImVec2(x, r.y), ImVec2(x, r.y + 5), kTickColor);
+    draw->AddText(ImVec2(x + 2, r.y), kTickColor, std::to_string(f).c_str());
+    if (f == r.first && f % step != 0) f = (f / step) * step;  // back on the tick grid
+  }
+  const long long frame = currentFrame(state);
+  if (frame >= r.first && frame <= r.last) {
+    const float x = r.xOfFrame(frame);
+    draw->AddLine(ImVec2(x, r.y), ImVec2(x, r.y + r.h), kPlayheadColor, 2.0f);
+  }
+  const float cy = r.y + r.h * 0.5f + 2.0f;  // below the tick labels' middle
+  for (long long f : selectedKeyFrames(state)) {
+    if (f < r.first || f > r.last) continue;
+    const float x = r.xOfFrame(f), d = kDiamondRadius;
+    draw->AddQuadFilled(ImVec2(x, cy - d - 1), ImVec2(x + d + 1, cy), ImVec2(x, cy + d + 1), ImVec2(x - d - 1, cy),
+                        kDiamondOutline);
+    draw->AddQuadFilled(ImVec2(x, cy - d), ImVec2(x + d, cy), ImVec2(x, cy + d), ImVec2(x - d, cy), kDiamondFill);
+  }
+}
+
+}  // namespace
+
+void drawTimelinePanel(EditorState& state) {
+  if (!state.timelineShown()) return;
+  const PanelRect r = timelineRect(ImGui::GetIO().DisplaySize);
+  ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(r.w, r.h), ImGuiCond_Always);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 2));
+  ImGui::Begin("Timeline", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
+  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(4, 1));
+  auto status = [&](const std::string& message) {
+    if (!message.empty()) state.statusMessage = message;
+  };
+  if (ImGui::Button("|<")) jumpToStart(state);
+  ImGui::SameLine(0, 2);
+  if (ImGui::Button("<")) stepFrame(state, -1);
+  ImGui::SameLine(0, 2);
+  if (ImGui::Button(state.playing ? "Pause" : "Play ")) togglePlayback(state);
+  ImGui::SameLine(0, 2);
+  if (ImGui::Button(">")) stepFrame(state, 1);
+  ImGui::SameLine(0, 2);
+  if (ImGui::Button(">|")) jumpToEnd(state);
+  ImGui::SameLine();
+  ImGui::Text("%5lld", currentFrame(state));
+  ImGui::SameLine();
+  const ImGuiInputTextFlags enter = ImGuiInputTextFlags_EnterReturnsTrue;
+  int start = static_cast<int>(rangeStartFrame(state)), end = static_cast<int>(rangeEndFrame(state));
+  ImGui::TextUnformatted("Start");
+  ImGui::SameLine(0, 3);
+  ImGui::SetNextItemWidth(40);
+  if (ImGui::InputInt("##start", &start, 0, 0, enter)) status(setFrameRange(state, start, end));
+  ImGui::SameLine();
+  ImGui::TextUnformatted("End");
+  ImGui::SameLine(0, 3);
+  ImGui::SetNextItemWidth(40);
+  if (ImGui::InputInt("##end", &end, 0, 0, enter)) status(setFrameRange(state, start, end));
+  ImGui::SameLine();
+  ImGui::TextUnformatted("fps");
+  ImGui::SameLine(0, 3);
+  int fps = static_cast<int>(std::lround(timelineFps(state)));
+  ImGui::SetNextItemWidth(28);
+  if (ImGui::InputInt("##fps", &fps, 0, 0, enter)) status(setFrameRate(state, fps));
+  ImGui::SameLine();
+  ImGui::Checkbox("Loop", &state.loop);
+  ImGui::SameLine();
+  // Auto-key: Blender's record button, red while on.
+  const bool recording = state.doc.autoKey.enabled;
+  if (recording) ImGui::PushStyleColor(ImGuiCol_Button, IM_COL32(190, 40, 40, 255));
+  if (ImGui::Button(recording ? "(*) Auto-key" : "( ) Auto-key")) state.doc.autoKey.enabled = !recording;
+  if (recording) ImGui::PopStyleColor();
+  ImGui::SameLine(0, 2);
+  if (ImGui::Button("Keys")) ImGui::OpenPopup("Key preferences");
+  keyPreferencesPopup(state);
+  ImGui::SameLine();
+  const bool dope = state.animationEditor == AnimationEditorKind::DopeSheet,
+             curves = state.animationEditor == AnimationEditorKind::CurveEditor;
+  if (ImGui::Selectable("Dope", dope, 0, ImVec2(34, 0)))
+    state.animationEditor = dope ? AnimationEditorKind::None : AnimationEditorKind::DopeSheet;
+  ImGui::SameLine();
+  if (ImGui::Selectable("Curves", curves, 0, ImVec2(44, 0)))
+    state.animationEditor = curves ? AnimationEditorKind::None : AnimationEditorKind::CurveEditor;
+  ImGui::PopStyleVar();
+  drawRuler(state, timelineRuler(state, r.x, r.y, r.w, r.h));
+  ImGui::End();
+  ImGui::PopStyleVar();
+}
+
+void drawViewportHelp(const EditorState& state, float fps) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x - 8, 8), ImGuiCond_Always, ImVec2(1, 0));
+  ImGui::SetNextWindowBgAlpha(0.35f);
+  ImGui::Begin("##help", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
+  ImGui::Text("%s", state.doc.scene().source.c_str());
+  ImGui::TextDisabled("orbit: middle drag / Alt+left   pan: Shift+middle");
+  ImGui::TextDisabled("zoom: wheel   frame all: Home / F   select: left click");
+  ImGui::TextDisabled("%.0f fps", fps);
+  ImGui::End();
+}
+
+}  // namespace kinema

@@ -1,0 +1,19 @@
+#pragma once
+#include "editor/model/editor_state.h"
+#include "editor/viewport/viewport_tools.h"
+#include "render/overlay_draw_list.h"
+#include "render/skeleton_draw_list.h"
+
+namespace kinema {
+
+// What the viewport draws over the skeleton this frame (editor-viewport's overlay builder):
+// the rotate gizmo on the active joint, IK target handles, the selected joints' limit
+// shapes, the box being dragged and the R-mode line from the pivot to the mouse.
+void buildViewportOverlay(const EditorState& state, const ViewportView& view, const ViewportTools& tools,
+                          OverlayDrawList& out);
+
+// Colours every selected joint and its outgoing bones like the renderer's single selection,
+// and the hovered joint lighter.
+void colorSelection(const EditorState& state, SkeletonDrawList& list);
+
+}  // namespace kinema

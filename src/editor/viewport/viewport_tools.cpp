@@ -1,0 +1,494 @@
+#include "editor/viewport/viewport_tools.h"
+
+#include "editor/model/key_codes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "editor/viewport/box_select.h"
+#include "editor/model/ik_posing.h"
+#include "editor/viewport/mesh_picking.h"
+#include "editor/viewport/picking.h"
+#include "editor/model/pose_edits.h"
+#include "editor/model/timeline.h"
+#include "editor/viewport/translate_drag.h"
+#include "editor/viewport/viewport_controller.h"
+
+namespace kinema {
+
+namespace {
+
+constexpr float kBoxThresholdPixels = 4.0f;
+constexpr float kHandlePickPixels = 9.0f;
+
+bool hasSelectedAncestor(const Document& doc, int joint) {
+  for (int j = doc.skeleton().parents[joint]; j >= 0; j = doc.skeleton().parents[j])
+    if (doc.selection.isSelected(j)) return true;
+  return false;
+}
+
+int ikHandleUnder(const EditorState& state, const ViewportView& view, glm::vec2 mouse) {
+  const std::vector<PoseIkTarget>& targets = state.doc.ikTargets();
+  for (int i = 0; i < static_cast<int>(targets.size()); ++i) {
+    glm::vec2 p;
+    if (view.project(targets[i].target.position, p) && glm::length(p - mouse) < kHandlePickPixels) return i;
+  }
+  return -1;
+}
+
+AxisConstraint axisOf(int index) {
+  return index == 0 ? AxisConstraint::X : index == 1 ? AxisConstraint::Y : index == 2 ? AxisConstraint::Z : AxisConstraint::None;
+}
+
+}  // namespace
+
+glm::quat jointWorldRotation(const Document& doc, int joint) {
+  glm::quat q(1, 0, 0, 0);
+  for (int j = joint; j >= 0; j = doc.skeleton().parents[j]) q = doc.pose().local[j].rotation * q;
+  return q;
+}
+
+glm::vec3 ViewportTools::jointPosition(const EditorState& state, int joint) const {
+  return joint >= 0 && joint < static_cast<int>(state.world.size()) ? glm::vec3(state.world[joint][3]) : glm::vec3(0.0f);
+}
+
+bool ViewportTools::gizmo(const EditorState& state, const ViewportView& view, RotateGizmo& out) const {
+  const int j = state.doc.selection.active();
+  if (!state.view.showGizmo || j < 0 || j >= static_cast<int>(state.world.size())) return false;
+  out = RotateGizmo{};
+  out.pivot = jointPosition(state, j);
+  out.axesRotation = RotateGizmo::axesFor(state.view.localGizmo ? GizmoOrientation::Local : GizmoOrientation::Global,
+                                          jointWorldRotation(state.doc, j));
+  glm::vec2 p;
+  return view.project(out.pivot, p);
+}
+
+bool ViewportTools::beginModal(EditorState& state, ModalTool tool, const char* label) {
+  const std::string error = state.doc.beginDrag(label);
+  if (!error.empty()) {
+    state.statusMessage = error;
+    return false;
+  }
+  state.tool = ToolState{};
+  state.tool.mode = tool;
+  state.tool.startMouse = state.tool.mouse = mouse_;
+  return true;
+}
+
+void ViewportTools::confirm(EditorState& state) {
+  if (state.doc.dragging()) state.doc.commitDrag();
+  state.tool = ToolState{};
+  state.statusMessage.clear();
+}
+
+void ViewportTools::cancel(EditorState& state) {
+  if (state.doc.dragging()) state.doc.cancelDrag();
+  state.tool = ToolState{};
+  state.statusMessage.clear();
+}
+
+SkeletonPick ViewportTools::pickAt(const EditorState& state, const ViewportView& view,
+                                   const SkeletonDrawList& list) const {
+  SkeletonPick pick = pickSkeletonAt(list, view, mouse_);
+  // Shown bones (solid or x-ray) are picked through the body, as in Blender's pose mode with
+  // x-ray; a click on the body away from any bone, or any click while the bones are hidden,
+  // takes the joint weighing most at the hit vertex.
+  if (pick.hit() && state.view.showBones) return pick;
+  const Scene& scene = state.doc.scene();
+  if (scene.meshInstances.empty()) return pick;
+  if (deformedScene_ != &scene || deformedRevision_ != state.doc.meshRevision() ||
+      deformedChange_ != state.doc.changeCount() || deformedWorld_ != state.world) {
+    deformed_.clear();
+    SceneDeformationJob job;
+    job.scene = &scene;
+    job.world = &state.world;
+    job.out = &deformed_;
+    if (!job.run()) deformed_.clear();
+    deformedScene_ = &scene;
+    deformedRevision_ = state.doc.meshRevision();
+    deformedChange_ = state.doc.changeCount();
+    deformedWorld_ = state.world;
+  }
+  const MeshPick m = pickMeshJoint(scene, deformed_, view.rayThrough(mouse_));
+  if (m.hit()) {
+    pick.joint = m.joint;
+    pick.boneChild = -1;
+    pick.distance = m.distance;
+  }
+  return pick;
+}
+
+void ViewportTools::applyRotate(EditorState& state, const ViewportView& view) {
+  const bool snap = mods_ & kModCtrl;
+  const float total = sweep_.update(mouse_);
+  const bool typed = !state.tool.typed.empty() && state.tool.typed != "-";
+  const double typedDegrees = typed ? std::strtod(state.tool.typed.c_str(), nullptr) : 0.0;
+  float shown = 0.0f;
+  std::vector<glm::quat> locals(joints_.size());
+  for (size_t k = 0; k < joints_.size(); ++k) {
+    const glm::vec3 pivot = jointPosition(state, joints_[k]);
+    const glm::vec3 axis = rotateMode_.worldAxis(view, pivot, startWorld_[k]);
+    glm::quat delta;
+    if (typed) {
+      // Typed degrees turn about the axis itself (counter-clockwise looking down it).
+      shown = static_cast<float>(glm::radians(typedDegrees));
+      delta = glm::angleAxis(shown, glm::normalize(axis));
+    } else {
+      delta = axisTurnForSweep(view, pivot, axis, total, snap, &shown);
+    }
+    locals[k] = localRotationAfterWorldTurn(parentWorld_[k], startLocal_[k], delta);
+  }
+  updateRotateDrag(state.doc, joints_, locals);  // honours X-mirror, as the gizmo's drag does
+  state.tool.axis = axisOf(rotateMode_.axis);
+  state.tool.localAxes = rotateMode_.local;
+  char line[96];
+  std::snprintf(line, sizeof line, "Rotate %.1f deg%s%s", glm::degrees(shown),
+                rotateMode_.axis < 0 ? "" : (rotateMode_.axis == 0 ? " X" : rotateMode_.axis == 1 ? " Y" : " Z"),
+                rotateMode_.local ? " local" : "");
+  state.statusMessage = line;
+}
+
+void ViewportTools::applyGizmo(EditorState& state, const ViewportView& view) {
+  const GizmoPart part = static_cast<GizmoPart>(state.tool.ring);
+  const bool snap = mods_ & kModCtrl;
+  glm::quat delta(1, 0, 0, 0);
+  const float total = sweep_.update(mouse_);
+  if (part == GizmoPart::AxisX || part == GizmoPart::AxisY || part == GizmoPart::AxisZ)
+    delta = axisTurnForSweep(view, gizmo_.pivot, gizmo_.axis(static_cast<int>(part) - static_cast<int>(GizmoPart::AxisX)),
+                             total, snap);
+  else if (part == GizmoPart::ViewRing)
+    delta = axisTurnForSweep(view, gizmo_.pivot, view.towardViewer(gizmo_.pivot), total, snap);
+  else
+    delta = gizmoDragRotation(gizmo_, view, part, state.tool.startMouse, mouse_, snap);
+  if (joints_.empty()) return;
+  const int j = joints_[0];
+  updateRotateDrag(state.doc, j, localRotationAfterWorldTurn(parentWorld_[0], startLocal_[0], delta));
+}
+
+void ViewportTools::applyMove(EditorState& state, const ViewportView& view) {
+  glm::vec3 p;
+  if (state.tool.axis == AxisConstraint::None) {
+    p = dragInViewPlane(view, state.tool.startPoint, state.tool.startMouse, mouse_);
+  } else {
+    glm::vec3 axis(0.0f);
+    axis[static_cast<int>(state.tool.axis) - 1] = 1.0f;
+    p = dragAlongAxis(view, state.tool.startPoint, axis, state.tool.startMouse, mouse_);
+  }
+  if (state.tool.mode == ModalTool::Grab) {
+    updateTranslateDrag(state.doc, 0, startTranslation_ + (p - state.tool.startPoint));
+  } else if (state.tool.ikTarget >= 0) {
+    updateIkTargetDrag(state.doc, state.tool.ikTarget, p);
+  } else {
+    updateAutoIkDrag(state.doc, p);
+  }
+}
+
+void ViewportTools::leftPress(EditorState& state, const ViewportView& view, const SkeletonDrawList& list) {
+  Document& doc = state.doc;
+  const bool shift = mods_ & kModShift;
+  // IK target handles first (small, explicit), then the gizmo's rings, then joints and
+  // bones; nothing: a box (drag) or clearing the selection (click).
+  const int handle = ikHandleUnder(state, view, mouse_);
+  if (handle >= 0 && !shift) {
+    state.tool = ToolState{};
+    const std::string error = beginIkTargetDrag(doc, handle);
+    if (!error.empty()) {
+      state.statusMessage = error;
+      return;
+    }
+    state.tool.mode = ModalTool::IkDrag;
+    state.tool.ikTarget = handle;
+    state.tool.startMouse = state.tool.mouse = mouse_;
+    state.tool.startPoint = doc.ikTargets()[handle].target.position;
+    return;
+  }
+  GizmoPart part = GizmoPart::None;
+  if (!shift && gizmo(state, view, gizmo_)) part = hitTestRotateGizmo(gizmo_, view, mouse_);
+  const SkeletonPick pick = pickAt(state, view, list);
+  if (part == GizmoPart::Trackball && pick.hit() && pick.joint != doc.selection.active()) part = GizmoPart::None;
+  if (part != GizmoPart::None) {
+    const int j = doc.selection.active();
+    state.tool = ToolState{};
+    const std::string error = beginRotateDrag(doc, j);
+    if (!error.empty()) {
+      state.statusMessage = error;
+      return;
+    }
+    state.tool.mode = ModalTool::GizmoDrag;
+    state.tool.ring = static_cast<int>(part);
+    state.tool.startMouse = state.tool.mouse = mouse_;
+    joints_ = {j};
+    startLocal_ = {doc.pose().local[j].rotation};
+    const int parent = doc.skeleton().parents[j];
+    parentWorld_ = {parent >= 0 ? jointWorldRotation(doc, parent) : glm::quat(1, 0, 0, 0)};
+    glm::vec2 c;
+    view.project(gizmo_.pivot, c);
+    sweep_.begin(c, mouse_);
+    return;
+  }
+  if (pick.hit()) {
+    if (shift) doc.selection.shiftClick(pick.joint);
+    else doc.selection.click(pick.joint);
+    if (state.view.autoIk && !shift && doc.skeleton().parents[pick.joint] >= 0) {
+      state.tool = ToolState{};
+      const std::string error = beginAutoIkDrag(doc, pick.joint, std::max(1, state.view.autoIkChainLength));
+      if (!error.empty()) {
+        state.statusMessage = error;
+        return;
+      }
+      state.tool.mode = ModalTool::IkDrag;
+      state.tool.ikTarget = -1;
+      state.tool.startMouse = state.tool.mouse = mouse_;
+      state.tool.startPoint = jointPosition(state, pick.joint);
+    }
+    return;
+  }
+  pressedOnEmpty_ = true;
+  state.tool.startMouse = mouse_;
+}
+
+void ViewportTools::mouseMove(EditorState& state, const ViewportView& view, const SkeletonDrawList& list,
+                              glm::vec2 previous) {
+  const glm::vec2 delta = mouse_ - previous;
+  state.tool.mouse = mouse_;
+  if (navigating_) {
+    ViewportController controller;
+    if (panning_) controller.pan(state.camera, delta, view.size.y);
+    else controller.orbit(state.camera, delta);
+    return;
+  }
+  switch (state.tool.mode) {
+    case ModalTool::Rotate: applyRotate(state, view); return;
+    case ModalTool::GizmoDrag: applyGizmo(state, view); return;
+    case ModalTool::Grab:
+    case ModalTool::IkDrag: applyMove(state, view); return;
+    default: break;
+  }
+  if (pressedOnEmpty_ && glm::length(mouse_ - state.tool.startMouse) > kBoxThresholdPixels) {
+    const glm::vec2 start = state.tool.startMouse;
+    state.tool = ToolState{};
+    state.tool.mode = ModalTool::BoxSelect;
+    state.tool.startMouse = start;
+    state.tool.mouse = mouse_;
+    pressedOnEmpty_ = false;
+  }
+  if (state.tool.mode == ModalTool::None) {
+    state.hoveredIkTarget = ikHandleUnder(state, view, mouse_);
+    hoveredPart_ = gizmo(state, view, gizmo_) ? hitTestRotateGizmo(gizmo_, view, mouse_) : GizmoPart::None;
+    state.hoveredJoint = pickAt(state, view, list).joint;
+  }
+}
+
+void ViewportTools::key(EditorState& state, const ViewportView& view, int key) {
+  Document& doc = state.doc;
+  const bool ctrl = mods_ & kModCtrl, shift = mods_ & kModShift, alt = mods_ & kModAlt;
+  const ModalTool mode = state.tool.mode;
+  if (mode == ModalTool::Rotate || mode == ModalTool::Grab || mode == ModalTool::IkDrag) {
+    if (key == keys::ESCAPE) return cancel(state);
+    if (key == keys::ENTER || key == keys::KP_ENTER) return confirm(state);
+    if (key == keys::X || key == keys::Y || key == keys::Z) {
+      const int axis = key - keys::X;
+      if (mode == ModalTool::Rotate) {
+        rotateMode_.pressAxis(axis);  // global -> local -> free, as in Blender
+      } else {
+        state.tool.axis = state.tool.axis == axisOf(axis) ? AxisConstraint::None : axisOf(axis);
+      }
+    } else if (mode == ModalTool::Rotate) {
+      std::string& t = state.tool.typed;
+      if (key >= keys::Num0 && key <= keys::Num9) t += char('0' + key - keys::Num0);
+      else if (key >= keys::KP_0 && key <= keys::KP_9) t += char('0' + key - keys::KP_0);
+      else if (key == keys::MINUS || key == keys::KP_SUBTRACT) t = (!t.empty() && t[0] == '-') ? t.substr(1) : "-" + t;
+      else if (key == keys::PERIOD || key == keys::KP_DECIMAL) t += '.';
+      else if (key == keys::BACKSPACE && !t.empty()) t.pop_back();
+    }
+    if (mode == ModalTool::Rotate) applyRotate(state, view);
+    else applyMove(state, view);
+    return;
+  }
+  if (mode != ModalTool::None) {
+    if (key == keys::ESCAPE) cancel(state);
+    return;
+  }
+  const float aspect = view.size.x / std::max(view.size.y, 1.0f);
+  const float minRadius = 0.1f * std::max(jointBounds(state.world).radius(), 1e-3f);
+  if (ctrl) {
+    // Ctrl+N/O/S/Q/Z/Y/C/V are the main menu's shortcuts (commands/file_commands.h).
+    if (key == keys::I) state.view.autoIk = !state.view.autoIk;
+    else if (key == keys::P) {  // Blender's Ctrl+P, "With Automatic Weights"
+      const std::string error = bindUnskinnedMeshes(doc);
+      state.statusMessage = error.empty() ? "Bound to the skeleton with automatic weights" : error;
+    }
+    else if (key == keys::KP_1) applyViewPreset(state.camera, ViewPreset::Back);
+    else if (key == keys::KP_3) applyViewPreset(state.camera, ViewPreset::Left);
+    else if (key == keys::KP_7) applyViewPreset(state.camera, ViewPreset::Bottom);
+    return;
+  }
+  switch (key) {
+    case keys::R:
+      if (alt) {
+        const std::string error = clearRotations(doc, doc.selection.joints());
+        if (!error.empty()) state.statusMessage = error;
+      } else if (!doc.selection.empty() && beginModal(state, ModalTool::Rotate, "Rotate")) {
+        joints_.clear();
+        startLocal_.clear();
+        parentWorld_.clear();
+        startWorld_.clear();
+        for (int j : doc.selection.joints()) {
+          if (hasSelectedAncestor(doc, j)) continue;
+          const int parent = doc.skeleton().parents[j];
+          joints_.push_back(j);
+          startLocal_.push_back(doc.pose().local[j].rotation);
+          parentWorld_.push_back(parent >= 0 ? jointWorldRotation(doc, parent) : glm::quat(1, 0, 0, 0));
+          startWorld_.push_back(jointWorldRotation(doc, j));
+        }
+        rotateMode_ = RotateMode{};
+        const int active = doc.selection.active() >= 0 ? doc.selection.active() : doc.selection.joints().back();
+        glm::vec2 c(0.0f);
+        view.project(jointPosition(state, active), c);
+        sweep_.begin(c, mouse_);
+      }
+      break;
+    case keys::G:
+      if (doc.skeleton().size() > 0) {
+        state.tool = ToolState{};
+        const std::string error = beginTranslateDrag(doc, 0);
+        if (!error.empty()) {
+          state.statusMessage = error;
+          break;
+        }
+        state.tool.mode = ModalTool::Grab;
+        state.tool.startMouse = state.tool.mouse = mouse_;
+        state.tool.startPoint = jointPosition(state, 0);
+        startTranslation_ = doc.pose().local[0].translation;
+      }
+      break;
+    case keys::I:
+      // Shift+I: an IK target on the active joint (Blender's "Add IK"), chain length from
+      // the IK panel's setting; two bones get the closed-form solver.
+      if (shift && doc.selection.active() >= 0) {
+        const int length = std::max(1, state.panels.ikChainLength);
+        const std::string error = addIkTargetAtEffector(doc, doc.selection.active(), length,
+                                                        length == 2 ? IkSolver::TwoBone : IkSolver::JacobianDls);
+        if (!error.empty()) state.statusMessage = error;
+      } else if (!shift) {
+        state.statusMessage = alt ? deleteSelectedJointKeys(state) : keySelectedJoints(state);  // I / Alt+I
+      }
+      break;
+    case keys::A:
+      if (alt) doc.selection.clear();
+      else doc.selection.selectAll(doc.skeleton().size());
+      break;
+    case keys::F: frameSelected(state.camera, state.world, doc.selection.joints(), aspect, minRadius); break;
+    case keys::HOME: ViewportController().frameAll(state.camera, jointBounds(state.world), aspect); break;
+    case keys::KP_1: applyViewPreset(state.camera, ViewPreset::Front); break;
+    case keys::KP_3: applyViewPreset(state.camera, ViewPreset::Right); break;
+    case keys::KP_7: applyViewPreset(state.camera, ViewPreset::Top); break;
+    case keys::KP_5: toggleOrthographic(state.camera); break;
+    case keys::Z:
+      // Alt+Z (Blender's x-ray toggle) cycles the bones: on -> x-ray -> none -> on.
+      if (alt) {
+        ViewOptions& v = state.view;
+        if (!v.showBones) v.showBones = true, v.xrayBones = false;
+        else if (!v.xrayBones) v.xrayBones = true;
+        else v.showBones = false;
+      }
+      break;
+    case keys::W:
+      if (alt) state.view.showWeights = !state.view.showWeights;  // heat colours of the active joint
+      break;
+    case keys::SPACE:
+      if (state.timelineShown()) togglePlayback(state);
+      break;
+    case keys::LEFT:  // a frame back; Shift: to the start frame (Blender)
+      if (state.timelineShown()) shift ? jumpToStart(state) : stepFrame(state, -1);
+      break;
+    case keys::RIGHT:
+      if (state.timelineShown()) shift ? jumpToEnd(state) : stepFrame(state, 1);
+      break;
+    case keys::O:
+      if (alt) state.onionSkin.enabled = !state.onionSkin.enabled;  // onion skin (ghost poses)
+      break;
+    case keys::P:
+      if (alt) state.motionPath.enabled = !state.motionPath.enabled;  // the active joint's motion path
+      break;
+    case keys::M:
+      if (alt) state.motionControl.windowOpen = !state.motionControl.windowOpen;  // motion control window
+      break;
+    default: break;
+  }
+}
+
+void ViewportTools::handle(EditorState& state, const InputEvent& e, const ViewportView& view,
+                           const SkeletonDrawList& list, bool mouseCaptured, bool keyboardCaptured) {
+  const bool toolRunning = state.tool.mode != ModalTool::None;
+  mods_ = heldMods_ | e.mods;
+  switch (e.type) {
+    case InputEventType::MouseMove: {
+      const glm::vec2 previous = mouse_;
+      mouse_ = glm::vec2(e.x, e.y);
+      if (!mouseCaptured || toolRunning || navigating_) mouseMove(state, view, list, previous);
+      else state.hoveredJoint = -1;
+      break;
+    }
+    case InputEventType::ButtonDown: {
+      const ModalTool mode = state.tool.mode;
+      if (mode == ModalTool::Rotate || mode == ModalTool::Grab) {
+        if (e.button == 0) confirm(state);
+        else if (e.button == 1) cancel(state);
+        break;
+      }
+      if (mode != ModalTool::None) {
+        if (e.button == 1) cancel(state);  // right click cancels a drag too
+        break;
+      }
+      if (mouseCaptured) break;
+      if (e.button == 2 || (e.button == 0 && (mods_ & kModAlt))) {
+        navigating_ = true;
+        panning_ = mods_ & kModShift;
+      } else if (e.button == 0) {
+        leftPress(state, view, list);
+      }
+      break;
+    }
+    case InputEventType::ButtonUp: {
+      if (navigating_ && (e.button == 2 || e.button == 0)) {
+        navigating_ = false;
+        break;
+      }
+      if (e.button != 0) break;
+      if (state.tool.mode == ModalTool::GizmoDrag || state.tool.mode == ModalTool::IkDrag) {
+        confirm(state);
+      } else if (state.tool.mode == ModalTool::BoxSelect) {
+        const std::vector<int> inside = boxSelectJoints(state.world, view, state.tool.startMouse, mouse_);
+        state.tool = ToolState{};
+        state.doc.selection.box(inside, (mods_ & kModShift)  ? BoxSelectMode::Extend
+                                        : (mods_ & kModCtrl) ? BoxSelectMode::Subtract
+                                                             : BoxSelectMode::Replace);
+      } else if (pressedOnEmpty_ && !(mods_ & kModShift)) {
+        state.doc.selection.clear();  // a click on nothing deselects, as in Blender
+      }
+      pressedOnEmpty_ = false;
+      break;
+    }
+    case InputEventType::Scroll:
+      if (!mouseCaptured) ViewportController().zoom(state.camera, e.y);
+      break;
+    case InputEventType::KeyDown:
+      // Modifiers come from the keys held (scripts) or the event's bits (GLFW).
+      if (e.key == keys::LEFT_SHIFT || e.key == keys::RIGHT_SHIFT) heldMods_ |= kModShift;
+      else if (e.key == keys::LEFT_CONTROL || e.key == keys::RIGHT_CONTROL) heldMods_ |= kModCtrl;
+      else if (e.key == keys::LEFT_ALT || e.key == keys::RIGHT_ALT) heldMods_ |= kModAlt;
+      else if (!toolRunning && state.animationEditorContains(mouse_)) {}  // the animation editor's keys
+      else if (!keyboardCaptured || toolRunning) key(state, view, e.key);
+      break;
+    case InputEventType::KeyUp:
+      if (e.key == keys::LEFT_SHIFT || e.key == keys::RIGHT_SHIFT) heldMods_ &= ~kModShift;
+      else if (e.key == keys::LEFT_CONTROL || e.key == keys::RIGHT_CONTROL) heldMods_ &= ~kModCtrl;
+      else if (e.key == keys::LEFT_ALT || e.key == keys::RIGHT_ALT) heldMods_ &= ~kModAlt;
+      break;
+    case InputEventType::Text: break;
+  }
+}
+
+}  // namespace kinema

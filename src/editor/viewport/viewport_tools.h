@@ -1,0 +1,67 @@
+#pragma once
+#include <vector>
+
+#include "editor/model/editor_state.h"
+#include "editor/model/input_events.h"
+#include "editor/viewport/picking.h"
+#include "skin/scene_deformation.h"
+#include "editor/viewport/rotate_gizmo.h"
+#include "editor/viewport/viewport_view.h"
+#include "render/skeleton_draw_list.h"
+
+namespace kinema {
+
+// Blender pose-mode input on an EditorState, no window: the window (live GLFW events) and
+// --script replay both call handle(). The maths is editor-viewport's (picking, gizmo, drags);
+// every change goes through the Document (drags are one undo step each).
+class ViewportTools {
+ public:
+  // `list`: the skeleton as drawn last frame (picking casts rays against its shapes).
+  // `mouseCaptured`/`keyboardCaptured`: ImGui wants the event (over a panel, typing).
+  void handle(EditorState& state, const InputEvent& event, const ViewportView& view, const SkeletonDrawList& list,
+              bool mouseCaptured, bool keyboardCaptured);
+  glm::vec2 mouse() const { return mouse_; }
+  // The rotate gizmo on the active joint, as drawn and hit-tested (valid = false: none).
+  bool gizmo(const EditorState& state, const ViewportView& view, RotateGizmo& out) const;
+  GizmoPart hoveredGizmoPart() const { return hoveredPart_; }
+
+ private:
+  void mouseMove(EditorState& state, const ViewportView& view, const SkeletonDrawList& list, glm::vec2 previous);
+  void leftPress(EditorState& state, const ViewportView& view, const SkeletonDrawList& list);
+  void key(EditorState& state, const ViewportView& view, int key);
+  bool beginModal(EditorState& state, ModalTool tool, const char* label);
+  void confirm(EditorState& state);
+  void cancel(EditorState& state);
+  void applyRotate(EditorState& state, const ViewportView& view);
+  // The joint under the mouse: shown bones and joints first, else the body (mesh_picking.h).
+  SkeletonPick pickAt(const EditorState& state, const ViewportView& view, const SkeletonDrawList& list) const;
+  void applyGizmo(EditorState& state, const ViewportView& view);
+  void applyMove(EditorState& state, const ViewportView& view);  // Grab and IK drags
+  glm::vec3 jointPosition(const EditorState& state, int joint) const;
+
+  glm::vec2 mouse_{0.0f};
+  int mods_ = 0, heldMods_ = 0;  // the current event's modifiers; modifier keys held
+  bool navigating_ = false, panning_ = false;
+  bool pressedOnEmpty_ = false;  // a left press on nothing: a click clears, a drag box-selects
+  GizmoPart hoveredPart_ = GizmoPart::None;
+  // The running rotation: the joints it turns (no selected ancestor), their start local
+  // rotations and parents' world rotations, the sweep around the active joint's pixel.
+  std::vector<int> joints_;
+  std::vector<glm::quat> startLocal_, parentWorld_, startWorld_;
+  RotateGizmo gizmo_;
+  RotateMode rotateMode_;
+  SweepTracker sweep_;
+  // The body deformed at the pose last picked on: hover picks on every mouse move, the pose
+  // changes far less often. Valid while the world transforms and the document's change
+  // count (skinning methods, binds) match.
+  mutable std::vector<DeformedPrimitive> deformed_;
+  mutable std::vector<glm::mat4> deformedWorld_;
+  mutable long long deformedRevision_ = -1, deformedChange_ = -1;  // meshRevision, changeCount
+  mutable const Scene* deformedScene_ = nullptr;
+  glm::vec3 startTranslation_{0.0f};
+};
+
+// The joints' world rotations from the document's local rotations (exact, no matrix scale).
+glm::quat jointWorldRotation(const Document& doc, int joint);
+
+}  // namespace kinema

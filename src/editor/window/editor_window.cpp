@@ -1,0 +1,447 @@
+#include "editor/model/timeline.h"
+#include "editor/window/editor_window.h"
+
+#include <glad/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <deque>
+#include <iostream>
+#include <numeric>
+
+#include "editor/panels/editor_panels.h"
+#include "editor/window/imgui_backends.h"
+#include "editor/panels/panel_layout.h"
+#include "editor/window/state_dump.h"
+#include "editor/viewport/viewport_overlay.h"
+#include "editor/viewport/animation_display.h"
+#include "editor/viewport/viewport_controller.h"
+#include "editor/viewport/viewport_tools.h"
+#include "io/atomic_write.h"
+#include "io/image.h"
+#include "render/mesh_renderer.h"
+#include "render/skeleton_renderer.h"
+#include "render/skeleton_view.h"
+#include "skin/scene_deformation.h"
+
+namespace kinema {
+
+namespace {
+
+// GLFW reports errors through a callback; keep the last one for the one-line message.
+std::string& lastGlfwError() {
+  static std::string message;
+  return message;
+}
+void onGlfwError(int code, const char* description) {
+  lastGlfwError() = "GLFW error " + std::to_string(code) + ": " + (description ? description : "");
+}
+
+GLFWwindow* createWindow(const EditorWindowOptions& o, const std::string& title, int samples) {
+  glfwDefaultWindowHints();
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_SAMPLES, samples);
+  return glfwCreateWindow(o.width, o.height, title.c_str(), nullptr, nullptr);
+}
+
+// Live GLFW callbacks only queue events; the frame loop hands them to the same handler as
+// replayed ones. The queue lives in the window's user pointer.
+struct LiveInput {
+  std::deque<InputEvent> queue;
+  bool ignore = false;  // --script replay: the real pointer and keyboard must not interfere
+};
+LiveInput* liveInput(GLFWwindow* w) { return static_cast<LiveInput*>(glfwGetWindowUserPointer(w)); }
+void onCursor(GLFWwindow* w, double x, double y) {
+  InputEvent e;
+  e.type = InputEventType::MouseMove;
+  e.x = static_cast<float>(x);
+  e.y = static_cast<float>(y);
+  if (!liveInput(w)->ignore) liveInput(w)->queue.push_back(e);
+}
+void onButton(GLFWwindow* w, int button, int action, int mods) {
+  InputEvent e;
+  e.type = action == GLFW_PRESS ? InputEventType::ButtonDown : InputEventType::ButtonUp;
+  e.button = button;
+  e.mods = mods;
+  double x = 0, y = 0;
+  glfwGetCursorPos(w, &x, &y);
+  e.x = static_cast<float>(x);
+  e.y = static_cast<float>(y);
+  if (!liveInput(w)->ignore) liveInput(w)->queue.push_back(e);
+}
+void onScroll(GLFWwindow* w, double dx, double dy) {
+  InputEvent e;
+  e.type = InputEventType::Scroll;
+  e.x = static_cast<float>(dx);
+  e.y = static_cast<float>(dy);
+  if (!liveInput(w)->ignore) liveInput(w)->queue.push_back(e);
+}
+void onKey(GLFWwindow* w, int key, int, int action, int mods) {
+  if (action == GLFW_REPEAT || key < 0) return;
+  InputEvent e;
+  e.type = action == GLFW_PRESS ? InputEventType::KeyDown : InputEventType::KeyUp;
+  e.key = key;
+  e.mods = mods;
+  if (!liveInput(w)->ignore) liveInput(w)->queue.push_back(e);
+}
+void onChar(GLFWwindow* w, unsigned int c) {
+  InputEvent e;
+  e.type = InputEventType::Text;
+  if (c < 0x80) {
+    e.text = std::string(1, static_cast<char>(c));
+  } else if (c < 0x800) {
+    e.text = {char(0xC0 | (c >> 6)), char(0x80 | (c & 0x3F))};
+  } else if (c < 0x10000) {
+    e.text = {char(0xE0 | (c >> 12)), char(0x80 | ((c >> 6) & 0x3F)), char(0x80 | (c & 0x3F))};
+  } else {
+    e.text = {char(0xF0 | (c >> 18)), char(0x80 | ((c >> 12) & 0x3F)), char(0x80 | ((c >> 6) & 0x3F)), char(0x80 | (c & 0x3F))};
+  }
+  if (!liveInput(w)->ignore) liveInput(w)->queue.push_back(e);
+}
+
+const char* getClipboard(void* user) { return glfwGetClipboardString(static_cast<GLFWwindow*>(user)); }
+void setClipboard(void* user, const char* text) { glfwSetClipboardString(static_cast<GLFWwindow*>(user), text); }
+
+// ImGui 1.86 reads keys through io.KeyMap into io.KeysDown, indexed by GLFW key codes.
+void mapImGuiKeys(ImGuiIO& io) {
+  const std::pair<ImGuiKey, int> keys[] = {
+      {ImGuiKey_Tab, GLFW_KEY_TAB},       {ImGuiKey_LeftArrow, GLFW_KEY_LEFT},  {ImGuiKey_RightArrow, GLFW_KEY_RIGHT},
+      {ImGuiKey_UpArrow, GLFW_KEY_UP},    {ImGuiKey_DownArrow, GLFW_KEY_DOWN},  {ImGuiKey_PageUp, GLFW_KEY_PAGE_UP},
+      {ImGuiKey_PageDown, GLFW_KEY_PAGE_DOWN}, {ImGuiKey_Home, GLFW_KEY_HOME}, {ImGuiKey_End, GLFW_KEY_END},
+      {ImGuiKey_Insert, GLFW_KEY_INSERT}, {ImGuiKey_Delete, GLFW_KEY_DELETE},  {ImGuiKey_Backspace, GLFW_KEY_BACKSPACE},
+      {ImGuiKey_Space, GLFW_KEY_SPACE},   {ImGuiKey_Enter, GLFW_KEY_ENTER},    {ImGuiKey_Escape, GLFW_KEY_ESCAPE},
+      {ImGuiKey_KeyPadEnter, GLFW_KEY_KP_ENTER}, {ImGuiKey_A, GLFW_KEY_A}, {ImGuiKey_C, GLFW_KEY_C},
+      {ImGuiKey_V, GLFW_KEY_V}, {ImGuiKey_X, GLFW_KEY_X}, {ImGuiKey_Y, GLFW_KEY_Y}, {ImGuiKey_Z, GLFW_KEY_Z},
+  };
+  for (const auto& [imguiKey, glfwKey] : keys) io.KeyMap[imguiKey] = glfwKey;
+}
+
+// Feeds one event to ImGui's IO. Returns false (and changes nothing) when the event would
+// undo a change made earlier in this frame (a press and release of the same button): ImGui
+// 1.86 samples state once per frame, so such events wait for the next frame.
+struct FrameInputChanges {
+  bool button[5] = {};
+  std::vector<int> keys;
+};
+bool feedImGui(ImGuiIO& io, const InputEvent& e, FrameInputChanges& changed) {
+  switch (e.type) {
+    case InputEventType::MouseMove: io.MousePos = ImVec2(e.x, e.y); break;
+    case InputEventType::ButtonDown:
+    case InputEventType::ButtonUp:
+      if (e.button >= 0 && e.button < 5) {
+        if (changed.button[e.button]) return false;
+        changed.button[e.button] = true;
+        io.MouseDown[e.button] = e.type == InputEventType::ButtonDown;
+      }
+      break;
+    case InputEventType::Scroll:
+      io.MouseWheelH += e.x;
+      io.MouseWheel += e.y;
+      break;
+    case InputEventType::KeyDown:
+    case InputEventType::KeyUp:
+      if (e.key >= 0 && e.key < IM_ARRAYSIZE(io.KeysDown)) {
+        if (std::find(changed.keys.begin(), changed.keys.end(), e.key) != changed.keys.end()) return false;
+        changed.keys.push_back(e.key);
+        io.KeysDown[e.key] = e.type == InputEventType::KeyDown;
+      }
+      io.KeyCtrl = io.KeysDown[GLFW_KEY_LEFT_CONTROL] || io.KeysDown[GLFW_KEY_RIGHT_CONTROL] || (e.mods & kModCtrl);
+      io.KeyShift = io.KeysDown[GLFW_KEY_LEFT_SHIFT] || io.KeysDown[GLFW_KEY_RIGHT_SHIFT] || (e.mods & kModShift);
+      io.KeyAlt = io.KeysDown[GLFW_KEY_LEFT_ALT] || io.KeysDown[GLFW_KEY_RIGHT_ALT] || (e.mods & kModAlt);
+      io.KeySuper = io.KeysDown[GLFW_KEY_LEFT_SUPER] || io.KeysDown[GLFW_KEY_RIGHT_SUPER] || (e.mods & kModSuper);
+      break;
+    case InputEventType::Text: io.AddInputCharactersUTF8(e.text.c_str()); break;
+  }
+  return true;
+}
+
+// The View menu's requests (the same actions as the viewport's keys).
+void actOnViewRequests(EditorState& state, float aspect) {
+  EditorRequests& r = state.requests;
+  if (r.frameAll) ViewportController().frameAll(state.camera, jointBounds(state.world), aspect);
+  if (r.frameSelected)
+    frameSelected(state.camera, state.world, state.doc.selection.joints(), aspect,
+                  0.1f * std::max(jointBounds(state.world).radius(), 1e-3f));
+  if (r.toggleOrtho) toggleOrthographic(state.camera);
+  switch (r.viewPreset) {
+    case 1: applyViewPreset(state.camera, ViewPreset::Front); break;
+    case -1: applyViewPreset(state.camera, ViewPreset::Back); break;
+    case 3: applyViewPreset(state.camera, ViewPreset::Right); break;
+    case -3: applyViewPreset(state.camera, ViewPreset::Left); break;
+    case 7: applyViewPreset(state.camera, ViewPreset::Top); break;
+    case -7: applyViewPreset(state.camera, ViewPreset::Bottom); break;
+    default: break;
+  }
+  r.frameAll = r.frameSelected = r.toggleOrtho = false;
+  r.viewPreset = 0;
+}
+
+}  // namespace
+
+bool displayAvailable() {
+  const char* x = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  return (x && *x) || (wayland && *wayland);
+}
+
+std::string editorWindowTitle(const EditorState& state) {
+  return "Kinema - " + documentTitle(state) + (state.doc.dirty() ? "*" : "");
+}
+
+EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions& o) {
+  EditorWindowResult result;
+  if (!displayAvailable()) {
+    result.error = "no display (DISPLAY and WAYLAND_DISPLAY are unset)";
+    return result;
+  }
+  glfwSetErrorCallback(onGlfwError);
+  if (!glfwInit()) {
+    result.error = "cannot start GLFW: " + lastGlfwError();
+    return result;
+  }
+  std::string title = editorWindowTitle(state);
+  GLFWwindow* window = createWindow(o, title, 4);
+  if (!window) window = createWindow(o, title, 0);  // no multisampled visual: draw without MSAA
+  if (!window) {
+    result.error = "cannot open an OpenGL 3.3 core window: " + lastGlfwError();
+    glfwTerminate();
+    return result;
+  }
+  glfwMakeContextCurrent(window);
+  const int version = gladLoadGL(glfwGetProcAddress);
+  if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < 33) {
+    result.error = "the window's OpenGL is older than 3.3";
+    glfwDestroyWindow(window);
+    glfwTerminate();
+    return result;
+  }
+  result.opened = true;
+  glfwSwapInterval(o.replay || o.reportFrameTimes ? 0 : 1);
+
+  LiveInput live;
+  live.ignore = o.replay;
+  glfwSetWindowUserPointer(window, &live);
+  glfwSetCursorPosCallback(window, onCursor);
+  glfwSetMouseButtonCallback(window, onButton);
+  glfwSetScrollCallback(window, onScroll);
+  glfwSetKeyCallback(window, onKey);
+  glfwSetCharCallback(window, onChar);
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;  // no imgui.ini dropped in the user's folder
+  io.BackendPlatformName = "kinema_input_events";
+  io.SetClipboardTextFn = setClipboard;
+  io.GetClipboardTextFn = getClipboard;
+  io.ClipboardUserData = window;
+  mapImGuiKeys(io);
+  ImGui::StyleColorsDark();
+  imguiBackendsInit(window);
+
+  std::vector<double> frameMs;
+  long long frame = 1;
+  {
+    SkeletonRenderer renderer;
+    std::string error = renderer.init();
+    // The document's meshes, skinned on the GPU each frame; uploaded again when a file is
+    // opened (edits never change meshes).
+    MeshRenderer meshes;
+    if (error.empty()) error = meshes.init();
+    std::vector<char> skinJoints;  // bones only between skin joints (skinJointMask)
+    glm::vec3 meshReach(0.0f);     // how far the body reaches past the joints (a head above the neck)
+    auto uploadMeshes = [&]() -> std::string {
+      const Scene& scene = state.doc.scene();
+      skinJoints = skinJointMask(scene);
+      meshReach = glm::vec3(0.0f);
+      const std::string failed = meshes.upload(scene);
+      if (!failed.empty() || meshes.empty()) return failed;
+      // Measured once per upload at the current pose, so framing and the grid take in the
+      // body without reading vertices back every frame.
+      MeshFrame now;
+      now.world = &state.world;
+      const Bounds body = meshes.deformedBounds(now), joints = jointBounds(state.world);
+      if (!body.empty && !joints.empty)
+        meshReach = glm::max(glm::max(joints.min - body.min, body.max - joints.max), glm::vec3(0.0f));
+      return {};
+    };
+    auto viewBounds = [&state, &meshReach]() {
+      Bounds b = jointBounds(state.world);
+      if (!b.empty) {
+        b.add(b.min - meshReach);
+        b.add(b.max + meshReach);
+      }
+      return b;
+    };
+    if (!error.empty()) result.error = error;
+    ViewportTools tools;
+    SkeletonDrawList list;  // last frame's drawing: picking casts rays against it
+    OverlayDrawList overlay;
+    AnimationDisplay animationDisplay;  // onion-skin ghosts, motion path (kept: the path is cached)
+    if (state.time == 0.0 && !state.playing) resetTimeline(state);  // frame 1 without a clip, as in Blender
+    evaluateEditorPose(state);
+    int fbw = 0, fbh = 0, ww = 0, wh = 0;
+    glfwGetFramebufferSize(window, &fbw, &fbh);
+    if (error.empty()) error = uploadMeshes();
+    long long uploadedMeshRevision = state.doc.meshRevision();  // a bind replaces the meshes
+    glfwGetWindowSize(window, &ww, &wh);
+    const PanelRect startRect = viewportRect(ImVec2(float(ww), float(wh)), state.bottomPanels());
+    state.camera = defaultCamera(viewBounds(), startRect.w / startRect.h);
+    size_t nextScripted = 0;
+    const long long lastScriptFrame = o.script.empty() ? 0 : o.script.back().frame;
+    double previous = glfwGetTime();
+    for (; error.empty() && !state.panels.quitApproved; ++frame) {
+      const auto frameStart = std::chrono::steady_clock::now();
+      glfwPollEvents();
+      if (glfwWindowShouldClose(window)) {
+        glfwSetWindowShouldClose(window, GLFW_FALSE);
+        requestQuit(state);  // asks first when there are unsaved changes
+      }
+      while (nextScripted < o.script.size() && o.script[nextScripted].frame <= frame)
+        live.queue.push_back(o.script[nextScripted++]);
+      const double now = glfwGetTime();
+      const double dt = o.replay ? 1.0 / 60.0 : now - previous;
+      previous = now;
+      glfwGetWindowSize(window, &ww, &wh);
+      glfwGetFramebufferSize(window, &fbw, &fbh);
+      // The 3D view is the free area between the panels (the empty-frame measurement has none).
+      const PanelRect vp = o.emptyFrame ? PanelRect{0.0f, 0.0f, float(std::max(ww, 1)), float(std::max(wh, 1))}
+                                        : viewportRect(ImVec2(float(ww), float(wh)), state.bottomPanels());
+      state.viewportRect = glm::vec4(vp.x, vp.y, vp.w, vp.h);
+      const ViewportView view = ViewportView::of(state.camera, glm::vec2(vp.w, vp.h), glm::vec2(vp.x, vp.y));
+
+      // Input: ImGui gets every event; the viewport tools get those ImGui does not want
+      // (as of the previous frame, which is what the user saw).
+      FrameInputChanges changed;
+      const bool mouseCaptured = io.WantCaptureMouse, keyboardCaptured = io.WantCaptureKeyboard;
+      while (!live.queue.empty()) {
+        if (!feedImGui(io, live.queue.front(), changed)) break;
+        if (state.compare.active)  // the compare mode takes the viewport's input
+          handleCompareEvent(state.compare, live.queue.front(), mouseCaptured, keyboardCaptured);
+        else
+          tools.handle(state, live.queue.front(), view, list, mouseCaptured, keyboardCaptured);
+        live.queue.pop_front();
+      }
+      advancePlayback(state, dt);
+      evaluateEditorPose(state);
+      const Bounds bounds = viewBounds();
+
+      imguiBackendsNewFrame();
+      io.DisplaySize = ImVec2(float(ww), float(wh));
+      io.DisplayFramebufferScale = ImVec2(ww > 0 ? float(fbw) / ww : 1.0f, wh > 0 ? float(fbh) / wh : 1.0f);
+      io.DeltaTime = static_cast<float>(std::max(dt, 1e-4));
+      ImGui::NewFrame();
+      if (!o.emptyFrame) drawEditorPanels(state, io.Framerate);
+      ImGui::Render();
+      evaluateEditorPose(state);  // the panels may have edited the document
+      actOnViewRequests(state, vp.w / vp.h);
+
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      if (o.emptyFrame) {
+        glViewport(0, 0, fbw, fbh);
+        glClearColor(0.235f, 0.235f, 0.235f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+      } else {
+        if (meshes.needsUpload(state.doc.scene()) || state.doc.meshRevision() != uploadedMeshRevision) {
+          uploadedMeshRevision = state.doc.meshRevision();
+          const std::string failed = uploadMeshes();
+          if (!failed.empty()) state.statusMessage = failed;
+        }
+        SkeletonDrawJob job;
+        job.parents = &state.doc.skeleton().parents;
+        job.world = &state.world;
+        job.shownJoints = &skinJoints;
+        job.run(list);
+        MeshDraw meshDraw;
+        meshDraw.renderer = &meshes;
+        meshDraw.frame.world = &state.world;
+        std::vector<std::vector<float>> morphWeights;  // animated blend shapes at the playhead
+        if (!meshes.empty()) morphWeights = sampleMorphWeights(state.doc.scene(), state.hasMotion() ? state.clip : -1, state.time);
+        meshDraw.frame.morphWeights = &morphWeights;
+        meshDraw.frame.weightJoint = state.view.showWeights ? state.doc.selection.active() : -1;
+        colorSelection(state, list);
+        state.camera.fitClipPlanes(bounds.radius());
+        // The viewport in framebuffer pixels (GL counts rows from the bottom); the panels
+        // cover the rest, which is cleared to the background behind them.
+        const float sx = ww > 0 ? float(fbw) / ww : 1.0f, sy = wh > 0 ? float(fbh) / wh : 1.0f;
+        const int vx = int(std::lround(vp.x * sx)), vw = std::max(int(std::lround(vp.w * sx)), 1);
+        const int vh = std::max(int(std::lround(vp.h * sy)), 1), vy = std::max(fbh - int(std::lround(vp.y * sy)) - vh, 0);
+        glViewport(0, 0, fbw, fbh);
+        glClearColor(0.235f, 0.235f, 0.235f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        buildViewportOverlay(state, ViewportView::of(state.camera, glm::vec2(vw, vh), glm::vec2(vp.x * sx, vp.y * sy)),
+                             tools, overlay);
+        buildAnimationDisplay(state, skinJoints, animationDisplay, overlay);  // onion skin, motion path
+        FrameDescription description;
+        description.skeleton = &list;
+        description.overlay = &overlay;
+        description.camera = state.camera;
+        description.x = vx;
+        description.y = vy;
+        description.width = vw;
+        description.height = vh;
+        description.sceneRadius = bounds.radius();
+        description.showGrid = state.view.showGrid;
+        description.meshes = meshes.empty() ? nullptr : &meshDraw;
+        description.ghosts = &animationDisplay.ghostLists;
+        description.bones = !state.view.showBones ? BoneDisplay::None
+                            : state.view.xrayBones ? BoneDisplay::XRay
+                                                   : BoneDisplay::On;
+        if (!state.compare.active) renderer.draw(description);  // the compare mode draws with ImGui
+      }
+      imguiBackendsRenderDrawData(ImGui::GetDrawData());
+
+      const bool scriptDone = o.replay && o.frameCount <= 0 && nextScripted >= o.script.size() && live.queue.empty() &&
+                              frame >= lastScriptFrame + 2;
+      const bool last = (o.frameCount > 0 && frame >= o.frameCount) || scriptDone || state.panels.quitApproved;
+      if (last && !o.screenshotPath.empty()) {
+        // Read the back buffer before swapping: its contents are undefined afterwards.
+        Image shot(fbw, fbh);
+        glReadBuffer(GL_BACK);
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, fbw, fbh, GL_RGBA, GL_UNSIGNED_BYTE, shot.rgba.data());
+        shot.flipVertically();
+        for (size_t i = 3; i < shot.rgba.size(); i += 4) shot.rgba[i] = 255;  // the window is opaque
+        result.error = savePng(o.screenshotPath, shot);
+      }
+      glfwSwapBuffers(window);
+      if (o.reportFrameTimes) {
+        glFinish();
+        frameMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count());
+      }
+      const std::string newTitle = editorWindowTitle(state);
+      if (newTitle != title) {
+        title = newTitle;
+        glfwSetWindowTitle(window, title.c_str());
+      }
+      if (last) break;
+    }
+    result.frames = frame;
+    if (!o.dumpStatePath.empty()) {
+      const std::string dumpError = writeFileAtomically(o.dumpStatePath, editorStateJson(state, ww, wh, frame));
+      if (result.error.empty()) result.error = dumpError;
+    }
+  }
+  if (!frameMs.empty()) {
+    // The first frames compile shaders and upload meshes: leave out the first tenth.
+    std::vector<double> t(frameMs.begin() + frameMs.size() / 10, frameMs.end());
+    result.meanFrameMs = std::accumulate(t.begin(), t.end(), 0.0) / t.size();
+    std::nth_element(t.begin(), t.begin() + t.size() / 2, t.end());
+    result.medianFrameMs = t[t.size() / 2];
+  }
+  imguiBackendsShutdown();
+  ImGui::DestroyContext();
+  glfwDestroyWindow(window);
+  glfwTerminate();
+  return result;
+}
+
+}  // namespace kinema

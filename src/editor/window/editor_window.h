@@ -1,0 +1,41 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include "editor/model/editor_state.h"
+#include "editor/model/input_events.h"
+
+namespace kinema {
+
+struct EditorWindowOptions {
+  int width = 1280, height = 720;
+  long long frameCount = 0;   // > 0: stop after this many frames (tests under Xvfb)
+  std::string screenshotPath; // with frameCount: the last frame's pixels go here as PNG
+  // Replayed input (kinema edit --script): each event is handled in its frame, and every
+  // frame advances a fixed 1/60 s, so runs are deterministic. Without frameCount the window
+  // closes two frames after the last event.
+  bool replay = false;
+  std::vector<InputEvent> script;
+  std::string dumpStatePath;  // written on exit (editorStateJson)
+  bool reportFrameTimes = false;  // mean / median frame time on stderr at exit
+  bool emptyFrame = false;        // draw only an empty ImGui frame (the baseline for frame times)
+};
+
+struct EditorWindowResult {
+  bool opened = false;  // false: no display or no usable OpenGL 3.3 window (see error)
+  std::string error;    // one line, empty on success
+  double meanFrameMs = 0, medianFrameMs = 0;
+  long long frames = 0;
+};
+
+// Opens the GLFW window and runs the editor on `state` until the user closes it (or the
+// frame count is reached). Blocks. The state stays the caller's.
+EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions& options);
+
+// True when a window system looks reachable (DISPLAY or WAYLAND_DISPLAY is set).
+bool displayAvailable();
+
+// "Kinema - name" with a * when the document has unsaved changes.
+std::string editorWindowTitle(const EditorState& state);
+
+}  // namespace kinema

@@ -1,0 +1,229 @@
+#include "editor/window/state_dump.h"
+
+#include <nlohmann/json.hpp>
+
+#include "editor/panels/compare_panel.h"
+#include "editor/window/editor_window.h"
+#include "editor/panels/panel_layout.h"
+#include "editor/model/timeline.h"
+#include "ik/ik_solver.h"
+
+namespace kinema {
+
+namespace {
+using json = nlohmann::json;
+json vec(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
+json jointName(const EditorState& s, int j) {
+  return j >= 0 && j < s.doc.skeleton().size() ? json(s.doc.skeleton().names[j]) : json(nullptr);
+}
+// The timeline (timeline.h): frame, range, rate, playback switches, the ruler's pixels and
+// the edited clip's channels with their key times.
+json timelineJson(const EditorState& s, int windowWidth, int windowHeight) {
+  const PanelRect strip = timelineRect(ImVec2(float(windowWidth), float(windowHeight)));
+  const TimelineRuler r = timelineRuler(s, strip.x, strip.y, strip.w, strip.h);
+  const AutoKeySettings& a = s.doc.autoKey;
+  json t = {{"shown", s.timelineShown()},
+            {"frame", currentFrame(s)},
+            {"start", rangeStartFrame(s)},
+            {"end", rangeEndFrame(s)},
+            {"fps", timelineFps(s)},
+            {"loop", s.loop},
+            {"playing", s.playing},
+            {"auto_key", a.enabled},
+            {"key_interpolation", toString(a.preferences.interpolation)},
+            {"key_handles", toString(a.preferences.handles)},
+            {"animation_editor", s.animationEditor == AnimationEditorKind::DopeSheet     ? "dope-sheet"
+                                 : s.animationEditor == AnimationEditorKind::CurveEditor ? "curve-editor"
+                                                                                         : "none"},
+            {"ruler", {{"x", r.x}, {"y", r.y}, {"width", r.w}, {"height", r.h}, {"first", r.first}, {"last", r.last},
+                       {"margin", kTimelineRulerMargin}}}};
+  json keyFrames = json::array();
+  for (long long f : selectedKeyFrames(s)) keyFrames.push_back(f);
+  t["selected_key_frames"] = keyFrames;
+  json channels = json::array();
+  if (s.hasMotion()) {
+    const Clip& clip = s.doc.scene().clips[s.clip];
+    t["clip_name"] = clip.name;
+    for (const Channel& ch : clip.channels) {
+      json times = json::array();
+      for (float x : ch.times) times.push_back(x);
+      json interpolations = json::array();
+      for (int k = 0; k < ch.keyCount(); ++k) interpolations.push_back(toString(ch.settings(k).interpolation));
+      channels.push_back({{"joint", jointName(s, ch.joint)},
+                          {"target", toString(ch.target)},
+                          {"times", times},
+                          {"interpolations", interpolations}});
+    }
+  }
+  t["channels"] = channels;
+  return t;
+}
+
+// The curve editor: open or not, view, plot rectangle, the shown curves with their keys in
+// display units (the e2e tests turn them into pixels), and the selected keys.
+json curveEditorJson(const EditorState& s) {
+  const CurveEditorState& ce = s.curveEditor;
+  json out;
+  out["open"] = s.animationEditor == AnimationEditorKind::CurveEditor;
+  out["rotation_view"] = ce.rotationView == RotationView::Euler ? "euler" : "quaternion";
+  out["euler_order"] = toString(ce.eulerOrder);
+  out["normalized"] = ce.normalized;
+  out["view"] = {{"t0", ce.view.t0}, {"t1", ce.view.t1}, {"v0", ce.view.v0}, {"v1", ce.view.v1}};
+  out["plot"] = {{"x", ce.plot.x}, {"y", ce.plot.y}, {"width", ce.plot.w}, {"height", ce.plot.h}};
+  json curves = json::array();
+  if (s.hasMotion()) {
+    const Clip& clip = s.doc.scene().clips[s.clip];
+    for (int c : shownChannels(clip, s.doc.selection)) {
+      const Channel& ch = clip.channels[c];
+      for (int i = 0; i < curveCount(ch, ce.rotationView); ++i) {
+        const CurvePoints p = curvePoints(ch, i, ce.rotationView, ce.eulerOrder);
+        const ValueRange r = curveRange(p);
+        json keys = json::array();
+        for (size_t k = 0; k < p.keyTimes.size(); ++k) {
+          const float v = ce.normalized ? normalizeValue(r, p.keyValues[k]) : p.keyValues[k];
+          keys.push_back({{"time", p.keyTimes[k]}, {"value", p.keyValues[k]}, {"display", v},
+                          {"interpolation", toString(ch.settings(int(k)).interpolation)}});
+        }
+        curves.push_back({{"channel", c},
+                          {"component", i},
+                          {"label", curveLabel(s.doc.skeleton(), ch, i, ce.rotationView, ce.eulerOrder)},
+                          {"visible", !ce.isHidden({c, i})},
+                          {"keys", keys}});
+      }
+    }
+  }
+  out["curves"] = curves;
+  json selected = json::array();
+  for (const CurveKeyRef& k : ce.selected) selected.push_back({{"channel", k.channel}, {"component", k.component}, {"key", k.key}});
+  out["selected_keys"] = selected;
+  return out;
+}
+
+// The dope sheet: shown or not, its view (key area in window pixels, frame at its left edge,
+// pixels per frame, row height, scrolled rows), its rows with their key frames, the
+// selected key columns and how many keys the clipboard holds.
+json dopeSheetJson(const EditorState& s) {
+  static const char* const kGestures[] = {"none", "press", "box", "drag_keys", "grab_keys", "pan"};
+  const DopeSheetState& ds = s.dopeSheet;
+  const DopeSheetView& v = ds.view;
+  json out = {{"shown", s.animationEditor == AnimationEditorKind::DopeSheet},
+              {"view", {{"x", v.x}, {"y", v.y}, {"width", v.width}, {"height", v.height}, {"first_frame", v.firstFrame},
+                        {"pixels_per_frame", v.pixelsPerFrame}, {"row_height", v.rowHeight}, {"first_row", v.firstRow}}},
+              {"clipboard_keys", ds.clipboard.keys.size()},
+              {"gesture", kGestures[static_cast<int>(ds.gesture)]}};
+  json rows = json::array(), selected = json::array();
+  if (s.hasMotion()) {
+    const Clip& clip = s.doc.scene().clips[s.clip];
+    for (const DopeSheetRow& r : dopeSheetRows(clip)) {
+      json frames = json::array();
+      for (float t : r.times) frames.push_back(timeToFrame(clip, t));
+      rows.push_back({{"joint", r.joint < 0 ? json("Summary") : jointName(s, r.joint)}, {"frames", frames}});
+    }
+    for (const KeyColumn& c : ds.selection.columns())
+      selected.push_back({{"joint", jointName(s, c.joint)}, {"frame", timeToFrame(clip, c.time)}});
+  }
+  out["rows"] = rows;
+  out["selected"] = selected;
+  return out;
+}
+
+json rect(const glm::vec4& r) { return json::array({r.x, r.y, r.z, r.w}); }
+
+void addAnimationDisplayState(const EditorState& s, json& out) {
+  const OnionSkinSettings& o = s.onionSkin;
+  json ghosts = json::array();
+  if (o.enabled && s.hasMotion()) {
+    const Clip& clip = s.doc.scene().clips[s.clip];
+    for (const GhostFrame& g : ghostFrames(o, clipFrameAt(clip, s.time), clipFrameAt(clip, clip.duration()) + 1))
+      ghosts.push_back({{"frame", g.frame}, {"offset", g.offset}, {"color", json::array({g.color.r, g.color.g, g.color.b, g.color.a})}});
+  }
+  out["onion_skin"] = {{"enabled", o.enabled}, {"before", o.before}, {"after", o.after}, {"step", o.step},
+                       {"opacity", o.opacity}, {"ghosts", ghosts}};
+  out["motion_path"] = {{"enabled", s.motionPath.enabled}, {"whole_clip", s.motionPath.wholeClip}};
+  const MotionControlSettings& m = s.motionControl;
+  out["motion_control"] = {{"window_open", m.windowOpen}, {"profile", toString(m.profile)},
+                           {"show_ticks", m.showTicks},
+                           {"profile_rects", json::array({rect(m.profileRects[0]), rect(m.profileRects[1]), rect(m.profileRects[2])})},
+                           {"apply_rect", rect(m.applyRect)}};
+}
+}  // namespace
+
+std::string editorStateJson(const EditorState& s, int windowWidth, int windowHeight, long long frames) {
+  json out;
+  const Document& doc = s.doc;
+  out["title"] = editorWindowTitle(s);
+  out["path"] = doc.path();
+  out["dirty"] = doc.dirty();
+  out["undo_depth"] = doc.historyPosition();
+  out["redo_depth"] = static_cast<int>(doc.historyLabels().size()) - doc.historyPosition();
+  out["frames"] = frames;
+  out["window"] = {{"width", windowWidth}, {"height", windowHeight}};
+  out["viewport"] = {{"x", s.viewportRect.x}, {"y", s.viewportRect.y}, {"width", s.viewportRect.z},
+                     {"height", s.viewportRect.w}};
+  out["playback"] = {{"clip", s.hasMotion() ? s.clip : -1}, {"time", s.time}, {"playing", s.playing}};
+  out["timeline"] = timelineJson(s, windowWidth, windowHeight);
+  out["tool"] = modalToolName(s.tool.mode);
+  out["compare"] = compareStateJson(s.compare);  // Teach > Compare Solvers (docs/cli.md)
+  out["dope_sheet"] = dopeSheetJson(s);
+  json selection = json::array();
+  for (int j : doc.selection.joints()) selection.push_back(jointName(s, j));
+  out["selection"] = selection;
+  out["active"] = jointName(s, doc.selection.active());
+  out["hovered"] = jointName(s, s.hoveredJoint);
+  out["auto_ik"] = s.view.autoIk;
+  out["bones"] = !s.view.showBones ? "none" : s.view.xrayBones ? "x-ray" : "on";
+  out["show_weights"] = s.view.showWeights;
+  json skinning = json::array();
+  for (const MeshInstance& m : doc.scene().meshInstances)
+    skinning.push_back(m.skinning == SkinningMethod::DualQuaternion ? "dual-quaternion" : "linear");
+  out["mesh_skinning"] = skinning;
+  json skins = json::array();
+  for (const MeshInstance& m : doc.scene().meshInstances) skins.push_back(m.skin);
+  out["mesh_skins"] = skins;  // per mesh instance: its skin, -1 = not bound
+  out["errors"] = s.panels.errors;  // waiting in the error popup, oldest first
+  out["status"] = s.statusMessage;
+  const OrbitCamera& c = s.camera;
+  out["camera"] = {{"azimuth", c.azimuthDeg},   {"elevation", c.elevationDeg}, {"distance", c.distance},
+                   {"target", vec(c.target)},   {"fov_y", c.fovYDeg},          {"orthographic", c.orthographic},
+                   {"eye", vec(c.eye())}};
+  json joints = json::array();
+  for (int j = 0; j < doc.skeleton().size(); ++j) {
+    json e;
+    e["name"] = doc.skeleton().names[j];
+    e["parent"] = doc.skeleton().parents[j];
+    if (j < doc.pose().size()) {
+      const glm::quat& q = doc.pose().local[j].rotation;
+      e["rotation"] = json::array({q.x, q.y, q.z, q.w});
+      e["translation"] = vec(doc.pose().local[j].translation);
+    }
+    if (j < static_cast<int>(s.world.size())) e["world_position"] = vec(glm::vec3(s.world[j][3]));
+    joints.push_back(e);
+  }
+  out["joints"] = joints;
+  json targets = json::array();
+  for (size_t i = 0; i < doc.ikTargets().size(); ++i) {
+    const IkTarget& t = doc.ikTargets()[i].target;
+    const IkTarget resolved = doc.ikTargets()[i].resolved(doc.skeleton());
+    json e = {{"effector", jointName(s, t.effector)},
+              {"root", jointName(s, resolved.root)},
+              {"solver", toString(doc.ikTargets()[i].solver)},
+              {"chain_length", doc.ikTargets()[i].chainLength},
+              {"pinned", doc.ikTargets()[i].pinned},
+              {"position", vec(t.position)}};
+    if (t.hasPole) e["pole"] = vec(t.pole);  // the two-bone pole target, when one is set
+    for (const IkTargetReport& r : doc.lastIkReports())
+      if (r.target == static_cast<int>(i)) {
+        e["iterations"] = r.iterations;
+        e["error"] = r.error;
+        e["milliseconds"] = r.milliseconds;
+        e["converged"] = r.converged;
+      }
+    targets.push_back(e);
+  }
+  out["ik_targets"] = targets;
+  out["curve_editor"] = curveEditorJson(s);
+  addAnimationDisplayState(s, out);  // onion skin, motion path, motion control
+  return out.dump(1) + "\n";
+}
+
+}  // namespace kinema
