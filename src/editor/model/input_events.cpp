@@ -70,6 +70,23 @@ std::string readEvent(const json& j, std::vector<InputEvent>& out) {
   if (std::string m = number("y", y); !m.empty()) return m;
   e.x = static_cast<float>(x);
   e.y = static_cast<float>(y);
+  // A widget by name instead of x/y: the editor puts the pointer at the point `at` (fractions
+  // of its rectangle, default the centre) where the widget was last drawn.
+  if (j.contains("item")) {
+    if (!j["item"].is_string() || j["item"].get<std::string>().empty() || j["item"].get<std::string>().size() > 256)
+      return "'item' must be a widget name (a non-empty string of at most 256 bytes)";
+    if (type != "mouse_move" && type != "button_down" && type != "button_up" && type != "click")
+      return "'item' goes with mouse_move, button_down, button_up or click";
+    e.item = j["item"].get<std::string>();
+  }
+  if (j.contains("at")) {
+    const json& a = j["at"];
+    if (!a.is_array() || a.size() != 2 || !a[0].is_number() || !a[1].is_number() || a[0].get<double>() < 0 ||
+        a[0].get<double>() > 1 || a[1].get<double>() < 0 || a[1].get<double>() > 1)
+      return "'at' must be [fx, fy] with fractions from 0 to 1 of the item's rectangle";
+    if (e.item.empty()) return "'at' needs 'item'";
+    e.at = glm::vec2(a[0].get<float>(), a[1].get<float>());
+  }
   if (j.contains("mods")) {
     const json& m = j["mods"];
     if (!m.is_array()) return "'mods' must be an array of \"shift\", \"ctrl\", \"alt\", \"super\"";

@@ -2,6 +2,7 @@
 #include <string>
 #include <vector>
 
+#include "core/math.h"
 #include "core/result.h"
 
 namespace kinema {
@@ -21,6 +22,10 @@ struct InputEvent {
   int key = -1;         // GLFW key code; see keyCodeFromName
   int mods = 0;         // InputMods bits
   std::string text;     // Text: UTF-8 characters typed
+  // Scripts: a widget by name (model/item_rects.h); x, y are then the point `at` (fractions of
+  // the widget's rectangle) where it was last drawn, filled in when the event is handled.
+  std::string item;
+  glm::vec2 at{0.5f, 0.5f};
 };
 
 const char* toString(InputEventType type);  // "mouse_move", "button_down", ...

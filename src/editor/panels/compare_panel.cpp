@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <vector>
 
+#include "editor/panels/item_names.h"
 #include "editor/panels/panel_layout.h"
 #include "render/solver_figure.h"
 
@@ -106,30 +107,42 @@ void drawToolbar(CompareMode& m) {
   ImGui::Begin("Compare Solvers##toolbar", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar);
   const TeachingCase* shown = findTeachingPreset(m.preset);
   ImGui::SetNextItemWidth(260);
-  if (ImGui::BeginCombo("##preset", shown ? shown->title.c_str() : "Preset")) {
-    for (const TeachingCase& p : teachingPresets())
+  const bool presetOpen = ImGui::BeginCombo("##preset", shown ? shown->title.c_str() : "Preset");
+  recordItem("Compare/Preset");
+  if (presetOpen) {
+    for (const TeachingCase& p : teachingPresets()) {
       if (ImGui::Selectable(p.title.c_str(), p.name == m.preset)) openComparePreset(m, p.name);
+      recordItem("Compare/Preset/" + p.name);
+    }
     ImGui::EndCombo();
   }
   ImGui::SameLine();
   if (ImGui::Button("Step")) handleCompareKey(m, keyCodeFromName("RIGHT"), 0);
+  recordItem("Compare/Step");
   ImGui::SameLine();
   if (ImGui::Button("Iteration")) handleCompareKey(m, keyCodeFromName("RIGHT"), kModShift);
+  recordItem("Compare/Iteration");
   ImGui::SameLine();
   if (ImGui::Button(m.playing ? "Pause" : "Play")) handleCompareKey(m, keyCodeFromName("SPACE"), 0);
+  recordItem("Compare/Play");
   ImGui::SameLine();
   if (ImGui::Button("Run to end")) handleCompareKey(m, keyCodeFromName("END"), 0);
+  recordItem("Compare/Run to end");
   ImGui::SameLine();
   if (ImGui::Button("Reset")) handleCompareKey(m, keyCodeFromName("R"), 0);
+  recordItem("Compare/Reset");
   ImGui::SameLine();
   if (ImGui::Button("Exit")) handleCompareKey(m, keyCodeFromName("ESCAPE"), 0);
+  recordItem("Compare/Exit");
   ImGui::SetNextItemWidth(200);
   ImGui::SliderFloat("steps/s", &m.stepsPerSecond, 0.25f, 60.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
   ImGui::SameLine();
   bool planar = !m.view3d;
   if (ImGui::RadioButton("2D", planar)) setCompareView3d(m, false);
+  recordItem("Compare/2D");
   ImGui::SameLine();
   if (ImGui::RadioButton("3D", !planar)) setCompareView3d(m, true);
+  recordItem("Compare/3D");
   ImGui::SameLine();
   if (!m.error.empty())
     ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", m.error.c_str());

@@ -13,6 +13,7 @@
 #include "anim/sampling.h"
 #include "editor/model/curve_editor.h"
 #include "editor/panels/editor_panels.h"
+#include "editor/panels/item_names.h"
 #include "editor/panels/panel_layout.h"
 
 namespace kinema {
@@ -148,8 +149,8 @@ void keyPropertiesStrip(EditorState& state, const Clip& clip) {
   const KeySettings s = ch.settings(k.key);
   int interpolation = static_cast<int>(s.interpolation);
   ImGui::SetNextItemWidth(100);
-  if (ImGui::Combo("##interpolation", &interpolation, kInterpolationNames, IM_ARRAYSIZE(kInterpolationNames),
-                   IM_ARRAYSIZE(kInterpolationNames)))
+  if (namedCombo("##interpolation", "Curve Editor/Interpolation", &interpolation, kInterpolationNames,
+                 IM_ARRAYSIZE(kInterpolationNames)))
     editSelectedKeys(state, "Key interpolation", [&](KeySettings& ks) { ks.interpolation = Interpolation(interpolation); });
   if (s.interpolation == Interpolation::TCB) {
     float tcb[3] = {s.tension, s.continuity, s.bias};
@@ -158,7 +159,9 @@ void keyPropertiesStrip(EditorState& state, const Clip& clip) {
       ImGui::SameLine();
       ImGui::SetNextItemWidth(70);
       // Dragging a slider is one undo step (a Document drag from press to release).
-      if (ImGui::SliderFloat(names[i], &tcb[i], -1.0f, 1.0f, "%.2f")) {
+      const bool slid = ImGui::SliderFloat(names[i], &tcb[i], -1.0f, 1.0f, "%.2f");
+      recordItem(std::string("Curve Editor/") + "TCB"[i]);
+      if (slid) {
         if (!state.doc.dragging()) state.doc.beginDrag("Key TCB");
         const std::vector<CurveKeyRef> keys = state.curveEditor.selected;
         const int clipIndex = state.clip;
@@ -179,21 +182,21 @@ void keyPropertiesStrip(EditorState& state, const Clip& clip) {
     int left = static_cast<int>(s.leftHandleType), right = static_cast<int>(s.rightHandleType);
     ImGui::SameLine();
     ImGui::SetNextItemWidth(95);
-    if (ImGui::Combo("L##lefthandle", &left, kHandleNames, IM_ARRAYSIZE(kHandleNames)))
+    if (namedCombo("L##lefthandle", "Curve Editor/Left handle", &left, kHandleNames, IM_ARRAYSIZE(kHandleNames)))
       editSelectedKeys(state, "Key handle type", [&](KeySettings& ks) { ks.leftHandleType = HandleType(left); });
     ImGui::SameLine();
     ImGui::SetNextItemWidth(95);
-    if (ImGui::Combo("R##righthandle", &right, kHandleNames, IM_ARRAYSIZE(kHandleNames)))
+    if (namedCombo("R##righthandle", "Curve Editor/Right handle", &right, kHandleNames, IM_ARRAYSIZE(kHandleNames)))
       editSelectedKeys(state, "Key handle type", [&](KeySettings& ks) { ks.rightHandleType = HandleType(right); });
   } else if (s.interpolation == Interpolation::Ease) {
     int easing = static_cast<int>(s.easing), mode = static_cast<int>(s.easingMode);
     ImGui::SameLine();
     ImGui::SetNextItemWidth(80);
-    if (ImGui::Combo("##easing", &easing, kEasingNames, IM_ARRAYSIZE(kEasingNames)))
+    if (namedCombo("##easing", "Curve Editor/Easing", &easing, kEasingNames, IM_ARRAYSIZE(kEasingNames)))
       editSelectedKeys(state, "Key easing", [&](KeySettings& ks) { ks.easing = EasingFunction(easing); });
     ImGui::SameLine();
     ImGui::SetNextItemWidth(70);
-    if (ImGui::Combo("##easingmode", &mode, kEasingModeNames, IM_ARRAYSIZE(kEasingModeNames)))
+    if (namedCombo("##easingmode", "Curve Editor/Easing mode", &mode, kEasingModeNames, IM_ARRAYSIZE(kEasingModeNames)))
       editSelectedKeys(state, "Key easing", [&](KeySettings& ks) { ks.easingMode = EasingMode(mode); });
   }
   // The first selected key's time (frames) and value.
@@ -201,7 +204,9 @@ void keyPropertiesStrip(EditorState& state, const Clip& clip) {
   int frame = static_cast<int>(std::llround(ch.times[k.key] / ft));
   ImGui::SameLine();
   ImGui::SetNextItemWidth(60);
-  if (ImGui::InputInt("##frame", &frame, 0, 0, ImGuiInputTextFlags_EnterReturnsTrue)) {
+  const bool retimed = ImGui::InputInt("##frame", &frame, 0, 0, ImGuiInputTextFlags_EnterReturnsTrue);
+  recordItem("Curve Editor/Key frame");
+  if (retimed) {
     const int clipIndex = state.clip;
     std::vector<CurveKeyRef> moved;
     const std::string error = state.doc.edit("Key time", [&](DocumentEdit& e) {
@@ -217,7 +222,9 @@ void keyPropertiesStrip(EditorState& state, const Clip& clip) {
   float value = keyDisplayValue(ch, k.key, k.component, ce.rotationView, ce.eulerOrder);
   ImGui::SameLine();
   ImGui::SetNextItemWidth(80);
-  if (ImGui::InputFloat("##value", &value, 0, 0, "%.4f", ImGuiInputTextFlags_EnterReturnsTrue)) {
+  const bool revalued = ImGui::InputFloat("##value", &value, 0, 0, "%.4f", ImGuiInputTextFlags_EnterReturnsTrue);
+  recordItem("Curve Editor/Key value");
+  if (revalued) {
     const int clipIndex = state.clip;
     const std::string error = state.doc.edit("Key value", [&](DocumentEdit& e) {
       setKeyDisplayValue(e.clips[clipIndex].channels[k.channel], k.key, k.component, ce.rotationView, ce.eulerOrder, value);
@@ -293,6 +300,7 @@ void drawCurveEditorPanel(EditorState& state) {
     ImGui::PushStyleColor(ImGuiCol_Text, curveColour(ch, s.ref.component, true));
     const std::string label = curveLabel(skeleton, ch, s.ref.component, ce.rotationView, ce.eulerOrder);
     if (ImGui::Checkbox(label.c_str(), &visible)) ce.toggleHidden(s.ref);
+    recordItem("Curve Editor/Channel/" + label);
     ImGui::PopStyleColor();
   }
   ImGui::EndChild();
@@ -300,10 +308,14 @@ void drawCurveEditorPanel(EditorState& state) {
   ImGui::BeginGroup();
   // Toolbar.
   if (ImGui::Button("Fit (Home)")) ce.fitPending = true;
+  recordItem("Curve Editor/Fit");
   ImGui::SameLine();
   if (ImGui::Checkbox("Normalize", &ce.normalized)) ce.fitPending = true;
+  recordItem("Curve Editor/Normalize");
   ImGui::SameLine();
-  if (ImGui::Button(ce.rotationView == RotationView::Euler ? "Rotation: Euler" : "Rotation: Quaternion")) {
+  const bool switchView = ImGui::Button(ce.rotationView == RotationView::Euler ? "Rotation: Euler" : "Rotation: Quaternion");
+  recordItem("Curve Editor/Rotation view");
+  if (switchView) {
     ce.rotationView = ce.rotationView == RotationView::Euler ? RotationView::Quaternion : RotationView::Euler;
     ce.selected.clear();
     ce.fitPending = true;
@@ -312,7 +324,7 @@ void drawCurveEditorPanel(EditorState& state) {
     int order = static_cast<int>(ce.eulerOrder);
     ImGui::SameLine();
     ImGui::SetNextItemWidth(60);
-    if (ImGui::Combo("##eulerorder", &order, kEulerOrderNames, IM_ARRAYSIZE(kEulerOrderNames))) {
+    if (namedCombo("##eulerorder", "Curve Editor/Euler order", &order, kEulerOrderNames, IM_ARRAYSIZE(kEulerOrderNames))) {
       ce.eulerOrder = EulerOrder(order);
       ce.fitPending = true;
     }
@@ -325,6 +337,7 @@ void drawCurveEditorPanel(EditorState& state) {
   ce.plot = plot;
   ImGui::InvisibleButton("##curve_plot", ImVec2(plot.w, plot.h),
                          ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonMiddle);
+  recordItem("Curve Editor/Plot");
   const bool hovered = ImGui::IsItemHovered();
   if (hovered && !io.WantTextInput && ImGui::IsKeyPressed(keys::HOME, false)) ce.fitPending = true;
   if (ce.fitPending) fit();

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "editor/panels/editor_panels.h"
+#include "editor/panels/item_names.h"
 #include "editor/model/ik_posing.h"
 #include "editor/panels/panel_drag.h"
 #include "editor/panels/panel_layout.h"
@@ -33,57 +34,76 @@ void targetSettings(EditorState& state, int t) {
   const PoseIkTarget current = doc.ikTargets()[t];
   PoseIkTarget next = current;
 
-  if (ImGui::BeginCombo("Effector", jointName(s, current.target.effector))) {
-    for (int j = 0; j < s.size(); ++j)
+  const bool effectorOpen = ImGui::BeginCombo("Effector", jointName(s, current.target.effector));
+  recordItem("IK Targets/Effector");
+  if (effectorOpen) {
+    for (int j = 0; j < s.size(); ++j) {
       if (ImGui::Selectable(s.names[j].c_str(), j == current.target.effector)) {
         next.target.effector = j;
         next.target.root = -1;
         next.target.mid = -1;
         apply(state, t, next);
       }
+      recordItem("IK Targets/Effector/" + s.names[j]);
+    }
     ImGui::EndCombo();
   }
   // Chain: a length up from the effector, or 0 and an explicit IK root among its ancestors.
   int length = current.chainLength;
-  if (ImGui::InputInt("Chain length", &length) && length >= 0 && length <= s.size()) {
+  const bool lengthChanged = ImGui::InputInt("Chain length", &length);
+  recordStepper("IK Targets/Chain length");
+  if (lengthChanged && length >= 0 && length <= s.size()) {
     next = current;
     next.chainLength = length;
     apply(state, t, next);
   }
   if (current.chainLength == 0) {
     const int root = current.target.root;
-    if (ImGui::BeginCombo("IK root", root < 0 ? "(automatic)" : jointName(s, root))) {
+    const bool rootOpen = ImGui::BeginCombo("IK root", root < 0 ? "(automatic)" : jointName(s, root));
+    recordItem("IK Targets/IK root");
+    if (rootOpen) {
       if (ImGui::Selectable("(automatic)", root < 0)) {
         next = current;
         next.target.root = -1;
         apply(state, t, next);
       }
-      for (int j = s.parents[current.target.effector]; j >= 0; j = s.parents[j])
+      recordItem("IK Targets/IK root/(automatic)");
+      for (int j = s.parents[current.target.effector]; j >= 0; j = s.parents[j]) {
         if (ImGui::Selectable(s.names[j].c_str(), j == root)) {
           next = current;
           next.target.root = j;
           apply(state, t, next);
         }
+        recordItem("IK Targets/IK root/" + s.names[j]);
+      }
       ImGui::EndCombo();
     }
   }
-  if (ImGui::BeginCombo("Solver", toString(current.solver))) {
-    for (IkSolver solver : kSolvers)
+  const bool solverOpen = ImGui::BeginCombo("Solver", toString(current.solver));
+  recordItem("IK Targets/Solver");
+  if (solverOpen) {
+    for (IkSolver solver : kSolvers) {
       if (ImGui::Selectable(toString(solver), solver == current.solver)) {
         next = current;
         next.solver = solver;
         apply(state, t, next);
       }
+      recordItem(std::string("IK Targets/Solver/") + toString(solver));
+    }
     ImGui::EndCombo();
   }
   bool pinned = current.pinned, active = current.active;
-  if (ImGui::Checkbox("Pinned", &pinned)) {
+  const bool pinToggled = ImGui::Checkbox("Pinned", &pinned);
+  recordItem("IK Targets/Pinned");
+  if (pinToggled) {
     next = current;
     next.pinned = pinned;
     apply(state, t, next);
   }
   ImGui::SameLine();
-  if (ImGui::Checkbox("Active", &active)) {
+  const bool activeToggled = ImGui::Checkbox("Active", &active);
+  recordItem("IK Targets/Active");
+  if (activeToggled) {
     next = current;
     next.active = active;
     apply(state, t, next);
@@ -92,13 +112,16 @@ void targetSettings(EditorState& state, int t) {
   // Position: a drag moves the target and solves, one undo step.
   float position[3] = {current.target.position.x, current.target.position.y, current.target.position.z};
   const bool moved = ImGui::DragFloat3("Position", position, 0.01f, 0.0f, 0.0f, "%.3f");
+  recordFields("IK Targets/Position", 3);
   dragAsOneStep(
       state, moved, [&] { return beginIkTargetDrag(doc, t); },
       [&] { return updateIkTargetDrag(doc, t, glm::vec3(position[0], position[1], position[2])); });
 
   if (current.solver == IkSolver::TwoBone) {
     bool hasPole = current.target.hasPole;
-    if (ImGui::Checkbox("Pole target", &hasPole)) {
+    const bool poleToggled = ImGui::Checkbox("Pole target", &hasPole);
+    recordItem("IK Targets/Pole target");
+    if (poleToggled) {
       next = current;
       next.target.hasPole = hasPole;
       if (hasPole && current.target.pole == glm::vec3(0.0f)) {
@@ -111,6 +134,7 @@ void targetSettings(EditorState& state, int t) {
     if (current.target.hasPole) {
       float pole[3] = {current.target.pole.x, current.target.pole.y, current.target.pole.z};
       const bool changed = ImGui::DragFloat3("Pole", pole, 0.01f, 0.0f, 0.0f, "%.3f");
+      recordFields("IK Targets/Pole", 3);
       dragAsOneStep(
           state, changed, [&] { return doc.beginDrag("IK pole " + std::string(jointName(s, current.target.effector))); },
           [&] {
@@ -144,7 +168,9 @@ void drawIkTargetsPanel(EditorState& state) {
   const Skeleton& s = doc.skeleton();
   const auto& targets = doc.ikTargets();
   const int active = doc.selection.active();
-  if (ImGui::Button("Add to selected") && active >= 0) {
+  const bool add = ImGui::Button("Add to selected");
+  recordItem("IK Targets/Add");
+  if (add && active >= 0) {
     int index = -1;
     const IkSolver solver = p.ikChainLength == 2 ? IkSolver::TwoBone : IkSolver::JacobianDls;
     const std::string error = addIkTargetAtEffector(doc, active, p.ikChainLength, solver, &index);
@@ -154,10 +180,13 @@ void drawIkTargetsPanel(EditorState& state) {
   ImGui::SameLine();
   ImGui::SetNextItemWidth(70);
   ImGui::InputInt("bones", &p.ikChainLength);
+  recordStepper("IK Targets/Bones", 70);
   if (p.ikChainLength < 1) p.ikChainLength = 1;
   ImGui::SameLine();
   const bool haveSelected = p.selectedIkTarget >= 0 && p.selectedIkTarget < static_cast<int>(targets.size());
-  if (ImGui::Button("Remove") && haveSelected) {
+  const bool remove = ImGui::Button("Remove");
+  recordItem("IK Targets/Remove");
+  if (remove && haveSelected) {
     showEditorError(state, removeIkTarget(doc, p.selectedIkTarget));
     p.selectedIkTarget = -1;
   }
@@ -167,6 +196,7 @@ void drawIkTargetsPanel(EditorState& state) {
       const std::string label = std::to_string(i) + ": " + jointName(s, t.target.effector) + "  (" +
                                 toString(t.solver) + (t.pinned ? ", pinned" : "") + (t.active ? "" : ", off") + ")";
       if (ImGui::Selectable(label.c_str(), p.selectedIkTarget == static_cast<int>(i))) p.selectedIkTarget = static_cast<int>(i);
+      recordItem("IK Targets/Target " + std::to_string(i));
     }
     if (targets.empty()) ImGui::TextDisabled("no targets: select a joint, then Add");
     ImGui::EndListBox();

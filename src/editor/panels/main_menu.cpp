@@ -7,6 +7,7 @@
 #include "editor/model/key_codes.h"
 
 #include "editor/panels/editor_panels.h"
+#include "editor/panels/item_names.h"
 #include "editor/panels/panel_layout.h"
 #include "editor/model/pose_edits.h"
 #include "editor/model/timeline.h"
@@ -15,6 +16,25 @@
 namespace kinema {
 
 namespace {
+
+// Menu items named "Menu/Label" for scripts (item_names.h); the menu being drawn is kept here.
+const char* gMenu = "";
+bool beginMenu(const char* name, bool enabled = true) {
+  const bool open = ImGui::BeginMenu(name, enabled);
+  recordItem(std::string(gMenu[0] ? std::string(gMenu) + "/" : "") + name);
+  if (open && !gMenu[0]) gMenu = name;
+  return open;
+}
+bool menuItem(const char* label, const char* shortcut = nullptr, bool selected = false, bool enabled = true) {
+  const bool clicked = ImGui::MenuItem(label, shortcut, selected, enabled);
+  recordItem(std::string(gMenu) + "/" + label);
+  return clicked;
+}
+bool menuItem(const char* label, const char* shortcut, bool* selected, bool enabled = true) {
+  const bool clicked = ImGui::MenuItem(label, shortcut, selected, enabled);
+  recordItem(std::string(gMenu) + "/" + label);
+  return clicked;
+}
 
 void undo(EditorState& state) {
   if (state.doc.dragging()) return;
@@ -115,7 +135,7 @@ float viewAspect(const EditorState& state) {  // of the 3D view between the pane
 }
 
 void viewItem(EditorState& state, const char* label, const char* shortcut, ViewPreset preset) {
-  if (ImGui::MenuItem(label, shortcut)) applyViewPreset(state.camera, preset);
+  if (menuItem(label, shortcut)) applyViewPreset(state.camera, preset);
 }
 
 }  // namespace
@@ -125,45 +145,45 @@ void drawMainMenuBar(EditorState& state) {
   if (!ImGui::BeginMainMenuBar()) return;
   Document& doc = state.doc;
   PanelState& p = state.panels;
-  if (ImGui::BeginMenu("File")) {
-    if (ImGui::MenuItem("New", "Ctrl+N")) requestNewDocument(state);
-    if (ImGui::MenuItem("Open...", "Ctrl+O")) requestOpenDialog(state);
-    if (ImGui::BeginMenu("Open Recent", !p.recent.entries().empty())) {
+  if ((gMenu = "", beginMenu("File"))) {
+    if (menuItem("New", "Ctrl+N")) requestNewDocument(state);
+    if (menuItem("Open...", "Ctrl+O")) requestOpenDialog(state);
+    if (beginMenu("Open Recent", !p.recent.entries().empty())) {
       for (const std::string& path : p.recent.entries())
-        if (ImGui::MenuItem(path.c_str())) requestOpenPath(state, path);
+        if (menuItem(path.c_str())) requestOpenPath(state, path);
       ImGui::EndMenu();
     }
     ImGui::Separator();
-    if (ImGui::MenuItem("Save", "Ctrl+S")) requestSave(state);
-    if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) requestSaveAs(state);
-    if (ImGui::BeginMenu("Export")) {
-      if (ImGui::MenuItem("glTF (.gltf)...")) requestExport(state, FileDialogPurpose::ExportGltf);
-      if (ImGui::MenuItem("GLB (.glb)...")) requestExport(state, FileDialogPurpose::ExportGlb);
-      if (ImGui::MenuItem("BVH (.bvh)...")) requestExport(state, FileDialogPurpose::ExportBvh);
+    if (menuItem("Save", "Ctrl+S")) requestSave(state);
+    if (menuItem("Save As...", "Ctrl+Shift+S")) requestSaveAs(state);
+    if (beginMenu("Export")) {
+      if (menuItem("glTF (.gltf)...")) requestExport(state, FileDialogPurpose::ExportGltf);
+      if (menuItem("GLB (.glb)...")) requestExport(state, FileDialogPurpose::ExportGlb);
+      if (menuItem("BVH (.bvh)...")) requestExport(state, FileDialogPurpose::ExportBvh);
       ImGui::EndMenu();
     }
     ImGui::Separator();
-    if (ImGui::MenuItem("Quit", "Ctrl+Q")) requestQuit(state);
+    if (menuItem("Quit", "Ctrl+Q")) requestQuit(state);
     ImGui::EndMenu();
   }
-  if (ImGui::BeginMenu("Edit")) {
+  if ((gMenu = "", beginMenu("Edit"))) {
     const bool idle = !doc.dragging();
-    if (ImGui::MenuItem("Undo", "Ctrl+Z", false, idle && doc.canUndo())) undo(state);
-    if (ImGui::MenuItem("Redo", "Ctrl+Shift+Z", false, idle && doc.canRedo())) redo(state);
+    if (menuItem("Undo", "Ctrl+Z", false, idle && doc.canUndo())) undo(state);
+    if (menuItem("Redo", "Ctrl+Shift+Z", false, idle && doc.canRedo())) redo(state);
     ImGui::Separator();
     const bool selected = !doc.selection.empty();
-    if (ImGui::MenuItem("Copy Pose", "Ctrl+C", false, selected)) copySelection(state);
-    if (ImGui::MenuItem("Paste Pose", "Ctrl+V", false, !p.clipboard.empty())) paste(state, false);
-    if (ImGui::MenuItem("Paste Flipped", "Ctrl+Shift+V", false, !p.clipboard.empty())) paste(state, true);
+    if (menuItem("Copy Pose", "Ctrl+C", false, selected)) copySelection(state);
+    if (menuItem("Paste Pose", "Ctrl+V", false, !p.clipboard.empty())) paste(state, false);
+    if (menuItem("Paste Flipped", "Ctrl+Shift+V", false, !p.clipboard.empty())) paste(state, true);
     ImGui::Separator();
-    if (ImGui::MenuItem("Clear Rotation", "Alt+R", false, selected)) clearRotation(state);
-    if (ImGui::MenuItem("Reset to Rest Pose")) showEditorError(state, resetToRestPose(doc));
+    if (menuItem("Clear Rotation", "Alt+R", false, selected)) clearRotation(state);
+    if (menuItem("Reset to Rest Pose")) showEditorError(state, resetToRestPose(doc));
     ImGui::Separator();
-    ImGui::MenuItem("X-Mirror", nullptr, &doc.xMirror);
-    ImGui::MenuItem("Auto IK", "Ctrl+I", &state.view.autoIk);
+    menuItem("X-Mirror", nullptr, &doc.xMirror);
+    menuItem("Auto IK", "Ctrl+I", &state.view.autoIk);
     ImGui::EndMenu();
   }
-  if (ImGui::BeginMenu("View")) {
+  if ((gMenu = "", beginMenu("View"))) {
     viewItem(state, "Front", "Numpad 1", ViewPreset::Front);
     viewItem(state, "Back", "Ctrl+Numpad 1", ViewPreset::Back);
     viewItem(state, "Right", "Numpad 3", ViewPreset::Right);
@@ -171,63 +191,63 @@ void drawMainMenuBar(EditorState& state) {
     viewItem(state, "Top", "Numpad 7", ViewPreset::Top);
     viewItem(state, "Bottom", "Ctrl+Numpad 7", ViewPreset::Bottom);
     ImGui::Separator();
-    if (ImGui::MenuItem("Orthographic", "Numpad 5", state.camera.orthographic)) toggleOrthographic(state.camera);
+    if (menuItem("Orthographic", "Numpad 5", state.camera.orthographic)) toggleOrthographic(state.camera);
     ImGui::Separator();
     const std::vector<glm::mat4> world = doc.worldTransforms();
     const float minRadius = 0.1f * std::max(jointBounds(world).radius(), 1e-3f);
-    if (ImGui::MenuItem("Frame Selected", "F", false, !doc.selection.empty()))
+    if (menuItem("Frame Selected", "F", false, !doc.selection.empty()))
       frameSelected(state.camera, world, doc.selection.joints(), viewAspect(state), minRadius);
-    if (ImGui::MenuItem("Frame All", "Home")) ViewportController().frameAll(state.camera, jointBounds(world), viewAspect(state));
+    if (menuItem("Frame All", "Home")) ViewportController().frameAll(state.camera, jointBounds(world), viewAspect(state));
     ImGui::Separator();
-    if (ImGui::MenuItem("Bones: None", "Alt+Z", !state.view.showBones)) state.view.showBones = false;
-    if (ImGui::MenuItem("Bones: Solid", nullptr, state.view.showBones && !state.view.xrayBones))
+    if (menuItem("Bones: None", "Alt+Z", !state.view.showBones)) state.view.showBones = false;
+    if (menuItem("Bones: Solid", nullptr, state.view.showBones && !state.view.xrayBones))
       state.view.showBones = true, state.view.xrayBones = false;
-    if (ImGui::MenuItem("Bones: X-Ray", nullptr, state.view.showBones && state.view.xrayBones))
+    if (menuItem("Bones: X-Ray", nullptr, state.view.showBones && state.view.xrayBones))
       state.view.showBones = true, state.view.xrayBones = true;
-    ImGui::MenuItem("Weights of the Active Joint", "Alt+W", &state.view.showWeights);
-    ImGui::MenuItem("Show Limits", nullptr, &state.view.showLimits);
-    ImGui::MenuItem("Show Grid", nullptr, &state.view.showGrid);
+    menuItem("Weights of the Active Joint", "Alt+W", &state.view.showWeights);
+    menuItem("Show Limits", nullptr, &state.view.showLimits);
+    menuItem("Show Grid", nullptr, &state.view.showGrid);
     ImGui::Separator();
     // Blender's order: Dope Sheet, then Graph Editor.
     const bool dopeSheet = state.animationEditor == AnimationEditorKind::DopeSheet;
-    if (ImGui::MenuItem("Dope Sheet", nullptr, dopeSheet))
+    if (menuItem("Dope Sheet", nullptr, dopeSheet))
       state.animationEditor = dopeSheet ? AnimationEditorKind::None : AnimationEditorKind::DopeSheet;
-    if (ImGui::MenuItem("Curve Editor", "Shift+F6", state.animationEditor == AnimationEditorKind::CurveEditor))
+    if (menuItem("Curve Editor", "Shift+F6", state.animationEditor == AnimationEditorKind::CurveEditor))
       state.animationEditor = state.animationEditor == AnimationEditorKind::CurveEditor ? AnimationEditorKind::None
                                                                                           : AnimationEditorKind::CurveEditor;
-    ImGui::MenuItem("Onion Skin", "Alt+O", &state.onionSkin.enabled);
-    ImGui::MenuItem("Motion Path", "Alt+P", &state.motionPath.enabled);
-    if (ImGui::MenuItem("Onion Skin && Motion Path...")) state.onionSkinWindowOpen = true;
-    if (ImGui::MenuItem("Motion Control...", "Alt+M")) state.motionControl.windowOpen = true;
+    menuItem("Onion Skin", "Alt+O", &state.onionSkin.enabled);
+    menuItem("Motion Path", "Alt+P", &state.motionPath.enabled);
+    if (menuItem("Onion Skin && Motion Path...")) state.onionSkinWindowOpen = true;
+    if (menuItem("Motion Control...", "Alt+M")) state.motionControl.windowOpen = true;
     ImGui::EndMenu();
   }
-  if (ImGui::BeginMenu("Pose")) {
-    if (ImGui::MenuItem("Add IK Target to Selected", "Shift+I", false, doc.selection.active() >= 0)) addIkTargetToActive(state);
+  if ((gMenu = "", beginMenu("Pose"))) {
+    if (menuItem("Add IK Target to Selected", "Shift+I", false, doc.selection.active() >= 0)) addIkTargetToActive(state);
     const int t = currentIkTarget(state);
-    if (ImGui::MenuItem("Remove IK Target", nullptr, false, t >= 0)) removeCurrentIkTarget(state);
+    if (menuItem("Remove IK Target", nullptr, false, t >= 0)) removeCurrentIkTarget(state);
     const bool pinned = t >= 0 && doc.ikTargets()[t].pinned;
-    if (ImGui::MenuItem("Pin IK Target", nullptr, pinned, t >= 0)) togglePin(state);
+    if (menuItem("Pin IK Target", nullptr, pinned, t >= 0)) togglePin(state);
     ImGui::SetNextItemWidth(80);
     ImGui::SliderInt("Chain length", &p.ikChainLength, 1, 8);
     bool unskinned = false;
     for (const MeshInstance& m : doc.scene().meshInstances) unskinned = unskinned || m.skin < 0;
-    if (ImGui::MenuItem("Bind to Skeleton with Automatic Weights", "Ctrl+P", false, unskinned))
+    if (menuItem("Bind to Skeleton with Automatic Weights", "Ctrl+P", false, unskinned))
       showEditorError(state, bindUnskinnedMeshes(doc));
     // Keying (timeline.h): at the playhead, with the timeline's key preferences.
     ImGui::Separator();
-    if (ImGui::MenuItem("Insert Keyframe", "I", false, !doc.selection.empty())) state.statusMessage = keySelectedJoints(state);
-    if (ImGui::MenuItem("Insert Keys on All Joints")) state.statusMessage = keyAllJoints(state);
-    if (ImGui::MenuItem("Delete Keyframe", "Alt+I", false, !doc.selection.empty()))
+    if (menuItem("Insert Keyframe", "I", false, !doc.selection.empty())) state.statusMessage = keySelectedJoints(state);
+    if (menuItem("Insert Keys on All Joints")) state.statusMessage = keyAllJoints(state);
+    if (menuItem("Delete Keyframe", "Alt+I", false, !doc.selection.empty()))
       state.statusMessage = deleteSelectedJointKeys(state);
-    ImGui::MenuItem("Auto-key", nullptr, &state.doc.autoKey.enabled);
+    menuItem("Auto-key", nullptr, &state.doc.autoKey.enabled);
     ImGui::EndMenu();
   }
-  if (ImGui::BeginMenu("Teach")) {
-    if (ImGui::MenuItem("Compare Solvers", "Esc leaves", state.compare.active)) state.compare.active = !state.compare.active;
+  if ((gMenu = "", beginMenu("Teach"))) {
+    if (menuItem("Compare Solvers", "Esc leaves", state.compare.active)) state.compare.active = !state.compare.active;
     ImGui::EndMenu();
   }
-  if (ImGui::BeginMenu("Help")) {
-    if (ImGui::MenuItem("Controls", "F1", p.showHelp)) p.showHelp = !p.showHelp;
+  if ((gMenu = "", beginMenu("Help"))) {
+    if (menuItem("Controls", "F1", p.showHelp)) p.showHelp = !p.showHelp;
     ImGui::EndMenu();
   }
   // The file's name and a dirty marker at the right end of the bar.

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "editor/panels/editor_panels.h"
+#include "editor/panels/item_names.h"
 #include "editor/model/outliner_rows.h"
 #include "editor/panels/panel_layout.h"
 #include "editor/model/pose_edits.h"
@@ -36,6 +37,7 @@ void drawOutlinerPanel(EditorState& state) {
   }
   ImGui::SetNextItemWidth(-1);
   ImGui::InputTextWithHint("##search", "search joints", p.search, sizeof(p.search));
+  recordItem("Outliner/Search");
   if (static_cast<int>(p.collapsed.size()) != s.size()) p.collapsed.assign(static_cast<size_t>(s.size()), false);
   if (p.renaming >= s.size()) p.renaming = -1;
 
@@ -50,6 +52,7 @@ void drawOutlinerPanel(EditorState& state) {
     ImGui::Indent(indent);
     if (row.hasChildren && p.search[0] == '\0') {
       if (ImGui::SmallButton(p.collapsed[i] ? "+" : "-")) p.collapsed[i] = !p.collapsed[i];
+      recordItem("Outliner/" + s.names[i] + "/Collapse");
     } else {
       ImGui::Dummy(ImVec2(toggleWidth, 1.0f));
     }
@@ -62,6 +65,7 @@ void drawOutlinerPanel(EditorState& state) {
       ImGui::SetNextItemWidth(-1);
       const bool enter = ImGui::InputText("##rename", p.renameBuffer, sizeof(p.renameBuffer),
                                           ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
+      recordItem("Outliner/Rename");
       if (enter) {
         // The model validates (non-empty, unique); a refusal keeps the field open with the reason.
         p.renameError = renameJoint(doc, i, p.renameBuffer);
@@ -75,6 +79,7 @@ void drawOutlinerPanel(EditorState& state) {
       if (!row.matches) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
       const bool clicked = ImGui::Selectable(s.names[i].c_str(), doc.selection.isSelected(i),
                                              ImGuiSelectableFlags_AllowDoubleClick);
+      recordItem("Outliner/" + s.names[i]);
       if (!row.matches) ImGui::PopStyleColor();
       if (clicked) {
         if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) startRename(p, i, s.names[i]);

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "editor/panels/editor_panels.h"
+#include "editor/panels/item_names.h"
 #include "editor/panels/mesh_section.h"
 #include "editor/panels/panel_drag.h"
 #include "editor/panels/panel_layout.h"
@@ -28,13 +29,18 @@ void rotationSection(EditorState& state, int joint) {
   const glm::quat q = doc.pose().local[joint].rotation;
   const char* preview = p.quaternionEntry ? "Quaternion" : toString(p.eulerOrder);
   ImGui::SetNextItemWidth(120);
-  if (ImGui::BeginCombo("Rotation mode", preview)) {
-    for (EulerOrder order : kOrders)
+  const bool modeOpen = ImGui::BeginCombo("Rotation mode", preview);
+  recordItem("Properties/Rotation mode");
+  if (modeOpen) {
+    for (EulerOrder order : kOrders) {
       if (ImGui::Selectable(toString(order), !p.quaternionEntry && p.eulerOrder == order)) {
         p.eulerOrder = order;
         p.quaternionEntry = false;
       }
+      recordItem(std::string("Properties/Rotation mode/") + toString(order));
+    }
     if (ImGui::Selectable("Quaternion", p.quaternionEntry)) p.quaternionEntry = true;
+    recordItem("Properties/Rotation mode/Quaternion");
     ImGui::EndCombo();
   }
   if (!p.quaternionEntry) {
@@ -49,6 +55,7 @@ void rotationSection(EditorState& state, int joint) {
       for (float& d : degrees) d += 0.0f;  // -0 shows as 0
     }
     const bool changed = ImGui::DragFloat3("Rotation", degrees, 0.5f, 0.0f, 0.0f, "%.2f");
+    recordFields("Properties/Rotation", 3);
     for (int k = 0; k < 3; ++k) p.heldEuler[k] = degrees[k];
     p.heldJoint = joint;
     const glm::vec3 radians = glm::radians(glm::vec3(degrees[0], degrees[1], degrees[2]));
@@ -68,13 +75,16 @@ void rotationSection(EditorState& state, int joint) {
       p.quaternionJoint = joint;
     }
     if (ImGui::InputFloat4("x y z w", typed, "%.3f")) p.quaternionEditing = true;
+    recordFields("Properties/Quaternion", 4);
     bool apply = p.quaternionEditing && ImGui::IsItemDeactivated() &&
                  (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) ||
                   ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_KeyPadEnter), false));
     if (p.quaternionEditing) {
       apply = ImGui::Button("Apply") || apply;
+      recordItem("Properties/Apply");
       ImGui::SameLine();
       if (ImGui::Button("Revert")) p.quaternionEditing = false;
+      recordItem("Properties/Revert");
       ImGui::SameLine();
       ImGui::TextDisabled("normalised on entry");
     }
@@ -94,6 +104,7 @@ void locationSection(EditorState& state, int joint) {
   const glm::vec3 t = doc.pose().local[joint].translation;
   float v[3] = {t.x, t.y, t.z};
   const bool changed = ImGui::DragFloat3("Location", v, 0.01f, 0.0f, 0.0f, "%.3f");
+  recordFields("Properties/Location", 3);
   dragAsOneStep(
       state, changed, [&] { return beginTranslateDrag(doc, joint); },
       [&] { return updateTranslateDrag(doc, joint, glm::vec3(v[0], v[1], v[2])); });
@@ -105,7 +116,9 @@ void limitSection(EditorState& state, int joint) {
   JointLimit limit = current ? *current : JointLimit{};
   bool enabled = current != nullptr;
   if (!ImGui::CollapsingHeader("Joint limit", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  if (ImGui::Checkbox("Enabled", &enabled)) {
+  const bool toggled = ImGui::Checkbox("Enabled", &enabled);
+  recordItem("Properties/Limit enabled");
+  if (toggled) {
     // Enabling starts from a loose cone about the bone's direction; the user narrows it.
     JointLimit next = enabled ? JointLimit::cone(glm::vec3(0, 1, 0), glm::radians(45.0f), glm::radians(-45.0f),
                                                  glm::radians(45.0f))
@@ -117,7 +130,9 @@ void limitSection(EditorState& state, int joint) {
   const char* types[] = {"Hinge", "Cone", "Euler"};
   int type = static_cast<int>(limit.type) - 1;
   ImGui::SetNextItemWidth(120);
-  if (ImGui::Combo("Type", &type, types, 3)) {
+  const bool retyped = ImGui::Combo("Type", &type, types, 3);
+  recordItem("Properties/Limit type");
+  if (retyped) {
     JointLimit next = limit;
     next.type = static_cast<JointLimitType>(type + 1);
     showEditorError(state, setJointLimit(doc, joint, next));
@@ -129,6 +144,7 @@ void limitSection(EditorState& state, int joint) {
   const auto dragRange = [&](const char* label, float& lo, float& hi, float min, float max) {
     float v[2] = {glm::degrees(lo), glm::degrees(hi)};
     changed = ImGui::DragFloat2(label, v, 0.5f, min, max, "%.1f deg");
+    recordFields(std::string("Properties/") + label, 2);
     lo = glm::radians(v[0]);
     hi = glm::radians(v[1]);
   };
@@ -150,6 +166,7 @@ void limitSection(EditorState& state, int joint) {
   } else if (limit.type == JointLimitType::Cone) {
     float cone = glm::degrees(limit.coneAngle);
     changed = ImGui::DragFloat("Cone", &cone, 0.5f, 0.0f, 180.0f, "%.1f deg");
+    recordItem("Properties/Cone");
     edited.coneAngle = glm::radians(cone);
     step();
     edited = limit;
@@ -194,6 +211,7 @@ void drawPropertiesPanel(EditorState& state) {
   if (ImGui::InputText("Name", p.nameBuffer, sizeof(p.nameBuffer), ImGuiInputTextFlags_EnterReturnsTrue))
     showEditorError(state, renameJoint(doc, joint, p.nameBuffer));
   p.nameEditing = ImGui::IsItemActive();
+  recordItem("Properties/Name");
   const int parent = doc.skeleton().parents[joint];
   ImGui::TextDisabled("parent: %s", parent >= 0 ? doc.skeleton().names[parent].c_str() : "(root)");
   ImGui::Separator();

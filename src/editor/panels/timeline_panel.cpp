@@ -8,6 +8,7 @@
 #include <string>
 
 #include "editor/panels/editor_panels.h"
+#include "editor/panels/item_names.h"
 #include "editor/model/keying.h"
 #include "editor/panels/panel_layout.h"
 #include "editor/model/timeline.h"
@@ -31,14 +32,19 @@ void keyPreferencesPopup(EditorState& state) {
   if (!ImGui::BeginPopup("Key preferences")) return;
   KeyPreferences& p = state.doc.autoKey.preferences;
   ImGui::TextUnformatted("New keys");
-  for (Interpolation i : kPreferenceChoices)
+  for (Interpolation i : kPreferenceChoices) {
     if (ImGui::RadioButton(toString(i), p.interpolation == i)) p.interpolation = i;
+    recordItem(std::string("Timeline/Keys/") + toString(i));
+  }
   if (p.interpolation == Interpolation::Bezier) {
     const HandleType handles[] = {HandleType::AutoClamped, HandleType::Auto, HandleType::Vector};
-    for (HandleType h : handles)
+    for (HandleType h : handles) {
       if (ImGui::RadioButton((std::string("handles: ") + toString(h)).c_str(), p.handles == h)) p.handles = h;
+      recordItem(std::string("Timeline/Keys/handles: ") + toString(h));
+    }
   }
   ImGui::Checkbox("Location + rotation only", &p.locRotOnly);
+  recordItem("Timeline/Keys/Location + rotation only");
   ImGui::TextDisabled("Rotations (quaternions) take %s", toString(rotationInterpolation(p.interpolation)));
   ImGui::EndPopup();
 }
@@ -47,6 +53,7 @@ void drawRuler(EditorState& state, const TimelineRuler& r) {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   ImGui::SetCursorScreenPos(ImVec2(r.x, r.y));
   ImGui::InvisibleButton("##ruler", ImVec2(r.w, r.h));
+  recordItem("Timeline/Ruler");
   if (ImGui::IsItemActive()) {
     const long long f = r.frameAtX(ImGui::GetIO().MousePos.x);
     if (f != currentFrame(state)) {
@@ -96,14 +103,19 @@ void drawTimelinePanel(EditorState& state) {
     if (!message.empty()) state.statusMessage = message;
   };
   if (ImGui::Button("|<")) jumpToStart(state);
+  recordItem("Timeline/Start");
   ImGui::SameLine(0, 2);
   if (ImGui::Button("<")) stepFrame(state, -1);
+  recordItem("Timeline/Back");
   ImGui::SameLine(0, 2);
   if (ImGui::Button(state.playing ? "Pause" : "Play ")) togglePlayback(state);
+  recordItem("Timeline/Play");
   ImGui::SameLine(0, 2);
   if (ImGui::Button(">")) stepFrame(state, 1);
+  recordItem("Timeline/Forward");
   ImGui::SameLine(0, 2);
   if (ImGui::Button(">|")) jumpToEnd(state);
+  recordItem("Timeline/End");
   ImGui::SameLine();
   ImGui::Text("%5lld", currentFrame(state));
   ImGui::SameLine();
@@ -113,36 +125,44 @@ void drawTimelinePanel(EditorState& state) {
   ImGui::SameLine(0, 3);
   ImGui::SetNextItemWidth(40);
   if (ImGui::InputInt("##start", &start, 0, 0, enter)) status(setFrameRange(state, start, end));
+  recordItem("Timeline/Start frame");
   ImGui::SameLine();
   ImGui::TextUnformatted("End");
   ImGui::SameLine(0, 3);
   ImGui::SetNextItemWidth(40);
   if (ImGui::InputInt("##end", &end, 0, 0, enter)) status(setFrameRange(state, start, end));
+  recordItem("Timeline/End frame");
   ImGui::SameLine();
   ImGui::TextUnformatted("fps");
   ImGui::SameLine(0, 3);
   int fps = static_cast<int>(std::lround(timelineFps(state)));
   ImGui::SetNextItemWidth(28);
   if (ImGui::InputInt("##fps", &fps, 0, 0, enter)) status(setFrameRate(state, fps));
+  recordItem("Timeline/Fps");
   ImGui::SameLine();
   ImGui::Checkbox("Loop", &state.loop);
+  recordItem("Timeline/Loop");
   ImGui::SameLine();
   // Auto-key: Blender's record button, red while on.
   const bool recording = state.doc.autoKey.enabled;
   if (recording) ImGui::PushStyleColor(ImGuiCol_Button, IM_COL32(190, 40, 40, 255));
   if (ImGui::Button(recording ? "(*) Auto-key" : "( ) Auto-key")) state.doc.autoKey.enabled = !recording;
+  recordItem("Timeline/Auto-key");
   if (recording) ImGui::PopStyleColor();
   ImGui::SameLine(0, 2);
   if (ImGui::Button("Keys")) ImGui::OpenPopup("Key preferences");
+  recordItem("Timeline/Keys");
   keyPreferencesPopup(state);
   ImGui::SameLine();
   const bool dope = state.animationEditor == AnimationEditorKind::DopeSheet,
              curves = state.animationEditor == AnimationEditorKind::CurveEditor;
   if (ImGui::Selectable("Dope", dope, 0, ImVec2(34, 0)))
     state.animationEditor = dope ? AnimationEditorKind::None : AnimationEditorKind::DopeSheet;
+  recordItem("Timeline/Dope");
   ImGui::SameLine();
   if (ImGui::Selectable("Curves", curves, 0, ImVec2(44, 0)))
     state.animationEditor = curves ? AnimationEditorKind::None : AnimationEditorKind::CurveEditor;
+  recordItem("Timeline/Curves");
   ImGui::PopStyleVar();
   drawRuler(state, timelineRuler(state, r.x, r.y, r.w, r.h));
   ImGui::End();

@@ -239,6 +239,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;  // no imgui.ini dropped in the user's folder
+  io.UserData = &state.items;  // where panels record their named widgets (panels/item_names.h)
   io.BackendPlatformName = "kinema_input_events";
   io.SetClipboardTextFn = setClipboard;
   io.GetClipboardTextFn = getClipboard;
@@ -298,7 +299,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     size_t nextScripted = 0;
     const long long lastScriptFrame = o.script.empty() ? 0 : o.script.back().frame;
     double previous = glfwGetTime();
-    for (; error.empty() && !state.panels.quitApproved; ++frame) {
+    for (; error.empty() && result.error.empty() && !state.panels.quitApproved; ++frame) {
       const auto frameStart = std::chrono::steady_clock::now();
       glfwPollEvents();
       if (glfwWindowShouldClose(window)) {
@@ -323,6 +324,26 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       FrameInputChanges changed;
       const bool mouseCaptured = io.WantCaptureMouse, keyboardCaptured = io.WantCaptureKeyboard;
       while (!live.queue.empty()) {
+        if (!live.queue.front().item.empty()) {
+          // A scripted event naming a widget: at the widget as it was last drawn.
+          InputEvent& e = live.queue.front();
+          const ItemRect* r = state.items.find(e.item);
+          if (!r) {
+            result.error = "script: frame " + std::to_string(e.frame) + ": no widget named '" + e.item +
+                           "' has been drawn (the state dump's \"items\" lists the names)";
+            live.queue.clear();
+            break;
+          }
+          const glm::vec2 p = r->min + (r->max - r->min) * e.at;
+          e.x = p.x;
+          e.y = p.y;
+          e.item.clear();
+          if (e.type != InputEventType::MouseMove) {  // presses happen where the pointer is
+            InputEvent move = e;
+            move.type = InputEventType::MouseMove;
+            live.queue.push_front(move);
+          }
+        }
         if (!feedImGui(io, live.queue.front(), changed)) break;
         if (state.compare.active)  // the compare mode takes the viewport's input
           handleCompareEvent(state.compare, live.queue.front(), mouseCaptured, keyboardCaptured);
@@ -334,6 +355,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       evaluateEditorPose(state);
       const Bounds bounds = viewBounds();
 
+      state.items.frame = frame;
       imguiBackendsNewFrame();
       io.DisplaySize = ImVec2(float(ww), float(wh));
       io.DisplayFramebufferScale = ImVec2(ww > 0 ? float(fbw) / ww : 1.0f, wh > 0 ? float(fbh) / wh : 1.0f);

@@ -182,6 +182,13 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
   out["mesh_skins"] = skins;  // per mesh instance: its skin, -1 = not bound
   out["errors"] = s.panels.errors;  // waiting in the error popup, oldest first
   out["status"] = s.statusMessage;
+  // Every named widget where it was last drawn (window pixels) and in which frame: scripts
+  // click them by name ("item" events, docs/cli.md).
+  json items = json::object();
+  for (const auto& [name, r] : s.items.items)
+    items[name] = {{"x", r.min.x}, {"y", r.min.y}, {"width", r.max.x - r.min.x}, {"height", r.max.y - r.min.y},
+                   {"frame", r.frame}};
+  out["items"] = items;
   const OrbitCamera& c = s.camera;
   out["camera"] = {{"azimuth", c.azimuthDeg},   {"elevation", c.elevationDeg}, {"distance", c.distance},
                    {"target", vec(c.target)},   {"fov_y", c.fovYDeg},          {"orthographic", c.orthographic},
