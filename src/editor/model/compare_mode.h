@@ -1,8 +1,9 @@
 #pragma once
 // The editor's "Compare solvers" mode (issue 10), window-free: the comparison it shows, the
 // layout of its views, the mapping between view pixels and figure units, hit-testing the
-// target and the joints, mouse drags (target, start pose, orbit), the play clock and its
-// keys. compare_panel.cpp draws it with ImGui; everything here is unit-tested.
+// target and the joints, mouse drags (target, start pose, orbit), the play clock and the
+// steps its keys take (bound in commands/compare_commands.cpp). compare_panel.cpp draws it
+// with ImGui; everything here is unit-tested.
 #include <string>
 #include <vector>
 

@@ -28,6 +28,5 @@ void drawAnimationDisplayWindows(EditorState& state);  // onion skin & motion pa
 void drawJointListPanel(EditorState& state);
 void drawTimelinePanel(CommandContext& ctx);
 void drawCurveEditorPanel(CommandContext& ctx);  // curve editor in the animation editor area (Shift+F6)
-void drawViewportHelp(const EditorState& state, float fps);
 
 }  // namespace kinema

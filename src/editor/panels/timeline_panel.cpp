@@ -148,18 +148,4 @@ void drawTimelinePanel(CommandContext& ctx) {
   ImGui::PopStyleVar();
 }
 
-void drawViewportHelp(const EditorState& state, float fps) {
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(display.x - 8, 8), ImGuiCond_Always, ImVec2(1, 0));
-  ImGui::SetNextWindowBgAlpha(0.35f);
-  ImGui::Begin("##help", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
-                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
-  ImGui::Text("%s", state.doc.scene().source.c_str());
-  ImGui::TextDisabled("orbit: middle drag / Alt+left   pan: Shift+middle");
-  ImGui::TextDisabled("zoom: wheel   frame all: Home / F   select: left click");
-  ImGui::TextDisabled("%.0f fps", fps);
-  ImGui::End();
-}
-
 }  // namespace kinema
