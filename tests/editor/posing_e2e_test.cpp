@@ -429,5 +429,31 @@ TEST_F(PosingE2e, PinIkTargetPinsTheActiveJointsTargetNotTheRowHighlightedInTheI
   expectNear(vec3(hand["position"]), rest("Hand.R"), 1e-5, "Hand.R's target");
 }
 
+TEST_F(PosingE2e, AKeymapFileRebindsKeysAndABadLineIsReportedByItsNumber) {
+  // The user's keymap (XDG_CONFIG_HOME/kinema/keymap.txt): R freed from rotate and given to
+  // select all, and a line naming no command. The bad line shows in the error popup (Enter
+  // dismisses it); then R over the 3D view selects every joint and starts no rotation, and a
+  // script's command event runs View > Orthographic by id.
+  runCommand("mkdir -p '" + dir_ + "/kinema'");
+  writeFile(dir_ + "/kinema/keymap.txt", "tool.rotate = none\nselect.all = R\nbogus.command = X\n");
+  Script script;
+  script.wait(2).key("ENTER").wait(2).move(pixelOf("Hips") + glm::dvec2(0, 150)).wait(1).key("R").wait(1);
+  script.move(pixelOf("Hips") + glm::dvec2(40, 150)).wait(1);
+  const json before = run(script, "keymap_file");
+  EXPECT_EQ(before["tool"], "none") << "R no longer rotates";
+  EXPECT_EQ(before["selection"].size(), front_["joints"].size()) << "R selects all";
+  EXPECT_TRUE(before["errors"].empty()) << "Enter dismissed the keymap's error";
+  // The error itself, left open.
+  const json shown = run(Script().wait(2), "keymap_file_error");
+  ASSERT_EQ(shown["errors"].size(), 1u);
+  EXPECT_EQ(shown["errors"][0].get<std::string>().rfind("keymap: " + dir_ + "/kinema/keymap.txt:3: unknown command 'bogus.command'", 0),
+            0u)
+      << shown["errors"][0];
+  // A command event in the script.
+  std::ofstream(dir_ + "/kinema/keymap.txt") << "";
+  const json ortho = run(Script().command("view.orthographic"), "command_event");
+  EXPECT_TRUE(ortho["camera"]["orthographic"].get<bool>());
+}
+
 }  // namespace
 }  // namespace kinema::test
