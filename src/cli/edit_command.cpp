@@ -6,6 +6,8 @@
 
 #include "cli/command_line.h"
 #include "cli/render_command.h"
+#include "editor/commands/controls_help.h"
+#include "editor/commands/keymap.h"
 #include "editor/window/editor_window.h"
 #include "editor/model/input_events.h"
 
@@ -23,10 +25,19 @@ CLI::App* addEditCommand(CLI::App& app, EditOptions& o) {
   cmd->add_flag("--report-frame-times", o.reportFrameTimes, "Print mean and median frame times (ms) on stderr at exit");
   cmd->add_flag("--empty-frame", o.emptyFrame, "Draw only an empty ImGui frame (baseline for --report-frame-times)");
   cmd->add_option("--compare", o.compare, "Open in Teach > Compare Solvers with this preset (kinema demo list)");
+  cmd->add_flag("--list-commands", o.listCommands,
+                "Print every editor command with its keys (the keymap file applied) as markdown, and exit");
   return cmd;
 }
 
 int runEdit(const EditOptions& o) {
+  if (o.listCommands) {
+    std::vector<std::string> problems;
+    const Keymap keymap = loadUserKeymap(editorCommands(), problems);
+    for (const std::string& p : problems) std::cerr << "kinema edit: keymap: " << p << "\n";
+    std::cout << controlsMarkdown(keymap);
+    return kExitOk;
+  }
   if (o.frameCount < 0) return badInput("--frame-count must not be negative");
   EditorWindowOptions options;
   options.width = o.width;
@@ -46,7 +57,9 @@ int runEdit(const EditOptions& o) {
   if (!o.screenshot.empty() && o.frameCount == 0 && o.script.empty())
     return badInput("--screenshot needs --frame-count or --script (the frame to capture)");
   if (!o.script.empty()) {
-    Result<std::vector<InputEvent>> script = loadInputScript(o.script);
+    // A command event must name a command of the registry (an unknown id fails here).
+    Result<std::vector<InputEvent>> script =
+        loadInputScript(o.script, [](const std::string& id) { return editorCommands().find(id) != nullptr; });
     if (!script) return badInput(script.error());
     options.script = std::move(script.value());
     options.replay = true;

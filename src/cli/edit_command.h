@@ -4,7 +4,7 @@
 namespace kinema::cli {
 
 // `kinema edit [FILE] [--frame-count N] [--screenshot PATH] [--script FILE] [--dump-state FILE]
-//  [--size WxH] [--report-frame-times]`
+//  [--size WxH] [--report-frame-times] [--empty-frame] [--compare PRESET] [--list-commands]`
 struct EditOptions {
   std::string file;
   long long frameCount = 0;
@@ -15,6 +15,7 @@ struct EditOptions {
   bool reportFrameTimes = false;
   bool emptyFrame = false;
   std::string compare;  // open straight into Teach > Compare Solvers with this preset
+  bool listCommands = false;  // print every command and its keys as markdown, open no window
   int width = 1280, height = 720;
 };
 

@@ -49,6 +49,28 @@ TEST_F(Cli, HelpListsSubcommandsAndExitsZero) {
   EXPECT_NE(out_.find("pose"), std::string::npos) << out_;
 }
 
+TEST_F(Cli, EditListCommandsPrintsTheControlsTableWithTheKeymapApplied) {
+  // No window is needed: the table is the registry and the keymap (docs/cli.md). The config
+  // folder is the test's own, first without a keymap file (the defaults), then with one.
+  const std::string listCommands = "XDG_CONFIG_HOME='" + dir_ + "' " + KINEMA_BINARY + " edit --list-commands";
+  ASSERT_EQ(runCommand(listCommands, &out_, &err_), 0) << err_;
+  EXPECT_NE(out_.find("| Ctrl+S | Save: "), std::string::npos) << out_.substr(0, 400);
+  EXPECT_NE(out_.find("`pose.pin_ik_target`"), std::string::npos);
+  EXPECT_EQ(err_, "");
+  runCommand("mkdir -p '" + dir_ + "/kinema'");
+  writeFile(dir_ + "/kinema/keymap.txt", "file.save = F2\nfile.frobnicate = F3\n");
+  ASSERT_EQ(runCommand(listCommands, &out_, &err_), 0) << err_;
+  EXPECT_NE(out_.find("| F2 | Save: "), std::string::npos);
+  EXPECT_NE(err_.find(dir_ + "/kinema/keymap.txt:2: unknown command 'file.frobnicate'"), std::string::npos) << err_;
+}
+
+TEST_F(Cli, EditRefusesAScriptCommandThatIsNoCommand) {
+  writeFile(dir_ + "/s.jsonl", "{\"frame\":1,\"type\":\"command\",\"id\":\"view.grid\"}\n"
+                               "{\"frame\":2,\"type\":\"command\",\"id\":\"pose.pin\"}\n");
+  EXPECT_EQ(kinema("edit --script '" + dir_ + "/s.jsonl'"), 1);
+  EXPECT_NE(err_.find("s.jsonl: line 2: 'id' \"pose.pin\" is not a command"), std::string::npos) << err_;
+}
+
 TEST_F(Cli, PoseFrameGivesHandDerivedWorldTransforms) {
   ASSERT_EQ(kinema("pose '" + bvh_ + "' --frame 1 --json"), 0) << err_;
   const nlohmann::json j = json();

@@ -143,18 +143,17 @@ CompareMode openedPreset(const char* name) {
   return m;
 }
 
-TEST(CompareMode, KeysStepResetAndRunEverySolver) {
+TEST(CompareMode, StepResetPlayAndRunEverySolver) {
   CompareMode m = openedPreset("ccd-steps");
   ASSERT_TRUE(m.ready());
   ASSERT_GE(m.comparison.runs.size(), 2u);
-  const int right = keyCodeFromName("RIGHT");
-  EXPECT_TRUE(handleCompareKey(m, right, 0));
+  EXPECT_TRUE(compareStepSubStep(m));
   for (const SolverRun& r : m.comparison.runs) EXPECT_EQ(r.cursor, 1) << toString(r.solver);
   // Shift+Right from inside iteration 1: to the last entry of iteration 1; again: of
   // iteration 2 (solver_comparison.h).
   for (const SolverRun& r : m.comparison.runs) ASSERT_EQ(r.current().iteration, 1) << toString(r.solver);
   for (int expected = 1; expected <= 2; ++expected) {
-    EXPECT_TRUE(handleCompareKey(m, right, kModShift));
+    EXPECT_TRUE(compareStepIteration(m));
     for (const SolverRun& r : m.comparison.runs) {
       EXPECT_EQ(r.current().iteration, expected) << toString(r.solver);
       if (!r.finished()) {
@@ -162,26 +161,26 @@ TEST(CompareMode, KeysStepResetAndRunEverySolver) {
       }
     }
   }
-  EXPECT_TRUE(handleCompareKey(m, keyCodeFromName("R"), 0));
+  EXPECT_TRUE(compareReset(m));
   for (const SolverRun& r : m.comparison.runs) EXPECT_EQ(r.cursor, 0);
-  EXPECT_TRUE(handleCompareKey(m, keyCodeFromName("END"), 0));
+  EXPECT_TRUE(compareRunToEnd(m));
   for (const SolverRun& r : m.comparison.runs) EXPECT_TRUE(r.finished());
   // Space plays: at 4 steps/s one second of frames takes 4 sub-steps in each run.
-  handleCompareKey(m, keyCodeFromName("R"), 0);
-  EXPECT_TRUE(handleCompareKey(m, keyCodeFromName("SPACE"), 0));
+  compareReset(m);
+  EXPECT_TRUE(toggleComparePlay(m));
   EXPECT_TRUE(m.playing);
   m.stepsPerSecond = 4.0f;
   for (int i = 0; i < 60; ++i) advanceComparePlay(m, 1.0 / 60.0);
   for (const SolverRun& r : m.comparison.runs)
     EXPECT_EQ(r.cursor, std::min(4, static_cast<int>(r.trace.entries.size()) - 1)) << toString(r.solver);
-  EXPECT_TRUE(handleCompareKey(m, keyCodeFromName("ESCAPE"), 0));
+  leaveCompareMode(m);
   EXPECT_FALSE(m.active);
 }
 
 TEST(CompareMode, DraggingTheTargetRestartsEverySolverOnTheNewTarget) {
   CompareMode m = openedPreset("ccd-steps");
   ASSERT_TRUE(m.ready());
-  handleCompareKey(m, keyCodeFromName("RIGHT"), 0);
+  compareStepSubStep(m);
   const glm::vec3 before = m.comparison.setup.target;
   const glm::vec2 px = compareTargetPixel(m, 1);  // the second view: any view works
   // Independently: view 1 is 375 x 336 at (625, 58); 8 units into 351 x 312 -> 39 px/unit.

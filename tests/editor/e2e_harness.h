@@ -104,6 +104,8 @@ class Script {
   Script& keyUp(const char* name) { return add(std::string("\"type\":\"key_up\",\"key\":\"") + name + "\""); }
   Script& type(const std::string& text) { return add("\"type\":\"text\",\"text\":\"" + text + "\""); }
   Script& scroll(double y) { return add("\"type\":\"scroll\",\"y\":" + num(y)); }
+  // Runs an editor command by id, as its menu item or key would (docs/cli.md).
+  Script& command(const std::string& id) { return add("\"type\":\"command\",\"id\":\"" + id + "\""); }
   Script& wait(int frames) {
     frame_ += frames;
     return *this;

@@ -1,8 +1,10 @@
 // The input layer without a window: script parsing, key names, and the viewport tools fed
-// events on an EditorState with a hand-built camera.
+// events on an EditorState with a hand-built camera (through the same EditorInput as the
+// window, so keys reach the tools as commands).
 #include <GLFW/glfw3.h>
 
 #include "core/default_character.h"
+#include "editor/commands/editor_input.h"
 #include "editor/model/input_events.h"
 #include "editor/viewport/viewport_tools.h"
 #include "editor/model/document.h"
@@ -73,6 +75,8 @@ struct FrontView {
   ViewportView view;
   SkeletonDrawList list;
   ViewportTools tools;
+  EditorInput input;
+  Keymap keymap;
   FrontView() {
     Scene scene;
     scene.skeleton = makeDefaultCharacter();
@@ -107,7 +111,11 @@ struct FrontView {
     e.y = y;
     e.key = key;
     e.button = button;
-    tools.handle(state, e, view, list, false, false);
+    CommandContext ctx(state);
+    ctx.tools = &tools;
+    ctx.view = view;
+    ctx.keymap = &keymap;
+    input.handle(ctx, e, list, false, false);
     refresh();
   }
   void move(glm::vec2 p) { send(InputEventType::MouseMove, p.x, p.y); }

@@ -22,7 +22,7 @@ const glm::dvec2 kEditXMirror{109, 164}, kViewOrthographic{153, 139}, kViewFrame
 const glm::dvec2 kViewRight{153, 67}, kViewTop{153, 101};
 const glm::dvec2 kPosePin{197, 67};
 // The outliner's rows (depth-first order of the default character), 17 px apart.
-enum Row { kUpperArmL = 8, kLowerArmL = 9, kHandL = 10, kLowerArmR = 14 };
+enum Row { kUpperArmL = 8, kLowerArmL = 9, kHandL = 10, kLowerArmR = 14, kHandR = 15, kFootL = 19 };
 glm::dvec2 outlinerRow(int row) { return {150.0, 76.0 + 17.0 * row}; }
 // The IK Targets panel at 1280x800 (its top at y = 19 + 757 * 0.55), one target selected:
 // "Add to selected", the "bones" stepper's +, then the settings of the selected target.
@@ -405,6 +405,54 @@ TEST_F(PosingE2e, TimelinePlaysAFilesMotion) {
   const double t = d["playback"]["time"];
   EXPECT_GT(t, 59.0 / 60.0);
   EXPECT_LT(t, 66.0 / 60.0);
+}
+
+TEST_F(PosingE2e, PinIkTargetPinsTheActiveJointsTargetNotTheRowHighlightedInTheIkPanel) {
+  // Issue 17: Hand.R's target added with the IK panel's button (before the fix its row
+  // stayed highlighted, PanelState::selectedIkTarget), then Foot.L selected and its target
+  // added with Shift+I; Pose > Pin IK Target pinned Hand.R's target. It must pin the target
+  // of the active joint, Foot.L, and leave Hand.R's alone.
+  Script script;
+  script.click(outlinerRow(kHandR)).wait(1).click(kIkAdd).wait(2);
+  script.click(outlinerRow(kFootL)).wait(1).keyDown("LEFT_SHIFT").key("I").keyUp("LEFT_SHIFT").wait(1);
+  script.menu(kPoseMenu, kPosePin);
+  const json d = run(script, "pin_active_joints_target");
+  EXPECT_EQ(d["active"], "Foot.L");
+  ASSERT_EQ(d["ik_targets"].size(), 2u);
+  const json &hand = d["ik_targets"][0], &foot = d["ik_targets"][1];
+  EXPECT_EQ(hand["effector"], "Hand.R");
+  EXPECT_EQ(foot["effector"], "Foot.L");
+  EXPECT_TRUE(foot["pinned"].get<bool>()) << "the active joint's target is pinned";
+  EXPECT_FALSE(hand["pinned"].get<bool>()) << "the other target stays free";
+  // Pinning moved nothing: both targets sit where their effectors were.
+  expectNear(vec3(foot["position"]), rest("Foot.L"), 1e-5, "Foot.L's target");
+  expectNear(vec3(hand["position"]), rest("Hand.R"), 1e-5, "Hand.R's target");
+}
+
+TEST_F(PosingE2e, AKeymapFileRebindsKeysAndABadLineIsReportedByItsNumber) {
+  // The user's keymap (XDG_CONFIG_HOME/kinema/keymap.txt): R freed from rotate and given to
+  // select all, and a line naming no command. The bad line shows in the error popup (Enter
+  // dismisses it); then R over the 3D view selects every joint and starts no rotation, and a
+  // script's command event runs View > Orthographic by id.
+  runCommand("mkdir -p '" + dir_ + "/kinema'");
+  writeFile(dir_ + "/kinema/keymap.txt", "tool.rotate = none\nselect.all = R\nbogus.command = X\n");
+  Script script;
+  script.wait(2).key("ENTER").wait(2).move(pixelOf("Hips") + glm::dvec2(0, 150)).wait(1).key("R").wait(1);
+  script.move(pixelOf("Hips") + glm::dvec2(40, 150)).wait(1);
+  const json before = run(script, "keymap_file");
+  EXPECT_EQ(before["tool"], "none") << "R no longer rotates";
+  EXPECT_EQ(before["selection"].size(), front_["joints"].size()) << "R selects all";
+  EXPECT_TRUE(before["errors"].empty()) << "Enter dismissed the keymap's error";
+  // The error itself, left open.
+  const json shown = run(Script().wait(2), "keymap_file_error");
+  ASSERT_EQ(shown["errors"].size(), 1u);
+  EXPECT_EQ(shown["errors"][0].get<std::string>().rfind("keymap: " + dir_ + "/kinema/keymap.txt:3: unknown command 'bogus.command'", 0),
+            0u)
+      << shown["errors"][0];
+  // A command event in the script.
+  std::ofstream(dir_ + "/kinema/keymap.txt") << "";
+  const json ortho = run(Script().command("view.orthographic"), "command_event");
+  EXPECT_TRUE(ortho["camera"]["orthographic"].get<bool>());
 }
 
 }  // namespace

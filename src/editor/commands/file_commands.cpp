@@ -4,7 +4,9 @@
 #include <filesystem>
 
 #include "editor/model/timeline.h"
+#include "editor/commands/command_sets.h"
 #include "editor/commands/file_commands.h"
+#include "editor/model/key_codes.h"
 #include "editor/viewport/viewport_controller.h"
 
 namespace kinema {
@@ -30,7 +32,6 @@ void replaceDocument(EditorState& state, Document doc) {
   p.collapsed.clear();
   p.renaming = -1;
   p.renameError.clear();
-  p.selectedIkTarget = -1;
 }
 
 void rememberRecent(EditorState& state, const std::string& path) {
@@ -207,6 +208,27 @@ void declineRecovery(EditorState& state) {
   const std::string error = discardRecovery(*p.recovery);
   p.recovery.reset();
   showEditorError(state, error);
+}
+
+void addFileCommands(std::vector<Command>& out) {
+  out.push_back(CommandDef("file.new", "New").menu("File").key(keys::N, kModCtrl).hint("a new document (asks before dropping changes)")
+                    .run([](CommandContext& c) { requestNewDocument(c.state); }));
+  out.push_back(CommandDef("file.open", "Open...").menu("File").key(keys::O, kModCtrl)
+                    .run([](CommandContext& c) { requestOpenDialog(c.state); }));
+  // File > Open Recent is drawn by the menu itself (one item per recent file).
+  out.push_back(CommandDef("file.save", "Save").menu("File", true).key(keys::S, kModCtrl)
+                    .hint("save the .kinema file (Save As for a new document)")
+                    .run([](CommandContext& c) { requestSave(c.state); }));
+  out.push_back(CommandDef("file.save_as", "Save As...").menu("File").key(keys::S, kModCtrl | kModShift)
+                    .run([](CommandContext& c) { requestSaveAs(c.state); }));
+  out.push_back(CommandDef("file.export_gltf", "glTF (.gltf)...").menu("File/Export").hint("export as glTF")
+                    .run([](CommandContext& c) { requestExport(c.state, FileDialogPurpose::ExportGltf); }));
+  out.push_back(CommandDef("file.export_glb", "GLB (.glb)...").menu("File/Export").hint("export as binary glTF")
+                    .run([](CommandContext& c) { requestExport(c.state, FileDialogPurpose::ExportGlb); }));
+  out.push_back(CommandDef("file.export_bvh", "BVH (.bvh)...").menu("File/Export").hint("export the timeline's clip as BVH")
+                    .run([](CommandContext& c) { requestExport(c.state, FileDialogPurpose::ExportBvh); }));
+  out.push_back(CommandDef("file.quit", "Quit").menu("File", true).key(keys::Q, kModCtrl)
+                    .run([](CommandContext& c) { requestQuit(c.state); }));
 }
 
 }  // namespace kinema

@@ -6,9 +6,8 @@
 
 namespace kinema {
 
-// File actions, shared by the menu and its shortcuts (drawMainMenuBar handles Ctrl+N, O,
-// S, Shift+S, Q, Z, Shift+Z, Y, C, V, Shift+V itself). Anything that would drop unsaved
-// changes asks first. The window's close button calls requestQuit() and closes once
+// File actions behind the file.* commands (the File menu and its keys; command_sets.h).
+// Anything that would drop unsaved changes asks first. The window's close button calls requestQuit() and closes once
 // state.panels.quitApproved is set.
 void requestNewDocument(EditorState& state);
 void requestOpenDialog(EditorState& state);

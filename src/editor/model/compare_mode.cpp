@@ -230,44 +230,48 @@ bool compareMouseUp(CompareMode& m) {
   return was;
 }
 
-bool handleCompareKey(CompareMode& m, int key, int mods) {
-  static const int right = keyCodeFromName("RIGHT"), space = keyCodeFromName("SPACE"), end = keyCodeFromName("END"),
-                   r = keyCodeFromName("R"), escape = keyCodeFromName("ESCAPE");
-  if (key == escape) {
-    m.active = false;
-    m.playing = false;
-    return true;
-  }
+void leaveCompareMode(CompareMode& m) {
+  m.active = false;
+  m.playing = false;
+}
+
+bool compareStepSubStep(CompareMode& m) {
   if (!m.ready()) return false;
-  if (key == right) {
-    m.playing = false;
-    if (mods & kModShift)
-      stepIteration(m.comparison);
-    else
-      stepSubStep(m.comparison);
-  } else if (key == space) {
-    m.playing = !m.playing;
-    m.clock = PlayClock{};
-  } else if (key == end) {
-    m.playing = false;
-    runToEnd(m.comparison);
-  } else if (key == r && mods == 0) {
-    m.playing = false;
-    resetCursors(m.comparison);
-  } else {
-    return false;
-  }
+  m.playing = false;
+  stepSubStep(m.comparison);
   return true;
 }
 
-bool handleCompareEvent(CompareMode& m, const InputEvent& e, bool mouseCaptured, bool keyboardCaptured) {
+bool compareStepIteration(CompareMode& m) {
+  if (!m.ready()) return false;
+  m.playing = false;
+  stepIteration(m.comparison);
+  return true;
+}
+
+bool toggleComparePlay(CompareMode& m) {
+  if (!m.ready()) return false;
+  m.playing = !m.playing;
+  m.clock = PlayClock{};
+  return true;
+}
+
+bool compareRunToEnd(CompareMode& m) {
+  if (!m.ready()) return false;
+  m.playing = false;
+  runToEnd(m.comparison);
+  return true;
+}
+
+bool compareReset(CompareMode& m) {
+  if (!m.ready()) return false;
+  m.playing = false;
+  resetCursors(m.comparison);
+  return true;
+}
+
+bool handleCompareEvent(CompareMode& m, const InputEvent& e, bool mouseCaptured) {
   switch (e.type) {
-    case InputEventType::KeyDown:
-      if (e.key == keyCodeFromName("LEFT_SHIFT") || e.key == keyCodeFromName("RIGHT_SHIFT")) m.shiftHeld = true;
-      return !keyboardCaptured && handleCompareKey(m, e.key, e.mods | (m.shiftHeld ? kModShift : 0));
-    case InputEventType::KeyUp:
-      if (e.key == keyCodeFromName("LEFT_SHIFT") || e.key == keyCodeFromName("RIGHT_SHIFT")) m.shiftHeld = false;
-      return false;
     case InputEventType::ButtonDown: return !mouseCaptured && e.button == 0 && compareMouseDown(m, m.mouse);
     case InputEventType::MouseMove:
       m.mouse = {e.x, e.y};

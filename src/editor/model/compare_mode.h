@@ -1,8 +1,9 @@
 #pragma once
 // The editor's "Compare solvers" mode (issue 10), window-free: the comparison it shows, the
 // layout of its views, the mapping between view pixels and figure units, hit-testing the
-// target and the joints, mouse drags (target, start pose, orbit), the play clock and its
-// keys. compare_panel.cpp draws it with ImGui; everything here is unit-tested.
+// target and the joints, mouse drags (target, start pose, orbit), the play clock and the
+// steps its keys take (bound in commands/compare_commands.cpp). compare_panel.cpp draws it
+// with ImGui; everything here is unit-tested.
 #include <string>
 #include <vector>
 
@@ -90,7 +91,6 @@ struct CompareMode {
   int dragView = -1, dragJoint = -1;
   glm::vec2 lastMouse{0.0f};
   glm::vec2 mouse{0.0f};   // the last mouse position (scripted button events carry none)
-  bool shiftHeld = false;  // a Shift key is down (scripted keys carry no mods)
 
   bool ready() const { return !comparison.runs.empty(); }
   glm::vec3 viewDirection() const { return view3d ? orbitViewDirection(yaw, pitch) : glm::vec3(0, 0, 1); }
@@ -112,12 +112,18 @@ int advanceComparePlay(CompareMode& m, double dt);
 bool compareMouseDown(CompareMode& m, glm::vec2 mouse);
 bool compareMouseMove(CompareMode& m, glm::vec2 mouse);
 bool compareMouseUp(CompareMode& m);
-// Keys: Right one sub-step, Shift+Right one iteration, Space play/pause, End run to
-// convergence, R reset, Escape leaves the mode. Returns true when the key was used.
-bool handleCompareKey(CompareMode& m, int key, int mods);
-// Every input event of the editor's queue while the mode is active (mouse and keys); a press
-// over a panel (mouseCaptured) or a key while a text field is active is left to ImGui.
-bool handleCompareEvent(CompareMode& m, const InputEvent& e, bool mouseCaptured, bool keyboardCaptured);
+// What the mode's commands do (commands/compare_commands.cpp binds them to Right,
+// Shift+Right, Space, End, R and Esc; the panel's buttons run the same commands). Each
+// returns false, doing nothing, until a preset is open; leaving always works.
+bool compareStepSubStep(CompareMode& m);    // one sub-step of every solver; stops playing
+bool compareStepIteration(CompareMode& m);  // to the end of the next iteration
+bool toggleComparePlay(CompareMode& m);     // play / pause at stepsPerSecond
+bool compareRunToEnd(CompareMode& m);       // every solver to its last entry
+bool compareReset(CompareMode& m);          // every cursor back to the start
+void leaveCompareMode(CompareMode& m);
+// The mouse events of the editor's queue while the mode is active (keys go to the commands);
+// a press over a panel (mouseCaptured) is left to ImGui.
+bool handleCompareEvent(CompareMode& m, const InputEvent& e, bool mouseCaptured);
 
 // Where each view draws its joints and target (window pixels), for hit-tests and tests.
 std::vector<glm::vec2> compareJointPixels(const CompareMode& m, int view);

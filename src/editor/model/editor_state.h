@@ -64,19 +64,6 @@ struct ViewOptions {
   int autoIkChainLength = 2;
 };
 
-// Requests the panels raise; the window acts on them between frames (dialogs, files,
-// camera moves) and clears them.
-struct EditorRequests {
-  bool newFile = false, open = false, save = false, saveAs = false, exportFile = false, quit = false;
-  std::string path;          // open / save-as / export target chosen in a dialog
-  bool frameSelected = false, frameAll = false;
-  int viewPreset = 0;        // 0 none, 1 front, 3 side (right), 7 top; negative = the opposite
-  bool toggleOrtho = false;
-  bool undo = false, redo = false;
-  bool copyPose = false, pastePose = false, pasteFlipped = false;
-  bool clearRotation = false, resetPose = false;
-};
-
 // Everything the editor shows and edits, owned by the caller (no globals). Panels read and
 // write it; the window turns input into edits of it and evaluateEditorPose() into world
 // transforms.
@@ -98,7 +85,6 @@ struct EditorState {
   ToolState tool;
   int hoveredJoint = -1;   // under the mouse (drawn highlighted)
   int hoveredIkTarget = -1;
-  EditorRequests requests;
   AnimationEditorKind animationEditor = AnimationEditorKind::None;
   CompareMode compare;     // Teach > Compare Solvers: replaces the 3D view and the side panels while active
   CurveEditorState curveEditor;  // the curve editor's view, channel toggles and key selection

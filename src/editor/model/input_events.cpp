@@ -38,7 +38,7 @@ const KeyName kKeys[] = {
     {"RIGHT_ALT", keys::RIGHT_ALT}, {"RIGHT_SUPER", keys::RIGHT_SUPER}, {"MENU", keys::MENU},
 };
 
-const char* kTypeNames[] = {"mouse_move", "button_down", "button_up", "key_down", "key_up", "scroll", "text"};
+const char* kTypeNames[] = {"mouse_move", "button_down", "button_up", "key_down", "key_up", "scroll", "text", "command"};
 
 constexpr size_t kMaxScriptBytes = size_t(64) << 20;
 constexpr size_t kMaxEvents = 1000000;
@@ -49,7 +49,7 @@ using json = nlohmann::json;
 // Reads one event object; `where` names it ("event 3", "line 7") for messages. Shorthands
 // "key" and "click" expand to a down and an up in the same frame (the handler spreads
 // them over two frames so ImGui sees the press).
-std::string readEvent(const json& j, std::vector<InputEvent>& out) {
+std::string readEvent(const json& j, std::vector<InputEvent>& out, const CommandIdCheck& isCommand) {
   if (!j.is_object()) return "expected an object";
   InputEvent e;
   auto number = [&](const char* field, double& v) -> std::string {
@@ -129,9 +129,15 @@ std::string readEvent(const json& j, std::vector<InputEvent>& out) {
     if (!j.contains("text") || !j["text"].is_string()) return "missing 'text' (a string)";
     e.type = InputEventType::Text;
     e.text = j["text"].get<std::string>();
+  } else if (type == "command") {
+    if (!j.contains("id") || !j["id"].is_string()) return "missing 'id' (a command id such as \"file.save\")";
+    e.type = InputEventType::Command;
+    e.text = j["id"].get<std::string>();
+    if (isCommand && !isCommand(e.text))
+      return "'id' \"" + e.text + "\" is not a command (kinema edit --list-commands lists them)";
   } else {
     return "unknown 'type' \"" + type +
-           "\" (expected mouse_move, button_down, button_up, click, key_down, key_up, key, scroll or text)";
+           "\" (expected mouse_move, button_down, button_up, click, key_down, key_up, key, scroll, text or command)";
   }
   out.push_back(e);
   if (type == "click" || type == "key") {
@@ -144,6 +150,24 @@ std::string readEvent(const json& j, std::vector<InputEvent>& out) {
 }  // namespace
 
 const char* toString(InputEventType type) { return kTypeNames[static_cast<int>(type)]; }
+
+bool isModifierKey(int key) {
+  return key == keys::LEFT_SHIFT || key == keys::RIGHT_SHIFT || key == keys::LEFT_CONTROL ||
+         key == keys::RIGHT_CONTROL || key == keys::LEFT_ALT || key == keys::RIGHT_ALT || key == keys::LEFT_SUPER ||
+         key == keys::RIGHT_SUPER;
+}
+
+int HeldInput::track(const InputEvent& e) {
+  int bit = 0;
+  if (e.key == keys::LEFT_SHIFT || e.key == keys::RIGHT_SHIFT) bit = kModShift;
+  else if (e.key == keys::LEFT_CONTROL || e.key == keys::RIGHT_CONTROL) bit = kModCtrl;
+  else if (e.key == keys::LEFT_ALT || e.key == keys::RIGHT_ALT) bit = kModAlt;
+  else if (e.key == keys::LEFT_SUPER || e.key == keys::RIGHT_SUPER) bit = kModSuper;
+  if (bit && e.type == InputEventType::KeyDown) mods |= bit;
+  if (bit && e.type == InputEventType::KeyUp) mods &= ~bit;
+  if (e.type == InputEventType::MouseMove) mouse = glm::vec2(e.x, e.y);
+  return mods | e.mods;
+}
 
 int keyCodeFromName(const std::string& name) {
   if (name.size() == 1 && name[0] >= 'A' && name[0] <= 'Z') return keys::A + (name[0] - 'A');
@@ -169,7 +193,8 @@ std::string keyNameFromCode(int code) {
   return "";
 }
 
-Result<std::vector<InputEvent>> parseInputScript(const std::string& text, const std::string& source) {
+Result<std::vector<InputEvent>> parseInputScript(const std::string& text, const std::string& source,
+                                                 const CommandIdCheck& isCommand) {
   using R = Result<std::vector<InputEvent>>;
   std::vector<InputEvent> events;
   if (jsonNestingDepth(text.data(), text.size()) > kMaxDepth)
@@ -180,7 +205,7 @@ Result<std::vector<InputEvent>> parseInputScript(const std::string& text, const 
     if (array.is_discarded()) return R::failure(source + ": not valid JSON (expected an array of events)");
     if (array.size() > kMaxEvents) return R::failure(source + ": more than 1000000 events");
     for (size_t i = 0; i < array.size(); ++i)
-      if (std::string m = readEvent(array[i], events); !m.empty())
+      if (std::string m = readEvent(array[i], events, isCommand); !m.empty())
         return R::failure(source + ": event " + std::to_string(i) + ": " + m);
   } else {
     std::vector<std::string> lines;
@@ -190,7 +215,7 @@ Result<std::vector<InputEvent>> parseInputScript(const std::string& text, const 
       if (line.empty() || line[0] == '#' || line.compare(0, 2, "//") == 0) continue;
       json j = json::parse(line, nullptr, false);
       if (j.is_discarded()) return R::failure(source + ": line " + std::to_string(i + 1) + ": not valid JSON");
-      if (std::string m = readEvent(j, events); !m.empty())
+      if (std::string m = readEvent(j, events, isCommand); !m.empty())
         return R::failure(source + ": line " + std::to_string(i + 1) + ": " + m);
       if (events.size() > kMaxEvents) return R::failure(source + ": more than 1000000 events");
     }
@@ -200,11 +225,11 @@ Result<std::vector<InputEvent>> parseInputScript(const std::string& text, const 
   return events;
 }
 
-Result<std::vector<InputEvent>> loadInputScript(const std::string& path) {
+Result<std::vector<InputEvent>> loadInputScript(const std::string& path, const CommandIdCheck& isCommand) {
   std::string text;
   if (std::string error = readTextFile(path, text, kMaxScriptBytes); !error.empty())
     return Result<std::vector<InputEvent>>::failure(error);
-  return parseInputScript(text, path);
+  return parseInputScript(text, path, isCommand);
 }
 
 }  // namespace kinema

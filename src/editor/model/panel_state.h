@@ -37,9 +37,8 @@ struct PanelState {
   int nameJoint = -1;
   bool nameEditing = false;
 
-  // IK panel
-  int ikChainLength = 2;  // for "Add IK Target"
-  int selectedIkTarget = -1;
+  // IK panel (the target it shows is the active joint's: active_ik_target.h)
+  int ikChainLength = 2;  // for "Add IK Target" (pose.add_ik_target)
 
   // Files
   FileDialogState fileDialog;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "editor/panels/item_names.h"
+#include "editor/panels/command_widgets.h"
 #include "editor/panels/panel_layout.h"
 #include "render/solver_figure.h"
 
@@ -100,7 +101,8 @@ void updateFigureBounds(CompareMode& m, const std::vector<Figure>& figures) {
   m.figureMax = hi + pad;
 }
 
-void drawToolbar(CompareMode& m) {
+void drawToolbar(CommandContext& ctx) {
+  CompareMode& m = ctx.state.compare;
   const CompareRect r = m.layout.toolbar;
   ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(r.w, r.h), ImGuiCond_Always);
@@ -117,23 +119,19 @@ void drawToolbar(CompareMode& m) {
     ImGui::EndCombo();
   }
   ImGui::SameLine();
-  if (ImGui::Button("Step")) handleCompareKey(m, keyCodeFromName("RIGHT"), 0);
-  recordItem("Compare/Step");
+  // The mode's commands (compare_commands.cpp), the same as its keys.
+  const char* window = "Compare Solvers";
+  commandButton(ctx, "compare.step", window, "Step");
   ImGui::SameLine();
-  if (ImGui::Button("Iteration")) handleCompareKey(m, keyCodeFromName("RIGHT"), kModShift);
-  recordItem("Compare/Iteration");
+  commandButton(ctx, "compare.iteration", window, "Iteration");
   ImGui::SameLine();
-  if (ImGui::Button(m.playing ? "Pause" : "Play")) handleCompareKey(m, keyCodeFromName("SPACE"), 0);
-  recordItem("Compare/Play");
+  commandButton(ctx, "compare.play", window, m.playing ? "Pause" : "Play");
   ImGui::SameLine();
-  if (ImGui::Button("Run to end")) handleCompareKey(m, keyCodeFromName("END"), 0);
-  recordItem("Compare/Run to end");
+  commandButton(ctx, "compare.run_to_end", window, "Run to end");
   ImGui::SameLine();
-  if (ImGui::Button("Reset")) handleCompareKey(m, keyCodeFromName("R"), 0);
-  recordItem("Compare/Reset");
+  commandButton(ctx, "compare.reset", window, "Reset");
   ImGui::SameLine();
-  if (ImGui::Button("Exit")) handleCompareKey(m, keyCodeFromName("ESCAPE"), 0);
-  recordItem("Compare/Exit");
+  commandButton(ctx, "compare.exit", window, "Exit");
   ImGui::SetNextItemWidth(200);
   ImGui::SliderFloat("steps/s", &m.stepsPerSecond, 0.25f, 60.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
   ImGui::SameLine();
@@ -239,8 +237,8 @@ void drawNumbers(const CompareMode& m) {
 
 }  // namespace
 
-void drawComparePanel(EditorState& state) {
-  CompareMode& m = state.compare;
+void drawComparePanel(CommandContext& ctx) {
+  CompareMode& m = ctx.state.compare;
   ImGuiIO& io = ImGui::GetIO();
   if (!m.ready() && m.error.empty()) openComparePreset(m, teachingPresets().front().name);
   advanceComparePlay(m, io.DeltaTime);
@@ -267,7 +265,7 @@ void drawComparePanel(EditorState& state) {
     const Figure plot = drawConvergencePlot(m.comparison, style);
     drawFigure(dl, plot, FigureViewMap::fit(plot.min, plot.max, p, 6.0f), p);
   }
-  drawToolbar(m);
+  drawToolbar(ctx);
   drawChainPanel(m);
   drawNumbers(m);
 }

@@ -4,13 +4,13 @@
 // the chain panel over the area the 3D view and the side columns usually take.
 #include <nlohmann/json.hpp>
 
-#include "editor/model/editor_state.h"
+#include "editor/commands/command_context.h"
 
 namespace kinema {
 
 // Draws the mode (call between NewFrame and Render while state.compare.active); opens the
 // first preset when none is open and advances playback by the frame's time.
-void drawComparePanel(EditorState& state);
+void drawComparePanel(CommandContext& ctx);
 // The dump's "compare" object: compareModeJson plus each solver's colour.
 nlohmann::json compareStateJson(const CompareMode& m);
 

@@ -2,7 +2,9 @@
 // channel list with visibility toggles on the left, the curve plot (keys, handles, current
 // frame, grid) on the right, a toolbar and a key properties strip above it. The logic is in
 // curve_editor.h; this file turns mouse and widgets into its calls, each edit one undo step.
+#include "editor/commands/keymap.h"
 #include "editor/model/key_codes.h"
+#include "editor/panels/command_widgets.h"
 #include <imgui.h>
 
 #include <algorithm>
@@ -237,12 +239,10 @@ void keyPropertiesStrip(EditorState& state, const Clip& clip) {
 
 }  // namespace
 
-void drawCurveEditorPanel(EditorState& state) {
+void drawCurveEditorPanel(CommandContext& ctx) {
+  EditorState& state = ctx.state;
   const ImGuiIO& io = ImGui::GetIO();
-  // Shift+F6 toggles the curve editor (Blender's Graph Editor key).
-  if (!io.WantTextInput && io.KeyShift && ImGui::IsKeyPressed(keys::F6, false))
-    state.animationEditor = state.animationEditor == AnimationEditorKind::CurveEditor ? AnimationEditorKind::None
-                                                                                        : AnimationEditorKind::CurveEditor;
+  // Shift+F6 (view.curve_editor) opens it; Home over it (curves.frame_all) fits.
   if (state.animationEditor != AnimationEditorKind::CurveEditor) return;
   CurveEditorState& ce = state.curveEditor;
   const PanelRect r = animationEditorRect(io.DisplaySize, state.bottomPanels());
@@ -307,8 +307,8 @@ void drawCurveEditorPanel(EditorState& state) {
   ImGui::SameLine();
   ImGui::BeginGroup();
   // Toolbar.
-  if (ImGui::Button("Fit (Home)")) ce.fitPending = true;
-  recordItem("Curve Editor/Fit");
+  const std::string fitKey = ctx.keymap ? ctx.keymap->shortcut("curves.frame_all") : std::string();
+  commandButton(ctx, "curves.frame_all", "Curve Editor", fitKey.empty() ? "Fit" : ("Fit (" + fitKey + ")").c_str());
   ImGui::SameLine();
   if (ImGui::Checkbox("Normalize", &ce.normalized)) ce.fitPending = true;
   recordItem("Curve Editor/Normalize");
@@ -339,7 +339,6 @@ void drawCurveEditorPanel(EditorState& state) {
                          ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonMiddle);
   recordItem("Curve Editor/Plot");
   const bool hovered = ImGui::IsItemHovered();
-  if (hovered && !io.WantTextInput && ImGui::IsKeyPressed(keys::HOME, false)) ce.fitPending = true;
   if (ce.fitPending) fit();
   const CurveView view = ce.view;
   ImDrawList* dl = ImGui::GetWindowDrawList();

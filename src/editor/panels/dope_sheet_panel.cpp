@@ -8,6 +8,7 @@
 #include <cstdio>
 #include "editor/model/key_codes.h"
 
+#include "editor/commands/animation_editor_commands.h"
 #include "editor/panels/dope_sheet_panel.h"
 #include "editor/panels/editor_panels.h"
 #include "editor/panels/panel_layout.h"
@@ -29,31 +30,15 @@ long long tickStep(double pixelsPerFrame, double minPixels) {
       if (base * m * pixelsPerFrame >= minPixels || base > 1000000) return base * m;
 }
 
-// The pose at the current frame again after a key edit (Blender re-evaluates the action);
-// not an undo step.
-void showCurrentFrame(EditorState& state) {
-  if (!state.hasMotion() || state.playing) return;
-  Pose pose = Pose::rest(state.doc.skeleton());
-  sampleClip(state.doc.scene().clips[state.clip], static_cast<float>(state.time), pose);
-  state.doc.setAnimatedPose(pose);
-}
-
-void report(EditorState& state, const std::string& error, const std::string& done) {
-  if (!error.empty()) showEditorError(state, error);
-  else {
-    state.statusMessage = done;
-    showCurrentFrame(state);
-  }
-}
-
 void drawDiamond(ImDrawList* dl, ImVec2 c, float r, ImU32 fill, ImU32 outline) {
   const ImVec2 p[4] = {{c.x, c.y - r}, {c.x + r, c.y}, {c.x, c.y + r}, {c.x - r, c.y}};
   dl->AddConvexPolyFilled(p, 4, fill);
   dl->AddPolyline(p, 4, outline, ImDrawFlags_Closed, 1.0f);
 }
 
-// Keys pressed while the mouse is over the dope sheet.
-void handleKeys(EditorState& state, const Clip& clip, DopeSheetState& ds) {
+// The keys of a running gesture (G's move: Enter drops, Esc cancels; Esc ends a mouse drag
+// of keys). Every other key over the dope sheet is a command (animation_editor_commands.cpp).
+void handleModalKeys(EditorState& state, DopeSheetState& ds) {
   const ImGuiIO& io = ImGui::GetIO();
   const auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
   if (io.WantTextInput || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) return;
@@ -61,49 +46,18 @@ void handleKeys(EditorState& state, const Clip& clip, DopeSheetState& ds) {
     if (pressed(keys::ESCAPE)) {
       ds.move.cancel(state.doc, ds.selection);
       ds.gesture = DopeSheetState::Gesture::None;
-      showCurrentFrame(state);
+      showDopeSheetFrame(state);
     } else if (pressed(keys::ENTER) || pressed(keys::KP_ENTER)) {
       ds.move.commit(state.doc);
       ds.gesture = DopeSheetState::Gesture::None;
-      report(state, "", "Moved keys");
+      reportDopeSheetEdit(state, "", "Moved keys");
     }
     return;
   }
-  if (ds.gesture != DopeSheetState::Gesture::None) {
-    if (pressed(keys::ESCAPE) && ds.move.active()) {
-      ds.move.cancel(state.doc, ds.selection);
-      ds.gesture = DopeSheetState::Gesture::None;
-      showCurrentFrame(state);
-    }
-    return;
-  }
-  if (io.KeyCtrl) {
-    if (pressed(keys::C)) {
-      ds.clipboard = copyKeyColumns(clip, ds.selection.columns());
-      state.statusMessage = ds.clipboard.empty() ? "Copy keys: select keys first"
-                                                 : "Copied " + std::to_string(ds.clipboard.keys.size()) + " key(s)";
-    } else if (pressed(keys::V)) {
-      const long long frame = std::llround(state.time / dopeSheetFrameTime(clip));
-      const std::vector<int> onto = io.KeyShift ? state.doc.selection.joints() : std::vector<int>{};
-      if (io.KeyShift && onto.empty()) showEditorError(state, "Paste keys onto the selected joints: select joints first");
-      else report(state, pasteKeysEdit(state.doc, state.clip, ds.selection, ds.clipboard, frame, onto), "Pasted keys");
-    }
-    return;
-  }
-  if (pressed(keys::A)) {
-    if (io.KeyAlt) ds.selection.clear();
-    else ds.selection.set(allKeyColumns(clip));
-  } else if (pressed(keys::X) || pressed(keys::DELETE)) {
-    report(state, deleteKeysEdit(state.doc, state.clip, ds.selection), "Deleted keys");
-  } else if (pressed(keys::G) && !ds.selection.empty()) {
-    const std::string error = ds.move.begin(state.doc, state.clip, ds.selection);
-    if (!error.empty()) return showEditorError(state, error);
-    ds.gesture = DopeSheetState::Gesture::GrabKeys;
-    ds.pressMouse = glm::vec2(io.MousePos.x, io.MousePos.y);
-  } else if (pressed(keys::SPACE)) {
-    state.playing = !state.playing;
-  } else if (pressed(keys::HOME)) {
-    ds.view.frameRange(0.0, std::max(timeToFrame(clip, clip.duration()), 1.0));
+  if (ds.gesture != DopeSheetState::Gesture::None && pressed(keys::ESCAPE) && ds.move.active()) {
+    ds.move.cancel(state.doc, ds.selection);
+    ds.gesture = DopeSheetState::Gesture::None;
+    showDopeSheetFrame(state);
   }
 }
 
@@ -122,11 +76,11 @@ void handleMouse(EditorState& state, const Clip& clip, const std::vector<DopeShe
     if (ImGui::IsMouseClicked(0)) {
       ds.move.commit(state.doc);
       ds.gesture = G::None;
-      report(state, "", "Moved keys");
+      reportDopeSheetEdit(state, "", "Moved keys");
     } else if (ImGui::IsMouseClicked(1)) {
       ds.move.cancel(state.doc, ds.selection);
       ds.gesture = G::None;
-      showCurrentFrame(state);
+      showDopeSheetFrame(state);
     }
     return;
   }
@@ -139,7 +93,7 @@ void handleMouse(EditorState& state, const Clip& clip, const std::vector<DopeShe
     if (ds.gesture == G::DragKeys && ImGui::IsMouseClicked(1)) {
       ds.move.cancel(state.doc, ds.selection);
       ds.gesture = G::None;
-      showCurrentFrame(state);
+      showDopeSheetFrame(state);
       return;
     }
     const bool moved = glm::length(mouse - ds.pressMouse) > kDragThreshold;
@@ -162,7 +116,7 @@ void handleMouse(EditorState& state, const Clip& clip, const std::vector<DopeShe
     if (ImGui::IsMouseReleased(0)) {
       if (ds.gesture == G::DragKeys) {
         ds.move.commit(state.doc);
-        report(state, "", "Moved keys");
+        reportDopeSheetEdit(state, "", "Moved keys");
       } else if (ds.gesture == G::Box) {
         const std::vector<KeyColumn> inside =
             columnsInBox(clip, rows, view.xToFrame(ds.pressMouse.x), view.xToFrame(mouse.x), view.rowAt(ds.pressMouse.y),
@@ -266,7 +220,7 @@ void drawDopeSheetPanel(EditorState& state) {
   const bool hovered = ImGui::IsWindowHovered();
   const PanelRect ruler{view.x, r.y, view.width, kDopeSheetRulerHeight};
   if (hovered || ds.gesture != DopeSheetState::Gesture::None) {
-    handleKeys(state, clip, ds);
+    handleModalKeys(state, ds);
     handleMouse(state, clip, rows, ds, hovered, ruler);
   }
   // After this frame's edits (the rows again only when there were some).

@@ -1,11 +1,13 @@
-// The IK targets of the document: a list, add / remove, and per target its effector, chain
-// (length or IK root), solver, pole (two-bone), pinned and active switches, and how its
-// last solve went. Every change is one undo step (setIkTarget); drags of the position and
+// The IK targets of the document: a list, add / remove (the Pose menu's commands), and the
+// active joint's target (active_ik_target.h): its effector, chain (length or IK root),
+// solver, pole (two-bone), pinned and active switches, and how its last solve went. Every change is one undo step (setIkTarget); drags of the position and
 // pole fields are one step each.
 #include <imgui.h>
 
 #include <string>
 
+#include "editor/model/active_ik_target.h"
+#include "editor/panels/command_widgets.h"
 #include "editor/panels/editor_panels.h"
 #include "editor/panels/item_names.h"
 #include "editor/model/ik_posing.h"
@@ -43,6 +45,8 @@ void targetSettings(EditorState& state, int t) {
         next.target.root = -1;
         next.target.mid = -1;
         apply(state, t, next);
+        // The target stays the active one: its new effector becomes the active joint.
+        if (doc.ikTargets()[t].target.effector == j) doc.selection.click(j);
       }
       recordItem("IK Targets/Effector/" + s.names[j]);
     }
@@ -155,7 +159,8 @@ void targetSettings(EditorState& state, int t) {
 
 }  // namespace
 
-void drawIkTargetsPanel(EditorState& state) {
+void drawIkTargetsPanel(CommandContext& ctx) {
+  EditorState& state = ctx.state;
   Document& doc = state.doc;
   PanelState& p = state.panels;
   const PanelRect r = ikTargetsRect(ImGui::GetIO().DisplaySize);
@@ -166,37 +171,28 @@ void drawIkTargetsPanel(EditorState& state) {
     return;
   }
   const Skeleton& s = doc.skeleton();
-  const auto& targets = doc.ikTargets();
-  const int active = doc.selection.active();
-  const bool add = ImGui::Button("Add to selected");
-  recordItem("IK Targets/Add");
-  if (add && active >= 0) {
-    int index = -1;
-    const IkSolver solver = p.ikChainLength == 2 ? IkSolver::TwoBone : IkSolver::JacobianDls;
-    const std::string error = addIkTargetAtEffector(doc, active, p.ikChainLength, solver, &index);
-    showEditorError(state, error);
-    if (error.empty()) p.selectedIkTarget = index;
-  }
+  // Add and Remove are the Pose menu's commands: they act on the active joint and its target.
+  commandButton(ctx, "pose.add_ik_target", "IK Targets", "Add to selected");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(70);
   ImGui::InputInt("bones", &p.ikChainLength);
   recordStepper("IK Targets/Bones", 70);
   if (p.ikChainLength < 1) p.ikChainLength = 1;
   ImGui::SameLine();
-  const bool haveSelected = p.selectedIkTarget >= 0 && p.selectedIkTarget < static_cast<int>(targets.size());
-  const bool remove = ImGui::Button("Remove");
-  recordItem("IK Targets/Remove");
-  if (remove && haveSelected) {
-    showEditorError(state, removeIkTarget(doc, p.selectedIkTarget));
-    p.selectedIkTarget = -1;
-  }
+  commandButton(ctx, "pose.remove_ik_target", "IK Targets", "Remove");
+  // The row of the active IK target is highlighted; clicking a row makes its effector the
+  // active joint, so the row, the menu and the keys always mean the same target.
+  const int activeTarget = activeIkTarget(doc);
   if (ImGui::BeginListBox("##targets", ImVec2(-1, 4.5f * ImGui::GetTextLineHeightWithSpacing()))) {
+    const auto& targets = doc.ikTargets();
     for (size_t i = 0; i < targets.size(); ++i) {
       const PoseIkTarget& t = targets[i];
       const std::string label = std::to_string(i) + ": " + jointName(s, t.target.effector) + "  (" +
                                 toString(t.solver) + (t.pinned ? ", pinned" : "") + (t.active ? "" : ", off") + ")";
-      if (ImGui::Selectable(label.c_str(), p.selectedIkTarget == static_cast<int>(i))) p.selectedIkTarget = static_cast<int>(i);
-      recordItem("IK Targets/Target " + std::to_string(i));
+      if (ImGui::Selectable(label.c_str(), activeTarget == static_cast<int>(i)) && t.target.effector >= 0 &&
+          t.target.effector < s.size())
+        doc.selection.click(t.target.effector);
+      recordItem(state.items, "IK Targets/" + std::to_string(i));
     }
     if (targets.empty()) ImGui::TextDisabled("no targets: select a joint, then Add");
     ImGui::EndListBox();
@@ -214,11 +210,13 @@ void drawIkTargetsPanel(EditorState& state) {
     ImGui::PopItemWidth();
     ImGui::TreePop();
   }
-  if (p.selectedIkTarget >= 0 && p.selectedIkTarget < static_cast<int>(targets.size())) {
+  // The active joint's targets (one, unless an effector was changed onto a joint that had one).
+  for (int t : ikTargetsOnJoint(doc, doc.selection.active())) {
+    if (t >= static_cast<int>(doc.ikTargets().size())) break;  // a setting above removed one
     ImGui::Separator();
-    ImGui::PushID(p.selectedIkTarget);
+    ImGui::PushID(t);
     ImGui::PushItemWidth(-110);
-    targetSettings(state, p.selectedIkTarget);
+    targetSettings(state, t);
     ImGui::PopItemWidth();
     ImGui::PopID();
   }

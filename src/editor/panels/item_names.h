@@ -21,6 +21,12 @@ inline void recordItem(const std::string& name) {
   }
 }
 
+// The same into a given table (the command widgets pass the editor state's).
+inline void recordItem(ItemRects& rects, const std::string& name) {
+  const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+  rects.record(name, glm::vec2(a.x, a.y), glm::vec2(b.x, b.y));
+}
+
 // After DragFloat3 / InputFloat4 and the like (n fields in one widget, default item width):
 // also names each field "name/0" .. "name/n-1", laid out as ImGui 1.86 lays them out
 // (PushMultiItemsWidths: equal widths, the last takes the rounding, inner spacing between).

@@ -1,257 +1,108 @@
-// The main menu bar (Blender's header menus reduced to pose mode) and the Ctrl shortcuts of
-// its File and Edit items. Viewport keys (numpad views, F, Home, Alt+R, R/G) belong to the
-// window's input layer; the menu shows them and raises the same requests.
+// The main menu bar (Blender's header menus reduced to pose mode), drawn from the command
+// registry: each command with a menu path is an item there, in the registry's order, with
+// the active keymap's shortcut. The keys themselves are dispatched by the window's input
+// routing (commands/editor_input.h), not here. Two entries are not commands: File > Open
+// Recent (one item per recent file) and the Pose menu's chain-length slider.
 #include <imgui.h>
 
 #include <algorithm>
-#include "editor/model/key_codes.h"
 
+#include "editor/commands/keymap.h"
+#include "editor/panels/command_widgets.h"
 #include "editor/panels/editor_panels.h"
 #include "editor/panels/item_names.h"
-#include "editor/panels/panel_layout.h"
-#include "editor/model/pose_edits.h"
-#include "editor/model/timeline.h"
-#include "editor/viewport/viewport_controller.h"
 
 namespace kinema {
 
 namespace {
 
-// Menu items named "Menu/Label" for scripts (item_names.h); the menu being drawn is kept here.
-const char* gMenu = "";
-bool beginMenu(const char* name, bool enabled = true) {
-  const bool open = ImGui::BeginMenu(name, enabled);
-  recordItem(std::string(gMenu[0] ? std::string(gMenu) + "/" : "") + name);
-  if (open && !gMenu[0]) gMenu = name;
-  return open;
-}
-bool menuItem(const char* label, const char* shortcut = nullptr, bool selected = false, bool enabled = true) {
-  const bool clicked = ImGui::MenuItem(label, shortcut, selected, enabled);
-  recordItem(std::string(gMenu) + "/" + label);
-  return clicked;
-}
-bool menuItem(const char* label, const char* shortcut, bool* selected, bool enabled = true) {
-  const bool clicked = ImGui::MenuItem(label, shortcut, selected, enabled);
-  recordItem(std::string(gMenu) + "/" + label);
-  return clicked;
+const CommandRegistry& registryOf(const CommandContext& ctx) {
+  return ctx.keymap ? ctx.keymap->registry() : editorCommands();
 }
 
-void undo(EditorState& state) {
-  if (state.doc.dragging()) return;
-  if (state.doc.undo()) state.statusMessage = "Undo";
-}
-void redo(EditorState& state) {
-  if (state.doc.dragging()) return;
-  if (state.doc.redo()) state.statusMessage = "Redo";
-}
-
-void copySelection(EditorState& state) {
-  const std::vector<int>& joints = state.doc.selection.joints();
-  if (joints.empty()) {
-    showEditorError(state, "Copy Pose: select the joints to copy first");
-    return;
+// What the menus hold besides commands, drawn right after the command `id`.
+void drawExtrasAfter(CommandContext& ctx, const std::string& id) {
+  EditorState& state = ctx.state;
+  PanelState& p = state.panels;
+  if (id == "file.open") {
+    const bool open = ImGui::BeginMenu("Open Recent", !p.recent.entries().empty());
+    if (!open) recordItem(state.items, "File/Open Recent");
+    if (open) {
+      for (const std::string& path : p.recent.entries()) {
+        const bool clicked = ImGui::MenuItem(path.c_str());
+        recordItem(state.items, "File/Open Recent/" + path);
+        if (clicked) requestOpenPath(state, path);
+      }
+      ImGui::EndMenu();
+    }
+  } else if (id == "pose.pin_ik_target") {
+    // The chain length new IK targets get (Add IK Target, Shift+I, the IK panel).
+    ImGui::SetNextItemWidth(80);
+    ImGui::SliderInt("Chain length", &p.ikChainLength, 1, 8);
+    recordItem(state.items, "Pose/Chain length");
   }
-  state.panels.clipboard = copyPose(state.doc, joints);
-  state.statusMessage = "Copied the pose of " + std::to_string(joints.size()) + " joint(s)";
 }
 
-void paste(EditorState& state, bool flipped) {
-  if (state.panels.clipboard.empty()) {
-    showEditorError(state, "Paste Pose: copy a pose first (Edit > Copy Pose)");
-    return;
+// The items of menu `path` ("File", "File/Export"): its commands in registry order, a
+// submenu where the first command of one comes.
+void drawMenuItems(CommandContext& ctx, const std::string& path) {
+  const std::vector<Command>& all = registryOf(ctx).all();
+  std::vector<std::string> submenusDrawn;
+  bool first = true;
+  for (const Command& c : all) {
+    const bool here = c.menu == path;
+    const bool inSubmenu = c.menu.size() > path.size() + 1 && c.menu.compare(0, path.size() + 1, path + "/") == 0;
+    if (!here && !inSubmenu) continue;
+    if (c.separatorBefore && !first) ImGui::Separator();
+    first = false;
+    if (here) {
+      commandMenuItem(ctx, c, path + "/" + c.label);
+      drawExtrasAfter(ctx, c.id);
+      continue;
+    }
+    const std::string sub = c.menu.substr(0, c.menu.find('/', path.size() + 1));
+    if (std::find(submenusDrawn.begin(), submenusDrawn.end(), sub) != submenusDrawn.end()) continue;
+    submenusDrawn.push_back(sub);
+    const bool open = ImGui::BeginMenu(sub.substr(path.size() + 1).c_str());
+    if (!open) recordItem(ctx.state.items, sub);  // an open one's last item is its popup
+    if (open) {
+      drawMenuItems(ctx, sub);
+      ImGui::EndMenu();
+    }
   }
-  showEditorError(state, pastePose(state.doc, state.panels.clipboard, flipped));
 }
 
-void clearRotation(EditorState& state) {
-  showEditorError(state, clearRotations(state.doc, state.doc.selection.joints()));
-}
-
-void addIkTargetToActive(EditorState& state) {
-  const int joint = state.doc.selection.active();
-  if (joint < 0) {
-    showEditorError(state, "Add IK Target: select the effector joint first");
-    return;
+// The top-level menus in the order their first command comes: File, Edit, View, ...
+std::vector<std::string> menuTitles(const CommandRegistry& registry) {
+  std::vector<std::string> titles;
+  for (const Command& c : registry.all()) {
+    if (c.menu.empty()) continue;
+    const std::string title = c.menu.substr(0, c.menu.find('/'));
+    if (std::find(titles.begin(), titles.end(), title) == titles.end()) titles.push_back(title);
   }
-  int index = -1;
-  const IkSolver solver = state.panels.ikChainLength == 2 ? IkSolver::TwoBone : IkSolver::JacobianDls;
-  if (const std::string error = addIkTargetAtEffector(state.doc, joint, state.panels.ikChainLength, solver, &index);
-      !error.empty()) {
-    showEditorError(state, error);
-    return;
-  }
-  state.panels.selectedIkTarget = index;
-}
-
-// The IK target the Pose menu acts on: the one selected in the IK panel, else the first on
-// the active joint.
-int currentIkTarget(const EditorState& state) {
-  const auto& targets = state.doc.ikTargets();
-  const int chosen = state.panels.selectedIkTarget;
-  if (chosen >= 0 && chosen < static_cast<int>(targets.size())) return chosen;
-  for (size_t i = 0; i < targets.size(); ++i)
-    if (targets[i].target.effector == state.doc.selection.active()) return static_cast<int>(i);
-  return -1;
-}
-
-void removeCurrentIkTarget(EditorState& state) {
-  const int t = currentIkTarget(state);
-  if (t < 0) return;
-  showEditorError(state, removeIkTarget(state.doc, t));
-  state.panels.selectedIkTarget = -1;
-}
-
-void togglePin(EditorState& state) {
-  const int t = currentIkTarget(state);
-  if (t < 0) return;
-  PoseIkTarget settings = state.doc.ikTargets()[t];
-  settings.pinned = !settings.pinned;
-  showEditorError(state, setIkTarget(state.doc, t, settings));
-}
-
-// Ctrl shortcuts of the File and Edit menus; not while a text field has the keyboard.
-void handleMenuShortcuts(EditorState& state) {
-  const ImGuiIO& io = ImGui::GetIO();
-  if (!io.WantTextInput && ImGui::IsKeyPressed(keys::F1, false)) state.panels.showHelp = !state.panels.showHelp;
-  if (io.WantTextInput || !io.KeyCtrl || io.KeyAlt || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) return;
-  const auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
-  const bool shift = io.KeyShift;
-  // Over the dope sheet, Ctrl+C / Ctrl+V copy and paste keys (dope_sheet_panel.cpp).
-  if (state.animationEditorContains(glm::vec2(io.MousePos.x, io.MousePos.y)) && (pressed(keys::C) || pressed(keys::V))) return;
-  if (pressed(keys::N)) requestNewDocument(state);
-  else if (pressed(keys::O)) requestOpenDialog(state);
-  else if (pressed(keys::S)) shift ? requestSaveAs(state) : requestSave(state);
-  else if (pressed(keys::Q)) requestQuit(state);
-  else if (state.compare.active) return;  // the document is hidden: no undo or pose clipboard on it
-  else if (pressed(keys::Z)) shift ? redo(state) : undo(state);
-  else if (pressed(keys::Y)) redo(state);
-  else if (pressed(keys::C)) copySelection(state);
-  else if (pressed(keys::V)) paste(state, shift);
-}
-
-float viewAspect(const EditorState& state) {  // of the 3D view between the panels, which framing fills
-  const PanelRect r = viewportRect(ImGui::GetIO().DisplaySize, state.bottomPanels());
-  return r.w / r.h;
-}
-
-void viewItem(EditorState& state, const char* label, const char* shortcut, ViewPreset preset) {
-  if (menuItem(label, shortcut)) applyViewPreset(state.camera, preset);
+  return titles;
 }
 
 }  // namespace
 
-void drawMainMenuBar(EditorState& state) {
-  handleMenuShortcuts(state);
+void drawMainMenuBar(CommandContext& ctx) {
   if (!ImGui::BeginMainMenuBar()) return;
-  Document& doc = state.doc;
-  PanelState& p = state.panels;
-  if ((gMenu = "", beginMenu("File"))) {
-    if (menuItem("New", "Ctrl+N")) requestNewDocument(state);
-    if (menuItem("Open...", "Ctrl+O")) requestOpenDialog(state);
-    if (beginMenu("Open Recent", !p.recent.entries().empty())) {
-      for (const std::string& path : p.recent.entries())
-        if (menuItem(path.c_str())) requestOpenPath(state, path);
+  EditorState& state = ctx.state;
+  for (const std::string& title : menuTitles(registryOf(ctx))) {
+    // The title's rectangle from the bar's cursor before and after it: once a menu is open
+    // ImGui's last item is its popup, not the title.
+    const ImVec2 before = ImGui::GetCursorScreenPos();
+    if (ImGui::BeginMenu(title.c_str())) {
+      drawMenuItems(ctx, title);
       ImGui::EndMenu();
     }
-    ImGui::Separator();
-    if (menuItem("Save", "Ctrl+S")) requestSave(state);
-    if (menuItem("Save As...", "Ctrl+Shift+S")) requestSaveAs(state);
-    if (beginMenu("Export")) {
-      if (menuItem("glTF (.gltf)...")) requestExport(state, FileDialogPurpose::ExportGltf);
-      if (menuItem("GLB (.glb)...")) requestExport(state, FileDialogPurpose::ExportGlb);
-      if (menuItem("BVH (.bvh)...")) requestExport(state, FileDialogPurpose::ExportBvh);
-      ImGui::EndMenu();
-    }
-    ImGui::Separator();
-    if (menuItem("Quit", "Ctrl+Q")) requestQuit(state);
-    ImGui::EndMenu();
-  }
-  if ((gMenu = "", beginMenu("Edit"))) {
-    const bool idle = !doc.dragging();
-    if (menuItem("Undo", "Ctrl+Z", false, idle && doc.canUndo())) undo(state);
-    if (menuItem("Redo", "Ctrl+Shift+Z", false, idle && doc.canRedo())) redo(state);
-    ImGui::Separator();
-    const bool selected = !doc.selection.empty();
-    if (menuItem("Copy Pose", "Ctrl+C", false, selected)) copySelection(state);
-    if (menuItem("Paste Pose", "Ctrl+V", false, !p.clipboard.empty())) paste(state, false);
-    if (menuItem("Paste Flipped", "Ctrl+Shift+V", false, !p.clipboard.empty())) paste(state, true);
-    ImGui::Separator();
-    if (menuItem("Clear Rotation", "Alt+R", false, selected)) clearRotation(state);
-    if (menuItem("Reset to Rest Pose")) showEditorError(state, resetToRestPose(doc));
-    ImGui::Separator();
-    menuItem("X-Mirror", nullptr, &doc.xMirror);
-    menuItem("Auto IK", "Ctrl+I", &state.view.autoIk);
-    ImGui::EndMenu();
-  }
-  if ((gMenu = "", beginMenu("View"))) {
-    viewItem(state, "Front", "Numpad 1", ViewPreset::Front);
-    viewItem(state, "Back", "Ctrl+Numpad 1", ViewPreset::Back);
-    viewItem(state, "Right", "Numpad 3", ViewPreset::Right);
-    viewItem(state, "Left", "Ctrl+Numpad 3", ViewPreset::Left);
-    viewItem(state, "Top", "Numpad 7", ViewPreset::Top);
-    viewItem(state, "Bottom", "Ctrl+Numpad 7", ViewPreset::Bottom);
-    ImGui::Separator();
-    if (menuItem("Orthographic", "Numpad 5", state.camera.orthographic)) toggleOrthographic(state.camera);
-    ImGui::Separator();
-    const std::vector<glm::mat4> world = doc.worldTransforms();
-    const float minRadius = 0.1f * std::max(jointBounds(world).radius(), 1e-3f);
-    if (menuItem("Frame Selected", "F", false, !doc.selection.empty()))
-      frameSelected(state.camera, world, doc.selection.joints(), viewAspect(state), minRadius);
-    if (menuItem("Frame All", "Home")) ViewportController().frameAll(state.camera, jointBounds(world), viewAspect(state));
-    ImGui::Separator();
-    if (menuItem("Bones: None", "Alt+Z", !state.view.showBones)) state.view.showBones = false;
-    if (menuItem("Bones: Solid", nullptr, state.view.showBones && !state.view.xrayBones))
-      state.view.showBones = true, state.view.xrayBones = false;
-    if (menuItem("Bones: X-Ray", nullptr, state.view.showBones && state.view.xrayBones))
-      state.view.showBones = true, state.view.xrayBones = true;
-    menuItem("Weights of the Active Joint", "Alt+W", &state.view.showWeights);
-    menuItem("Show Limits", nullptr, &state.view.showLimits);
-    menuItem("Show Grid", nullptr, &state.view.showGrid);
-    ImGui::Separator();
-    // Blender's order: Dope Sheet, then Graph Editor.
-    const bool dopeSheet = state.animationEditor == AnimationEditorKind::DopeSheet;
-    if (menuItem("Dope Sheet", nullptr, dopeSheet))
-      state.animationEditor = dopeSheet ? AnimationEditorKind::None : AnimationEditorKind::DopeSheet;
-    if (menuItem("Curve Editor", "Shift+F6", state.animationEditor == AnimationEditorKind::CurveEditor))
-      state.animationEditor = state.animationEditor == AnimationEditorKind::CurveEditor ? AnimationEditorKind::None
-                                                                                          : AnimationEditorKind::CurveEditor;
-    menuItem("Onion Skin", "Alt+O", &state.onionSkin.enabled);
-    menuItem("Motion Path", "Alt+P", &state.motionPath.enabled);
-    if (menuItem("Onion Skin && Motion Path...")) state.onionSkinWindowOpen = true;
-    if (menuItem("Motion Control...", "Alt+M")) state.motionControl.windowOpen = true;
-    ImGui::EndMenu();
-  }
-  if ((gMenu = "", beginMenu("Pose"))) {
-    if (menuItem("Add IK Target to Selected", "Shift+I", false, doc.selection.active() >= 0)) addIkTargetToActive(state);
-    const int t = currentIkTarget(state);
-    if (menuItem("Remove IK Target", nullptr, false, t >= 0)) removeCurrentIkTarget(state);
-    const bool pinned = t >= 0 && doc.ikTargets()[t].pinned;
-    if (menuItem("Pin IK Target", nullptr, pinned, t >= 0)) togglePin(state);
-    ImGui::SetNextItemWidth(80);
-    ImGui::SliderInt("Chain length", &p.ikChainLength, 1, 8);
-    bool unskinned = false;
-    for (const MeshInstance& m : doc.scene().meshInstances) unskinned = unskinned || m.skin < 0;
-    if (menuItem("Bind to Skeleton with Automatic Weights", "Ctrl+P", false, unskinned))
-      showEditorError(state, bindUnskinnedMeshes(doc));
-    // Keying (timeline.h): at the playhead, with the timeline's key preferences.
-    ImGui::Separator();
-    if (menuItem("Insert Keyframe", "I", false, !doc.selection.empty())) state.statusMessage = keySelectedJoints(state);
-    if (menuItem("Insert Keys on All Joints")) state.statusMessage = keyAllJoints(state);
-    if (menuItem("Delete Keyframe", "Alt+I", false, !doc.selection.empty()))
-      state.statusMessage = deleteSelectedJointKeys(state);
-    menuItem("Auto-key", nullptr, &state.doc.autoKey.enabled);
-    ImGui::EndMenu();
-  }
-  if ((gMenu = "", beginMenu("Teach"))) {
-    if (menuItem("Compare Solvers", "Esc leaves", state.compare.active)) state.compare.active = !state.compare.active;
-    ImGui::EndMenu();
-  }
-  if ((gMenu = "", beginMenu("Help"))) {
-    if (menuItem("Controls", "F1", p.showHelp)) p.showHelp = !p.showHelp;
-    ImGui::EndMenu();
+    const float top = ImGui::GetWindowPos().y;
+    state.items.record(title, glm::vec2(before.x, top),
+                       glm::vec2(ImGui::GetCursorScreenPos().x - ImGui::GetStyle().ItemSpacing.x,
+                                 top + ImGui::GetWindowHeight()));
   }
   // The file's name and a dirty marker at the right end of the bar.
-  const std::string name = documentTitle(state) + (doc.dirty() ? " *" : "");
+  const std::string name = documentTitle(state) + (state.doc.dirty() ? " *" : "");
   ImGui::SameLine(ImGui::GetWindowWidth() - ImGui::CalcTextSize(name.c_str()).x - 12);
   ImGui::TextDisabled("%s", name.c_str());
   ImGui::EndMainMenuBar();

@@ -1,9 +1,10 @@
 // The modal questions and messages of a session: the file dialog, "Discard unsaved
-// changes?", "Recover unsaved work?", the error popup and the controls help.
+// changes?", "Recover unsaved work?", the error popup and Help > Controls.
 #include <imgui.h>
 
 #include <ctime>
 
+#include "editor/commands/controls_help.h"
 #include "editor/panels/dope_sheet_panel.h"
 #include "editor/panels/editor_panels.h"
 #include "editor/panels/compare_panel.h"
@@ -122,44 +123,32 @@ void errorPopup(EditorState& state) {
   ImGui::EndPopup();
 }
 
-void helpWindow(EditorState& state) {
-  if (!state.panels.showHelp) return;
+// Help > Controls: every command with its keys in the active keymap, by where the keys
+// apply, and the mouse gestures (controls_help.h) — generated, never a list of its own.
+void helpWindow(CommandContext& ctx) {
+  EditorState& state = ctx.state;
+  if (!state.panels.showHelp || !ctx.keymap) return;
   centreNextWindow();
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(display.x * 0.9f, display.y * 0.85f));
   ImGui::Begin("Controls", &state.panels.showHelp, kModalFlags);
-  const char* rows[][2] = {
-      {"Left click", "select a joint (Shift: add / toggle)"},
-      {"Left drag on empty space", "box select"},
-      {"Middle drag / Alt+left drag", "orbit"},
-      {"Shift+middle drag", "pan"},
-      {"Wheel", "zoom"},
-      {"R, then X/Y/Z", "rotate the selection (constrained)"},
-      {"G", "move the root joint"},
-      {"Alt+R", "clear rotation"},
-      {"Drag a ring of the gizmo", "rotate about that axis"},
-      {"Drag an IK target handle", "move the target, the chain follows"},
-      {"Numpad 1 / 3 / 7 (Ctrl: opposite)", "front / right / top view"},
-      {"Numpad 5", "perspective / orthographic"},
-      {"F / Home", "frame selected / all"},
-      {"Ctrl+Z / Ctrl+Shift+Z", "undo / redo"},
-      {"Ctrl+C / Ctrl+V / Ctrl+Shift+V", "copy / paste / paste flipped pose"},
-      {"Ctrl+N / Ctrl+O / Ctrl+S / Ctrl+Shift+S", "new / open / save / save as"},
-      {"Double-click a joint in the outliner", "rename it"},
-      {"Shift+F6", "curve editor: click / drag keys and handles, wheel zoom, Home fit"},
-      {"Dope sheet (View menu): click / drag keys", "select (Shift: toggle) / move, snapped to frames"},
-      {"Dope sheet: drag on empty space, A / Alt+A", "box select, select all / none"},
-      {"Dope sheet: G, X, Ctrl+C / Ctrl+V", "move, delete, copy / paste at the current frame"},
-      {"Space / Left, Right / Shift+Left, Right", "play, pause / step a frame / jump to start, end"},
-      {"Drag in the timeline's ruler", "scrub"},
-      {"I / Alt+I", "insert / delete keys of the selected joints at the current frame"},
-      {"Timeline: Auto-key", "record every posing edit as keys (same undo step)"},
-  };
-  if (ImGui::BeginTable("##controls", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) {
-    for (const auto& row : rows) {
+  if (const std::string keymap = userKeymapPath(); !keymap.empty())
+    ImGui::TextDisabled("Keys can be rebound in %s (docs/editor-panels.md)", keymap.c_str());
+  for (const ControlGroup& group : controlsTable(*ctx.keymap)) {
+    if (!ImGui::CollapsingHeader(group.title.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) continue;
+    if (!ImGui::BeginTable(group.title.c_str(), 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit)) continue;
+    for (const ControlRow& row : group.rows) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(row[0]);
+      ImGui::TextUnformatted(row.keys.empty() ? "-" : row.keys.c_str());
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(row[1]);
+      ImGui::TextUnformatted(row.action.c_str());
+      if (!row.hint.empty()) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("%s", row.hint.c_str());
+      }
+      ImGui::TableNextColumn();
+      ImGui::TextDisabled("%s", row.id.c_str());
     }
     ImGui::EndTable();
   }
@@ -168,7 +157,8 @@ void helpWindow(EditorState& state) {
 
 }  // namespace
 
-void drawSessionDialogs(EditorState& state) {
+void drawSessionDialogs(CommandContext& ctx) {
+  EditorState& state = ctx.state;
   PanelState& p = state.panels;
   std::string chosen;
   if (drawFileDialog(p.fileDialog, p.recent.entries(), chosen)) finishFileDialog(state, chosen);
@@ -180,29 +170,30 @@ void drawSessionDialogs(EditorState& state) {
   discardModal(state);
   recoveryModal(state);
   errorPopup(state);
-  helpWindow(state);
+  helpWindow(ctx);
 }
 
-void drawEditorPanels(EditorState& state, float fps) {
+void drawEditorPanels(CommandContext& ctx, float fps) {
+  EditorState& state = ctx.state;
   tickEditorSession(state, ImGui::GetTime());
   if (state.compare.active) {  // Teach > Compare Solvers covers the side panels and the 3D view
-    drawMainMenuBar(state);
-    drawComparePanel(state);
-    drawStatusBar(state, fps);
-    drawSessionDialogs(state);
+    drawMainMenuBar(ctx);
+    drawComparePanel(ctx);
+    drawStatusBar(ctx, fps);
+    drawSessionDialogs(ctx);
     return;
   }
-  drawMainMenuBar(state);
+  drawMainMenuBar(ctx);
   drawOutlinerPanel(state);
   drawHistoryPanel(state);
   drawPropertiesPanel(state);
-  drawIkTargetsPanel(state);
-  drawStatusBar(state, fps);
-  drawTimelinePanel(state);
-  drawCurveEditorPanel(state);
+  drawIkTargetsPanel(ctx);
+  drawStatusBar(ctx, fps);
+  drawTimelinePanel(ctx);
+  drawCurveEditorPanel(ctx);
   drawDopeSheetPanel(state);
   drawAnimationDisplayWindows(state);
-  drawSessionDialogs(state);
+  drawSessionDialogs(ctx);
 }
 
 }  // namespace kinema

@@ -4,31 +4,14 @@
 
 #include <string>
 
+#include "editor/commands/controls_help.h"
 #include "editor/panels/editor_panels.h"
 #include "editor/panels/panel_layout.h"
 
 namespace kinema {
 
-namespace {
-
-const char* toolHint(const EditorState& state) {
-  if (state.compare.active)
-    return "Compare: Right step, Shift+Right iteration, Space play, End run, R reset, drag the target, Esc leaves";
-  switch (state.tool.mode) {
-    case ModalTool::Rotate: return "Rotate: move the mouse, X/Y/Z constrain, click/Enter confirms, Esc cancels";
-    case ModalTool::Grab: return "Move: move the mouse, X/Y/Z constrain, click/Enter confirms, Esc cancels";
-    case ModalTool::BoxSelect: return "Box select: release to select (Shift adds, Ctrl removes)";
-    case ModalTool::IkDrag: return "IK drag: the chain follows; release to drop, Esc cancels";
-    case ModalTool::GizmoDrag: return "Gizmo: drag a ring to rotate about its axis";
-    case ModalTool::Navigate: return "View: orbit / pan";
-    case ModalTool::None: break;
-  }
-  return state.doc.selection.active() >= 0 ? "R rotate, G move root, Alt+R clear, Shift+click add" : "Click a joint to select it";
-}
-
-}  // namespace
-
-void drawStatusBar(EditorState& state, float fps) {
+void drawStatusBar(CommandContext& ctx, float fps) {
+  EditorState& state = ctx.state;
   const Document& doc = state.doc;
   const PanelRect r = statusBarRect(ImGui::GetIO().DisplaySize);
   ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
@@ -41,7 +24,8 @@ void drawStatusBar(EditorState& state, float fps) {
   else
     ImGui::TextDisabled("nothing selected");
   ImGui::SameLine(0, 24);
-  ImGui::TextDisabled("%s", toolHint(state));
+  // What the tool, the mode or the selection takes now, in the active keymap (controls_help.h).
+  if (ctx.keymap) ImGui::TextDisabled("%s", statusHint(state, *ctx.keymap).c_str());
   for (const IkTargetReport& report : doc.lastIkReports()) {
     ImGui::SameLine(0, 24);
     const std::string name = report.target < 0 ? "auto-IK" : "IK " + std::to_string(report.target);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "editor/panels/command_widgets.h"
 #include "editor/panels/editor_panels.h"
 #include "editor/panels/item_names.h"
 #include "editor/model/keying.h"
@@ -91,7 +92,8 @@ void drawRuler(EditorState& state, const TimelineRuler& r) {
 
 }  // namespace
 
-void drawTimelinePanel(EditorState& state) {
+void drawTimelinePanel(CommandContext& ctx) {
+  EditorState& state = ctx.state;
   if (!state.timelineShown()) return;
   const PanelRect r = timelineRect(ImGui::GetIO().DisplaySize);
   ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
@@ -102,20 +104,16 @@ void drawTimelinePanel(EditorState& state) {
   auto status = [&](const std::string& message) {
     if (!message.empty()) state.statusMessage = message;
   };
-  if (ImGui::Button("|<")) jumpToStart(state);
-  recordItem("Timeline/Start");
+  // The transport buttons run the timeline's commands (Space, Left, Right, Shift+Left/Right).
+  commandButton(ctx, "timeline.jump_start", "Timeline", "|<");
   ImGui::SameLine(0, 2);
-  if (ImGui::Button("<")) stepFrame(state, -1);
-  recordItem("Timeline/Back");
+  commandButton(ctx, "timeline.step_back", "Timeline", "<");
   ImGui::SameLine(0, 2);
-  if (ImGui::Button(state.playing ? "Pause" : "Play ")) togglePlayback(state);
-  recordItem("Timeline/Play");
+  commandButton(ctx, "timeline.play", "Timeline", state.playing ? "Pause" : "Play ");
   ImGui::SameLine(0, 2);
-  if (ImGui::Button(">")) stepFrame(state, 1);
-  recordItem("Timeline/Forward");
+  commandButton(ctx, "timeline.step_forward", "Timeline", ">");
   ImGui::SameLine(0, 2);
-  if (ImGui::Button(">|")) jumpToEnd(state);
-  recordItem("Timeline/End");
+  commandButton(ctx, "timeline.jump_end", "Timeline", ">|");
   ImGui::SameLine();
   ImGui::Text("%5lld", currentFrame(state));
   ImGui::SameLine();
@@ -146,41 +144,20 @@ void drawTimelinePanel(EditorState& state) {
   // Auto-key: Blender's record button, red while on.
   const bool recording = state.doc.autoKey.enabled;
   if (recording) ImGui::PushStyleColor(ImGuiCol_Button, IM_COL32(190, 40, 40, 255));
-  if (ImGui::Button(recording ? "(*) Auto-key" : "( ) Auto-key")) state.doc.autoKey.enabled = !recording;
-  recordItem("Timeline/Auto-key");
+  commandButton(ctx, "anim.auto_key", "Timeline", recording ? "(*) Auto-key" : "( ) Auto-key");
   if (recording) ImGui::PopStyleColor();
   ImGui::SameLine(0, 2);
   if (ImGui::Button("Keys")) ImGui::OpenPopup("Key preferences");
   recordItem("Timeline/Keys");
   keyPreferencesPopup(state);
   ImGui::SameLine();
-  const bool dope = state.animationEditor == AnimationEditorKind::DopeSheet,
-             curves = state.animationEditor == AnimationEditorKind::CurveEditor;
-  if (ImGui::Selectable("Dope", dope, 0, ImVec2(34, 0)))
-    state.animationEditor = dope ? AnimationEditorKind::None : AnimationEditorKind::DopeSheet;
-  recordItem("Timeline/Dope");
+  commandSelectable(ctx, "view.dope_sheet", "Timeline", "Dope", ImVec2(34, 0));
   ImGui::SameLine();
-  if (ImGui::Selectable("Curves", curves, 0, ImVec2(44, 0)))
-    state.animationEditor = curves ? AnimationEditorKind::None : AnimationEditorKind::CurveEditor;
-  recordItem("Timeline/Curves");
+  commandSelectable(ctx, "view.curve_editor", "Timeline", "Curves", ImVec2(44, 0));
   ImGui::PopStyleVar();
   drawRuler(state, timelineRuler(state, r.x, r.y, r.w, r.h));
   ImGui::End();
   ImGui::PopStyleVar();
-}
-
-void drawViewportHelp(const EditorState& state, float fps) {
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowPos(ImVec2(display.x - 8, 8), ImGuiCond_Always, ImVec2(1, 0));
-  ImGui::SetNextWindowBgAlpha(0.35f);
-  ImGui::Begin("##help", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
-                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
-  ImGui::Text("%s", state.doc.scene().source.c_str());
-  ImGui::TextDisabled("orbit: middle drag / Alt+left   pan: Shift+middle");
-  ImGui::TextDisabled("zoom: wheel   frame all: Home / F   select: left click");
-  ImGui::TextDisabled("%.0f fps", fps);
-  ImGui::End();
 }
 
 }  // namespace kinema

@@ -1,5 +1,6 @@
 #include "editor/viewport/viewport_overlay.h"
 
+#include "editor/model/active_ik_target.h"
 #include "editor/viewport/limit_shapes.h"
 #include "editor/viewport/overlay_builder.h"
 
@@ -16,12 +17,13 @@ void buildViewportOverlay(const EditorState& state, const ViewportView& view, co
     addRotateGizmo(out, gizmo, view, hot);
   }
   const std::vector<PoseIkTarget>& targets = doc.ikTargets();
+  const int activeTarget = activeIkTarget(doc);
   for (int i = 0; i < static_cast<int>(targets.size()); ++i) {
     const int e = targets[i].target.effector;
     const glm::vec3 effector = e >= 0 && e < static_cast<int>(state.world.size()) ? glm::vec3(state.world[e][3])
                                                                                   : targets[i].target.position;
     const bool hot = i == state.hoveredIkTarget || (mode == ModalTool::IkDrag && state.tool.ikTarget == i) ||
-                     i == state.panels.selectedIkTarget;
+                     i == activeTarget;
     addIkTargetHandle(out, targets[i].target.position, effector, hot);
   }
   if (doc.temporaryIkTarget())

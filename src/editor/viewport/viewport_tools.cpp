@@ -11,7 +11,6 @@
 #include "editor/viewport/mesh_picking.h"
 #include "editor/viewport/picking.h"
 #include "editor/model/pose_edits.h"
-#include "editor/model/timeline.h"
 #include "editor/viewport/translate_drag.h"
 #include "editor/viewport/viewport_controller.h"
 
@@ -280,9 +279,47 @@ void ViewportTools::mouseMove(EditorState& state, const ViewportView& view, cons
   }
 }
 
-void ViewportTools::key(EditorState& state, const ViewportView& view, int key) {
+bool ViewportTools::startRotate(EditorState& state, const ViewportView& view) {
   Document& doc = state.doc;
-  const bool ctrl = mods_ & kModCtrl, shift = mods_ & kModShift, alt = mods_ & kModAlt;
+  if (state.tool.mode != ModalTool::None || doc.selection.empty() || !beginModal(state, ModalTool::Rotate, "Rotate"))
+    return false;
+  joints_.clear();
+  startLocal_.clear();
+  parentWorld_.clear();
+  startWorld_.clear();
+  for (int j : doc.selection.joints()) {
+    if (hasSelectedAncestor(doc, j)) continue;
+    const int parent = doc.skeleton().parents[j];
+    joints_.push_back(j);
+    startLocal_.push_back(doc.pose().local[j].rotation);
+    parentWorld_.push_back(parent >= 0 ? jointWorldRotation(doc, parent) : glm::quat(1, 0, 0, 0));
+    startWorld_.push_back(jointWorldRotation(doc, j));
+  }
+  rotateMode_ = RotateMode{};
+  const int active = doc.selection.active() >= 0 ? doc.selection.active() : doc.selection.joints().back();
+  glm::vec2 c(0.0f);
+  view.project(jointPosition(state, active), c);
+  sweep_.begin(c, mouse_);
+  return true;
+}
+
+bool ViewportTools::startGrab(EditorState& state) {
+  Document& doc = state.doc;
+  if (state.tool.mode != ModalTool::None || doc.skeleton().size() == 0) return false;
+  state.tool = ToolState{};
+  if (const std::string error = beginTranslateDrag(doc, 0); !error.empty()) {
+    state.statusMessage = error;
+    return false;
+  }
+  state.tool.mode = ModalTool::Grab;
+  state.tool.startMouse = state.tool.mouse = mouse_;
+  state.tool.startPoint = jointPosition(state, 0);
+  startTranslation_ = doc.pose().local[0].translation;
+  return true;
+}
+
+// The keys a running tool takes (every other key is a command: commands/editor_input.h).
+void ViewportTools::modalKey(EditorState& state, const ViewportView& view, int key) {
   const ModalTool mode = state.tool.mode;
   if (mode == ModalTool::Rotate || mode == ModalTool::Grab || mode == ModalTool::IkDrag) {
     if (key == keys::ESCAPE) return cancel(state);
@@ -306,123 +343,13 @@ void ViewportTools::key(EditorState& state, const ViewportView& view, int key) {
     else applyMove(state, view);
     return;
   }
-  if (mode != ModalTool::None) {
-    if (key == keys::ESCAPE) cancel(state);
-    return;
-  }
-  const float aspect = view.size.x / std::max(view.size.y, 1.0f);
-  const float minRadius = 0.1f * std::max(jointBounds(state.world).radius(), 1e-3f);
-  if (ctrl) {
-    // Ctrl+N/O/S/Q/Z/Y/C/V are the main menu's shortcuts (commands/file_commands.h).
-    if (key == keys::I) state.view.autoIk = !state.view.autoIk;
-    else if (key == keys::P) {  // Blender's Ctrl+P, "With Automatic Weights"
-      const std::string error = bindUnskinnedMeshes(doc);
-      state.statusMessage = error.empty() ? "Bound to the skeleton with automatic weights" : error;
-    }
-    else if (key == keys::KP_1) applyViewPreset(state.camera, ViewPreset::Back);
-    else if (key == keys::KP_3) applyViewPreset(state.camera, ViewPreset::Left);
-    else if (key == keys::KP_7) applyViewPreset(state.camera, ViewPreset::Bottom);
-    return;
-  }
-  switch (key) {
-    case keys::R:
-      if (alt) {
-        const std::string error = clearRotations(doc, doc.selection.joints());
-        if (!error.empty()) state.statusMessage = error;
-      } else if (!doc.selection.empty() && beginModal(state, ModalTool::Rotate, "Rotate")) {
-        joints_.clear();
-        startLocal_.clear();
-        parentWorld_.clear();
-        startWorld_.clear();
-        for (int j : doc.selection.joints()) {
-          if (hasSelectedAncestor(doc, j)) continue;
-          const int parent = doc.skeleton().parents[j];
-          joints_.push_back(j);
-          startLocal_.push_back(doc.pose().local[j].rotation);
-          parentWorld_.push_back(parent >= 0 ? jointWorldRotation(doc, parent) : glm::quat(1, 0, 0, 0));
-          startWorld_.push_back(jointWorldRotation(doc, j));
-        }
-        rotateMode_ = RotateMode{};
-        const int active = doc.selection.active() >= 0 ? doc.selection.active() : doc.selection.joints().back();
-        glm::vec2 c(0.0f);
-        view.project(jointPosition(state, active), c);
-        sweep_.begin(c, mouse_);
-      }
-      break;
-    case keys::G:
-      if (doc.skeleton().size() > 0) {
-        state.tool = ToolState{};
-        const std::string error = beginTranslateDrag(doc, 0);
-        if (!error.empty()) {
-          state.statusMessage = error;
-          break;
-        }
-        state.tool.mode = ModalTool::Grab;
-        state.tool.startMouse = state.tool.mouse = mouse_;
-        state.tool.startPoint = jointPosition(state, 0);
-        startTranslation_ = doc.pose().local[0].translation;
-      }
-      break;
-    case keys::I:
-      // Shift+I: an IK target on the active joint (Blender's "Add IK"), chain length from
-      // the IK panel's setting; two bones get the closed-form solver.
-      if (shift && doc.selection.active() >= 0) {
-        const int length = std::max(1, state.panels.ikChainLength);
-        const std::string error = addIkTargetAtEffector(doc, doc.selection.active(), length,
-                                                        length == 2 ? IkSolver::TwoBone : IkSolver::JacobianDls);
-        if (!error.empty()) state.statusMessage = error;
-      } else if (!shift) {
-        state.statusMessage = alt ? deleteSelectedJointKeys(state) : keySelectedJoints(state);  // I / Alt+I
-      }
-      break;
-    case keys::A:
-      if (alt) doc.selection.clear();
-      else doc.selection.selectAll(doc.skeleton().size());
-      break;
-    case keys::F: frameSelected(state.camera, state.world, doc.selection.joints(), aspect, minRadius); break;
-    case keys::HOME: ViewportController().frameAll(state.camera, jointBounds(state.world), aspect); break;
-    case keys::KP_1: applyViewPreset(state.camera, ViewPreset::Front); break;
-    case keys::KP_3: applyViewPreset(state.camera, ViewPreset::Right); break;
-    case keys::KP_7: applyViewPreset(state.camera, ViewPreset::Top); break;
-    case keys::KP_5: toggleOrthographic(state.camera); break;
-    case keys::Z:
-      // Alt+Z (Blender's x-ray toggle) cycles the bones: on -> x-ray -> none -> on.
-      if (alt) {
-        ViewOptions& v = state.view;
-        if (!v.showBones) v.showBones = true, v.xrayBones = false;
-        else if (!v.xrayBones) v.xrayBones = true;
-        else v.showBones = false;
-      }
-      break;
-    case keys::W:
-      if (alt) state.view.showWeights = !state.view.showWeights;  // heat colours of the active joint
-      break;
-    case keys::SPACE:
-      if (state.timelineShown()) togglePlayback(state);
-      break;
-    case keys::LEFT:  // a frame back; Shift: to the start frame (Blender)
-      if (state.timelineShown()) shift ? jumpToStart(state) : stepFrame(state, -1);
-      break;
-    case keys::RIGHT:
-      if (state.timelineShown()) shift ? jumpToEnd(state) : stepFrame(state, 1);
-      break;
-    case keys::O:
-      if (alt) state.onionSkin.enabled = !state.onionSkin.enabled;  // onion skin (ghost poses)
-      break;
-    case keys::P:
-      if (alt) state.motionPath.enabled = !state.motionPath.enabled;  // the active joint's motion path
-      break;
-    case keys::M:
-      if (alt) state.motionControl.windowOpen = !state.motionControl.windowOpen;  // motion control window
-      break;
-    default: break;
-  }
+  if (mode != ModalTool::None && key == keys::ESCAPE) cancel(state);
 }
 
 void ViewportTools::handle(EditorState& state, const InputEvent& e, const ViewportView& view,
-                           const SkeletonDrawList& list, bool mouseCaptured, bool keyboardCaptured) {
+                           const SkeletonDrawList& list, bool mouseCaptured) {
   const bool toolRunning = state.tool.mode != ModalTool::None;
-  mods_ = heldMods_ | e.mods;
+  mods_ = held_.track(e);
   switch (e.type) {
     case InputEventType::MouseMove: {
       const glm::vec2 previous = mouse_;
@@ -475,19 +402,12 @@ void ViewportTools::handle(EditorState& state, const InputEvent& e, const Viewpo
       if (!mouseCaptured) ViewportController().zoom(state.camera, e.y);
       break;
     case InputEventType::KeyDown:
-      // Modifiers come from the keys held (scripts) or the event's bits (GLFW).
-      if (e.key == keys::LEFT_SHIFT || e.key == keys::RIGHT_SHIFT) heldMods_ |= kModShift;
-      else if (e.key == keys::LEFT_CONTROL || e.key == keys::RIGHT_CONTROL) heldMods_ |= kModCtrl;
-      else if (e.key == keys::LEFT_ALT || e.key == keys::RIGHT_ALT) heldMods_ |= kModAlt;
-      else if (!toolRunning && state.animationEditorContains(mouse_)) {}  // the animation editor's keys
-      else if (!keyboardCaptured || toolRunning) key(state, view, e.key);
+      // Only a running tool takes keys here; the rest are commands (commands/editor_input.h).
+      if (toolRunning && !isModifierKey(e.key)) modalKey(state, view, e.key);
       break;
     case InputEventType::KeyUp:
-      if (e.key == keys::LEFT_SHIFT || e.key == keys::RIGHT_SHIFT) heldMods_ &= ~kModShift;
-      else if (e.key == keys::LEFT_CONTROL || e.key == keys::RIGHT_CONTROL) heldMods_ &= ~kModCtrl;
-      else if (e.key == keys::LEFT_ALT || e.key == keys::RIGHT_ALT) heldMods_ &= ~kModAlt;
-      break;
-    case InputEventType::Text: break;
+    case InputEventType::Text:
+    case InputEventType::Command: break;
   }
 }
 

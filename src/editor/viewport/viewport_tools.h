@@ -12,15 +12,25 @@
 namespace kinema {
 
 // Blender pose-mode input on an EditorState, no window: the window (live GLFW events) and
-// --script replay both call handle(). The maths is editor-viewport's (picking, gizmo, drags);
-// every change goes through the Document (drags are one undo step each).
+// --script replay both reach handle() through commands/editor_input.h. The mouse (select,
+// box select, gizmo and IK handle drags, navigation) and the keys of a running modal tool
+// (X/Y/Z, typed degrees, Enter, Esc) are handled here; every other key is a command, and
+// R / G start their tools through startRotate() / startGrab(). The maths is
+// editor-viewport's (picking, gizmo, drags); every change goes through the Document (drags
+// are one undo step each).
 class ViewportTools {
  public:
   // `list`: the skeleton as drawn last frame (picking casts rays against its shapes).
-  // `mouseCaptured`/`keyboardCaptured`: ImGui wants the event (over a panel, typing).
+  // `mouseCaptured`: ImGui wants the mouse (over a panel). A running tool takes every key
+  // (even while ImGui has the keyboard: the tool started from the 3D view).
   void handle(EditorState& state, const InputEvent& event, const ViewportView& view, const SkeletonDrawList& list,
-              bool mouseCaptured, bool keyboardCaptured);
+              bool mouseCaptured);
   glm::vec2 mouse() const { return mouse_; }
+  // R: rotates the selection with the mouse from where it is now. False (nothing starts)
+  // when a tool runs, nothing is selected or a drag is refused (the reason in the status).
+  bool startRotate(EditorState& state, const ViewportView& view);
+  // G: moves the root joint with the mouse. False as startRotate.
+  bool startGrab(EditorState& state);
   // The rotate gizmo on the active joint, as drawn and hit-tested (valid = false: none).
   bool gizmo(const EditorState& state, const ViewportView& view, RotateGizmo& out) const;
   GizmoPart hoveredGizmoPart() const { return hoveredPart_; }
@@ -28,7 +38,7 @@ class ViewportTools {
  private:
   void mouseMove(EditorState& state, const ViewportView& view, const SkeletonDrawList& list, glm::vec2 previous);
   void leftPress(EditorState& state, const ViewportView& view, const SkeletonDrawList& list);
-  void key(EditorState& state, const ViewportView& view, int key);
+  void modalKey(EditorState& state, const ViewportView& view, int key);
   bool beginModal(EditorState& state, ModalTool tool, const char* label);
   void confirm(EditorState& state);
   void cancel(EditorState& state);
@@ -40,7 +50,8 @@ class ViewportTools {
   glm::vec3 jointPosition(const EditorState& state, int joint) const;
 
   glm::vec2 mouse_{0.0f};
-  int mods_ = 0, heldMods_ = 0;  // the current event's modifiers; modifier keys held
+  int mods_ = 0;     // the current event's modifiers
+  HeldInput held_;   // the modifier keys held
   bool navigating_ = false, panning_ = false;
   bool pressedOnEmpty_ = false;  // a left press on nothing: a click clears, a drag box-selects
   GizmoPart hoveredPart_ = GizmoPart::None;

@@ -14,6 +14,8 @@
 #include <iostream>
 #include <numeric>
 
+#include "editor/commands/editor_input.h"
+#include "editor/commands/keymap.h"
 #include "editor/panels/editor_panels.h"
 #include "editor/window/imgui_backends.h"
 #include "editor/panels/panel_layout.h"
@@ -159,29 +161,9 @@ bool feedImGui(ImGuiIO& io, const InputEvent& e, FrameInputChanges& changed) {
       io.KeySuper = io.KeysDown[GLFW_KEY_LEFT_SUPER] || io.KeysDown[GLFW_KEY_RIGHT_SUPER] || (e.mods & kModSuper);
       break;
     case InputEventType::Text: io.AddInputCharactersUTF8(e.text.c_str()); break;
+    case InputEventType::Command: break;  // a script's command: not ImGui's
   }
   return true;
-}
-
-// The View menu's requests (the same actions as the viewport's keys).
-void actOnViewRequests(EditorState& state, float aspect) {
-  EditorRequests& r = state.requests;
-  if (r.frameAll) ViewportController().frameAll(state.camera, jointBounds(state.world), aspect);
-  if (r.frameSelected)
-    frameSelected(state.camera, state.world, state.doc.selection.joints(), aspect,
-                  0.1f * std::max(jointBounds(state.world).radius(), 1e-3f));
-  if (r.toggleOrtho) toggleOrthographic(state.camera);
-  switch (r.viewPreset) {
-    case 1: applyViewPreset(state.camera, ViewPreset::Front); break;
-    case -1: applyViewPreset(state.camera, ViewPreset::Back); break;
-    case 3: applyViewPreset(state.camera, ViewPreset::Right); break;
-    case -3: applyViewPreset(state.camera, ViewPreset::Left); break;
-    case 7: applyViewPreset(state.camera, ViewPreset::Top); break;
-    case -7: applyViewPreset(state.camera, ViewPreset::Bottom); break;
-    default: break;
-  }
-  r.frameAll = r.frameSelected = r.toggleOrtho = false;
-  r.viewPreset = 0;
 }
 
 }  // namespace
@@ -284,6 +266,15 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     };
     if (!error.empty()) result.error = error;
     ViewportTools tools;
+    // Every key-down ImGui does not want runs the command its keymap binds (editor_input.h);
+    // the user's keymap file is read once, its bad lines reported and skipped.
+    std::vector<std::string> keymapProblems;
+    const Keymap keymap = loadUserKeymap(editorCommands(), keymapProblems);
+    for (const std::string& problem : keymapProblems) {
+      std::cerr << "kinema edit: keymap: " << problem << "\n";
+      showEditorError(state, "keymap: " + problem);
+    }
+    EditorInput input;
     SkeletonDrawList list;  // last frame's drawing: picking casts rays against it
     OverlayDrawList overlay;
     AnimationDisplay animationDisplay;  // onion-skin ghosts, motion path (kept: the path is cached)
@@ -319,8 +310,14 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       state.viewportRect = glm::vec4(vp.x, vp.y, vp.w, vp.h);
       const ViewportView view = ViewportView::of(state.camera, glm::vec2(vp.w, vp.h), glm::vec2(vp.x, vp.y));
 
-      // Input: ImGui gets every event; the viewport tools get those ImGui does not want
-      // (as of the previous frame, which is what the user saw).
+      // What commands run on this frame: from the keys below, the menus and the panels.
+      CommandContext commands(state);
+      commands.tools = &tools;
+      commands.view = view;
+      commands.keymap = &keymap;
+      commands.mouse = input.held().mouse;
+      // Input: ImGui gets every event; the tools, the compare mode and the keymap's commands
+      // get those ImGui does not want (as of the previous frame, which is what the user saw).
       FrameInputChanges changed;
       const bool mouseCaptured = io.WantCaptureMouse, keyboardCaptured = io.WantCaptureKeyboard;
       while (!live.queue.empty()) {
@@ -345,10 +342,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
           }
         }
         if (!feedImGui(io, live.queue.front(), changed)) break;
-        if (state.compare.active)  // the compare mode takes the viewport's input
-          handleCompareEvent(state.compare, live.queue.front(), mouseCaptured, keyboardCaptured);
-        else
-          tools.handle(state, live.queue.front(), view, list, mouseCaptured, keyboardCaptured);
+        input.handle(commands, live.queue.front(), list, mouseCaptured, keyboardCaptured);
         live.queue.pop_front();
       }
       advancePlayback(state, dt);
@@ -361,10 +355,9 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       io.DisplayFramebufferScale = ImVec2(ww > 0 ? float(fbw) / ww : 1.0f, wh > 0 ? float(fbh) / wh : 1.0f);
       io.DeltaTime = static_cast<float>(std::max(dt, 1e-4));
       ImGui::NewFrame();
-      if (!o.emptyFrame) drawEditorPanels(state, io.Framerate);
+      if (!o.emptyFrame) drawEditorPanels(commands, io.Framerate);
       ImGui::Render();
       evaluateEditorPose(state);  // the panels may have edited the document
-      actOnViewRequests(state, vp.w / vp.h);
 
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       if (o.emptyFrame) {

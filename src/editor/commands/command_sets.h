@@ -1,0 +1,64 @@
+#pragma once
+// The editor's commands by area, each file appending its own in menu order (the registry,
+// command_registry.cpp, puts them together). Internal to the commands layer.
+#include <vector>
+
+#include "editor/commands/command_registry.h"
+
+namespace kinema {
+
+void addFileCommands(std::vector<Command>& out);             // File menu (file_commands.cpp)
+void addEditCommands(std::vector<Command>& out);             // Edit menu (edit_commands.cpp)
+void addViewCommands(std::vector<Command>& out);             // View menu (view_commands.cpp)
+void addPoseCommands(std::vector<Command>& out);             // Pose menu, selection, R / G (pose_commands.cpp)
+void addTimelineCommands(std::vector<Command>& out);         // play, step, jump (timeline_commands.cpp)
+void addAnimationEditorCommands(std::vector<Command>& out);  // dope sheet, curve editor keys
+void addCompareCommands(std::vector<Command>& out);          // Teach menu, compare mode keys
+void addHelpCommands(std::vector<Command>& out);             // Help menu
+
+// Builds a Command field by field, so the definitions read as one line per property:
+//   out.push_back(CommandDef("file.save", "Save").menu("File").key(keys::S, kModCtrl).run(...));
+class CommandDef {
+ public:
+  CommandDef(std::string id, std::string label) {
+    c_.id = std::move(id);
+    c_.label = std::move(label);
+  }
+  CommandDef& menu(std::string path, bool separatorBefore = false) {
+    c_.menu = std::move(path);
+    c_.separatorBefore = separatorBefore;
+    return *this;
+  }
+  CommandDef& key(int key, int mods = 0) {
+    c_.keys.push_back(KeyChord{key, mods});
+    return *this;
+  }
+  CommandDef& scope(CommandScope s) {
+    c_.scope = s;
+    return *this;
+  }
+  CommandDef& hint(std::string text) {
+    c_.hint = std::move(text);
+    return *this;
+  }
+  CommandDef& enabled(std::function<bool(const CommandContext&)> f) {
+    c_.enabled = std::move(f);
+    return *this;
+  }
+  CommandDef& checked(std::function<bool(const CommandContext&)> f) {
+    c_.checked = std::move(f);
+    return *this;
+  }
+  CommandDef& run(std::function<void(CommandContext&)> f) {
+    c_.run = std::move(f);
+    return *this;
+  }
+  operator Command() const { return c_; }
+
+ private:
+  Command c_;
+};
+// The document is hidden while Teach > Compare Solvers is open: no edits of it then.
+inline bool documentShown(const CommandContext& ctx) { return !ctx.state.compare.active; }
+
+}  // namespace kinema
