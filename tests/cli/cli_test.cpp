@@ -1,6 +1,9 @@
 // The command-line contract (docs/cli.md), driven through the built binary.
 #include <nlohmann/json.hpp>
 
+#include <fstream>
+#include <sstream>
+
 #include "io/image.h"
 #include "test_support.h"
 
@@ -62,6 +65,20 @@ TEST_F(Cli, EditListCommandsPrintsTheControlsTableWithTheKeymapApplied) {
   ASSERT_EQ(runCommand(listCommands, &out_, &err_), 0) << err_;
   EXPECT_NE(out_.find("| F2 | Save: "), std::string::npos);
   EXPECT_NE(err_.find(dir_ + "/kinema/keymap.txt:2: unknown command 'file.frobnicate'"), std::string::npos) << err_;
+}
+
+TEST_F(Cli, DocsControlsIsTheRegistrysTableAsGenerated) {
+  // docs/controls.md is `kinema edit --list-commands` with no keymap file; a command added,
+  // renamed or rebound without regenerating it (docs/controls.md says how) fails here.
+  ASSERT_EQ(runCommand("XDG_CONFIG_HOME='" + dir_ + "' " + KINEMA_BINARY + " edit --list-commands", &out_, &err_), 0)
+      << err_;
+  std::ifstream in(std::string(KINEMA_SOURCE_DIR) + "/docs/controls.md");
+  std::stringstream doc;
+  doc << in.rdbuf();
+  const std::string text = doc.str(), marker = "<!-- generated: kinema edit --list-commands -->\n";
+  const size_t at = text.find(marker);
+  ASSERT_NE(at, std::string::npos) << "docs/controls.md lacks the generated marker";
+  EXPECT_EQ(text.substr(at + marker.size()), out_) << "regenerate docs/controls.md (see its first lines)";
 }
 
 TEST_F(Cli, EditRefusesAScriptCommandThatIsNoCommand) {
