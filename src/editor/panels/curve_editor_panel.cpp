@@ -250,6 +250,7 @@ void drawCurveEditorPanel(EditorState& state) {
   ImGui::SetNextWindowSize(ImVec2(r.w, r.h), ImGuiCond_Always);
   ImGui::Begin("Curve Editor", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
                                             ImGuiWindowFlags_NoScrollWithMouse);
+  recordWindow("Curve Editor");
   if (!state.hasMotion()) {
     ImGui::TextDisabled("Curve editor: the scene has no animation (key a pose first)");
     ImGui::End();

@@ -165,6 +165,7 @@ void drawIkTargetsPanel(EditorState& state) {
     ImGui::End();
     return;
   }
+  recordWindow("IK Targets");
   const Skeleton& s = doc.skeleton();
   const auto& targets = doc.ikTargets();
   const int active = doc.selection.active();

@@ -21,6 +21,16 @@ inline void recordItem(const std::string& name) {
   }
 }
 
+// Names the window being drawn, its whole rectangle ("History", "IK Targets"), so a script
+// finds a panel's empty space or its title bar (to scroll it) and a test checks where the
+// 3D view lies between the panels. Call it between Begin and End.
+inline void recordWindow(const std::string& name) {
+  if (ItemRects* rects = namedItems()) {
+    const ImVec2 a = ImGui::GetWindowPos(), s = ImGui::GetWindowSize();
+    rects->record(name, glm::vec2(a.x, a.y), glm::vec2(a.x + s.x, a.y + s.y));
+  }
+}
+
 // After DragFloat3 / InputFloat4 and the like (n fields in one widget, default item width):
 // also names each field "name/0" .. "name/n-1", laid out as ImGui 1.86 lays them out
 // (PushMultiItemsWidths: equal widths, the last takes the rounding, inner spacing between).

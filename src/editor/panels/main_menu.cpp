@@ -17,22 +17,29 @@ namespace kinema {
 
 namespace {
 
-// Menu items named "Menu/Label" for scripts (item_names.h); the menu being drawn is kept here.
-const char* gMenu = "";
+// Menu items named "Menu/Label" for scripts (item_names.h), submenu items
+// "Menu/Submenu/Label"; the path of the menu being drawn is kept here.
+std::string gMenu;
 bool beginMenu(const char* name, bool enabled = true) {
   const bool open = ImGui::BeginMenu(name, enabled);
-  recordItem(std::string(gMenu[0] ? std::string(gMenu) + "/" : "") + name);
-  if (open && !gMenu[0]) gMenu = name;
+  const std::string path = gMenu.empty() ? std::string(name) : gMenu + "/" + name;
+  recordItem(path);
+  if (open) gMenu = path;
   return open;
+}
+// Ends a submenu opened with beginMenu inside another menu: back to the parent's path.
+void endSubmenu() {
+  ImGui::EndMenu();
+  gMenu.erase(std::min(gMenu.size(), gMenu.rfind('/')));
 }
 bool menuItem(const char* label, const char* shortcut = nullptr, bool selected = false, bool enabled = true) {
   const bool clicked = ImGui::MenuItem(label, shortcut, selected, enabled);
-  recordItem(std::string(gMenu) + "/" + label);
+  recordItem(gMenu + "/" + label);
   return clicked;
 }
 bool menuItem(const char* label, const char* shortcut, bool* selected, bool enabled = true) {
   const bool clicked = ImGui::MenuItem(label, shortcut, selected, enabled);
-  recordItem(std::string(gMenu) + "/" + label);
+  recordItem(gMenu + "/" + label);
   return clicked;
 }
 
@@ -151,7 +158,7 @@ void drawMainMenuBar(EditorState& state) {
     if (beginMenu("Open Recent", !p.recent.entries().empty())) {
       for (const std::string& path : p.recent.entries())
         if (menuItem(path.c_str())) requestOpenPath(state, path);
-      ImGui::EndMenu();
+      endSubmenu();
     }
     ImGui::Separator();
     if (menuItem("Save", "Ctrl+S")) requestSave(state);
@@ -160,7 +167,7 @@ void drawMainMenuBar(EditorState& state) {
       if (menuItem("glTF (.gltf)...")) requestExport(state, FileDialogPurpose::ExportGltf);
       if (menuItem("GLB (.glb)...")) requestExport(state, FileDialogPurpose::ExportGlb);
       if (menuItem("BVH (.bvh)...")) requestExport(state, FileDialogPurpose::ExportBvh);
-      ImGui::EndMenu();
+      endSubmenu();
     }
     ImGui::Separator();
     if (menuItem("Quit", "Ctrl+Q")) requestQuit(state);
