@@ -85,20 +85,8 @@ glm::dvec2 figurePixel(const json& compare, int v, glm::dvec2 p) {
 
 class CompareE2e : public ::testing::Test {
  protected:
-  // The mode on ccd-steps, idle, once for the suite: where its views and the 3D view
-  // (behind the mode) are at this window size.
-  static void SetUpTestSuite() {
-    if (runCommand("command -v xvfb-run") != 0) return;
-    const std::string dir = makeTempDir();
-    Script idle;
-    idle.wait(2);
-    const json d = runCompare(dir, shotDir(), idle, "probe", "ccd-steps");
-    if (d.is_object()) probe_ = d;
-    runCommand("rm -rf '" + dir + "'");
-  }
   void SetUp() override {
     if (runCommand("command -v xvfb-run") != 0) GTEST_SKIP() << "SKIPPED: xvfb-run is not installed";
-    ASSERT_TRUE(probe_.is_object()) << "the probe run failed";
     dir_ = makeTempDir();
   }
   void TearDown() override {
@@ -112,7 +100,19 @@ class CompareE2e : public ::testing::Test {
   json run(const Script& s, const std::string& name, const std::string& preset) {
     return runCompare(dir_, shotDir(), s, name, preset);
   }
-  static inline json probe_;
+  // The mode on ccd-steps, idle, run once when a test first asks: where its views and the
+  // 3D view (behind the mode) are at this window size.
+  static const json& probe() {
+    static const json d = [] {
+      const std::string dir = makeTempDir();
+      Script idle;
+      idle.wait(2);
+      const json out = runCompare(dir, shotDir(), idle, "probe", "ccd-steps");
+      runCommand("rm -rf '" + dir + "'");
+      return out;
+    }();
+    return d;
+  }
   std::string dir_;
 };
 
@@ -273,7 +273,8 @@ TEST_F(CompareE2e, TheTeachMenuOpensTheModeAndTheComboChoosesAPreset) {
 TEST_F(CompareE2e, The3dSwitchSolvesBallJointsAndADragOrbitsTheViews) {
   // 3D, then a left drag on empty space in the first view (its lower left, away from the
   // figure): 60 px right, 20 px up.
-  const glm::dvec2 a = rectOf(probe_["compare"]["views"][0]).at(0.1, 0.9), b = a + glm::dvec2(60, -20);
+  ASSERT_TRUE(probe().is_object());
+  const glm::dvec2 a = rectOf(probe()["compare"]["views"][0]).at(0.1, 0.9), b = a + glm::dvec2(60, -20);
   Script s;
   s.wait(2).clickItem("Compare/3D").wait(2).move(a).wait(1).down().path(a, b).wait(1).up().wait(2);
   const json d = run(s, "orbit_3d", "ccd-steps");
@@ -300,7 +301,8 @@ TEST_F(CompareE2e, CtrlZInTheModeLeavesTheHiddenDocumentAlone) {
   // Leave the mode, key every joint (one undo step), come back: Ctrl+Z there must not undo
   // the keys nobody can see; after Esc it does. The mouse waits in the 3D view (behind the
   // mode's views while they show).
-  const glm::dvec2 inView = viewportRect(probe_).at(0.5, 0.45);
+  ASSERT_TRUE(probe().is_object());
+  const glm::dvec2 inView = viewportRect(probe()).at(0.5, 0.45);
   Script s;
   s.wait(4).key("ESCAPE").wait(2).move(inView).wait(1).key("A").wait(2).key("I").wait(3);
   s.menu("Teach", "Compare Solvers").wait(2).move(inView).wait(1);

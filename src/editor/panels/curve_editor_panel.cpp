@@ -160,7 +160,7 @@ void keyPropertiesStrip(EditorState& state, const Clip& clip) {
       ImGui::SetNextItemWidth(70);
       // Dragging a slider is one undo step (a Document drag from press to release).
       const bool slid = ImGui::SliderFloat(names[i], &tcb[i], -1.0f, 1.0f, "%.2f");
-      recordItem(std::string("Curve Editor/") + "TCB"[i]);
+      recordFrame(std::string("Curve Editor/") + "TCB"[i], 70);
       if (slid) {
         if (!state.doc.dragging()) state.doc.beginDrag("Key TCB");
         const std::vector<CurveKeyRef> keys = state.curveEditor.selected;

@@ -31,6 +31,17 @@ inline void recordWindow(const std::string& name) {
   }
 }
 
+// After a labelled slider or drag of `width` pixels (0: the default item width): names its
+// frame alone, not the label beside it, so that a point `at` a fraction of it is that
+// fraction along the slider ("Curve Editor/T" at [0.99, 0.5] is its right end).
+inline void recordFrame(const std::string& name, float width = 0.0f) {
+  if (ItemRects* rects = namedItems()) {
+    const ImVec2 a = ImGui::GetItemRectMin();
+    const float w = width > 0.0f ? width : ImGui::CalcItemWidth();
+    rects->record(name, glm::vec2(a.x, a.y), glm::vec2(a.x + w, a.y + ImGui::GetFrameHeight()));
+  }
+}
+
 // After DragFloat3 / InputFloat4 and the like (n fields in one widget, default item width):
 // also names each field "name/0" .. "name/n-1", laid out as ImGui 1.86 lays them out
 // (PushMultiItemsWidths: equal widths, the last takes the rounding, inner spacing between).
