@@ -218,7 +218,7 @@ class Script {
   // would (ImGui ignores typed characters while Ctrl is down).
   Script& chord(const char* name, const std::vector<std::string>& mods) {
     addEvent(json{{"type", "key"}, {"key", name}, {"mods", mods}}).wait(1);
-    return add(std::string("\"type\":\"key_up\",\"key\":\"LEFT_CONTROL\"")).add(std::string("\"type\":\"key_up\",\"key\":\"LEFT_SHIFT\""));
+    return keyUp("LEFT_CONTROL").keyUp("LEFT_SHIFT");
   }
   Script& type(const std::string& text) { return addEvent(json{{"type", "text"}, {"text", text}}); }
   Script& scroll(double y) { return add("\"type\":\"scroll\",\"y\":" + num(y)); }
@@ -253,10 +253,10 @@ class Script {
 };
 
 // Runs the editor on the default character (or `file`) at windowSize() with the script;
-// recent and recovery files (XDG_CONFIG_HOME, XDG_STATE_HOME) stay in `dir`; the last frame goes to `shotDir`/NAME.png. Returns the
-// dumped state (null when the run failed).
-// `extra`: more arguments for `kinema edit` ("--compare ccd-steps"). The window is always
-// given its size (--size wins over anything remembered).
+// recent and recovery files (XDG_CONFIG_HOME, XDG_STATE_HOME) stay in `dir`; the last frame
+// goes to `shotDir`/NAME.png; `extra`: more arguments ("--compare ccd-steps"). The window is
+// always given its size (--size wins over anything remembered). Returns the dumped state
+// (null when the run failed).
 inline json runEditor(const std::string& dir, const std::string& shotDir, const Script& script, const std::string& name,
                       const std::string& file = "", const std::string& extra = "") {
   const std::string scriptPath = dir + "/" + name + ".jsonl", dump = dir + "/" + name + ".json";

@@ -65,6 +65,9 @@ void expectNear(glm::dvec3 a, glm::dvec3 b, double tol, const std::string& what)
 }
 
 TEST_F(EditorE2e, FrontViewFramesTheCharacter) {
+  // The window has the size the suite asked for (--size wins).
+  EXPECT_EQ(int(front_["window"]["width"]), e2e::windowPixels().x);
+  EXPECT_EQ(int(front_["window"]["height"]), e2e::windowPixels().y);
   // The 3D view is the free area between the panels, not the whole window: right of the
   // outliner and history column, left of the properties and IK column, from the panels' top
   // (under the menu bar) down to the timeline (there whenever a skeleton is).

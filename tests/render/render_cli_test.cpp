@@ -227,7 +227,10 @@ TEST_F(RenderCli, EditorWindowOpensRendersAndExitsUnderXvfb) {
   EXPECT_GT(distinctColors(image), 50);
   EXPECT_GT(brightBox(image).height(), 150);
   // Without a display, `edit` fails with one line and exit 1, never a crash.
-  EXPECT_EQ(runCommand("env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(KINEMA_BINARY) + " edit", &out_, &err_), 1);
+  EXPECT_EQ(runCommand("env -u DISPLAY -u WAYLAND_DISPLAY XDG_CONFIG_HOME='" + dir_ + "' XDG_STATE_HOME='" + dir_ + "' " +
+                           std::string(KINEMA_BINARY) + " edit",
+                       &out_, &err_),
+            1);
   EXPECT_NE(err_.find("display"), std::string::npos) << err_;
 }
 
