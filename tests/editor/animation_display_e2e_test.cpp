@@ -18,7 +18,6 @@ using e2e::json;
 using e2e::runEditor;
 using e2e::Script;
 
-const std::string kSize = "1280x800";
 constexpr int kFrames = 21;         // frames 0..20, 0.1 s apart
 constexpr double kFrameTime = 0.1;
 // Hips moves along X with constant acceleration: x(f) = 0.015 f^2 (0 .. 6 m); Chest is 1 m
@@ -74,7 +73,7 @@ class AnimationDisplayE2e : public ::testing::Test {
     runCommand("mkdir -p '" + dir + "'");
     return dir;
   }
-  json run(const Script& s, const std::string& name) { return runEditor(dir_, shotDir(), s, name, kSize, bvh_); }
+  json run(const Script& s, const std::string& name) { return runEditor(dir_, shotDir(), s, name, bvh_); }
   static Image shot(const std::string& name) {
     auto png = loadPng(shotDir() + "/" + name + ".png");
     EXPECT_TRUE(png.ok()) << name;

@@ -19,16 +19,7 @@ using namespace e2e;
 // The editor on --compare `preset` (the harness's runEditor with the extra flag).
 json runCompare(const std::string& dir, const std::string& shotDir, const Script& script, const std::string& name,
                 const std::string& preset) {
-  const std::string scriptPath = dir + "/" + name + ".jsonl", dump = dir + "/" + name + ".json";
-  std::ofstream(scriptPath) << script.text();
-  std::string out, err;
-  const std::string xdg = "XDG_STATE_HOME=" + dir + " XDG_CONFIG_HOME=" + dir + " ";
-  const int rc = runCommand(kXvfb + "env " + xdg + kSoftware + KINEMA_BINARY + " edit --compare " + preset +
-                                " --size 1280x720 --script " + scriptPath + " --dump-state " + dump + " --screenshot " +
-                                shotDir + "/" + name + ".png",
-                            &out, &err);
-  EXPECT_EQ(rc, 0) << err;
-  return rc == 0 ? readJson(dump) : json();
+  return runEditor(dir, shotDir, script, name, "", "--compare " + preset);
 }
 
 // `kinema ik` on the case (its chain written as .kinema) with `solver`: the JSON with "trace".
@@ -108,6 +99,19 @@ class CompareE2e : public ::testing::Test {
   }
   json run(const Script& s, const std::string& name, const std::string& preset) {
     return runCompare(dir_, shotDir(), s, name, preset);
+  }
+  // The mode on ccd-steps, idle, run once when a test first asks: where its views and the
+  // 3D view (behind the mode) are at this window size.
+  static const json& probe() {
+    static const json d = [] {
+      const std::string dir = makeTempDir();
+      Script idle;
+      idle.wait(2);
+      const json out = runCompare(dir, shotDir(), idle, "probe", "ccd-steps");
+      runCommand("rm -rf '" + dir + "'");
+      return out;
+    }();
+    return d;
   }
   std::string dir_;
 };
@@ -246,14 +250,12 @@ TEST_F(CompareE2e, DraggingAJointSetsTheStartPoseOfEverySolver) {
   }
 }
 
-// Pixels read off a 1280x720 screenshot (ImGui 1.86's default font): the Teach menu and its
-// item, the toolbar's preset combo and its sixth row ("A target near the root"), the 3D radio.
-const glm::dvec2 kTeachMenu{205, 9}, kCompareItem{240, 33}, kPresetCombo{385, 36}, kNearRootRow{330, 145};
-const glm::dvec2 k3dRadio{574, 59};
-
+// Teach > Compare Solvers, then the toolbar's preset combo and its row "A target near the
+// root" (near-root), by name.
 TEST_F(CompareE2e, TheTeachMenuOpensTheModeAndTheComboChoosesAPreset) {
   Script s;
-  s.menu(kTeachMenu, kCompareItem).click(kPresetCombo).wait(2).click(kNearRootRow).wait(2).key("RIGHT").wait(2);
+  s.menu("Teach", "Compare Solvers").clickItem("Compare/Preset").wait(2).clickItem("Compare/Preset/near-root").wait(2);
+  s.key("RIGHT").wait(2);
   const json d = runEditor(dir_, shotDir(), s, "menu_near_root");
   ASSERT_TRUE(d.is_object());
   EXPECT_EQ(d["compare"]["active"], true);
@@ -269,10 +271,12 @@ TEST_F(CompareE2e, TheTeachMenuOpensTheModeAndTheComboChoosesAPreset) {
 }
 
 TEST_F(CompareE2e, The3dSwitchSolvesBallJointsAndADragOrbitsTheViews) {
-  // 3D, then a left drag on empty space in the first view: 60 px right, 20 px up.
-  const glm::dvec2 a{300, 420}, b{360, 400};
+  // 3D, then a left drag on empty space in the first view (its lower left, away from the
+  // figure): 60 px right, 20 px up.
+  ASSERT_TRUE(probe().is_object());
+  const glm::dvec2 a = rectOf(probe()["compare"]["views"][0]).at(0.1, 0.9), b = a + glm::dvec2(60, -20);
   Script s;
-  s.wait(2).click(k3dRadio).wait(2).move(a).wait(1).down().path(a, b).wait(1).up().wait(2);
+  s.wait(2).clickItem("Compare/3D").wait(2).move(a).wait(1).down().path(a, b).wait(1).up().wait(2);
   const json d = run(s, "orbit_3d", "ccd-steps");
   ASSERT_TRUE(d.is_object());
   EXPECT_EQ(d["compare"]["view"], "3d");
@@ -295,11 +299,13 @@ TEST_F(CompareE2e, The3dSwitchSolvesBallJointsAndADragOrbitsTheViews) {
 
 TEST_F(CompareE2e, CtrlZInTheModeLeavesTheHiddenDocumentAlone) {
   // Leave the mode, key every joint (one undo step), come back: Ctrl+Z there must not undo
-  // the keys nobody can see; after Esc it does.
-  const glm::dvec2 inView{600, 300};
+  // the keys nobody can see; after Esc it does. The mouse waits in the 3D view (behind the
+  // mode's views while they show).
+  ASSERT_TRUE(probe().is_object());
+  const glm::dvec2 inView = viewportRect(probe()).at(0.5, 0.45);
   Script s;
   s.wait(4).key("ESCAPE").wait(2).move(inView).wait(1).key("A").wait(2).key("I").wait(3);
-  s.menu(kTeachMenu, kCompareItem).wait(2).move(inView).wait(1);
+  s.menu("Teach", "Compare Solvers").wait(2).move(inView).wait(1);
   s.keyDown("LEFT_CONTROL").key("Z").keyUp("LEFT_CONTROL").wait(3);
   const json inside = run(s, "ctrl_z_inside", "ccd-steps");
   ASSERT_TRUE(inside.is_object());
@@ -314,7 +320,7 @@ TEST_F(CompareE2e, CtrlZInTheModeLeavesTheHiddenDocumentAlone) {
 
 TEST_F(CompareE2e, AnUnknownPresetIsABadUsage) {
   std::string out, err;
-  const int rc = runCommand(std::string(KINEMA_BINARY) + " edit --compare no-such-case --frame-count 1", &out, &err);
+  const int rc = runCommand(editorEnvironment(dir_) + KINEMA_BINARY + " edit --compare no-such-case --frame-count 1", &out, &err);
   EXPECT_EQ(rc, 2) << err;
   EXPECT_NE(err.find("no-such-case"), std::string::npos) << err;
 }

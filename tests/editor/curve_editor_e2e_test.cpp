@@ -1,8 +1,8 @@
 // End-to-end tests of the curve editor: the real `kinema edit` under xvfb-run on a small
 // keyed file written here, driven by --script (select the joint in the outliner, Shift+F6
 // opens the curve editor), checked in --dump-state and in the saved file. Key pixels come
-// from the dumped plot rectangle and view (the test's own mapping); widget pixels from the
-// fixed layout at 1280x800 with ImGui 1.86's default font, read off a screenshot once.
+// from the dumped plot rectangle and view (the test's own mapping); widgets are clicked by
+// name (e2e_harness.h).
 // Expected values are derived by hand in the comments (Kochanek-Bartels with tension 1 has
 // zero tangents, so the segment is a cubic Hermite with zero tangents).
 #include <cmath>
@@ -16,7 +16,6 @@ namespace {
 
 using namespace e2e;
 
-const std::string kSize = "1280x800";
 // Hips's translation y: 1, 2, 4, 3 at frames 0, 10, 20, 30 (30 fps); x = z = 0.
 const char* kFile = R"({"format": "kinema", "version": 1,
  "skeleton": {"joints": [
@@ -31,15 +30,12 @@ const char* kFile = R"({"format": "kinema", "version": 1,
      {"joint": "Spine", "target": "rotation", "interpolation": "linear",
       "times": [0, 1.0], "values": [[0, 0, 0, 1], [0, 0, 0.5, 0.8660254]]}]}]})";
 
-const glm::dvec2 kHipsRow{150, 76}, kSpineRow{150, 93};  // the outliner's first rows
-// The curve editor at 1280x800 (the animation editor area from y = 476): the toolbar, then
-// the key properties strip (interpolation combo, then the TCB sliders or handle types).
-const glm::dvec2 kFit{493, 493}, kNormalize{551, 493}, kRotationView{690, 493};
-const glm::dvec2 kInterpolationCombo{500, 516};
-// The combo's list opens below it, 17 px per item: Step, Linear, Hermite, Catmull-Rom, TCB, Bezier, ...
-enum Item { kStep = 0, kLinear = 1, kTcb = 4, kBezier = 5 };
-glm::dvec2 interpolationItem(int i) { return {500, 540 + 17.0 * i}; }
-const glm::dvec2 kTensionMax{633, 516};  // the T slider's right end: tension 1 (range -1..1)
+// The curve editor's toolbar, then the key properties strip (interpolation combo, then the
+// TCB sliders or handle types).
+const std::string kInterpolationCombo = "Curve Editor/Interpolation";
+std::string interpolationItem(const char* name) { return kInterpolationCombo + "/" + name; }
+// The T slider's right end: tension 1 (range -1..1; the slider clamps past its last pixel).
+const glm::dvec2 kSliderMax{0.99, 0.5};
 
 class CurveEditorE2e : public ::testing::Test {
  protected:
@@ -48,7 +44,7 @@ class CurveEditorE2e : public ::testing::Test {
     const std::string dir = makeTempDir();
     const std::string file = dir + "/anim.kinema";
     std::ofstream(file) << kFile;
-    const json d = runEditor(dir, shotDir(), open(Script()), "curve_open", kSize, file);
+    const json d = runEditor(dir, shotDir(), open(Script()), "curve_open", file);
     if (d.is_object()) opened_ = d;
     runCommand("rm -rf '" + dir + "'");
   }
@@ -70,9 +66,9 @@ class CurveEditorE2e : public ::testing::Test {
   // Selects Hips in the outliner and opens the curve editor with Shift+F6.
   static Script& open(Script&& s) { return open(s); }
   static Script& open(Script& s) {
-    return s.click(kHipsRow).wait(1).keyDown("LEFT_SHIFT").key("F6").keyUp("LEFT_SHIFT").wait(3);
+    return s.select("Hips").keyDown("LEFT_SHIFT").key("F6").keyUp("LEFT_SHIFT").wait(3);
   }
-  json run(Script& s, const std::string& name) { return runEditor(dir_, shotDir(), s, name, kSize, file_); }
+  json run(Script& s, const std::string& name) { return runEditor(dir_, shotDir(), s, name, file_); }
   static Script& save(Script& s) { return s.keyDown("LEFT_CONTROL").key("S").keyUp("LEFT_CONTROL").wait(3); }
 
   // The pixel of a (time, display value) point in a dump's curve editor plot.
@@ -124,8 +120,8 @@ Channel savedChannel(const std::string& path) {
 TEST_F(CurveEditorE2e, TcbWithTensionOneThroughThePanelGivesTheZeroTangentHermite) {
   Script s;
   open(s).click(yKeyPixel(1)).wait(1).keyDown("LEFT_SHIFT").click(yKeyPixel(2)).keyUp("LEFT_SHIFT").wait(1);
-  s.click(kInterpolationCombo).wait(2).click(interpolationItem(kTcb)).wait(2);
-  s.click(kTensionMax).wait(2);
+  s.clickItem(kInterpolationCombo).wait(2).clickItem(interpolationItem("TCB")).wait(2);
+  s.clickItem("Curve Editor/T", kSliderMax).wait(2);
   save(s);
   const json d = run(s, "curve_tcb");
   ASSERT_TRUE(d.is_object());
@@ -173,7 +169,7 @@ TEST_F(CurveEditorE2e, DraggingABezierHandleAlignsTheOtherOne) {
   const glm::dvec2 handle = pixel(opened_, t1 + handleT, 2.0 + handleV);
   const glm::dvec2 delta{30, -24};
   Script s;
-  open(s).click(yKeyPixel(1)).wait(1).click(kInterpolationCombo).wait(2).click(interpolationItem(kBezier)).wait(2);
+  open(s).click(yKeyPixel(1)).wait(1).clickItem(kInterpolationCombo).wait(2).clickItem(interpolationItem("Bezier")).wait(2);
   s.move(handle).down().path(handle, handle + delta, 6).up().wait(2);
   save(s);
   const json d = run(s, "curve_drag_handle");
@@ -221,7 +217,7 @@ TEST_F(CurveEditorE2e, WheelZoomsCtrlWheelZoomsTimeAndHomeFits) {
 // the flat x and z curves at 0; the fit then spans -1.2 .. 1.2.
 TEST_F(CurveEditorE2e, NormalizeTogglesTheNormalizedView) {
   Script s;
-  open(s).click(kNormalize).wait(2);
+  open(s).clickItem("Curve Editor/Normalize").wait(2);
   const json d = run(s, "curve_normalized");
   ASSERT_TRUE(d.is_object());
   const json& ce = d["curve_editor"];
@@ -237,9 +233,9 @@ TEST_F(CurveEditorE2e, NormalizeTogglesTheNormalizedView) {
 // value holds at 2 until frame 20), the final state Linear; two undo steps.
 TEST_F(CurveEditorE2e, InterpolationChangesToStepAndLinear) {
   Script s;
-  open(s).click(yKeyPixel(1)).wait(1).click(kInterpolationCombo).wait(2).click(interpolationItem(kStep)).wait(2);
+  open(s).click(yKeyPixel(1)).wait(1).clickItem(kInterpolationCombo).wait(2).clickItem(interpolationItem("Step")).wait(2);
   save(s);
-  s.click(kInterpolationCombo).wait(2).click(interpolationItem(kLinear)).wait(2);
+  s.clickItem(kInterpolationCombo).wait(2).clickItem(interpolationItem("Linear")).wait(2);
   const json d = run(s, "curve_step_linear");
   ASSERT_TRUE(d.is_object());
   EXPECT_EQ(yKey(d, 1)["interpolation"], "linear");
@@ -254,11 +250,9 @@ TEST_F(CurveEditorE2e, InterpolationChangesToStepAndLinear) {
 // Spine's rotation as x, y, z, w (3 + 4 curves), the Euler view as three angles (3 + 3).
 // The last frame is the README's screenshot (docs/images/curve_editor.png).
 TEST_F(CurveEditorE2e, ViewMenuOpensItAndTheRotationViewSwitches) {
-  // View menu: the item after Show Grid and a separator (items 17 px apart, separators 4 px).
-  const glm::dvec2 kViewMenu{113, 9}, kViewCurveEditor{153, 321};
   Script s;
-  s.click(kHipsRow).wait(1).keyDown("LEFT_SHIFT").click(kSpineRow).keyUp("LEFT_SHIFT").wait(1);
-  s.menu(kViewMenu, kViewCurveEditor).wait(2);
+  s.select("Hips").keyDown("LEFT_SHIFT").clickItem("Outliner/Spine").keyUp("LEFT_SHIFT").wait(1);
+  s.menu("View", "Curve Editor").wait(2);
   const json euler = run(s, "curve_euler_view");
   ASSERT_TRUE(euler.is_object());
   ASSERT_EQ(euler["curve_editor"]["open"], true);
@@ -266,7 +260,7 @@ TEST_F(CurveEditorE2e, ViewMenuOpensItAndTheRotationViewSwitches) {
   EXPECT_EQ(euler["curve_editor"]["curves"][5]["label"], "Spine Rotation Z (XYZ)");
   // Spine turns 60 degrees about Z: its Euler Z key goes 0 -> pi/3.
   EXPECT_NEAR(double(euler["curve_editor"]["curves"][5]["keys"][1]["value"]), M_PI / 3, 1e-5);
-  s.click(kRotationView).wait(2);
+  s.clickItem("Curve Editor/Rotation view").wait(2);
   // A key of the y curve selected, Bezier, so that the screenshot shows handles.
   const json q = run(s, "curve_quaternion_view");
   ASSERT_TRUE(q.is_object());
@@ -282,10 +276,11 @@ TEST_F(CurveEditorE2e, ReadmeScreenshotNormalizedWithABezierKey) {
   json normalizedView = opened_;
   normalizedView["curve_editor"]["view"] = {{"t0", -0.1}, {"t1", 1.1}, {"v0", -1.2}, {"v1", 1.2}};
   Script s;
-  s.click(kHipsRow).wait(1).keyDown("LEFT_SHIFT").click(kSpineRow).keyUp("LEFT_SHIFT").wait(1);
-  s.keyDown("LEFT_SHIFT").key("F6").keyUp("LEFT_SHIFT").wait(2).click(kNormalize).wait(2);
-  s.click(pixel(normalizedView, 1.0 / 3, -1.0 / 3)).wait(1).click(kInterpolationCombo).wait(2);
-  s.click(interpolationItem(kBezier)).wait(2).move({700, 300}).wait(2);
+  s.select("Hips").keyDown("LEFT_SHIFT").clickItem("Outliner/Spine").keyUp("LEFT_SHIFT").wait(1);
+  s.keyDown("LEFT_SHIFT").key("F6").keyUp("LEFT_SHIFT").wait(2).clickItem("Curve Editor/Normalize").wait(2);
+  s.click(pixel(normalizedView, 1.0 / 3, -1.0 / 3)).wait(1).clickItem(kInterpolationCombo).wait(2);
+  // The mouse then rests in the 3D view, off the plot.
+  s.clickItem(interpolationItem("Bezier")).wait(2).move(viewportRect(opened_).at(0.6, 0.6)).wait(2);
   const json d = run(s, "curve_editor_readme");
   ASSERT_TRUE(d.is_object());
   EXPECT_EQ(d["curve_editor"]["normalized"], true);

@@ -3,13 +3,12 @@
 // default character with a clip keyed on five joints). Outcomes are read from --dump-state
 // (its dope_sheet rows, selection and view) or from the saved file.
 //
-// Pixels come from the fixed layout, not from the editor's mapping: at 1280x800 with a clip
-// the timeline (40 px) and the animation editor (260 px) sit over the status bar (24 px), so
-// the 3D view is 757 - 300 = 457 px high and the dope sheet spans x 250..970, y 476..736.
-// Inside it the joint names take 160 px and the frame ruler 22 px: the key area starts at
-// (410, 498). The view opens at frame -2 on the left edge with 12 px per frame, rows 20 px
-// high, the summary row first; so frame f is at x = 410 + (f + 2) * 12 and row r's centre
-// at y = 498 + 20 r + 10.
+// Pixels come from the dump of a run that only opens the dope sheet (the suite's first run),
+// not from constants of the window size: its key area (dope_sheet.view: x, y, the frame at
+// the left edge, pixels per frame, row height), with the summary row first, so frame f is at
+// x = view.x + (f - first) * ppf and row r's centre at y = view.y + rowHeight (r + 1/2);
+// the joint names lie left of the key area and the frame ruler above it, inside the dope
+// sheet's window (named "Dope Sheet"). Menus and widgets are clicked by name.
 #include <cmath>
 #include <fstream>
 
@@ -20,13 +19,6 @@ namespace {
 
 using namespace e2e;
 
-const std::string kSize = "1280x800";
-constexpr double kKeyAreaX = 250 + 160, kKeyAreaY = 476 + 22, kFirstFrame = -2, kPixelsPerFrame = 12, kRowHeight = 20;
-double frameX(double frame) { return kKeyAreaX + (frame - kFirstFrame) * kPixelsPerFrame; }
-double rowY(int row) { return kKeyAreaY + kRowHeight * row + kRowHeight / 2; }
-glm::dvec2 key(double frame, int row) { return {frameX(frame), rowY(row)}; }
-const glm::dvec2 kViewMenu{113, 9}, kViewDopeSheet{153, 304};  // the first item after Show Grid
-constexpr double kRulerY = 476 + 11;
 // Rows of the clip below (skeleton order under the summary).
 enum Row { kSummary = 0, kHips = 1, kSpine = 2, kHead = 3, kUpperArmL = 4, kLowerArmL = 5 };
 
@@ -68,17 +60,35 @@ std::vector<std::string> selectedKeys(const json& d) {
 
 using Frames = std::vector<double>;
 
+// The default character with the clip, written to `path`; false when the asset is unreadable.
+bool writeWaveFile(const std::string& path) {
+  std::ifstream in(std::string(KINEMA_SOURCE_DIR) + "/assets/default_character.kinema");
+  json file = json::parse(in, nullptr, false);
+  if (file.is_discarded()) return false;
+  file["clips"] = clipJson();
+  std::ofstream(path) << file.dump(1);
+  return true;
+}
+
 class DopeSheetE2e : public ::testing::Test {
  protected:
+  // The dope sheet opened from the View menu once for the suite: its dump (opened_) gives
+  // the key area and the widgets' rectangles the other tests' pixels come from.
+  static void SetUpTestSuite() {
+    if (runCommand("command -v xvfb-run") != 0) return;
+    const std::string dir = makeTempDir(), file = dir + "/wave.kinema";
+    if (writeWaveFile(file)) {
+      const json d = runEditor(dir, shotDir(), opened(), "open", file);
+      if (d.is_object()) opened_ = d;
+    }
+    runCommand("rm -rf '" + dir + "'");
+  }
   void SetUp() override {
     if (runCommand("command -v xvfb-run") != 0) GTEST_SKIP() << "SKIPPED: xvfb-run is not installed";
+    ASSERT_TRUE(opened_.is_object()) << "the run opening the dope sheet failed";
     dir_ = makeTempDir();
-    std::ifstream in(std::string(KINEMA_SOURCE_DIR) + "/assets/default_character.kinema");
-    json file = json::parse(in, nullptr, false);
-    ASSERT_FALSE(file.is_discarded());
-    file["clips"] = clipJson();
     file_ = dir_ + "/wave.kinema";
-    std::ofstream(file_) << file.dump(1);
+    ASSERT_TRUE(writeWaveFile(file_));
   }
   void TearDown() override {
     if (!dir_.empty()) runCommand("rm -rf '" + dir_ + "'");
@@ -88,43 +98,65 @@ class DopeSheetE2e : public ::testing::Test {
     runCommand("mkdir -p '" + dir + "'");
     return dir;
   }
-  json run(const Script& script, const std::string& name) {
-    return runEditor(dir_, shotDir(), script, name, kSize, file_);
-  }
+  json run(const Script& script, const std::string& name) { return runEditor(dir_, shotDir(), script, name, file_); }
   // A script that opens the dope sheet from the View menu.
   static Script opened() {
     Script s;
-    s.menu(kViewMenu, kViewDopeSheet);
+    s.menu("View", "Dope Sheet");
     return s;
   }
+  // The key area of the opened dope sheet: frame f's x, row r's centre y, row r's top.
+  static const json& view() { return opened_["dope_sheet"]["view"]; }
+  static double frameX(double frame) {
+    return double(view()["x"]) + (frame - double(view()["first_frame"])) * double(view()["pixels_per_frame"]);
+  }
+  static double rowHeight() { return view()["row_height"]; }
+  static double rowTop(int row) { return double(view()["y"]) + rowHeight() * (row - int(view()["first_row"])); }
+  static double rowY(int row) { return rowTop(row) + rowHeight() / 2; }
+  static glm::dvec2 key(double frame, int row) { return {frameX(frame), rowY(row)}; }
+  // The middle of the frame ruler (between the window's top and the key area's) and of the
+  // names column (between the window's left and the key area's).
+  static double rulerY() { return (itemRect(opened_, "Dope Sheet").y + double(view()["y"])) / 2; }
+  static double namesX() { return (itemRect(opened_, "Dope Sheet").x + double(view()["x"])) / 2; }
+
+  static inline json opened_;
   std::string dir_, file_;
 };
 
 TEST_F(DopeSheetE2e, TheViewMenuOpensItOverTheTimelineWithTheClipsRows) {
-  json d = run(opened(), "open");
-  ASSERT_TRUE(d.is_object());
+  json d = opened_;  // the suite's run of opened()
   const json& ds = d["dope_sheet"];
   EXPECT_TRUE(ds["shown"].get<bool>());
-  // The layout the pixels below are derived from.
-  EXPECT_EQ(double(d["viewport"]["height"]), 457.0);
-  EXPECT_EQ(double(ds["view"]["x"]), kKeyAreaX);
-  EXPECT_EQ(double(ds["view"]["y"]), kKeyAreaY);
-  EXPECT_EQ(double(ds["view"]["first_frame"]), kFirstFrame);
-  EXPECT_EQ(double(ds["view"]["pixels_per_frame"]), kPixelsPerFrame);
+  // Over the timeline: the 3D view ends where the dope sheet begins, the dope sheet where
+  // the timeline does, as wide as the view; its key area right of the names and under the
+  // ruler, to its window's right and bottom edges.
+  const e2e::Rect sheet = itemRect(d, "Dope Sheet"), timeline = itemRect(d, "Timeline"), view = viewportRect(d);
+  EXPECT_EQ(view.bottom(), sheet.y);
+  EXPECT_EQ(sheet.bottom(), timeline.y);
+  EXPECT_EQ(sheet.x, view.x);
+  EXPECT_EQ(sheet.width, view.width);
+  EXPECT_GT(double(ds["view"]["x"]), sheet.x);
+  EXPECT_GT(double(ds["view"]["y"]), sheet.y);
+  EXPECT_EQ(double(ds["view"]["x"]) + double(ds["view"]["width"]), sheet.right());
+  EXPECT_EQ(double(ds["view"]["y"]) + double(ds["view"]["height"]), sheet.bottom());
+  // The view opens at frame -2 on the left edge with 12 px per frame.
+  EXPECT_EQ(double(ds["view"]["first_frame"]), -2.0);
+  EXPECT_EQ(double(ds["view"]["pixels_per_frame"]), 12.0);
   ASSERT_EQ(ds["rows"].size(), 6u);
   EXPECT_EQ(ds["rows"][0]["joint"], "Summary");
   EXPECT_EQ(ds["rows"][kSpine]["joint"], "Spine");
   EXPECT_EQ(ds["rows"][kLowerArmL]["joint"], "LowerArm.L");
   EXPECT_EQ(framesOfRow(d, "Summary"), (Frames{0, 4, 5, 8, 10, 12, 15, 16, 20, 24}));
   EXPECT_EQ(int(d["undo_depth"]), 0);
-  // The menu item again closes it.
-  d = run(opened().menu(kViewMenu, kViewDopeSheet), "close");
+  // The menu item again closes it: the 3D view gets its room back, down to the timeline.
+  d = run(opened().menu("View", "Dope Sheet"), "close");
   EXPECT_FALSE(d["dope_sheet"]["shown"].get<bool>());
-  EXPECT_EQ(double(d["viewport"]["height"]), 457.0 + 260.0);
+  EXPECT_EQ(viewportRect(d).height, view.height + sheet.height);
+  EXPECT_EQ(viewportRect(d).bottom(), itemRect(d, "Timeline").y);
 }
 
 TEST_F(DopeSheetE2e, DraggingAKeyMovesItToTheFrameUnderTheMouse) {
-  // Spine's key at 5, dragged 100.8 px to the right (8.4 frames): snapped to frame 13,
+  // Spine's key at 5, dragged 8.4 frames to the right: snapped to frame 13,
   // past Spine's key at 10, which stays. One undo step.
   Script s = opened();
   s.move(key(5, kSpine)).down().path(key(5, kSpine), key(13.4, kSpine), 8).up().wait(2);
@@ -146,7 +178,7 @@ TEST_F(DopeSheetE2e, DraggingAKeyMovesItToTheFrameUnderTheMouse) {
   d = run(left, "drag_key_left");
   EXPECT_EQ(framesOfRow(d, "LowerArm.L"), (Frames{1, 12, 20}));
 
-  // G: Head's key at 15 clicked, G, the mouse 31.2 px (2.6 frames) right: 17.6 rounds to 18;
+  // G: Head's key at 15 clicked, G, the mouse 2.6 frames right: 17.6 rounds to 18;
   // a left click confirms. Then the same with Esc: nothing moves and no step is added.
   Script grab = opened();
   grab.click(key(15, kHead)).wait(1).key("G").path(key(15, kHead), key(17.6, kHead), 3).wait(1);
@@ -162,7 +194,7 @@ TEST_F(DopeSheetE2e, DraggingAKeyMovesItToTheFrameUnderTheMouse) {
   EXPECT_EQ(selectedKeys(d), std::vector<std::string>{"Head@15"});
   // A click on a joint's name selects that joint.
   Script name = opened();
-  name.click({250 + 60, rowY(kLowerArmL)}).wait(2);
+  name.click({namesX(), rowY(kLowerArmL)}).wait(2);
   d = run(name, "click_name");
   EXPECT_EQ(d["selection"], json::array({"LowerArm.L"}));
 }
@@ -171,7 +203,7 @@ TEST_F(DopeSheetE2e, BoxSelectThenDeleteAndUndo) {
   // A box from frame 8 on the Spine row to frame 16 on the Head row (started on empty space)
   // takes Spine@10, Head@10 and Head@15; X deletes them (Head has no keys left: its row goes).
   Script s = opened();
-  const glm::dvec2 a(frameX(8), kKeyAreaY + 2 * kRowHeight + 3), b(frameX(16), kKeyAreaY + 4 * kRowHeight - 3);
+  const glm::dvec2 a(frameX(8), rowTop(kSpine) + 3), b(frameX(16), rowTop(kHead + 1) - 3);
   s.move(a).down().path(a, b, 6).up().wait(2);
   json d = run(s, "box_select");
   ASSERT_TRUE(d.is_object());
@@ -208,7 +240,7 @@ TEST_F(DopeSheetE2e, CopyPasteAtTheCurrentFrame) {
   s.click(key(10, kHips)).wait(1);
   s.move(key(15, kHead)).keyDown("LEFT_SHIFT").down().up().keyUp("LEFT_SHIFT").wait(1);
   s.keyDown("LEFT_CONTROL").key("C").keyUp("LEFT_CONTROL").wait(1);
-  s.click({frameX(30), kRulerY}).wait(2);
+  s.click({frameX(30), rulerY()}).wait(2);
   s.move(key(40, kSpine)).keyDown("LEFT_CONTROL").key("V").keyUp("LEFT_CONTROL").wait(2);
   json d = run(s, "copy_paste");
   ASSERT_TRUE(d.is_object());
@@ -232,8 +264,8 @@ TEST_F(DopeSheetE2e, ScreenshotForTheReadme) {
   // Keys of the arm selected by a box (frames 7..13 on UpperArm.L and LowerArm.L), the
   // current frame at 12.
   Script s = opened();
-  s.click({frameX(12), kRulerY}).wait(2);
-  const glm::dvec2 a(frameX(6.5), kKeyAreaY + 4 * kRowHeight + 2), b(frameX(13.5), kKeyAreaY + 6 * kRowHeight - 2);
+  s.click({frameX(12), rulerY()}).wait(2);
+  const glm::dvec2 a(frameX(6.5), rowTop(kUpperArmL) + 2), b(frameX(13.5), rowTop(kLowerArmL + 1) - 2);
   s.move(a).down().path(a, b, 4).up().wait(3);
   const json d = run(s, "dope_sheet");
   ASSERT_TRUE(d.is_object());
@@ -247,19 +279,20 @@ TEST_F(DopeSheetE2e, XdotoolDragsAKeyThroughTheXServer) {
   const std::string sh = dir_ + "/drive.sh";
   const auto at = [](glm::dvec2 p) { return std::to_string(std::lround(p.x)) + " " + std::to_string(std::lround(p.y)); };
   std::ofstream(sh) << "set -e\n"
-                    << "env XDG_STATE_HOME=" << dir_ << " XDG_CONFIG_HOME=" << dir_ << " " << kSoftware << KINEMA_BINARY
-                    << " edit '" << file_ << "' --size " << kSize << " --frame-count 100000 --dump-state " << dir_
+                    << editorEnvironment(dir_) << KINEMA_BINARY << " edit '" << file_ << "' --size " << windowSize()
+                    << " --frame-count 100000 --dump-state " << dir_
                     << "/xdotool.json & pid=$!\n"
                     << "for i in $(seq 100); do w=$(xdotool search --name 'Kinema - ' | head -1) && [ -n \"$w\" ] && break; sleep 0.1; done\n"
                     << "xdotool windowfocus --sync $w || true\nsleep 0.5\n"
-                    << "xdotool mousemove --window $w " << at(kViewMenu) << " click 1\nsleep 0.4\n"
-                    << "xdotool mousemove --window $w " << at(kViewDopeSheet) << " click 1\nsleep 0.4\n"
+                    << "xdotool mousemove --window $w " << at(itemRect(opened_, "View").centre()) << " click 1\nsleep 0.4\n"
+                    << "xdotool mousemove --window $w " << at(itemRect(opened_, "View/Dope Sheet").centre())
+                    << " click 1\nsleep 0.4\n"
                     << "xdotool mousemove --window $w " << at(key(20, kLowerArmL)) << "\nsleep 0.3\nxdotool mousedown 1\nsleep 0.3\n"
                     << "xdotool mousemove --window $w " << at(key(22, kLowerArmL)) << "\nsleep 0.2\n"
                     << "xdotool mousemove --window $w " << at(key(25, kLowerArmL)) << "\nsleep 0.3\nxdotool mouseup 1\nsleep 0.4\n"
                     << "xdotool key --window $w ctrl+s\nsleep 0.5\nxdotool key --window $w ctrl+q\nwait $pid\n";
   std::string out, err;
-  ASSERT_EQ(runCommand(kXvfb + "sh " + sh, &out, &err), 0) << err;
+  ASSERT_EQ(runCommand(xvfb() + "sh " + sh, &out, &err), 0) << err;
   const json saved = readJson(file_);
   ASSERT_TRUE(saved.is_object());
   std::vector<double> frames;

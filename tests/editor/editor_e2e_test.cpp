@@ -2,7 +2,8 @@
 // llvmpipe, driven by --script replay (and once by xdotool, through the X server), checked
 // in --dump-state. Expected values are derived by hand from the pixels the script moves:
 // the test projects joints itself (its own pinhole camera from the dumped eye/target/fov,
-// seen through the dumped viewport rectangle, which one test checks against the layout).
+// seen through the dumped viewport rectangle, which one test checks against the panels'
+// windows). Panel widgets are clicked by name (e2e_harness.h).
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -18,56 +19,11 @@ namespace kinema::test {
 namespace {
 
 using json = nlohmann::json;
-
-const std::string kSoftware =
-    "LIBGL_ALWAYS_SOFTWARE=1 MESA_GL_VERSION_OVERRIDE=3.3 ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 ";
-const std::string kXvfb = "xvfb-run -a -s '-screen 0 1280x800x24' ";
-constexpr double kW = 1280, kH = 720;  // the editor's default window size
-// The 3D view between the panels (panel_layout.h: left column 250 px, right column 310 px,
-// menu bar 19 px, status bar 24 px, the 40 px timeline above the status bar, there whenever
-// a skeleton is): x 250..970, y 19..656.
-constexpr double kViewX = 250, kViewY = 19, kViewW = kW - 250 - 310, kViewH = kH - 19 - 24 - 40;
-
-
-json readJson(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  json j = json::parse(s.str(), nullptr, false);
-  EXPECT_FALSE(j.is_discarded()) << path << " is not JSON: " << s.str().substr(0, 200);
-  return j;
-}
-
-glm::dvec3 vec3(const json& a) { return a.is_array() && a.size() == 3 ? glm::dvec3(a[0], a[1], a[2]) : glm::dvec3(NAN); }
-
-// A pinhole camera rebuilt from the dump: eye, target, vertical field of view, Y up, over
-// the viewport rectangle (window pixels).
-struct TestCamera {
-  glm::dvec3 eye, target;
-  double fovY = 0.6;
-  glm::dvec3 f, r, u;
-  double x0 = kViewX, y0 = kViewY, w = kViewW, h = kViewH;
-  explicit TestCamera(const json& d) {
-    const json& c = d["camera"];
-    const json& v = d["viewport"];
-    if (v.is_object()) x0 = v["x"], y0 = v["y"], w = v["width"], h = v["height"];
-    eye = vec3(c["eye"]);
-    target = vec3(c["target"]);
-    fovY = double(c["fov_y"]) * M_PI / 180.0;
-    f = glm::normalize(target - eye);
-    r = glm::normalize(glm::cross(f, glm::dvec3(0, 1, 0)));
-    u = glm::cross(r, f);
-  }
-  double depth(glm::dvec3 p) const { return glm::dot(p - eye, f); }
-  glm::dvec2 pixel(glm::dvec3 p) const {
-    const glm::dvec3 d = p - eye;
-    const double t = std::tan(fovY / 2), z = glm::dot(d, f);
-    const double nx = glm::dot(d, r) / (z * t * w / h), ny = glm::dot(d, u) / (z * t);
-    return {x0 + (nx + 1) / 2 * w, y0 + (1 - ny) / 2 * h};
-  }
-  // World units per pixel on the plane facing the camera at p's depth.
-  double unitsPerPixel(glm::dvec3 p) const { return 2 * depth(p) * std::tan(fovY / 2) / h; }
-};
+using e2e::DumpCamera;
+using e2e::itemRect;
+using e2e::readJson;
+using e2e::vec3;
+using e2e::viewportRect;
 
 // The script builder shared by the editor e2e suites.
 using e2e::Script;
@@ -77,14 +33,13 @@ using e2e::runEditor;
 class EditorE2e : public FrontViewSuite<EditorE2e> {
  public:
   static constexpr const char* kShotFolder = "editor_e2e";
-  static constexpr const char* kWindowSize = "1280x720";
 
  protected:
   // Runs the script on the default character (or `file`); the last frame goes to the build
   // dir as editor_e2e/NAME.png. Returns the dumped state.
   static json runScript(const std::string& dir, const Script& script, const std::string& name,
                         const std::string& file = "") {
-    return runEditor(dir, FrontViewSuite::shotDir(), script, name, kWindowSize, file);
+    return runEditor(dir, FrontViewSuite::shotDir(), script, name, file);
   }
 
   static glm::dvec3 joint(const json& d, const std::string& name, const char* field = "world_position") {
@@ -99,7 +54,7 @@ class EditorE2e : public FrontViewSuite<EditorE2e> {
     return glm::dquat(NAN, NAN, NAN, NAN);
   }
   static std::vector<std::string> selection(const json& d) { return d["selection"].get<std::vector<std::string>>(); }
-  TestCamera camera() const { return TestCamera(front_); }
+  DumpCamera camera() const { return DumpCamera(front_); }
   glm::dvec2 pixelOf(const std::string& name) const { return camera().pixel(joint(front_, name)); }
   glm::dvec2 midpoint(const std::string& a, const std::string& b) const { return (pixelOf(a) + pixelOf(b)) * 0.5; }
 };
@@ -110,27 +65,43 @@ void expectNear(glm::dvec3 a, glm::dvec3 b, double tol, const std::string& what)
 }
 
 TEST_F(EditorE2e, FrontViewFramesTheCharacter) {
-  // The 3D view is the free area between the panels, not the whole window.
-  EXPECT_EQ(double(front_["viewport"]["x"]), kViewX);
-  EXPECT_EQ(double(front_["viewport"]["y"]), kViewY);
-  EXPECT_EQ(double(front_["viewport"]["width"]), kViewW);
-  EXPECT_EQ(double(front_["viewport"]["height"]), kViewH);
+  // The window has the size the suite asked for (--size wins).
+  EXPECT_EQ(int(front_["window"]["width"]), e2e::windowPixels().x);
+  EXPECT_EQ(int(front_["window"]["height"]), e2e::windowPixels().y);
+  // The 3D view is the free area between the panels, not the whole window: right of the
+  // outliner and history column, left of the properties and IK column, from the panels' top
+  // (under the menu bar) down to the timeline (there whenever a skeleton is).
+  const e2e::Rect view = viewportRect(front_), outliner = itemRect(front_, "Outliner"),
+                  history = itemRect(front_, "History"), properties = itemRect(front_, "Properties"),
+                  ik = itemRect(front_, "IK Targets"), timeline = itemRect(front_, "Timeline");
+  EXPECT_EQ(view.x, outliner.right());
+  EXPECT_EQ(view.x, history.right());
+  EXPECT_EQ(view.right(), properties.x);
+  EXPECT_EQ(view.right(), ik.x);
+  EXPECT_EQ(view.y, outliner.y);
+  EXPECT_EQ(view.y, properties.y);
+  EXPECT_GT(view.y, 0.0);  // the menu bar above
+  EXPECT_EQ(view.bottom(), timeline.y);
+  EXPECT_EQ(view.x, timeline.x);
+  EXPECT_EQ(view.width, timeline.width);
+  EXPECT_LT(view.width, double(front_["window"]["width"]));
+  EXPECT_LT(timeline.bottom(), double(front_["window"]["height"]));  // the status bar below
   // Numpad 1 looks from +Z; the T-posed arms span x = -0.89..0.89 in the middle of the view,
   // and Home frames all of the skeleton inside the view (not under the panels).
   EXPECT_NEAR(double(front_["camera"]["azimuth"]), 0.0, 1e-6);
   EXPECT_NEAR(double(front_["camera"]["elevation"]), 0.0, 1e-6);
   const glm::dvec2 l = pixelOf("Fingertip.L"), r = pixelOf("Fingertip.R");
-  const double centre = kViewX + kViewW / 2;
+  const double centre = view.x + view.width / 2;
   EXPECT_GT(l.x, centre + 100);
   EXPECT_LT(r.x, centre - 100);
   EXPECT_NEAR(l.x - centre, centre - r.x, 2.0);
   EXPECT_NEAR(l.y, r.y, 0.5);
   for (const json& j : front_["joints"]) {
     const glm::dvec2 p = camera().pixel(vec3(j["world_position"]));
-    EXPECT_GT(p.x, kViewX) << j["name"];
-    EXPECT_LT(p.x, kViewX + kViewW) << j["name"];
-    EXPECT_GT(p.y, kViewY) << j["name"];
-    EXPECT_LT(p.y, kViewY + kViewH) << j["name"];
+    EXPECT_GT(p.x, view.x) << j["name"];
+    EXPECT_LT(p.x, view.right()) << j["name"];
+    EXPECT_GT(p.y, view.y) << j["name"];
+    EXPECT_LT(p.y, view.bottom()) << j["name"];
   }
 }
 
@@ -153,12 +124,13 @@ TEST_F(EditorE2e, ClickSelectsTheHandAndShiftClickAdds) {
 }
 
 TEST_F(EditorE2e, ScriptedClicksReachThePanelsAndNotTheViewport) {
-  // The outliner (fixed layout, left column) lists Head on its sixth row: a click there
-  // selects it through ImGui. Then a drag that starts on the History panel (empty there)
-  // and ends in the viewport past the left hand: had the viewport seen the press, it would
-  // have box-selected most of the skeleton.
-  const glm::dvec2 panel(120, 600), past = pixelOf("Fingertip.L") + glm::dvec2(20, 20);
-  json d = run(Script().click({104, 161}).move(panel).down().path(panel, past).up(), "click_outliner");
+  // The outliner (left column) lists Head: a click on its row selects it through ImGui.
+  // Then a drag that starts on the History panel (empty there, below its one row) and ends
+  // in the viewport past the left hand: had the viewport seen the press, it would have
+  // box-selected most of the skeleton.
+  const glm::dvec2 panel = itemRect(front_, "History").at(0.5, 0.9), past = pixelOf("Fingertip.L") + glm::dvec2(20, 20);
+  ASSERT_GT(panel.y, itemRect(front_, "History/0").bottom()) << "the press is below the history's rows";
+  json d = run(Script().clickItem("Outliner/Head").move(panel).down().path(panel, past).up(), "click_outliner");
   EXPECT_EQ(selection(d), std::vector<std::string>{"Head"});
   EXPECT_EQ(d["title"], "Kinema - untitled");
 }
@@ -256,7 +228,7 @@ TEST_F(EditorE2e, RotationsStopAtTheJointLimitAndTheLimitArcIsDrawn) {
   "ik": {"limits": [{"joint": "LowerArm.L", "type": "hinge", "axis": [0, 0, 1], "min_deg": 0, "max_deg": 45}]}})";
   const json front = runScript(dir_, Script(), "limit_front", file);
   ASSERT_TRUE(front.is_object());
-  const TestCamera cam(front);
+  const DumpCamera cam(front);
   const glm::dvec3 elbow = joint(front, "LowerArm.L");
   expectNear(elbow, {0.5, 1.4, 0}, 1e-6, "the elbow in the file");
   const glm::dvec2 forearm = (cam.pixel(elbow) + cam.pixel(joint(front, "Hand.L"))) * 0.5;
@@ -318,12 +290,13 @@ glm::ivec3 pixelAt(const Image& img, glm::dvec2 p) {
 TEST_F(EditorE2e, SkinnedCharacterWithXrayBonesWeightsAndDualQuaternionSkinning) {
   // The default character has a body now. Click the forearm (bones are picked through the
   // body), R Z 90 bends the elbow, Alt+Z turns the bones to x-ray, Alt+W shows the
-  // forearm's weights, and the properties panel's Mesh section (fixed layout: its skinning
-  // combo at y 271 under the collapsed joint limit) switches the body to dual quaternions.
+  // forearm's weights, and the properties panel's Mesh section (its skinning combo, named
+  // after the mesh, under the collapsed joint limit) switches the body to dual quaternions.
+  const std::string combo = "Properties/Mesh/Body";  // the default character's mesh (default_character_scene.cpp)
   Script s;
   s.click(midpoint("LowerArm.L", "Hand.L")).key("R").key("Z").key("9").key("0").key("ENTER");
   s.keyDown("LEFT_ALT").key("Z").key("W").keyUp("LEFT_ALT");
-  s.click({1065, 271}).move({1065, 312}).click({1065, 312});
+  s.clickItem(combo).moveItem(combo + "/Dual quaternion").clickItem(combo + "/Dual quaternion");
   json d = run(s, "skinned_xray_weights_dq");
   EXPECT_EQ(selection(d), std::vector<std::string>{"LowerArm.L"});
   expectNear(joint(d, "Hand.L"), joint(front_, "LowerArm.L") + glm::dvec3(0, 0.26, 0), 1e-4, "the bent elbow");
@@ -409,7 +382,7 @@ TEST_F(EditorE2e, CtrlPBindsAnUnskinnedMeshWithAutomaticWeightsUndoably) {
   ASSERT_TRUE(front.is_object());
   ASSERT_EQ(front["mesh_skins"].size(), 1u);
   EXPECT_EQ(int(front["mesh_skins"][0]), -1);
-  const TestCamera cam(front);
+  const DumpCamera cam(front);
   const glm::dvec2 midBone = (cam.pixel(joint(front, "Mid")) + cam.pixel(joint(front, "Tip"))) * 0.5;
   // Ctrl+P binds (one undo step); Ctrl+Z unbinds.
   Script bind;
@@ -450,7 +423,7 @@ TEST_F(EditorE2e, CtrlPBindsAnUnskinnedMeshWithAutomaticWeightsUndoably) {
 }
 
 TEST_F(EditorE2e, GMovesTheRootInTheViewPlaneAndAlongAnAxis) {
-  // 100 px right at the hips' depth is 100 * (2 depth tan(fov/2) / 720) world units along +X.
+  // 100 px right at the hips' depth is 100 * (2 depth tan(fov/2) / view height) world units along +X.
   const glm::dvec3 hips = joint(front_, "Hips");
   const double upp = camera().unitsPerPixel(hips);
   const glm::dvec2 m = pixelOf("Hips") + glm::dvec2(250, 60);
@@ -532,8 +505,9 @@ TEST_F(EditorE2e, CameraKeysWheelAndMiddleDragChangeTheView) {
   d = run(Script().keyDown("LEFT_CONTROL").key("KP_7").keyUp("LEFT_CONTROL").key("KP_5"), "camera_bottom_ortho");
   EXPECT_NEAR(double(d["camera"]["elevation"]), -90.0, 1e-3);
   EXPECT_TRUE(bool(d["camera"]["orthographic"]));
-  // Middle drag 100 px right: turntable orbit of 0.4 degrees per pixel, to the right.
-  const glm::dvec2 m(900, 500);
+  // Middle drag 100 px right (from the view's lower right): turntable orbit of 0.4 degrees
+  // per pixel, to the right.
+  const glm::dvec2 m = viewportRect(front_).at(0.9, 0.75);
   d = run(Script().move(m).down("middle").path(m, m + glm::dvec2(100, 0)).up("middle"), "camera_orbit");
   EXPECT_NEAR(double(d["camera"]["azimuth"]), -40.0, 1e-3);
   // F frames the selected hand: the view centres on it.
@@ -562,7 +536,8 @@ TEST_F(EditorE2e, XdotoolClickSelectsTheHandThroughTheXServer) {
   char move[64];
   std::snprintf(move, sizeof move, "%d %d", int(std::lround(hand.x)), int(std::lround(hand.y)));
   std::ofstream(sh) << "set -e\n"
-                    << "env XDG_STATE_HOME=" << dir_ << " XDG_CONFIG_HOME=" << dir_ << " " << kSoftware << KINEMA_BINARY << " edit --frame-count 100000 --dump-state " << dump
+                    << e2e::editorEnvironment(dir_) << KINEMA_BINARY << " edit --size " << e2e::windowSize()
+                    << " --frame-count 100000 --dump-state " << dump
                     << " --screenshot " << shotDir() << "/xdotool.png & pid=$!\n"
                     << "for i in $(seq 100); do w=$(xdotool search --name 'Kinema - ' | head -1) && [ -n \"$w\" ] && break; sleep 0.1; done\n"
                     << "xdotool windowfocus --sync $w || true\n"
@@ -570,7 +545,7 @@ TEST_F(EditorE2e, XdotoolClickSelectsTheHandThroughTheXServer) {
                     << "xdotool mousemove --window $w " << move << "\nsleep 0.3\nxdotool click 1\nsleep 0.5\n"
                     << "xdotool key --window $w ctrl+q\nwait $pid\n";
   std::string out, err;
-  ASSERT_EQ(runCommand(kXvfb + "sh " + sh, &out, &err), 0) << err;
+  ASSERT_EQ(runCommand(e2e::xvfb() + "sh " + sh, &out, &err), 0) << err;
   json d = readJson(dump);
   EXPECT_EQ(selection(d), std::vector<std::string>{"Hand.L"});
   EXPECT_NEAR(double(d["camera"]["azimuth"]), 0.0, 1e-6);

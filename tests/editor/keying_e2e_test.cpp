@@ -1,5 +1,5 @@
 // End-to-end tests of the timeline, keying and auto-key (issue 9): the real `kinema edit`
-// runs under xvfb-run at 1280x800 on --script replay. Checked in --dump-state, in the saved
+// runs under xvfb-run (e2e_harness.h) on --script replay, panel widgets clicked by name. Checked in --dump-state, in the saved
 // .kinema file (read back with our reader and sampled here with glm::slerp, independently
 // of the editor's sampling), in files exported from the saved document, and in the pixels
 // of the keyframe diamonds (their place computed from the dumped ruler, timeline.h).
@@ -17,12 +17,6 @@ namespace kinema::test {
 namespace {
 
 using namespace e2e;
-
-// The outliner's rows (depth-first order of the default character), 17 px apart.
-glm::dvec2 outlinerRow(int row) { return {150.0, 76.0 + 17.0 * row}; }
-constexpr int kUpperArmLRow = 8;
-// Pose > Auto-key: the last item of the Pose menu (read off a screenshot of the open menu).
-const glm::dvec2 kPoseAutoKey{197, 179};
 
 const json* channelIn(const json& d, const std::string& joint, const std::string& target) {
   for (const json& c : d["timeline"]["channels"])
@@ -42,7 +36,6 @@ glm::quat quatOf(const glm::vec4& v) { return glm::quat(v.w, v.x, v.y, v.z); }
 class KeyingE2e : public FrontViewSuite<KeyingE2e> {
  public:
   static constexpr const char* kShotFolder = "keying_e2e";
-  static constexpr const char* kWindowSize = "1280x800";
 
  protected:
   // The default character saved as .kinema, so that Ctrl+S saves in place.
@@ -83,8 +76,9 @@ TEST_F(KeyingE2e, TheTimelineIsThereWithoutMotionAtFrameOne) {
   EXPECT_EQ(t["fps"], 24.0);
   EXPECT_FALSE(bool(t["auto_key"]));
   EXPECT_TRUE(t["channels"].empty());
-  // The 3D view ends where the timeline begins (40 px above the 24 px status bar).
-  EXPECT_EQ(double(front_["viewport"]["y"]) + double(front_["viewport"]["height"]), 800.0 - 24 - 40);
+  // The 3D view ends where the timeline begins (the timeline's window, above the status bar).
+  EXPECT_EQ(viewportRect(front_).bottom(), itemRect(front_, "Timeline").y);
+  EXPECT_LT(itemRect(front_, "Timeline").bottom(), double(front_["window"]["height"]));
 }
 
 // Pose -> I at frame 1 -> pose -> I at frame 24 -> Ctrl+S: the file has both keys; frame 12
@@ -93,7 +87,7 @@ TEST_F(KeyingE2e, TheTimelineIsThereWithoutMotionAtFrameOne) {
 TEST_F(KeyingE2e, KeyTwoPosesSaveAndFrameTwelveIsBetween) {
   const std::string file = characterFile();
   Script s;
-  s.click(outlinerRow(kUpperArmLRow)).wait(1);
+  s.select("UpperArm.L");
   s.key("R").key("Z").key("3").key("0").key("ENTER").key("I");
   s = steps(s, "RIGHT", 23);
   s.key("R").key("X").key("5").key("0").key("ENTER").key("I");
@@ -195,7 +189,7 @@ TEST_F(KeyingE2e, AutoKeyRecordsAnIkDrag) {
   Script s;
   s.keyDown("LEFT_CONTROL").key("I").keyUp("LEFT_CONTROL");
   s = steps(s, "RIGHT", 9);
-  s.menu({157, 9}, kPoseAutoKey);
+  s.menu("Pose", "Auto-key");
   s.move(h).down().path(h, h + glm::dvec2(-50, 70), 8).up().wait(2);
   json d = run(s, "auto_key_ik");
   ASSERT_TRUE(d.is_object());
@@ -217,7 +211,7 @@ TEST_F(KeyingE2e, AutoKeyRecordsAnIkDrag) {
 
 TEST_F(KeyingE2e, AltIDeletesAndUndoRemovesAKey) {
   Script s;
-  s.click(outlinerRow(kUpperArmLRow)).wait(1).key("I");
+  s.select("UpperArm.L").key("I");
   s = steps(s, "RIGHT", 4);
   s.key("I");
   json d = run(s, "two_keys");
@@ -239,7 +233,7 @@ TEST_F(KeyingE2e, AltIDeletesAndUndoRemovesAKey) {
 // middle row (the fill colour), none at frame 40.
 TEST_F(KeyingE2e, KeyframeDiamondsAreDrawnOnTheKeyedFrames) {
   Script s;
-  s.click(outlinerRow(kUpperArmLRow)).wait(1);
+  s.select("UpperArm.L");
   s.key("R").key("Z").key("3").key("0").key("ENTER").key("I");
   s = steps(s, "RIGHT", 23);
   s.key("R").key("X").key("5").key("0").key("ENTER").key("I");

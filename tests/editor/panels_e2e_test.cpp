@@ -3,10 +3,10 @@
 // properties and history panels and the file dialog, checked in the .kinema files the
 // editor saves. Expected rotations are derived by hand (a rotation of A degrees about Z is
 // (x, y, z, w) = (0, 0, sin(A/2), cos(A/2)); mirroring across X = 0 negates y and z).
-// Pixel positions come from the fixed layout (src/editor/panel_layout.h) at 1280x720 and
-// ImGui 1.86's default font: 17 px per outliner row, menus 17 px per item.
+// Widgets and menu items are clicked by name (e2e_harness.h), at 1280x720 or KINEMA_E2E_SIZE.
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <csignal>
 #include <filesystem>
 #include <cmath>
@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "anim/sampling.h"
+#include "editor/e2e_harness.h"
 #include "io/kinema_file.h"
 #include "io/scene.h"
 #include "test_support.h"
@@ -21,73 +22,9 @@
 namespace kinema::test {
 namespace {
 
-const std::string kSoftware =
-    "LIBGL_ALWAYS_SOFTWARE=1 MESA_GL_VERSION_OVERRIDE=3.3 ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 ";
-const std::string kXvfb = "xvfb-run -a -s '-screen 0 1280x800x24' ";
-
-// The default character's joints in outliner (depth-first) order, by row.
-enum Row {
-  kHips = 0, kSpine = 1, kUpperArmL = 8, kLowerArmL = 9, kHandL = 10, kUpperArmR = 13, kHandR = 15
-};
-glm::dvec2 outlinerRow(int row) { return {150.0, 76.0 + 17.0 * row}; }
-const glm::dvec2 kSearchBox{120, 55};
-const glm::dvec2 kEulerField[3] = {{1007, 122}, {1069, 122}, {1131, 122}};  // X, Y, Z (degrees)
-glm::dvec2 historyRow(int k) { return {120.0, 472.0 + 17.0 * k}; }  // 0 = "(original)"
-const glm::dvec2 kRotationMode{1030, 99};
-glm::dvec2 rotationModeItem(int k) { return {1030.0, 123.0 + 17.0 * k}; }  // XYZ XZY YXZ YZX ZXY ZYX Quaternion
-const glm::dvec2 kQuaternionField[4] = {{1000, 122}, {1048, 122}, {1094, 122}, {1140, 122}};  // x y z w
-const glm::dvec2 kLimitEnabled{987, 202};  // the joint-limit checkbox (Euler mode)
-// IK Targets panel (with one target selected).
-const glm::dvec2 kIkAdd{1033, 427}, kIkChainPlus{1138, 574}, kIkPinned{987, 620}, kIkSolver{1060, 597};
-const glm::dvec2 kIkSolverFabrik{1030, 505}, kIkPositionX{1000, 643};  // the solver list opens upwards
-const glm::dvec2 kFileMenu{25, 9}, kEditMenu{69, 9}, kPoseMenu{157, 9};
-glm::dvec2 menuItem(glm::dvec2 menu, double y) { return {menu.x + 40, y}; }
-constexpr double kFileOpenY = 50, kFileRecentY = 67, kFileExportY = 122, kEditResetY = 144, kPoseAddIkY = 33;
-constexpr double kSubmenuX = 250, kExportGlbY = 139, kExportBvhY = 156;  // File > Export > ...
-
-// One event per frame from frame 3; clicks and keys take two frames (down, up).
-class Script {
- public:
-  Script& move(glm::dvec2 p) {
-    return add("\"type\":\"mouse_move\",\"x\":" + std::to_string(p.x) + ",\"y\":" + std::to_string(p.y));
-  }
-  Script& click(glm::dvec2 p) { return move(p).add("\"type\":\"click\",\"button\":\"left\"").wait(1); }
-  Script& doubleClick(glm::dvec2 p) {
-    move(p).add("\"type\":\"click\",\"button\":\"left\"").wait(1);
-    return add("\"type\":\"click\",\"button\":\"left\"").wait(1);
-  }
-  Script& key(const std::string& name, const std::string& mods = "") {
-    add("\"type\":\"key\",\"key\":\"" + name + "\"" + (mods.empty() ? "" : ",\"mods\":[" + mods + "]")).wait(1);
-    // The modifiers are let go as a user would (ImGui ignores typed characters while Ctrl is down).
-    if (!mods.empty()) add("\"type\":\"key_up\",\"key\":\"LEFT_CONTROL\"").add("\"type\":\"key_up\",\"key\":\"LEFT_SHIFT\"");
-    return *this;
-  }
-  Script& type(const std::string& text) { return add("\"type\":\"text\",\"text\":\"" + text + "\""); }
-  Script& wait(int frames) {
-    frame_ += frames;
-    return *this;
-  }
-  // Selects a joint by its outliner row.
-  Script& select(int row) { return click(outlinerRow(row)).wait(1); }
-  // Types `degrees` into the active joint's Euler field `axis` (double-click enters text mode).
-  Script& euler(int axis, double degrees) {
-    doubleClick(kEulerField[axis]).wait(1);
-    return type(std::to_string(degrees)).key("ENTER").wait(2);
-  }
-  // File > Save As through its shortcut and the file dialog's path field.
-  Script& saveAs(const std::string& path) {
-    key("S", "\"ctrl\",\"shift\"").wait(2);
-    return type(path).key("ENTER").wait(3);
-  }
-  const std::string& text() const { return lines_; }
-
- private:
-  Script& add(const std::string& body) {
-    lines_ += "{\"frame\":" + std::to_string(frame_++) + "," + body + "}\n";
-    return *this;
-  }
-  std::string lines_;
-  long long frame_ = 3;
+// Scripts start as the editor opens (no front view first); one event per frame from frame 3.
+struct Script : e2e::Script {
+  Script() : e2e::Script(Start::AsOpened) {}
 };
 
 glm::dquat rotZ(double degrees) {
@@ -97,6 +34,13 @@ glm::dquat rotZ(double degrees) {
 glm::dquat rotX(double degrees) {
   const double h = glm::radians(degrees) / 2;
   return glm::dquat(std::cos(h), std::sin(h), 0, 0);
+}
+
+// File > Export > `item`: the submenu opens on hover, the pointer goes along its row into the
+// submenu's first entry, then clicks `item` ("GLB (.glb)..."); the file dialog is opening.
+e2e::Script& exportThroughTheMenu(e2e::Script& s, const std::string& item) {
+  s.clickItem("File").wait(2).moveItem("File/Export").wait(3).moveItem("File/Export/glTF (.gltf)...").wait(2);
+  return s.clickItem("File/Export/" + item).wait(3);
 }
 
 class PanelsE2e : public ::testing::Test {
@@ -112,27 +56,25 @@ class PanelsE2e : public ::testing::Test {
   }
 
   // Recent files and recovery files stay inside the test's folder.
-  std::string environment() const {
-    return "env " + kSoftware + "XDG_CONFIG_HOME='" + dir_ + "/config' XDG_STATE_HOME='" + dir_ + "/state' ";
-  }
-  std::string command(const Script& script, const std::string& name, const std::string& file) {
+  std::string environment() const { return e2e::editorEnvironment(dir_ + "/config", dir_ + "/state"); }
+  std::string command(const e2e::Script& script, const std::string& name, const std::string& file) {
     const std::string scriptPath = dir_ + "/" + name + ".jsonl";
     std::ofstream(scriptPath) << script.text();
-    return environment() + KINEMA_BINARY + " edit " + (file.empty() ? "" : "'" + file + "' ") + "--script " +
-           scriptPath + " --screenshot " + shots_ + "/" + name + ".png";
+    return environment() + KINEMA_BINARY + " edit " + (file.empty() ? "" : "'" + file + "' ") + "--size " +
+           e2e::windowSize() + " --script " + scriptPath + " --screenshot " + shots_ + "/" + name + ".png";
   }
   // Runs the editor on `file` (default character when empty); the last frame goes to
   // build/panels_e2e/NAME.png.
-  void run(const Script& script, const std::string& name, const std::string& file = "") {
+  void run(const e2e::Script& script, const std::string& name, const std::string& file = "") {
     std::string out, err;
-    const int rc = runCommand(kXvfb + command(script, name, file), &out, &err);
+    const int rc = runCommand(e2e::xvfb() + command(script, name, file), &out, &err);
     EXPECT_EQ(rc, 0) << err;
   }
   // run() plus --dump-state: the editor's state at exit as JSON.
-  nlohmann::json runAndDump(const Script& script, const std::string& name) {
+  nlohmann::json runAndDump(const e2e::Script& script, const std::string& name) {
     std::string out, err;
     const std::string dump = dir_ + "/" + name + ".json";
-    const int rc = runCommand(kXvfb + command(script, name, "") + " --dump-state " + dump, &out, &err);
+    const int rc = runCommand(e2e::xvfb() + command(script, name, "") + " --dump-state " + dump, &out, &err);
     EXPECT_EQ(rc, 0) << err;
     nlohmann::json j = nlohmann::json::parse(readFile(dump), nullptr, false);
     EXPECT_TRUE(j.is_object()) << dump;
@@ -169,7 +111,7 @@ class PanelsE2e : public ::testing::Test {
 
 TEST_F(PanelsE2e, EulerEntrySaveAsAndReopenRoundTripThePose) {
   Script edit;
-  edit.select(kUpperArmL).euler(2, 40.0).saveAs(dir_ + "/a.kinema");
+  edit.select("UpperArm.L").euler(2, 40.0).saveAs(dir_ + "/a.kinema");
   run(edit, "euler_entry");
   const Scene a = saved(dir_ + "/a.kinema");
   ASSERT_EQ(a.pose.size(), a.skeleton.size());
@@ -193,7 +135,7 @@ TEST_F(PanelsE2e, EulerEntrySaveAsAndReopenRoundTripThePose) {
 TEST_F(PanelsE2e, EulerOrderZxyAndQuaternionEntry) {
   // ZXY: R = Rz * Rx * Ry. X 30 then Z 50 gives Rz(50) Rx(30).
   Script zxy;
-  zxy.select(kUpperArmL).click(kRotationMode).wait(2).click(rotationModeItem(4)).wait(2);
+  zxy.select("UpperArm.L").clickItem("Properties/Rotation mode").wait(2).clickItem("Properties/Rotation mode/ZXY").wait(2);
   zxy.euler(0, 30.0).euler(2, 50.0).saveAs(dir_ + "/zxy.kinema");
   run(zxy, "euler_zxy");
   EXPECT_ROTATION(rotation(saved(dir_ + "/zxy.kinema"), "UpperArm.L"), rotZ(50.0) * rotX(30.0));
@@ -201,9 +143,10 @@ TEST_F(PanelsE2e, EulerOrderZxyAndQuaternionEntry) {
   // Quaternion (x, y, z, w) = (1, 0, 1, 0) typed: normalised on entry to (0.7071, 0, 0.7071, 0),
   // a half turn about (1, 0, 1) / sqrt 2; one undo step.
   Script quat;
-  quat.select(kHandR).click(kRotationMode).wait(2).click(rotationModeItem(6)).wait(2);
-  quat.click(kQuaternionField[0]).wait(1).type("1").click(kQuaternionField[3]).wait(1).type("0");
-  quat.click(kQuaternionField[2]).wait(1).type("1").key("ENTER").wait(2).saveAs(dir_ + "/quat.kinema");
+  quat.select("Hand.R").clickItem("Properties/Rotation mode").wait(2);
+  quat.clickItem("Properties/Rotation mode/Quaternion").wait(2);
+  quat.clickItem("Properties/Quaternion/0").wait(1).type("1").clickItem("Properties/Quaternion/3").wait(1).type("0");
+  quat.clickItem("Properties/Quaternion/2").wait(1).type("1").key("ENTER").wait(3).saveAs(dir_ + "/quat.kinema");
   const nlohmann::json d = runAndDump(quat, "quaternion_entry");
   EXPECT_EQ(d["undo_depth"], 1);
   const double h = std::sqrt(0.5);
@@ -213,8 +156,8 @@ TEST_F(PanelsE2e, EulerOrderZxyAndQuaternionEntry) {
 
 TEST_F(PanelsE2e, JointLimitEnabledInThePropertiesIsSavedAndUndoable) {
   Script s;
-  s.select(kLowerArmL).click(kLimitEnabled).wait(2).saveAs(dir_ + "/limited.kinema");
-  s.key("Z", "\"ctrl\"").wait(2).saveAs("unlimited.kinema");
+  s.select("LowerArm.L").clickItem("Properties/Limit enabled").wait(2).saveAs(dir_ + "/limited.kinema");
+  s.chord("Z", {"ctrl"}).wait(2).saveAs("unlimited.kinema");
   run(s, "joint_limit");
   const Scene limited = saved(dir_ + "/limited.kinema");
   const JointLimit* limit = limited.ik.limitOf(limited.skeleton.find("LowerArm.L"));
@@ -234,10 +177,10 @@ TEST_F(PanelsE2e, JointLimitEnabledInThePropertiesIsSavedAndUndoable) {
 
 TEST_F(PanelsE2e, CtrlZUndoesOneEntryAndTheHistoryPanelJumps) {
   Script s;
-  s.select(kUpperArmL).euler(2, 10.0).euler(0, 20.0).euler(1, 30.0);
-  s.key("Z", "\"ctrl\"").wait(2).saveAs(dir_ + "/undone.kinema");
+  s.select("UpperArm.L").euler(2, 10.0).euler(0, 20.0).euler(1, 30.0);
+  s.chord("Z", {"ctrl"}).wait(2).saveAs(dir_ + "/undone.kinema");
   // History rows: (original), 1 = Z 10, 2 = X 20, 3 = Y 30 (redoable after the undo).
-  s.click(historyRow(1)).wait(2).saveAs("jumped.kinema");
+  s.clickItem("History/1").wait(2).saveAs("jumped.kinema");
   run(s, "undo_history");
   // After Ctrl+Z: X 20 and Z 10 in the order XYZ, R = Rx(20) Rz(10).
   EXPECT_ROTATION(rotation(saved(dir_ + "/undone.kinema"), "UpperArm.L"), rotX(20.0) * rotZ(10.0));
@@ -246,8 +189,8 @@ TEST_F(PanelsE2e, CtrlZUndoesOneEntryAndTheHistoryPanelJumps) {
 
 TEST_F(PanelsE2e, PasteFlippedMirrorsTheArm) {
   Script s;
-  s.select(kUpperArmL).euler(2, 40.0).key("C", "\"ctrl\"").wait(1);
-  s.select(kUpperArmR).key("V", "\"ctrl\",\"shift\"").wait(2).saveAs(dir_ + "/flipped.kinema");
+  s.select("UpperArm.L").euler(2, 40.0).chord("C", {"ctrl"}).wait(1);
+  s.select("UpperArm.R").chord("V", {"ctrl", "shift"}).wait(2).saveAs(dir_ + "/flipped.kinema");
   run(s, "paste_flipped");
   const Scene f = saved(dir_ + "/flipped.kinema");
   EXPECT_ROTATION(rotation(f, "UpperArm.L"), rotZ(40.0));
@@ -256,8 +199,8 @@ TEST_F(PanelsE2e, PasteFlippedMirrorsTheArm) {
 
 TEST_F(PanelsE2e, ResetToRestPoseThroughTheEditMenu) {
   Script s;
-  s.select(kUpperArmL).euler(2, 40.0).select(kHandR).euler(0, 15.0);
-  s.click(kEditMenu).wait(2).click(menuItem(kEditMenu, kEditResetY)).wait(2).saveAs(dir_ + "/rest.kinema");
+  s.select("UpperArm.L").euler(2, 40.0).select("Hand.R").euler(0, 15.0);
+  s.menu("Edit", "Reset to Rest Pose").saveAs(dir_ + "/rest.kinema");
   run(s, "reset_rest");
   const Scene r = saved(dir_ + "/rest.kinema");
   ASSERT_EQ(r.pose.size(), r.skeleton.size());
@@ -269,11 +212,11 @@ TEST_F(PanelsE2e, ResetToRestPoseThroughTheEditMenu) {
 
 TEST_F(PanelsE2e, RenameThroughTheOutlinerAndRefuseADuplicate) {
   Script s;
-  s.doubleClick(outlinerRow(kUpperArmL)).wait(2).type("Humerus.L").key("ENTER").wait(2);
+  s.doubleClickItem("Outliner/UpperArm.L").wait(2).type("Humerus.L").key("ENTER").wait(3);
   // A duplicate name is refused (the field stays with the reason); Escape leaves it.
-  s.doubleClick(outlinerRow(kLowerArmL)).wait(2).type("Hips").key("ENTER").wait(2);
+  s.doubleClickItem("Outliner/LowerArm.L").wait(2).type("Hips").key("ENTER").wait(3);
   run(s, "rename_refused");  // the reason under the field, for the eye
-  s.key("ESCAPE").wait(2);
+  s.key("ESCAPE").wait(3);
   s.saveAs(dir_ + "/renamed.kinema");
   run(s, "rename");
   const Scene r = saved(dir_ + "/renamed.kinema");
@@ -285,11 +228,22 @@ TEST_F(PanelsE2e, RenameThroughTheOutlinerAndRefuseADuplicate) {
 
 TEST_F(PanelsE2e, OutlinerSearchShowsMatchesWithTheirAncestors) {
   // "hand.r" leaves Hips, Spine, Chest, UpperChest, Shoulder.R, UpperArm.R, LowerArm.R,
-  // Hand.R: the match is row 7.
+  // Hand.R: the match is row 7, the last; it is clicked, turned and saved.
   Script s;
-  s.click(kSearchBox).wait(1).type("hand.r").wait(2).click(outlinerRow(7)).wait(1).euler(2, 15.0);
+  s.clickItem("Outliner/Search").wait(1).type("hand.r").wait(2).clickItem("Outliner/Hand.R").wait(1).euler(2, 15.0);
   s.saveAs(dir_ + "/searched.kinema");
-  run(s, "outliner_search");
+  const nlohmann::json d = runAndDump(s, "outliner_search");
+  // The rows the outliner drew in the last frame (the search still typed), top to bottom.
+  std::vector<std::pair<double, std::string>> rows;
+  for (const auto& [name, rect] : d["items"].items())
+    if (name.rfind("Outliner/", 0) == 0 && name != "Outliner/Search" && name.find('/', 9) == std::string::npos &&
+        e2e::drawnLast(d, name))
+      rows.emplace_back(double(rect["y"]), name.substr(9));
+  std::sort(rows.begin(), rows.end());
+  std::vector<std::string> shown;
+  for (const auto& row : rows) shown.push_back(row.second);
+  EXPECT_EQ(shown, (std::vector<std::string>{"Hips", "Spine", "Chest", "UpperChest", "Shoulder.R", "UpperArm.R",
+                                             "LowerArm.R", "Hand.R"}));
   const Scene r = saved(dir_ + "/searched.kinema");
   EXPECT_ROTATION(rotation(r, "Hand.R"), rotZ(15.0));
   EXPECT_ROTATION(rotation(r, "Hand.L"), glm::dquat(1, 0, 0, 0));
@@ -297,7 +251,7 @@ TEST_F(PanelsE2e, OutlinerSearchShowsMatchesWithTheirAncestors) {
 
 TEST_F(PanelsE2e, AddIkTargetThroughThePoseMenuIsSaved) {
   Script s;
-  s.select(kHandL).click(kPoseMenu).wait(2).click(menuItem(kPoseMenu, kPoseAddIkY)).wait(2);
+  s.select("Hand.L").menu("Pose", "Add IK Target to Selected");
   s.saveAs(dir_ + "/ik.kinema");
   run(s, "add_ik_target");
   const Scene r = saved(dir_ + "/ik.kinema");
@@ -312,11 +266,14 @@ TEST_F(PanelsE2e, AddIkTargetThroughThePoseMenuIsSaved) {
 
 TEST_F(PanelsE2e, IkPanelSettingsAndTypedTargetPositionMoveTheChain) {
   Script s;
-  s.select(kHandL).click(kIkAdd).wait(2).click(kIkChainPlus).wait(2).click(kIkPinned).wait(2);
-  s.click(kIkSolver).wait(2).click(kIkSolverFabrik).wait(2);
-  // Off the arm's line (a straight chain pulled along itself is the solvers' singular case).
-  s.doubleClick(kIkPositionX).wait(1).type("0.5").key("ENTER").wait(3);
-  s.doubleClick(kIkPositionX + glm::dvec2(48, 0)).wait(1).type("1.3").key("ENTER").wait(3);
+  s.select("Hand.L").clickItem("IK Targets/Add IK Target to Selected").wait(2).clickItem("IK Targets/Chain length/+").wait(2);
+  s.clickItem("IK Targets/Pinned").wait(2);
+  s.clickItem("IK Targets/Solver").wait(2).clickItem("IK Targets/Solver/fabrik").wait(2);
+  // Off the arm's line (a straight chain pulled along itself is the solvers' singular case);
+  // the panel scrolled down first, should the position's row be below its bottom.
+  s.scrollPanel("IK Targets", -10);
+  s.doubleClickItem("IK Targets/Position/0").wait(1).type("0.5").key("ENTER").wait(4);
+  s.doubleClickItem("IK Targets/Position/1").wait(1).type("1.3").key("ENTER").wait(4);
   const nlohmann::json d = runAndDump(s, "ik_panel");
   ASSERT_EQ(d["ik_targets"].size(), 1u);
   const nlohmann::json& t = d["ik_targets"][0];
@@ -348,7 +305,7 @@ TEST_F(PanelsE2e, OpenBvhAndGltfThroughTheFileMenu) {
   for (const std::string file : {"/bvh/cmu_01_01_first720.bvh", "/gltf/CesiumMan.glb"}) {
     const std::string path = sharedDataDir() + file;
     Script s;
-    s.click(kFileMenu).wait(2).click(menuItem(kFileMenu, kFileOpenY)).wait(3).type(path).key("ENTER").wait(3);
+    s.menu("File", "Open...").wait(1).type(path).key("ENTER").wait(4);
     s.saveAs(dir_ + "/opened.kinema");
     run(s, "open_menu_" + lowerExtension(path).substr(1));
     const Result<Scene> original = loadScene(path);
@@ -361,9 +318,9 @@ TEST_F(PanelsE2e, OpenBvhAndGltfThroughTheFileMenu) {
 TEST_F(PanelsE2e, OpenErrorsShowInThePopupAndTheEditorCarriesOn) {
   writeFile(dir_ + "/broken.bvh", "HIERARCHY\nROOT Hips\n{\n  OFFSET 0 zero 0\n");
   Script s;
-  s.key("O", "\"ctrl\"").wait(2).type(dir_ + "/missing.bvh").key("ENTER").wait(3);
-  s.key("ESCAPE").wait(2);  // closes the first error
-  s.key("O", "\"ctrl\"").wait(2).type(dir_ + "/broken.bvh").key("ENTER").wait(3);
+  s.chord("O", {"ctrl"}).wait(2).type(dir_ + "/missing.bvh").key("ENTER").wait(4);
+  s.key("ESCAPE").wait(3);  // closes the first error
+  s.chord("O", {"ctrl"}).wait(2).type(dir_ + "/broken.bvh").key("ENTER").wait(4);
   const nlohmann::json d = runAndDump(s, "open_errors");
   // The missing file's error was dismissed; the broken file's error waits in the popup,
   // naming the file; the default character is still open and unchanged.
@@ -380,15 +337,15 @@ TEST_F(PanelsE2e, OpenErrorsShowInThePopupAndTheEditorCarriesOn) {
 TEST_F(PanelsE2e, NewAsksBeforeDiscardingUnsavedChanges) {
   // Dirty: Ctrl+N opens "Discard unsaved changes?"; Esc cancels and the edit stays.
   Script dirty;
-  dirty.select(kUpperArmL).euler(2, 40.0).key("N", "\"ctrl\"").wait(3);
+  dirty.select("UpperArm.L").euler(2, 40.0).chord("N", {"ctrl"}).wait(3);
   run(dirty, "discard_question");  // the modal, for the eye
-  dirty.key("ESCAPE").wait(2);
+  dirty.key("ESCAPE").wait(3);
   const nlohmann::json kept = runAndDump(dirty, "discard_cancelled");
   EXPECT_EQ(kept["dirty"], true);
   EXPECT_ROTATION(dumpedRotation(kept, "UpperArm.L"), rotZ(40.0));
   // Clean (just saved): Ctrl+N starts the new document at once.
   Script clean;
-  clean.select(kUpperArmL).euler(2, 40.0).saveAs(dir_ + "/kept.kinema").key("N", "\"ctrl\"").wait(3);
+  clean.select("UpperArm.L").euler(2, 40.0).saveAs(dir_ + "/kept.kinema").chord("N", {"ctrl"}).wait(3);
   const nlohmann::json fresh = runAndDump(clean, "new_after_save");
   EXPECT_EQ(fresh["path"], "");
   EXPECT_EQ(fresh["dirty"], false);
@@ -397,9 +354,9 @@ TEST_F(PanelsE2e, NewAsksBeforeDiscardingUnsavedChanges) {
 
 TEST_F(PanelsE2e, SaveFirstSavesThroughSaveAsThenStartsTheNewDocument) {
   Script s;
-  s.select(kUpperArmL).euler(2, 40.0).key("N", "\"ctrl\"").wait(3);
-  s.click({640, 386}).wait(3);  // "Save first" in the centred question
-  s.type(dir_ + "/first.kinema").key("ENTER").wait(3);
+  s.select("UpperArm.L").euler(2, 40.0).chord("N", {"ctrl"}).wait(3);
+  s.clickItem("Discard unsaved changes?/Save first").wait(3);  // in the centred question
+  s.type(dir_ + "/first.kinema").key("ENTER").wait(4);
   const nlohmann::json d = runAndDump(s, "save_first");
   EXPECT_ROTATION(rotation(saved(dir_ + "/first.kinema"), "UpperArm.L"), rotZ(40.0));
   EXPECT_EQ(d["path"], "");  // then New went on
@@ -410,10 +367,10 @@ TEST_F(PanelsE2e, SaveFirstSavesThroughSaveAsThenStartsTheNewDocument) {
 TEST_F(PanelsE2e, SaveAsAsksBeforeReplacingAFile) {
   writeFile(dir_ + "/taken.kinema", "keep me");
   Script s;
-  s.select(kUpperArmL).euler(2, 40.0).saveAs(dir_ + "/taken.kinema");
+  s.select("UpperArm.L").euler(2, 40.0).saveAs(dir_ + "/taken.kinema");
   run(s, "replace_question");  // "Replace file?" is showing
   EXPECT_EQ(readFile(dir_ + "/taken.kinema"), "keep me");
-  s.key("ESCAPE").wait(2).key("ESCAPE").wait(2);  // no, then close the dialog
+  s.key("ESCAPE").wait(3).key("ESCAPE").wait(3);  // no, then close the dialog
   const nlohmann::json d = runAndDump(s, "replace_declined");
   EXPECT_EQ(readFile(dir_ + "/taken.kinema"), "keep me");
   EXPECT_EQ(d["dirty"], true);
@@ -421,12 +378,11 @@ TEST_F(PanelsE2e, SaveAsAsksBeforeReplacingAFile) {
 
 TEST_F(PanelsE2e, ExportGlbAndBvhThroughTheFileMenuCarryThePose) {
   // No clips on the default character: the working pose goes out as a one-key clip.
-  const std::pair<double, std::string> formats[] = {{kExportGlbY, "/posed.glb"}, {kExportBvhY, "/posed.bvh"}};
-  for (const auto& [itemY, name] : formats) {
+  const std::pair<std::string, std::string> formats[] = {{"GLB (.glb)...", "/posed.glb"}, {"BVH (.bvh)...", "/posed.bvh"}};
+  for (const auto& [item, name] : formats) {
     Script s;
-    s.select(kUpperArmL).euler(2, 40.0);
-    s.click(kFileMenu).wait(2).move(menuItem(kFileMenu, kFileExportY)).wait(3).move({kSubmenuX, kFileExportY}).wait(2);
-    s.click({kSubmenuX, itemY}).wait(3).type(dir_ + name).key("ENTER").wait(3);
+    s.select("UpperArm.L").euler(2, 40.0);
+    exportThroughTheMenu(s, item).type(dir_ + name).key("ENTER").wait(4);
     const nlohmann::json d = runAndDump(s, "export_" + name.substr(name.size() - 3));
     EXPECT_EQ(d["dirty"], true) << "exporting is not saving";
     const Result<Scene> exported = loadScene(dir_ + name);
@@ -442,12 +398,13 @@ TEST_F(PanelsE2e, ExportGlbAndBvhThroughTheFileMenuCarryThePose) {
 }
 
 TEST_F(PanelsE2e, QuitClosesAtOnceWhenCleanAndAsksWhenDirty) {
-  // Events run to frame ~1000; a quit that goes through ends the run long before.
+  // Events run to frame ~1000 (the last a mouse move over the outliner); a quit that goes
+  // through ends the run long before.
   Script clean;
-  clean.key("Q", "\"ctrl\"").wait(1000).move({600, 400});
+  clean.chord("Q", {"ctrl"}).wait(1000).moveItem("Outliner");
   EXPECT_LT(runAndDump(clean, "quit_clean")["frames"].get<long long>(), 100);
   Script dirty;
-  dirty.select(kUpperArmL).euler(2, 40.0).key("Q", "\"ctrl\"").wait(3).key("ESCAPE").wait(100).move({600, 400});
+  dirty.select("UpperArm.L").euler(2, 40.0).chord("Q", {"ctrl"}).wait(3).key("ESCAPE").wait(101).moveItem("Outliner");
   const nlohmann::json d = runAndDump(dirty, "quit_dirty");
   EXPECT_GT(d["frames"].get<long long>(), 100);
   EXPECT_EQ(d["dirty"], true);
@@ -457,11 +414,15 @@ TEST_F(PanelsE2e, OpenRecentReopensTheLastFile) {
   KINEMA_REQUIRE_SHARED_DATA();
   const std::string bvh = sharedDataDir() + "/bvh/games105_walk60.bvh";
   Script open;
-  open.key("O", "\"ctrl\"").wait(2).type(bvh).key("ENTER").wait(3).key("N", "\"ctrl\"").wait(3);
+  open.chord("O", {"ctrl"}).wait(2).type(bvh).key("ENTER").wait(4).chord("N", {"ctrl"}).wait(3);
   EXPECT_EQ(runAndDump(open, "recent_first")["path"], "");  // New after Open: the list keeps the file
+  // File > Open Recent > its first entry (named by the path the recent list holds).
+  const nlohmann::json list = e2e::readJson(dir_ + "/config/kinema/recent.json");
+  ASSERT_TRUE(list.contains("recent") && !list["recent"].empty()) << list;
+  const std::string entry = "File/Open Recent/" + list["recent"][0].get<std::string>();
   Script recent;
-  recent.click(kFileMenu).wait(2).move(menuItem(kFileMenu, kFileRecentY)).wait(3).move({kSubmenuX, kFileRecentY}).wait(2);
-  recent.click({kSubmenuX + 40, kFileRecentY}).wait(3);
+  recent.clickItem("File").wait(2).moveItem("File/Open Recent").wait(3).moveItem(entry).wait(2);
+  recent.clickItem(entry).wait(3);
   const nlohmann::json d = runAndDump(recent, "recent_reopen");
   EXPECT_EQ(std::filesystem::path(d["path"].get<std::string>()).lexically_normal(),
             std::filesystem::path(bvh).lexically_normal());
@@ -470,9 +431,9 @@ TEST_F(PanelsE2e, OpenRecentReopensTheLastFile) {
 TEST_F(PanelsE2e, KillDashNineThenRestartOffersTheRecoveryFile) {
   // Run 1 edits, autosaves every 0.2 s and is killed with SIGKILL while it waits.
   Script edit;
-  edit.select(kUpperArmL).euler(2, 40.0).wait(100000).move({600, 400});
+  edit.select("UpperArm.L").euler(2, 40.0).wait(100000).moveItem("Outliner");
   const std::string pidFile = dir_ + "/pid", doneFile = dir_ + "/done";
-  runCommand("(" + kXvfb + "sh -c \"KINEMA_AUTOSAVE_SECONDS=0.2 " + command(edit, "recovery_crash", "") +
+  runCommand("(" + e2e::xvfb() + "sh -c \"KINEMA_AUTOSAVE_SECONDS=0.2 " + command(edit, "recovery_crash", "") +
              " & echo \\$! > " + pidFile + "; wait; touch " + doneFile + "\" > " + dir_ + "/crash.log 2>&1 &)");
   // Wait for an autosave that holds the edit (an earlier one may predate it: frames are slow
   // under llvmpipe on a busy machine, and the interval counts replayed 1/60 s frames).
@@ -501,7 +462,7 @@ TEST_F(PanelsE2e, KillDashNineThenRestartOffersTheRecoveryFile) {
   offer.wait(5);
   run(offer, "recovery_offer");
   Script accept;
-  accept.wait(3).key("ENTER").wait(3).saveAs(dir_ + "/recovered.kinema");
+  accept.wait(3).key("ENTER").wait(4).saveAs(dir_ + "/recovered.kinema");
   run(accept, "recovery_accept");
   const Scene r = saved(dir_ + "/recovered.kinema");
   EXPECT_ROTATION(rotation(r, "UpperArm.L"), rotZ(40.0));
@@ -519,14 +480,14 @@ namespace {
 // by 40 - 60 * 11/23 degrees (two squad keys without neighbours are a slerp). The status
 // bar shows the export and its report.
 TEST_F(PanelsE2e, TheAuthoredClipExportsThroughTheFileMenu) {
-  const std::pair<double, std::string> formats[] = {{kExportGlbY, "/authored.glb"}, {kExportBvhY, "/authored.bvh"}};
-  for (const auto& [itemY, name] : formats) {
+  const std::pair<std::string, std::string> formats[] = {{"GLB (.glb)...", "/authored.glb"},
+                                                        {"BVH (.bvh)...", "/authored.bvh"}};
+  for (const auto& [item, name] : formats) {
     Script s;
-    s.select(kUpperArmL).euler(2, 40.0).select(kUpperArmL).key("I");
-    for (int i = 0; i < 23; ++i) s.key("RIGHT");
-    s.select(kUpperArmL).euler(2, -20.0).select(kUpperArmL).key("I");
-    s.click(kFileMenu).wait(2).move(menuItem(kFileMenu, kFileExportY)).wait(3).move({kSubmenuX, kFileExportY}).wait(2);
-    s.click({kSubmenuX, itemY}).wait(3).type(dir_ + name).key("ENTER").wait(3);
+    s.select("UpperArm.L").euler(2, 40.0).select("UpperArm.L").key("I").wait(1);
+    for (int i = 0; i < 23; ++i) s.key("RIGHT").wait(1);
+    s.select("UpperArm.L").euler(2, -20.0).select("UpperArm.L").key("I").wait(1);
+    exportThroughTheMenu(s, item).type(dir_ + name).key("ENTER").wait(4);
     const nlohmann::json d = runAndDump(s, "export_authored_" + name.substr(name.size() - 3));
     EXPECT_EQ(d["timeline"]["frame"], 24);
     EXPECT_NE(d["status"].get<std::string>().find("Exported"), std::string::npos) << d["status"];

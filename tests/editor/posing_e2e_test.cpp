@@ -1,11 +1,11 @@
 // End-to-end tests of the posing features the other e2e files leave out: X-mirror editing,
 // the two-bone pole target, pinned IK targets, IK target drags along an axis, and the
 // orthographic toggle with frame selected from the View menu. The real `kinema edit` runs
-// under xvfb-run at 1280x800 (so the IK panel shows the pole fields) on --script replay and
-// is checked in --dump-state. Expected values are derived by hand (triangle geometry for the
+// under xvfb-run (e2e_harness.h: 1280x720 or KINEMA_E2E_SIZE) on --script replay and is
+// checked in --dump-state. Expected values are derived by hand (triangle geometry for the
 // two-bone chain, quaternion algebra for the mirror) or computed here from the dumped camera
-// (e2e_harness.h); panel pixels come from the fixed layout (src/editor/panel_layout.h) with
-// ImGui 1.86's default font, read off a screenshot once.
+// (e2e_harness.h); panel widgets are clicked by name, the IK panel scrolled down first where
+// its lower widgets may be below its bottom.
 #include <cmath>
 
 #include "editor/e2e_harness.h"
@@ -15,30 +15,9 @@ namespace {
 
 using namespace e2e;
 
-const std::string kSize = "1280x800";
-// Main menu bar: titles, then items 17 px apart (separators 4 px).
-const glm::dvec2 kEditMenu{69, 9}, kViewMenu{113, 9}, kPoseMenu{157, 9};
-const glm::dvec2 kEditXMirror{109, 164}, kViewOrthographic{153, 139}, kViewFrameSelected{153, 160};
-const glm::dvec2 kViewRight{153, 67}, kViewTop{153, 101};
-const glm::dvec2 kPosePin{197, 67};
-// The outliner's rows (depth-first order of the default character), 17 px apart.
-enum Row { kUpperArmL = 8, kLowerArmL = 9, kHandL = 10, kLowerArmR = 14, kHandR = 15, kFootL = 19 };
-glm::dvec2 outlinerRow(int row) { return {150.0, 76.0 + 17.0 * row}; }
-// The IK Targets panel at 1280x800 (its top at y = 19 + 757 * 0.55), one target selected:
-// "Add to selected", the "bones" stepper's +, then the settings of the selected target.
-const glm::dvec2 kIkAdd{1033, 471}, kIkBonesPlus{1159, 471};
-const glm::dvec2 kIkPosition[3] = {{1007, 687}, {1069, 687}, {1131, 687}};
-const glm::dvec2 kIkPoleCheckbox{987, 710};
-// With the chain length at 0 an "IK root" combo comes in under it (its list opens upwards,
-// the effector's ancestors from the parent up) and the rows below move down one.
-const glm::dvec2 kIkChainMinus{1129, 618}, kIkRootCombo{1060, 641}, kIkRootUpperChest{1020, 566};
-const glm::dvec2 kIkPositionBelowRoot[3] = {{1007, 710}, {1069, 710}, {1131, 710}};
-const glm::dvec2 kIkPole[3] = {{1007, 733}, {1069, 733}, {1131, 733}};
-
 class PosingE2e : public FrontViewSuite<PosingE2e> {
  public:
   static constexpr const char* kShotFolder = "posing_e2e";
-  static constexpr const char* kWindowSize = "1280x800";
 
  protected:
   DumpCamera camera() const { return DumpCamera(front_); }
@@ -64,7 +43,8 @@ TEST_F(PosingE2e, TheDefaultCharacterRestsWithIdentityRotations) {
   }
   EXPECT_NEAR(glm::length(rest("LowerArm.L") - rest("UpperArm.L")), 0.28, 1e-6);
   EXPECT_NEAR(glm::length(rest("Hand.L") - rest("LowerArm.L")), 0.26, 1e-6);
-  EXPECT_EQ(double(front_["viewport"]["height"]), 800.0 - 19 - 24 - 40);  // the timeline is always there
+  // The timeline is always there: the 3D view ends where it begins.
+  EXPECT_EQ(viewportRect(front_).bottom(), itemRect(front_, "Timeline").y);
 }
 
 TEST_F(PosingE2e, XMirrorEditingRotatesTheMirrorPartnerInTheSameUndoStep) {
@@ -74,11 +54,11 @@ TEST_F(PosingE2e, XMirrorEditingRotatesTheMirrorPartnerInTheSameUndoStep) {
   const double c = std::cos(M_PI / 12), s = std::sin(M_PI / 12);
   const glm::dquat left(c, 0, 0, s), right(c, 0, 0, -s);
   const auto rotate = [&](Script& script) {
-    return script.click(outlinerRow(kLowerArmL)).wait(1).move(pixelOf("Hips") + glm::dvec2(0, 150))
+    return script.select("LowerArm.L").move(pixelOf("Hips") + glm::dvec2(0, 150))
         .key("R").key("Z").key("3").key("0").key("ENTER");
   };
   Script on;
-  on.menu(kEditMenu, kEditXMirror);
+  on.menu("Edit", "X-Mirror");
   rotate(on);
   json d = run(on, "x_mirror_on");
   const glm::dvec3 elbow = rest("LowerArm.L"), hand = elbow + 0.26 * glm::dvec3(std::cos(M_PI / 6), std::sin(M_PI / 6), 0);
@@ -118,9 +98,11 @@ TEST_F(PosingE2e, PoleTargetBendsTheElbowTowardsThePole) {
   for (double poleZ : {0.5, -0.5}) {
     const glm::dvec3 P = rest("LowerArm.L") + glm::dvec3(0, 0, poleZ);
     Script script;
-    script.click(outlinerRow(kHandL)).wait(1).click(kIkAdd).wait(2).click(kIkPoleCheckbox).wait(2);
-    script.doubleClick(kIkPole[2]).wait(1).type(poleZ > 0 ? "0.5" : "-0.5").key("ENTER").wait(2);
-    script.doubleClick(kIkPosition[0]).wait(1).type("0.5").key("ENTER").wait(3);
+    script.select("Hand.L").clickItem("IK Targets/Add IK Target to Selected").wait(2);
+    script.scrollPanel("IK Targets", -10).clickItem("IK Targets/Pole target").wait(2);
+    script.scrollPanel("IK Targets", -10);  // the pole's fields came in below
+    script.doubleClickItem("IK Targets/Pole/2").wait(1).type(poleZ > 0 ? "0.5" : "-0.5").key("ENTER").wait(2);
+    script.doubleClickItem("IK Targets/Position/0").wait(1).type("0.5").key("ENTER").wait(3);
     const json d = run(script, poleZ > 0 ? "pole_in_front" : "pole_behind");
     ASSERT_EQ(d["ik_targets"].size(), 1u);
     const json& t = d["ik_targets"][0];
@@ -150,9 +132,9 @@ TEST_F(PosingE2e, APinnedTargetHoldsItsEffectorWhileAnotherIsDragged) {
   const glm::dvec2 e = pixelOf("LowerArm.L"), h = pixelOf("Hand.L");
   for (bool pinned : {true, false}) {
     Script script;
-    script.click(outlinerRow(kLowerArmL)).wait(1).keyDown("LEFT_SHIFT").key("I").keyUp("LEFT_SHIFT").wait(1);
-    if (pinned) script.menu(kPoseMenu, kPosePin);
-    script.click(outlinerRow(kHandL)).wait(1).click(kIkBonesPlus).wait(1).click(kIkAdd).wait(2);
+    script.select("LowerArm.L").keyDown("LEFT_SHIFT").key("I").keyUp("LEFT_SHIFT").wait(1);
+    if (pinned) script.menu("Pose", "Pin IK Target");
+    script.select("Hand.L").clickItem("IK Targets/Bones/+").wait(1).clickItem("IK Targets/Add IK Target to Selected").wait(2);
     script.move(h).down();
     glm::dvec2 last = h;
     for (int k = 1; k <= 10; ++k) {
@@ -209,7 +191,7 @@ TEST_F(PosingE2e, IkTargetDragAlongAnAxisChangesOnlyThatCoordinate) {
   };
   for (const Case& c : {Case{"X", 0, {-60, 40}}, Case{"Y", 1, {35, -50}}}) {
     Script script;
-    script.click(outlinerRow(kHandL)).wait(1).keyDown("LEFT_SHIFT").key("I").keyUp("LEFT_SHIFT").wait(1);
+    script.select("Hand.L").keyDown("LEFT_SHIFT").key("I").keyUp("LEFT_SHIFT").wait(1);
     script.move(h).down().key(c.key).path(h, h + c.offset, 8).up();
     const json d = run(script, std::string("ik_axis_drag_") + c.key);
     ASSERT_EQ(d["ik_targets"].size(), 1u);
@@ -240,22 +222,23 @@ TEST_F(PosingE2e, OrthographicToggleAndFrameSelectedFromTheViewMenuAndKeys) {
   // View > Orthographic, then View > Frame Selected on the right forearm: an orthographic
   // camera centred on the joint; numpad 5 goes back to perspective.
   Script menus;
-  menus.click(outlinerRow(kLowerArmR)).wait(1).menu(kViewMenu, kViewOrthographic).menu(kViewMenu, kViewFrameSelected);
+  menus.select("LowerArm.R").menu("View", "Orthographic").menu("View", "Frame Selected");
   json d = run(menus, "view_menu_ortho_frame_selected");
   EXPECT_TRUE(d["camera"]["orthographic"].get<bool>());
   expectNear(vec3(d["camera"]["target"]), rest("LowerArm.R"), 1e-4, "View > Frame Selected");
   EXPECT_LT(double(d["camera"]["distance"]), double(front_["camera"]["distance"]) / 2);
-  // The joint is at the middle of the 3D view (between the panels), not of the window.
+  // The joint is at the middle of the 3D view (between the panels' columns, from their top
+  // down to the timeline), not of the window.
   const glm::dvec2 centre = DumpCamera(d).pixel(rest("LowerArm.R"));
-  EXPECT_NEAR(centre.x, 250 + (1280 - 250 - 310) / 2.0, 0.5);
-  EXPECT_NEAR(centre.y, 19 + (800 - 19 - 24 - 40) / 2.0, 0.5);  // above the 40 px timeline
+  EXPECT_NEAR(centre.x, (itemRect(d, "Outliner").right() + itemRect(d, "Properties").x) / 2, 0.5);
+  EXPECT_NEAR(centre.y, (itemRect(d, "Outliner").y + itemRect(d, "Timeline").y) / 2, 0.5);  // above the timeline
   menus.key("KP_5");
   d = run(menus, "view_menu_ortho_then_numpad5");
   EXPECT_FALSE(d["camera"]["orthographic"].get<bool>());
 
   // Numpad 5 and F: orthographic, centred on the left hand.
   Script keys;
-  keys.click(outlinerRow(kHandL)).wait(1).move(pixelOf("Hips") + glm::dvec2(0, 150)).key("KP_5").key("F");
+  keys.select("Hand.L").move(pixelOf("Hips") + glm::dvec2(0, 150)).key("KP_5").key("F");
   d = run(keys, "numpad5_frame_selected");
   EXPECT_TRUE(d["camera"]["orthographic"].get<bool>());
   expectNear(vec3(d["camera"]["target"]), rest("Hand.L"), 1e-4, "F");
@@ -290,10 +273,10 @@ TEST_F(PosingE2e, OrthographicPickingFollowsTheOrthographicProjection) {
 
 TEST_F(PosingE2e, ViewMenuPresetsAltLeftOrbitAndShiftMiddlePan) {
   // View > Right looks from +X (azimuth 90), View > Top from above (elevation 90).
-  json d = run(Script().menu(kViewMenu, kViewRight), "view_menu_right");
+  json d = run(Script().menu("View", "Right"), "view_menu_right");
   EXPECT_NEAR(double(d["camera"]["azimuth"]), 90.0, 1e-4);
   EXPECT_NEAR(double(d["camera"]["elevation"]), 0.0, 1e-4);
-  d = run(Script().menu(kViewMenu, kViewTop), "view_menu_top");
+  d = run(Script().menu("View", "Top"), "view_menu_top");
   EXPECT_NEAR(double(d["camera"]["elevation"]), 90.0, 1e-3);
 
   // Alt + left drag, starting on the hand's bone, orbits like a middle drag (0.4 degrees
@@ -307,8 +290,9 @@ TEST_F(PosingE2e, ViewMenuPresetsAltLeftOrbitAndShiftMiddlePan) {
   EXPECT_EQ(int(d["undo_depth"]), 0);
 
   // Shift + middle drag pans: the scene follows the cursor on the target's plane, so the
-  // old target's point now projects 120 px right and 40 px below the view's centre.
-  const glm::dvec2 m(600, 500);
+  // old target's point now projects 120 px right and 40 px below the view's centre. The drag
+  // starts in the view's lower half.
+  const glm::dvec2 m = viewportRect(front_).at(0.5, 0.67);
   d = run(Script().move(m).keyDown("LEFT_SHIFT").down("middle").path(m, m + glm::dvec2(120, 40)).up("middle").keyUp("LEFT_SHIFT"),
           "shift_middle_pan");
   const DumpCamera after(d);
@@ -329,8 +313,8 @@ TEST_F(PosingE2e, RPressedAxisTwiceTurnsAboutTheJointsLocalAxis) {
   const glm::dvec2 away = pixelOf("Hips") + glm::dvec2(0, 150);
   const auto script = [&](bool local) {
     Script s;
-    s.click(outlinerRow(kUpperArmL)).wait(1).move(away).key("R").key("Z").key("9").key("0").key("ENTER");
-    s.click(outlinerRow(kLowerArmL)).wait(1).move(away).key("R").key("Y");
+    s.select("UpperArm.L").move(away).key("R").key("Z").key("9").key("0").key("ENTER");
+    s.select("LowerArm.L").move(away).key("R").key("Y");
     if (local) s.key("Y");
     return s.key("9").key("0").key("ENTER");
   };
@@ -355,14 +339,16 @@ TEST_F(PosingE2e, AChosenIkRootSetsTheChain) {
   ASSERT_GT(glm::length(T - rest("Shoulder.L")), 0.68 + 0.02);
   const auto script = [&](bool chooseRoot) {
     Script s;
-    s.click(outlinerRow(kHandL)).wait(1).click(kIkBonesPlus).wait(1).click(kIkAdd).wait(2);
+    s.select("Hand.L").clickItem("IK Targets/Bones/+").wait(1).clickItem("IK Targets/Add IK Target to Selected").wait(2);
     if (chooseRoot) {
-      for (int k = 0; k < 3; ++k) s.click(kIkChainMinus).wait(1);
-      s.click(kIkRootCombo).wait(2).click(kIkRootUpperChest).wait(2);
+      // With the chain length at 0 an "IK root" combo comes in under it (the effector's
+      // ancestors from the parent up) and the rows below move down one.
+      for (int k = 0; k < 3; ++k) s.clickItem("IK Targets/Chain length/-").wait(1);
+      s.clickItem("IK Targets/IK root").wait(2).clickItem("IK Targets/IK root/UpperChest").wait(2);
     }
-    const glm::dvec2* position = chooseRoot ? kIkPositionBelowRoot : kIkPosition;
-    s.doubleClick(position[0]).wait(1).type("0.55").key("ENTER").wait(3);
-    return s.doubleClick(position[1]).wait(1).type("0.95").key("ENTER").wait(3);
+    s.scrollPanel("IK Targets", -10);
+    s.doubleClickItem("IK Targets/Position/0").wait(1).type("0.55").key("ENTER").wait(3);
+    return s.doubleClickItem("IK Targets/Position/1").wait(1).type("0.95").key("ENTER").wait(3);
   };
   json d = run(script(true), "ik_root_chosen");
   ASSERT_EQ(d["ik_targets"].size(), 1u);
@@ -389,14 +375,12 @@ TEST_F(PosingE2e, AChosenIkRootSetsTheChain) {
 TEST_F(PosingE2e, TimelinePlaysAFilesMotion) {
   KINEMA_REQUIRE_SHARED_DATA();
   const std::string bvh = sharedDataDir() + "/bvh/cmu_01_01_first720.bvh";
-  // Layout at 1280x800: menu bar 19, status bar 24, timeline 40 px; Play is its third
-  // button (after |< and <), on the row at the timeline's top.
-  const glm::dvec2 play{312, 800 - 24 - 40 + 9};
+  // Play is the timeline's third button (after |< and <).
   Script s;
-  s.click(play).wait(60).click(play).wait(2);
-  const json d = runEditor(dir_, shotDir(), s, "timeline_play", kSize, bvh);
+  s.clickItem("Timeline/Play").wait(60).clickItem("Timeline/Play").wait(2);
+  const json d = runEditor(dir_, shotDir(), s, "timeline_play", bvh);
   ASSERT_TRUE(d.is_object());
-  EXPECT_EQ(double(d["viewport"]["height"]), 800.0 - 19 - 24 - 40);
+  EXPECT_EQ(viewportRect(d).bottom(), itemRect(d, "Timeline").y);
   EXPECT_EQ(d["playback"]["clip"], 0);
   EXPECT_EQ(d["playback"]["playing"], false);
   // Play takes effect with the first click's release (frame 5), Pause with the second's
@@ -413,9 +397,9 @@ TEST_F(PosingE2e, PinIkTargetPinsTheActiveJointsTargetNotTheRowHighlightedInTheI
   // added with Shift+I; Pose > Pin IK Target pinned Hand.R's target. It must pin the target
   // of the active joint, Foot.L, and leave Hand.R's alone.
   Script script;
-  script.click(outlinerRow(kHandR)).wait(1).click(kIkAdd).wait(2);
-  script.click(outlinerRow(kFootL)).wait(1).keyDown("LEFT_SHIFT").key("I").keyUp("LEFT_SHIFT").wait(1);
-  script.menu(kPoseMenu, kPosePin);
+  script.select("Hand.R").clickItem("IK Targets/Add IK Target to Selected").wait(2);
+  script.select("Foot.L").keyDown("LEFT_SHIFT").key("I").keyUp("LEFT_SHIFT").wait(1);
+  script.menu("Pose", "Pin IK Target");
   const json d = run(script, "pin_active_joints_target");
   EXPECT_EQ(d["active"], "Foot.L");
   ASSERT_EQ(d["ik_targets"].size(), 2u);

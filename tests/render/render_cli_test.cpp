@@ -214,7 +214,9 @@ TEST_F(RenderCli, EditorWindowOpensRendersAndExitsUnderXvfb) {
   if (runCommand("command -v xvfb-run") != 0) GTEST_SKIP() << "xvfb-run is not installed";
   KINEMA_REQUIRE_SHARED_DATA();
   const std::string shot = dir_ + "/editor.png";
-  ASSERT_EQ(runCommand("xvfb-run -a -s '-screen 0 1280x800x24' env " + kSoftware + KINEMA_BINARY + " edit '" +
+  // Its own config and state folders: nothing remembered from the user's sessions.
+  ASSERT_EQ(runCommand("xvfb-run -a -s '-screen 0 1280x800x24' env XDG_CONFIG_HOME='" + dir_ + "' XDG_STATE_HOME='" +
+                           dir_ + "' " + kSoftware + KINEMA_BINARY + " edit '" +
                            sharedDataDir() + "/bvh/cmu_01_01_first720.bvh' --frame-count 5 --screenshot " + shot,
                        &out_, &err_),
             0)
@@ -225,7 +227,10 @@ TEST_F(RenderCli, EditorWindowOpensRendersAndExitsUnderXvfb) {
   EXPECT_GT(distinctColors(image), 50);
   EXPECT_GT(brightBox(image).height(), 150);
   // Without a display, `edit` fails with one line and exit 1, never a crash.
-  EXPECT_EQ(runCommand("env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(KINEMA_BINARY) + " edit", &out_, &err_), 1);
+  EXPECT_EQ(runCommand("env -u DISPLAY -u WAYLAND_DISPLAY XDG_CONFIG_HOME='" + dir_ + "' XDG_STATE_HOME='" + dir_ + "' " +
+                           std::string(KINEMA_BINARY) + " edit",
+                       &out_, &err_),
+            1);
   EXPECT_NE(err_.find("display"), std::string::npos) << err_;
 }
 

@@ -162,7 +162,7 @@ void keyPropertiesStrip(EditorState& state, const Clip& clip) {
       ImGui::SetNextItemWidth(70);
       // Dragging a slider is one undo step (a Document drag from press to release).
       const bool slid = ImGui::SliderFloat(names[i], &tcb[i], -1.0f, 1.0f, "%.2f");
-      recordItem(std::string("Curve Editor/") + "TCB"[i]);
+      recordFrame(std::string("Curve Editor/") + "TCB"[i], 70);
       if (slid) {
         if (!state.doc.dragging()) state.doc.beginDrag("Key TCB");
         const std::vector<CurveKeyRef> keys = state.curveEditor.selected;
@@ -250,6 +250,7 @@ void drawCurveEditorPanel(CommandContext& ctx) {
   ImGui::SetNextWindowSize(ImVec2(r.w, r.h), ImGuiCond_Always);
   ImGui::Begin("Curve Editor", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
                                             ImGuiWindowFlags_NoScrollWithMouse);
+  recordWindow("Curve Editor");
   if (!state.hasMotion()) {
     ImGui::TextDisabled("Curve editor: the scene has no animation (key a pose first)");
     ImGui::End();

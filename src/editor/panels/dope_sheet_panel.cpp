@@ -11,6 +11,7 @@
 #include "editor/commands/animation_editor_commands.h"
 #include "editor/panels/dope_sheet_panel.h"
 #include "editor/panels/editor_panels.h"
+#include "editor/panels/item_names.h"
 #include "editor/panels/panel_layout.h"
 
 namespace kinema {
@@ -199,6 +200,7 @@ void drawDopeSheetPanel(EditorState& state) {
   ImGui::Begin("Dope Sheet", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
                                           ImGuiWindowFlags_NoScrollWithMouse);
   ImGui::PopStyleVar();
+  recordWindow("Dope Sheet");  // names left of dope_sheet.view's x, the ruler above its y
   DopeSheetState& ds = state.dopeSheet;
   DopeSheetView& view = ds.view;
   view.x = r.x + kDopeSheetNameWidth;

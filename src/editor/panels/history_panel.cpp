@@ -5,6 +5,7 @@
 #include <string>
 
 #include "editor/panels/editor_panels.h"
+#include "editor/panels/item_names.h"
 #include "editor/panels/panel_layout.h"
 
 namespace kinema {
@@ -18,6 +19,7 @@ void drawHistoryPanel(EditorState& state) {
     ImGui::End();
     return;
   }
+  recordWindow("History");
   const std::vector<std::string> labels = doc.historyLabels();
   const int position = doc.historyPosition();
   int jump = -1;
@@ -28,6 +30,7 @@ void drawHistoryPanel(EditorState& state) {
     if (!applied) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
     const std::string label = k == 0 ? "(original)" : std::to_string(k) + ". " + labels[k - 1];
     if (ImGui::Selectable(label.c_str(), k == position)) jump = k;
+    recordItem("History/" + std::to_string(k));  // by step: "History/0" is (original)
     if (!applied) ImGui::PopStyleColor();
     ImGui::PopID();
   }

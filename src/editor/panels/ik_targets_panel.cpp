@@ -170,6 +170,7 @@ void drawIkTargetsPanel(CommandContext& ctx) {
     ImGui::End();
     return;
   }
+  recordWindow("IK Targets");
   const Skeleton& s = doc.skeleton();
   // Add and Remove are the Pose menu's commands: they act on the active joint and its target.
   commandButton(ctx, "pose.add_ik_target", "IK Targets", "Add to selected");

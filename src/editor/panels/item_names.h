@@ -27,6 +27,27 @@ inline void recordItem(ItemRects& rects, const std::string& name) {
   rects.record(name, glm::vec2(a.x, a.y), glm::vec2(b.x, b.y));
 }
 
+// Names the window being drawn, its whole rectangle ("History", "IK Targets"), so a script
+// finds a panel's empty space or its title bar (to scroll it) and a test checks where the
+// 3D view lies between the panels. Call it between Begin and End.
+inline void recordWindow(const std::string& name) {
+  if (ItemRects* rects = namedItems()) {
+    const ImVec2 a = ImGui::GetWindowPos(), s = ImGui::GetWindowSize();
+    rects->record(name, glm::vec2(a.x, a.y), glm::vec2(a.x + s.x, a.y + s.y));
+  }
+}
+
+// After a labelled slider or drag of `width` pixels (0: the default item width): names its
+// frame alone, not the label beside it, so that a point `at` a fraction of it is that
+// fraction along the slider ("Curve Editor/T" at [0.99, 0.5] is its right end).
+inline void recordFrame(const std::string& name, float width = 0.0f) {
+  if (ItemRects* rects = namedItems()) {
+    const ImVec2 a = ImGui::GetItemRectMin();
+    const float w = width > 0.0f ? width : ImGui::CalcItemWidth();
+    rects->record(name, glm::vec2(a.x, a.y), glm::vec2(a.x + w, a.y + ImGui::GetFrameHeight()));
+  }
+}
+
 // After DragFloat3 / InputFloat4 and the like (n fields in one widget, default item width):
 // also names each field "name/0" .. "name/n-1", laid out as ImGui 1.86 lays them out
 // (PushMultiItemsWidths: equal widths, the last takes the rounding, inner spacing between).

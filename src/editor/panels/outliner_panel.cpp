@@ -35,6 +35,7 @@ void drawOutlinerPanel(EditorState& state) {
     ImGui::End();
     return;
   }
+  recordWindow("Outliner");
   ImGui::SetNextItemWidth(-1);
   ImGui::InputTextWithHint("##search", "search joints", p.search, sizeof(p.search));
   recordItem("Outliner/Search");

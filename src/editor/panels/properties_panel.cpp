@@ -194,6 +194,7 @@ void drawPropertiesPanel(EditorState& state) {
     ImGui::End();
     return;
   }
+  recordWindow("Properties");
   const int joint = doc.selection.active();
   if (joint < 0 || joint >= doc.skeleton().size() || joint >= doc.pose().size()) {
     ImGui::TextDisabled("Select a joint (click it or pick it in the outliner).");

@@ -7,6 +7,7 @@
 #include "editor/commands/controls_help.h"
 #include "editor/panels/dope_sheet_panel.h"
 #include "editor/panels/editor_panels.h"
+#include "editor/panels/item_names.h"
 #include "editor/panels/compare_panel.h"
 
 namespace kinema {
@@ -50,12 +51,16 @@ void discardModal(EditorState& state) {
   if (!ImGui::BeginPopupModal("Discard unsaved changes?", nullptr, kModalFlags)) return;
   ImGui::Text("%s has changes that are not saved.", documentTitle(state).c_str());
   ImGui::Text("Discard them before %s?", pendingVerb(p.pending));
-  if (ImGui::Button("Discard", ImVec2(110, 0))) {
+  const bool discard = ImGui::Button("Discard", ImVec2(110, 0));
+  recordItem("Discard unsaved changes?/Discard");
+  if (discard) {
     ImGui::CloseCurrentPopup();
     runPendingFileAction(state);
   }
   ImGui::SameLine();
-  if (ImGui::Button("Save first", ImVec2(110, 0))) {
+  const bool saveFirst = ImGui::Button("Save first", ImVec2(110, 0));
+  recordItem("Discard unsaved changes?/Save first");
+  if (saveFirst) {
     ImGui::CloseCurrentPopup();
     const bool inPlace = canSaveInPlace(state.doc);
     requestSave(state);
@@ -69,7 +74,9 @@ void discardModal(EditorState& state) {
     }
   }
   ImGui::SameLine();
-  if (ImGui::Button("Cancel", ImVec2(110, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+  const bool cancel = ImGui::Button("Cancel", ImVec2(110, 0));
+  recordItem("Discard unsaved changes?/Cancel");
+  if (cancel || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
     ImGui::CloseCurrentPopup();
     p.pending = PendingFileAction::None;
   }

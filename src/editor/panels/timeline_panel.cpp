@@ -100,6 +100,7 @@ void drawTimelinePanel(CommandContext& ctx) {
   ImGui::SetNextWindowSize(ImVec2(r.w, r.h), ImGuiCond_Always);
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 2));
   ImGui::Begin("Timeline", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
+  recordWindow("Timeline");
   ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(4, 1));
   auto status = [&](const std::string& message) {
     if (!message.empty()) state.statusMessage = message;
