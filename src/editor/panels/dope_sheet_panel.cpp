@@ -11,6 +11,7 @@
 #include "editor/panels/dope_sheet_panel.h"
 #include "editor/panels/editor_panels.h"
 #include "editor/panels/panel_layout.h"
+#include "editor/model/timeline.h"
 
 namespace kinema {
 
@@ -32,10 +33,7 @@ long long tickStep(double pixelsPerFrame, double minPixels) {
 // The pose at the current frame again after a key edit (Blender re-evaluates the action);
 // not an undo step.
 void showCurrentFrame(EditorState& state) {
-  if (!state.hasMotion() || state.playing) return;
-  Pose pose = Pose::rest(state.doc.skeleton());
-  sampleClip(state.doc.scene().clips[state.clip], static_cast<float>(state.time), pose);
-  state.doc.setAnimatedPose(pose);
+  if (!state.playing) poseAtPlayhead(state);
 }
 
 void report(EditorState& state, const std::string& error, const std::string& done) {
@@ -83,7 +81,7 @@ void handleKeys(EditorState& state, const Clip& clip, DopeSheetState& ds) {
       state.statusMessage = ds.clipboard.empty() ? "Copy keys: select keys first"
                                                  : "Copied " + std::to_string(ds.clipboard.keys.size()) + " key(s)";
     } else if (pressed(keys::V)) {
-      const long long frame = std::llround(state.time / dopeSheetFrameTime(clip));
+      const long long frame = currentFrame(state);
       const std::vector<int> onto = io.KeyShift ? state.doc.selection.joints() : std::vector<int>{};
       if (io.KeyShift && onto.empty()) showEditorError(state, "Paste keys onto the selected joints: select joints first");
       else report(state, pasteKeysEdit(state.doc, state.clip, ds.selection, ds.clipboard, frame, onto), "Pasted keys");
@@ -101,9 +99,9 @@ void handleKeys(EditorState& state, const Clip& clip, DopeSheetState& ds) {
     ds.gesture = DopeSheetState::Gesture::GrabKeys;
     ds.pressMouse = glm::vec2(io.MousePos.x, io.MousePos.y);
   } else if (pressed(keys::SPACE)) {
-    state.playing = !state.playing;
+    togglePlayback(state);  // as the timeline's Space: pausing lands on a whole frame
   } else if (pressed(keys::HOME)) {
-    ds.view.frameRange(0.0, std::max(timeToFrame(clip, clip.duration()), 1.0));
+    ds.view.frameRange(0.0, std::max(clip.timeToFrame(clip.duration()), 1.0));
   }
 }
 
@@ -189,11 +187,9 @@ void handleMouse(EditorState& state, const Clip& clip, const std::vector<DopeShe
   const bool inRuler = mouse.y >= rulerRect.y && mouse.y < rulerRect.y + rulerRect.h && mouse.x >= view.x;
   if (inRuler && ImGui::IsMouseDown(0)) {
     const long long frame = std::max(0LL, std::llround(view.xToFrame(mouse.x)));
-    const double time = frame * dopeSheetFrameTime(clip);
-    if (time != state.time) {
-      state.time = time;
+    if (frame != currentFrame(state) || state.playing) {
       state.playing = false;
-      state.sampleClip = true;
+      goToFrame(state, frame);  // the timeline's frame -> time, so both show the same frame
     }
     return;
   }
@@ -283,9 +279,8 @@ void drawDopeSheetPanel(EditorState& state) {
   const float right = r.x + r.w, bottom = r.y + r.h;
   dl->PushClipRect(ImVec2(r.x, r.y), ImVec2(right, bottom), true);
   dl->AddRectFilled(ImVec2(r.x, r.y), ImVec2(right, bottom), rgba(42, 42, 42));
-  const double ft = dopeSheetFrameTime(shown);
   // The clip's playback range, lighter (Blender darkens outside the scene's range).
-  const double x0 = view.frameToX(timeToFrame(shown, shown.playStart())), x1 = view.frameToX(timeToFrame(shown, shown.playEnd()));
+  const double x0 = view.frameToX(shown.timeToFrame(shown.playStart())), x1 = view.frameToX(shown.timeToFrame(shown.playEnd()));
   dl->AddRectFilled(ImVec2(std::max(float(x0), view.x), view.y), ImVec2(std::min(float(x1), right), bottom), rgba(52, 52, 52));
   for (int i = 0; i < static_cast<int>(shownRows.size()); ++i) {
     const float cy = view.rowCenterY(i), top = cy - view.rowHeight * 0.5f;
@@ -313,10 +308,10 @@ void drawDopeSheetPanel(EditorState& state) {
     const float cy = view.rowCenterY(i);
     if (cy < view.y || cy > bottom + view.rowHeight) continue;
     const std::vector<float>& times = shownRows[i].times;
-    auto it = std::lower_bound(times.begin(), times.end(), static_cast<float>(firstVisible * ft));
-    for (; it != times.end() && timeToFrame(shown, *it) <= lastVisible; ++it) {
+    auto it = std::lower_bound(times.begin(), times.end(), shown.frameToTime(static_cast<long long>(std::floor(firstVisible))));
+    for (; it != times.end() && shown.timeToFrame(*it) <= lastVisible; ++it) {
       const bool selected = ds.selection.containsAll(columnsOfCell(shownRows, i, *it));
-      const float x = static_cast<float>(view.frameToX(timeToFrame(shown, *it)));
+      const float x = static_cast<float>(view.frameToX(shown.timeToFrame(*it)));
       drawDiamond(dl, ImVec2(x, cy), i == 0 ? kDiamondRadius + 1 : kDiamondRadius,
                   selected ? rgba(255, 160, 40) : rgba(205, 205, 205), rgba(0, 0, 0, 200));
     }
@@ -331,12 +326,12 @@ void drawDopeSheetPanel(EditorState& state) {
   }
   dl->PopClipRect();
   // The current frame: a blue line with its number in the ruler.
-  const double frameNow = state.time / ft;
+  const double frameNow = shown.timeToFrame(state.time);
   const float xNow = static_cast<float>(view.frameToX(frameNow));
   if (xNow >= view.x && xNow <= right) {
     dl->AddLine(ImVec2(xNow, view.y), ImVec2(xNow, bottom), rgba(70, 140, 255), 2.0f);
     char label[24];
-    std::snprintf(label, sizeof label, "%lld", std::llround(frameNow));
+    std::snprintf(label, sizeof label, "%lld", currentFrame(state));  // the timeline's number
     const ImVec2 size = ImGui::CalcTextSize(label);
     dl->AddRectFilled(ImVec2(xNow - size.x / 2 - 4, r.y + 1), ImVec2(xNow + size.x / 2 + 4, view.y - 1),
                       rgba(70, 140, 255), 3.0f);

@@ -173,7 +173,7 @@ void drawMainMenuBar(EditorState& state) {
     ImGui::Separator();
     if (ImGui::MenuItem("Orthographic", "Numpad 5", state.camera.orthographic)) toggleOrthographic(state.camera);
     ImGui::Separator();
-    const std::vector<glm::mat4> world = doc.worldTransforms();
+    const std::vector<glm::mat4>& world = doc.worldTransforms();
     const float minRadius = 0.1f * std::max(jointBounds(world).radius(), 1e-3f);
     if (ImGui::MenuItem("Frame Selected", "F", false, !doc.selection.empty()))
       frameSelected(state.camera, world, doc.selection.joints(), viewAspect(state), minRadius);

@@ -50,12 +50,12 @@ glm::quat jointWorldRotation(const Document& doc, int joint) {
 }
 
 glm::vec3 ViewportTools::jointPosition(const EditorState& state, int joint) const {
-  return joint >= 0 && joint < static_cast<int>(state.world.size()) ? glm::vec3(state.world[joint][3]) : glm::vec3(0.0f);
+  return joint >= 0 && joint < static_cast<int>(state.world().size()) ? glm::vec3(state.world()[joint][3]) : glm::vec3(0.0f);
 }
 
 bool ViewportTools::gizmo(const EditorState& state, const ViewportView& view, RotateGizmo& out) const {
   const int j = state.doc.selection.active();
-  if (!state.view.showGizmo || j < 0 || j >= static_cast<int>(state.world.size())) return false;
+  if (!state.view.showGizmo || j < 0 || j >= static_cast<int>(state.world().size())) return false;
   out = RotateGizmo{};
   out.pivot = jointPosition(state, j);
   out.axesRotation = RotateGizmo::axesFor(state.view.localGizmo ? GizmoOrientation::Local : GizmoOrientation::Global,
@@ -98,17 +98,17 @@ SkeletonPick ViewportTools::pickAt(const EditorState& state, const ViewportView&
   const Scene& scene = state.doc.scene();
   if (scene.meshInstances.empty()) return pick;
   if (deformedScene_ != &scene || deformedRevision_ != state.doc.meshRevision() ||
-      deformedChange_ != state.doc.changeCount() || deformedWorld_ != state.world) {
+      deformedChange_ != state.doc.changeCount() || deformedPose_ != state.doc.poseRevision()) {
     deformed_.clear();
     SceneDeformationJob job;
     job.scene = &scene;
-    job.world = &state.world;
+    job.world = &state.world();
     job.out = &deformed_;
     if (!job.run()) deformed_.clear();
     deformedScene_ = &scene;
     deformedRevision_ = state.doc.meshRevision();
     deformedChange_ = state.doc.changeCount();
-    deformedWorld_ = state.world;
+    deformedPose_ = state.doc.poseRevision();
   }
   const MeshPick m = pickMeshJoint(scene, deformed_, view.rayThrough(mouse_));
   if (m.hit()) {
@@ -311,7 +311,7 @@ void ViewportTools::key(EditorState& state, const ViewportView& view, int key) {
     return;
   }
   const float aspect = view.size.x / std::max(view.size.y, 1.0f);
-  const float minRadius = 0.1f * std::max(jointBounds(state.world).radius(), 1e-3f);
+  const float minRadius = 0.1f * std::max(jointBounds(state.world()).radius(), 1e-3f);
   if (ctrl) {
     // Ctrl+N/O/S/Q/Z/Y/C/V are the main menu's shortcuts (commands/file_commands.h).
     if (key == keys::I) state.view.autoIk = !state.view.autoIk;
@@ -379,8 +379,8 @@ void ViewportTools::key(EditorState& state, const ViewportView& view, int key) {
       if (alt) doc.selection.clear();
       else doc.selection.selectAll(doc.skeleton().size());
       break;
-    case keys::F: frameSelected(state.camera, state.world, doc.selection.joints(), aspect, minRadius); break;
-    case keys::HOME: ViewportController().frameAll(state.camera, jointBounds(state.world), aspect); break;
+    case keys::F: frameSelected(state.camera, state.world(), doc.selection.joints(), aspect, minRadius); break;
+    case keys::HOME: ViewportController().frameAll(state.camera, jointBounds(state.world()), aspect); break;
     case keys::KP_1: applyViewPreset(state.camera, ViewPreset::Front); break;
     case keys::KP_3: applyViewPreset(state.camera, ViewPreset::Right); break;
     case keys::KP_7: applyViewPreset(state.camera, ViewPreset::Top); break;
@@ -460,7 +460,7 @@ void ViewportTools::handle(EditorState& state, const InputEvent& e, const Viewpo
       if (state.tool.mode == ModalTool::GizmoDrag || state.tool.mode == ModalTool::IkDrag) {
         confirm(state);
       } else if (state.tool.mode == ModalTool::BoxSelect) {
-        const std::vector<int> inside = boxSelectJoints(state.world, view, state.tool.startMouse, mouse_);
+        const std::vector<int> inside = boxSelectJoints(state.world(), view, state.tool.startMouse, mouse_);
         state.tool = ToolState{};
         state.doc.selection.box(inside, (mods_ & kModShift)  ? BoxSelectMode::Extend
                                         : (mods_ & kModCtrl) ? BoxSelectMode::Subtract
