@@ -68,8 +68,7 @@ Document::Document(Scene scene, std::string path) : scene_(std::move(scene)), pa
   pose_ = scene_.pose.size() == n && scene_.pose.validate(scene_.skeleton).empty() ? scene_.pose
                                                                                  : Pose::rest(scene_.skeleton);
   scene_.pose = Pose{};  // the document's pose_ is the one truth
-  savedPlayhead_ = scene_.playhead;
-  if (savedPlayhead_) playhead_ = *savedPlayhead_;
+  savedPlayhead_ = playhead_ = scene_.playhead;
   scene_.playhead.reset();  // playhead_ is the one the document saves
   if (!scene_.ik.limits.empty()) scene_.ik.limits.resize(n);
   for (size_t i = 0; i < scene_.ik.targets.size(); ++i) {
@@ -198,10 +197,11 @@ std::string Document::runChange(const std::function<std::string(DocumentEdit&)>&
     std::vector<int> changed;
     for (int j = 0; j < n; ++j)
       if (!sameBits(poseBefore[j], pose_.local[j])) changed.push_back(j);
-    int clip = playhead_.clip;
-    if (keyJoints(scene_.clips, clip, scene_.skeleton, pose_, changed, static_cast<float>(playhead_.time),
+    ScenePlayhead at = playhead();
+    if (keyJoints(scene_.clips, at.clip, scene_.skeleton, pose_, changed, static_cast<float>(at.time),
                   autoKey.preferences) > 0) {
-      playhead_.clip = clip;  // a new "Action" when the scene had no clip
+      if (playhead_) playhead_->clip = at.clip;  // a new "Action" when the scene had no clip
+      const int clip = at.clip;
       const std::string bad = scene_.clips[clip].validate(scene_.skeleton);
       if (!bad.empty()) return "auto-key: clip " + std::to_string(clip) + ": " + bad;
     }

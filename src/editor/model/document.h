@@ -113,8 +113,10 @@ class Document {
   // The timeline's playhead (clip index, time in seconds): what auto-key keys at and what a
   // save writes (.kinema "playhead"). EditorState::clip / time are the playhead the views
   // move; the timeline copies them here whenever they change (timeline.h
-  // syncDocumentPlayhead). Not an undo step, not a change to save.
-  const ScenePlayhead& playhead() const { return playhead_; }
+  // syncDocumentPlayhead). Not an undo step, not a change to save. Until it is set (a
+  // document no timeline showed) it is the file's, else clip 0 at time 0, and a save writes
+  // none: such a file opens on its clip's start frame.
+  ScenePlayhead playhead() const { return playhead_.value_or(ScenePlayhead{}); }
   void setPlayhead(const ScenePlayhead& playhead) { playhead_ = playhead; }
   // The playhead the file was saved with (.kinema "playhead"); empty for files without one
   // (glTF, BVH, older .kinema files, a new document), which open at the clip's start.
@@ -171,8 +173,7 @@ class Document {
   mutable std::vector<glm::mat4> world_;  // worldTransforms() of pose revision worldRevision_
   mutable long long worldRevision_ = -1;
   mutable long long worldEvaluations_ = 0;
-  ScenePlayhead playhead_;
-  std::optional<ScenePlayhead> savedPlayhead_;
+  std::optional<ScenePlayhead> playhead_, savedPlayhead_;
   std::vector<PoseIkTarget> targets_;
   long long meshRevision_ = 0;
   std::vector<SkinningMethod> skinning_;  // edited here, written into scene_.meshInstances after each change

@@ -157,6 +157,7 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
   out["undo_depth"] = doc.historyPosition();
   out["redo_depth"] = static_cast<int>(doc.historyLabels().size()) - doc.historyPosition();
   out["frames"] = frames;
+  out["world_evaluations"] = doc.worldEvaluations();  // forward kinematics runs of this document (one per pose change)
   out["window"] = {{"width", windowWidth}, {"height", windowHeight}};
   out["viewport"] = {{"x", s.viewportRect.x}, {"y", s.viewportRect.y}, {"width", s.viewportRect.z},
                      {"height", s.viewportRect.w}};
