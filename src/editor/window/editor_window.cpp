@@ -1,4 +1,3 @@
-#include "editor/model/timeline.h"
 #include "editor/window/editor_window.h"
 
 #include <glad/gl.h>
