@@ -142,8 +142,17 @@ float Clip::duration() const {
   return d;
 }
 
+double Clip::secondsPerFrame() const { return frameTime > 0.0 ? frameTime : 1.0 / kDefaultFrameRate; }
+
 float Clip::frameToTime(long long frame) const {
-  return static_cast<float>(static_cast<double>(frame) * frameTime);
+  return static_cast<float>(static_cast<double>(frame) * secondsPerFrame());
+}
+
+double Clip::timeToFrame(double time) const { return time / secondsPerFrame(); }
+
+long long Clip::nearestFrame(double time) const {
+  const double f = timeToFrame(time);
+  return std::isfinite(f) ? std::llround(std::clamp(f, -1e12, 1e12)) : 0;
 }
 
 std::string Clip::validate(const Skeleton& skeleton) const {
@@ -184,21 +193,33 @@ std::string Clip::validate(const Skeleton& skeleton) const {
   return {};
 }
 
+int findKey(const Channel& ch, float time) {
+  // The keys within the tolerance are next to where `time` would be inserted.
+  const int at = static_cast<int>(std::lower_bound(ch.times.begin(), ch.times.end(), time) - ch.times.begin());
+  int best = -1;
+  for (int k : {at - 1, at})
+    if (k >= 0 && k < ch.keyCount() && sameKeyTime(ch.times[k], time) &&
+        (best < 0 || std::abs(ch.times[k] - time) < std::abs(ch.times[best] - time)))
+      best = k;
+  return best;
+}
+
 int insertKey(Channel& ch, float time, const glm::vec4& value) {
+  if (const int existing = findKey(ch, time); existing >= 0) {
+    ch.values[existing] = value;
+    return existing;
+  }
   const auto it = std::lower_bound(ch.times.begin(), ch.times.end(), time);
   const int k = static_cast<int>(it - ch.times.begin());
-  if (it != ch.times.end() && *it == time) {
-    ch.values[k] = value;
-    return k;
-  }
   // A new key takes the settings of the key before it (the segment it splits), or of the
   // key after it when it becomes the first key.
   return insertKey(ch, time, value, ch.times.empty() ? ch.settings(0) : ch.settings(k > 0 ? k - 1 : 0));
 }
 
 int insertKey(Channel& ch, float time, const glm::vec4& value, const KeySettings& settings) {
+  const int existing = findKey(ch, time);
   const auto it = std::lower_bound(ch.times.begin(), ch.times.end(), time);
-  const int k = static_cast<int>(it - ch.times.begin());
+  const int k = existing >= 0 ? existing : static_cast<int>(it - ch.times.begin());
   // Materialise per-key settings once any key differs from the channel-wide default.
   KeySettings channelDefault;
   channelDefault.interpolation = ch.interpolation;
@@ -207,7 +228,7 @@ int insertKey(Channel& ch, float time, const glm::vec4& value, const KeySettings
     if (ch.times.empty()) ch.interpolation = settings.interpolation;
   }
   const bool perKey = !ch.keys.empty() || settings != channelDefault;
-  if (it != ch.times.end() && *it == time) {
+  if (existing >= 0) {
     ch.values[k] = value;
     if (perKey) ch.keys[k] = settings;
     return k;
@@ -226,12 +247,12 @@ int moveKey(Channel& ch, int key, float newTime) {
   deleteKey(ch, key);
   if (!hadKeys) {
     // Keep the channel compact: the settings were the channel-wide ones.
+    if (const int existing = findKey(ch, newTime); existing >= 0) {
+      ch.values[existing] = value;
+      return existing;
+    }
     const auto it = std::lower_bound(ch.times.begin(), ch.times.end(), newTime);
     const int k = static_cast<int>(it - ch.times.begin());
-    if (it != ch.times.end() && *it == newTime) {
-      ch.values[k] = value;
-      return k;
-    }
     ch.times.insert(ch.times.begin() + k, newTime);
     ch.values.insert(ch.values.begin() + k, value);
     return k;

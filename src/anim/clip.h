@@ -1,4 +1,5 @@
 #pragma once
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -94,10 +95,15 @@ struct Channel {
   int valueSize() const;
 };
 
+// The frame rate a clip without its own frame grid (glTF, frameTime 0) is counted in:
+// Blender's default, and the rate of a new clip ("Action"). Frames per second.
+constexpr double kDefaultFrameRate = 24.0;
+
 struct Clip {
   std::string name;
   std::vector<Channel> channels;
-  // Seconds per frame for frame-based sources (BVH); 0 when the clip has no frame grid.
+  // Seconds per frame for frame-based sources (BVH) and edited clips; 0 when the file gave
+  // the clip no frame grid (glTF). Read it through secondsPerFrame().
   double frameTime = 0.0;
   // Editor playback only: sampling always clamps.
   bool loop = false;
@@ -112,20 +118,43 @@ struct Clip {
 
   // The last key time over all channels (clips start at time 0).
   float duration() const;
-  // Time of frame N, computed the same way as the keys of frame-based clips, so that
-  // sampling at it returns that frame's values exactly.
+
+  // The clip's frame grid, the one every view of the clip counts in (timeline, dope
+  // sheet, curve editor, onion skin, motion path and control): frame N is at N seconds
+  // per frame, frame 0 at time 0.
+  // Seconds per frame: frameTime, or 1 / kDefaultFrameRate for a clip without a grid.
+  double secondsPerFrame() const;
+  double framesPerSecond() const { return 1.0 / secondsPerFrame(); }
+  // Time of frame N (seconds), computed the same way as the keys of frame-based clips, so
+  // that sampling at it returns that frame's values exactly.
   float frameToTime(long long frame) const;
+  // The (fractional) frame at `time` seconds, and the nearest whole frame (0 for a
+  // non-finite time; clamped to +-1e12 frames).
+  double timeToFrame(double time) const;
+  long long nearestFrame(double time) const;
   // Empty when every channel names a joint of the skeleton (Scalar channels may use -1),
   // times are finite and strictly increasing, values and settings are finite (one per key)
   // and each key's interpolation suits the channel's target.
   std::string validate(const Skeleton& skeleton) const;
 };
 
+// Two key times of one channel closer than this (seconds) are the same key: inserting,
+// moving, finding and deleting keys, and the dope sheet's key columns, all use it. A tenth
+// of a frame at the editor's highest frame rate (1000 fps); far above the float rounding
+// of a frame's time in clips up to 10 minutes long (6e-8 s per second of clip time), so
+// keys set on one frame by different tools always meet.
+constexpr float kKeyTimeTolerance = 1e-4f;
+inline bool sameKeyTime(float a, float b) { return std::abs(a - b) <= kKeyTimeTolerance; }
+// The index of the channel's key at `time` (within kKeyTimeTolerance; the nearest when
+// several are), -1 when it has none there.
+int findKey(const Channel& channel, float time);
+
 // Key editing. Each keeps the channel sorted and valid and returns the key's new index.
-// Inserting at the time of an existing key replaces its value (and settings when given).
+// Inserting at the time of an existing key (findKey) replaces its value (and settings
+// when given); the key keeps its time.
 int insertKey(Channel& channel, float time, const glm::vec4& value);
 int insertKey(Channel& channel, float time, const glm::vec4& value, const KeySettings& settings);
-// Moving onto another key's time replaces that key.
+// Moving onto another key's time (findKey) replaces that key, at that key's time.
 int moveKey(Channel& channel, int key, float newTime);
 void deleteKey(Channel& channel, int key);
 // Sets one Bezier handle (offsets relative to the key) the way Blender's Graph Editor

@@ -8,6 +8,7 @@
 #include "cli/render_command.h"
 #include "editor/commands/controls_help.h"
 #include "editor/commands/keymap.h"
+#include "editor/commands/file_commands.h"
 #include "editor/window/editor_window.h"
 #include "editor/model/input_events.h"
 
@@ -67,7 +68,7 @@ int runEdit(const EditOptions& o) {
   Result<Scene> loaded = loadSceneOrDefault(o.file);
   if (!loaded) return badInput(loaded.error());
   EditorState state;
-  state.doc = Document(std::move(loaded.value()), o.file);
+  openDocumentInEditor(state, Document(std::move(loaded.value()), o.file));  // as File > Open does
   if (!o.compare.empty()) {
     if (!findTeachingPreset(o.compare)) {
       std::cerr << "kinema edit: --compare '" << o.compare << "' is not a preset (kinema demo list); see --help\n";
@@ -93,7 +94,7 @@ int runEdit(const EditOptions& o) {
 int runDefault() {
   if (displayAvailable()) {
     EditorState state;
-    state.doc = Document(loadSceneOrDefault("").value());
+    openDocumentInEditor(state, Document(loadSceneOrDefault("").value()));
     const EditorWindowResult result = runEditorWindow(state, EditorWindowOptions{});
     if (result.opened) return result.error.empty() ? kExitOk : badInput(result.error);
     std::cerr << "kinema: cannot open the editor window (" << result.error << "); rendering instead\n";

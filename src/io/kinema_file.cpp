@@ -378,6 +378,26 @@ bool readPose(Reader& r, const Json& root, Scene& scene) {
   return true;
 }
 
+// ---- the editor's playhead (optional top-level "playhead" key) ----
+// {"clip": INDEX, "time": SECONDS}: the clip must exist (0 when the file has none), the
+// time be finite.
+bool readPlayhead(Reader& r, const Json& root, Scene& scene) {
+  const Json* object = r.member(root, "", "playhead", false);
+  if (!object) return true;
+  if (!object->is_object()) return r.fail("playhead", "expected an object");
+  ScenePlayhead playhead;
+  long long clip = 0;
+  const Json* v;
+  if (!(v = r.member(*object, "playhead", "clip", true)) || !r.integer(*v, "playhead.clip", clip)) return false;
+  const long long clips = static_cast<long long>(scene.clips.size());
+  if (clip < 0 || (clip >= clips && clip != 0))
+    return r.fail("playhead.clip", std::to_string(clip) + " is not a clip of the file (it has " + std::to_string(clips) + ")");
+  playhead.clip = static_cast<int>(clip);
+  if (!(v = r.member(*object, "playhead", "time", true)) || !r.number(*v, "playhead.time", playhead.time)) return false;
+  scene.playhead = playhead;
+  return true;
+}
+
 Json poseToJson(const Scene& scene) {
   Json list = Json::array();
   for (int i = 0; i < scene.pose.size(); ++i) {
@@ -1222,6 +1242,8 @@ std::string toKinemaJson(const Scene& scene) {
   root["clips"] = std::move(clips);
   // Optional: the editor's working pose; files without one load as the rest pose.
   if (!scene.pose.local.empty()) root["pose"] = poseToJson(scene);
+  // Optional: where the timeline stood; the time as a double, which JSON keeps exactly.
+  if (scene.playhead) root["playhead"] = {{"clip", scene.playhead->clip}, {"time", scene.playhead->time}};
   if (!scene.ik.empty()) root["ik"] = ikToJson(scene);  // optional: files without IK data stay as they were
   sceneAssetsToJson(scene, root);  // optional too: only scenes with meshes (glTF) have them
   return collapseNumberArrays(root.dump(1, '\t')) + "\n";
@@ -1262,6 +1284,7 @@ Result<Scene> parseKinemaJson(const std::string& text, const std::string& source
     return Result<Scene>::failure(r.error());
   if (!readIk(r, root, scene)) return Result<Scene>::failure(r.error());
   if (!readPose(r, root, scene)) return Result<Scene>::failure(r.error());
+  if (!readPlayhead(r, root, scene)) return Result<Scene>::failure(r.error());
   if (!readSceneAssets(r, root, scene)) return Result<Scene>::failure(r.error());
   const std::string bad = scene.skeleton.validate();
   if (!bad.empty()) return Result<Scene>::failure(oneLine(source + ": skeleton: " + bad));
@@ -1313,6 +1336,12 @@ std::string saveKinemaFile(const std::string& path, const Scene& scene) {
   if (bad.empty() && !scene.pose.local.empty()) {
     bad = scene.pose.validate(scene.skeleton);
     if (!bad.empty()) bad = "pose: " + bad;
+  }
+  if (bad.empty() && scene.playhead) {
+    const int clips = static_cast<int>(scene.clips.size());
+    if (!std::isfinite(scene.playhead->time)) bad = "playhead: the time is not finite";
+    else if (scene.playhead->clip < 0 || (scene.playhead->clip >= clips && scene.playhead->clip != 0))
+      bad = "playhead: clip " + std::to_string(scene.playhead->clip) + " does not exist";
   }
   if (bad.empty()) bad = sceneAssetsError(scene);
   if (!bad.empty()) return oneLine(path + ": not saved: " + bad);

@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,15 @@
 
 namespace kinema {
 
+// Where the editor's timeline stood when a .kinema file was saved: the clip it plays
+// (an index into Scene::clips; 0 when the scene has none) and the time in seconds (any
+// finite number: the playhead may stand outside the clip, as in Blender).
+struct ScenePlayhead {
+  int clip = 0;
+  double time = 0.0;
+  bool operator==(const ScenePlayhead& o) const { return clip == o.clip && time == o.time; }
+};
+
 // What a file holds once loaded: a skeleton (every glTF node is a joint), its clips,
 // and the meshes it shows.
 struct Scene {
@@ -21,6 +31,9 @@ struct Scene {
   IkRig ik;  // joint limits and saved IK targets (optional in files)
   // The editor's working pose as saved (.kinema "pose"); empty = the rest pose.
   Pose pose;
+  // The editor's playhead as saved (.kinema "playhead"); empty for glTF, BVH and .kinema
+  // files written before it existed: the editor opens those at the clip's start frame.
+  std::optional<ScenePlayhead> playhead;
 
   // glTF keeps the file's node order for reports: the node index of each joint (the
   // skeleton is sorted parent-first, the file need not be). Empty for BVH and .kinema

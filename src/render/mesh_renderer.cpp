@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "render/shader_sources.h"
+#include "skin/skinning_decomposition.h"
 #include "skin/skinning_matrices.h"
 
 namespace kinema {
@@ -17,25 +18,6 @@ struct PackedVertex {
   float normal[3];
   float texcoord[2];
 };
-
-// The rotation of the polar decomposition A = R P (the rotation nearest A), by Higham's
-// iteration R <- (R + R^-T) / 2 in double, as DualQuaternionSkinningJob does so GPU and CPU
-// split a matrix alike; a reflection (det < 0) is negated into a rotation, the sign moving
-// into the stretch S = R^T A. A singular A (a zero scale) keeps the identity.
-glm::mat3 nearestRotation(const glm::mat3& a) {
-  glm::dmat3 r(a);
-  const double det = glm::determinant(r);
-  if (!(std::abs(det) > 1e-30) || !std::isfinite(det)) return glm::mat3(1.0f);
-  for (int i = 0; i < 30; ++i) {
-    const glm::dmat3 next = 0.5 * (r + glm::transpose(glm::inverse(r)));
-    double change = 0.0;
-    for (int c = 0; c < 3; ++c) change += glm::dot(next[c] - r[c], next[c] - r[c]);
-    r = next;
-    if (change < 1e-24) break;
-  }
-  if (det < 0.0) r = -r;
-  return glm::mat3(r);
-}
 
 glm::mat3 inverseTranspose3(const glm::mat3& m) {
   const float det = glm::determinant(m);
@@ -74,10 +56,11 @@ std::vector<glm::vec3> displayNormals(const MeshPrimitive& p) {
 void packJointTexels(const glm::mat4& m, float* out) {
   const glm::mat3 a(m);
   const glm::mat3 normal = inverseTranspose3(a);
-  const glm::quat real = glm::normalize(glm::quat_cast(nearestRotation(a)));
-  const glm::mat3 rest = glm::transpose(glm::mat3_cast(real)) * a;  // S = R^T * A, so A = R * S
-  const glm::vec3 t(m[3]);
-  const glm::quat dual = 0.5f * (glm::quat(0.0f, t.x, t.y, t.z) * real);
+  // The CPU's split (skinning_decomposition.h), so both paths deform alike: A = R * S.
+  const SkinningDecomposition split = decomposeSkinningMatrix(m);
+  const glm::quat& real = split.real;
+  const glm::quat& dual = split.dual;
+  const glm::mat3& rest = split.stretch;
   auto put = [&out](const glm::vec4& v) {
     out[0] = v.x;
     out[1] = v.y;

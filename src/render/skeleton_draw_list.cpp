@@ -90,8 +90,30 @@ bool SkeletonDrawJob::run(SkeletonDrawList& out) const {
     m[3] = glm::vec4(pos(i), 1.0f);
     out.jointMatrices.push_back(m);
     out.jointColors.push_back(i == selectedJoint ? style.selectedJoint : style.joint);
+    out.joints.push_back(i);
   }
   return true;
+}
+
+SkeletonDrawList keepJoints(const SkeletonDrawList& list, const std::vector<char>& keep) {
+  SkeletonDrawList out;
+  const auto kept = [&keep](int joint) {
+    return joint >= 0 && joint < static_cast<int>(keep.size()) && keep[joint] != 0;
+  };
+  for (size_t b = 0; b < list.boneMatrices.size(); ++b) {
+    if (b >= list.boneParents.size() || !kept(list.boneParents[b])) continue;
+    out.boneMatrices.push_back(list.boneMatrices[b]);
+    out.boneColors.push_back(b < list.boneColors.size() ? list.boneColors[b] : glm::vec4(1.0f));
+    out.boneParents.push_back(list.boneParents[b]);
+    out.boneChildren.push_back(b < list.boneChildren.size() ? list.boneChildren[b] : -1);
+  }
+  for (size_t i = 0; i < list.jointMatrices.size(); ++i) {
+    if (i >= list.joints.size() || !kept(list.joints[i])) continue;
+    out.jointMatrices.push_back(list.jointMatrices[i]);
+    out.jointColors.push_back(i < list.jointColors.size() ? list.jointColors[i] : glm::vec4(1.0f));
+    out.joints.push_back(list.joints[i]);
+  }
+  return out;
 }
 
 }  // namespace kinema

@@ -33,7 +33,14 @@ struct SkeletonDrawList {
   std::vector<int> boneChildren;  // per bone: its tail joint
   std::vector<glm::mat4> jointMatrices;  // translate(position) * scale(radius)
   std::vector<glm::vec4> jointColors;
+  std::vector<int> joints;  // per sphere: its joint (spheres of joints not shown are left out)
 };
+
+// The part of a drawing that shows the joints `keep` flags (one flag per skeleton joint):
+// their spheres and the bones that leave them (a bone belongs to its head joint, as picking
+// and the selection colours have it), with their colours. The viewport draws the selection
+// alone this way while the bones are hidden.
+SkeletonDrawList keepJoints(const SkeletonDrawList& list, const std::vector<char>& keep);
 
 // Inputs of buildSkeletonDrawList, ozz-job style.
 struct SkeletonDrawJob {

@@ -170,14 +170,7 @@ Rgba solverColor(IkSolver solver) {
 }
 
 glm::vec2 projectToFigure(const glm::vec3& p, const FigureStyle& style) {
-  const glm::vec3 view = glm::length(style.viewDirection) > 1e-6f ? glm::normalize(style.viewDirection)
-                                                                   : glm::vec3(0.0f, 0.0f, 1.0f);
-  if (std::abs(view.z) > 0.9999f) return {p.x, p.y};
-  // Up stays Y (or Z when looking along Y); right completes the frame.
-  const glm::vec3 upHint = std::abs(view.y) > 0.99f ? glm::vec3(0.0f, 0.0f, 1.0f) : glm::vec3(0.0f, 1.0f, 0.0f);
-  const glm::vec3 right = glm::normalize(glm::cross(upHint, view));
-  const glm::vec3 up = glm::cross(view, right);
-  return {glm::dot(p, right), glm::dot(p, up)};
+  return FigureProjection::along(style.viewDirection).project(p);
 }
 
 Figure drawSolverStep(const SolverComparison& c, int runIndex, const FigureStyle& style) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/math.h"
+#include "ik/figure_projection.h"
 #include "ik/solver_comparison.h"
 #include "io/image.h"
 
@@ -76,7 +77,8 @@ Rgba solverColor(IkSolver solver);
 // Where figure point p lands in a width x height image (pixel units, y down): [min, max]
 // scaled uniformly to fit and centred. rasterizeFigure and tests use the same mapping.
 glm::vec2 figureToPixel(const Figure& figure, int width, int height, glm::vec2 p);
-// Where a 3D chain position lands on the figure plane (x, y for the board's view along Z).
+// Where a 3D chain position lands on the figure plane (FigureProjection along the style's
+// view direction: x, y for the board's view along Z).
 glm::vec2 projectToFigure(const glm::vec3& p, const FigureStyle& style);
 
 // Anti-aliased CPU rasterisation into a width x height RGBA image (background white when

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "skin/skinning_decomposition.h"
 #include "skin/skinning_job_checks.h"
 
 #if defined(__SSE2__) || defined(_M_X64)
@@ -14,58 +15,25 @@ namespace kinema {
 
 namespace {
 
-// A skinning matrix split as M p = R (S p) + t: the rigid part (R, t) as a unit dual
-// quaternion (real = R, dual = 0.5 (0, t) R) and the rest S = R^T A (A = M's upper 3x3).
-// Aligned so the SIMD blend loads each part with one aligned load.
+// A skinning matrix split as M p = R (S p) + t (skinning_decomposition.h), laid out so
+// the SIMD blend loads each part with one aligned load.
 struct alignas(16) JointDualQuaternion {
   float real[4];  // x, y, z, w
   float dual[4];
   float scale[3][4];  // S, column-major, columns padded to four floats
 };
 
-// The rotation of A's polar decomposition A = R P (P symmetric positive): the rotation
-// nearest A, so S = R^T A is as close to a pure stretch as A allows. Higham's iteration
-// R <- (R + R^-T) / 2 in double, which converges quadratically; a reflection (det < 0) is
-// turned into a rotation by negating R, which moves the sign into S.
-glm::mat3 nearestRotation(const glm::mat3& a) {
-  glm::dmat3 r(a);
-  const double det = glm::determinant(r);
-  if (!(std::abs(det) > 1e-30) || !std::isfinite(det)) {
-    // Singular (a zero scale): any rotation gives A = R (R^T A); Gram-Schmidt keeps what
-    // direction information the columns still have.
-    glm::dvec3 x = glm::length(r[0]) > 0 ? glm::normalize(r[0]) : glm::dvec3(1, 0, 0);
-    glm::dvec3 y = r[1] - glm::dot(r[1], x) * x;
-    if (!(glm::length(y) > 1e-12)) y = std::abs(x.x) < 0.9 ? glm::dvec3(1, 0, 0) - x.x * x : glm::dvec3(0, 1, 0) - x.y * x;
-    y = glm::normalize(y);
-    return glm::mat3(glm::dmat3(x, y, glm::cross(x, y)));
-  }
-  for (int it = 0; it < 30; ++it) {
-    const glm::dmat3 next = 0.5 * (r + glm::transpose(glm::inverse(r)));
-    double change = 0;
-    for (int c = 0; c < 3; ++c) change += glm::dot(next[c] - r[c], next[c] - r[c]);
-    r = next;
-    if (change < 1e-24) break;
-  }
-  if (det < 0) r = -r;
-  return glm::mat3(r);
-}
-
 JointDualQuaternion decompose(const glm::mat4& m, bool sharedUniform) {
   const glm::mat3 a(m);
-  glm::mat3 r;
-  if (sharedUniform) {
-    // A = s Q with Q orthogonal (sharedSimilarity): R = A / s directly.
-    r = a / glm::length(a[0]);
-  } else {
-    r = nearestRotation(a);
-  }
-  const glm::quat q = glm::normalize(glm::quat_cast(r));
-  const glm::vec3 t(m[3]);
-  const glm::quat d = 0.5f * (glm::quat(0.0f, t.x, t.y, t.z) * q);
+  // A = s Q with Q orthogonal (sharedSimilarity): R = A / s directly.
+  const SkinningDecomposition split =
+      sharedUniform ? decomposeSkinningMatrix(m, a / glm::length(a[0])) : decomposeSkinningMatrix(m);
+  const glm::quat& q = split.real;
+  const glm::quat& d = split.dual;
   JointDualQuaternion out;
   out.real[0] = q.x, out.real[1] = q.y, out.real[2] = q.z, out.real[3] = q.w;
   out.dual[0] = d.x, out.dual[1] = d.y, out.dual[2] = d.z, out.dual[3] = d.w;
-  const glm::mat3 s = glm::transpose(glm::mat3_cast(q)) * a;
+  const glm::mat3& s = split.stretch;
   for (int c = 0; c < 3; ++c) {
     for (int k = 0; k < 3; ++k) out.scale[c][k] = s[c][k];
     out.scale[c][3] = 0.0f;

@@ -1,11 +1,10 @@
 // The "Compare solvers" mode's window-free logic: view layout, figure <-> pixel mapping,
-// projection, hit-tests, play clock, start-pose drags, keys and target drags on a preset.
+// projection (ik/figure_projection.h), hit-tests, play clock, start-pose drags, keys and target drags on a preset.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "editor/model/compare_mode.h"
-#include "render/solver_figure.h"
 
 namespace kinema {
 namespace {
@@ -48,22 +47,6 @@ TEST(CompareMode, ProjectionIsTheBoardForThePlanarViewAndOrthonormalOtherwise) {
     EXPECT_NEAR(glm::dot(q.right, q.up), 0.0f, 1e-5f);
     expectVec2(q.project(n * 5.0f), {0, 0}, 1e-4f, "the view direction collapses to a point");
     expectVec3(glm::cross(q.right, q.up), n, 1e-5f, "right x up = towards the viewer, as X x Y = Z");
-  }
-}
-
-TEST(CompareMode, ProjectionMatchesTheFiguresOwn) {
-  // Hit-tests must land where drawSolverStep draws: the same projection for every view.
-  const glm::vec3 p(0.7f, -1.3f, 2.1f);
-  for (float yaw = -3.0f; yaw <= 3.0f; yaw += 0.5f)
-    for (float pitch : {-1.5f, -0.7f, 0.0f, 0.4f, 1.5f}) {
-      FigureStyle style;
-      style.viewDirection = orbitViewDirection(yaw, pitch);
-      expectVec2(FigureProjection::along(style.viewDirection).project(p), projectToFigure(p, style), 1e-5f, "orbit");
-    }
-  for (glm::vec3 d : {glm::vec3(0, 0, 1), glm::vec3(0, 0, -1), glm::vec3(0, 1, 0), glm::vec3(0, -1, 0)}) {
-    FigureStyle style;
-    style.viewDirection = d;
-    expectVec2(FigureProjection::along(d).project(p), projectToFigure(p, style), 1e-5f, "axis");
   }
 }
 

@@ -8,6 +8,7 @@
 
 #include "editor/model/document.h"
 #include "editor/model/dope_sheet.h"
+#include "editor/model/keying.h"
 
 namespace kinema {
 namespace {
@@ -312,6 +313,27 @@ TEST(DopeSheet, SelectionPruneDropsColumnsThatLostTheirKeys) {
   s.set({{0, at(10)}, {0, at(11)}, {5, at(0)}, {2, at(10.3) + 2e-6f}});
   s.prune(clip);
   EXPECT_EQ(s.columns(), (std::vector<KeyColumn>{{0, at(10)}, {2, at(10.3)}}));
+}
+
+// Regression (issue 17): the dope sheet's columns used 1e-5 s where keying used 1e-4 s, so
+// two channels keyed 5e-5 s apart on one frame showed two diamonds that Alt+I deleted
+// together. Now one tolerance (kKeyTimeTolerance): one column, and deleting it takes both.
+TEST(DopeSheet, ColumnsAndKeyingShareOneKeyTimeTolerance) {
+  Clip clip;
+  clip.frameTime = kFt;
+  const float t = at(10), off = t + 0.5f * kKeyTimeTolerance;
+  clip.channels.emplace_back(0, ChannelTarget::Translation, Interpolation::Linear, std::vector<float>{t},
+                             std::vector<glm::vec4>{{1, 0, 0, 0}});
+  clip.channels.emplace_back(0, ChannelTarget::Rotation, Interpolation::Linear, std::vector<float>{off},
+                             std::vector<glm::vec4>{{0, 0, 0, 1}});
+  const std::vector<DopeSheetRow> rows = dopeSheetRows(clip);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[1].times.size(), 1u);  // one diamond
+  EXPECT_EQ(columnsOfCell(rows, 1, t).size(), 1u);
+  Clip deleted = clip;
+  deleteKeyColumns(deleted, columnsOfCell(rows, 1, t));
+  EXPECT_TRUE(deleted.channels.empty());  // both keys went with the one column
+  EXPECT_EQ(deleteJointKeys(clip, {0}, t), 2);  // Alt+I takes the same two
 }
 
 }  // namespace

@@ -93,11 +93,11 @@ struct FrontView {
     evaluateEditorPose(state);
     SkeletonDrawJob job;
     job.parents = &state.doc.skeleton().parents;
-    job.world = &state.world;
+    job.world = &state.world();
     job.run(list);
   }
   int joint(const char* name) const { return state.doc.skeleton().find(name); }
-  glm::vec3 position(const char* name) const { return glm::vec3(state.world[joint(name)][3]); }
+  glm::vec3 position(const char* name) const { return glm::vec3(state.world()[joint(name)][3]); }
   // Pixel of a world point by hand: focal length 300 / tan(17.5 deg) pixels at depth 5 - z.
   glm::vec2 pixel(glm::vec3 p) const {
     const float f = 300.0f / std::tan(glm::radians(17.5f));

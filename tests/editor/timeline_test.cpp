@@ -40,8 +40,8 @@ TEST(Timeline, StepJumpAndGoTo) {
   EditorState s = newState();
   goToFrame(s, 10);
   EXPECT_EQ(currentFrame(s), 10);
-  EXPECT_DOUBLE_EQ(s.time, 10.0 / 24.0);
-  EXPECT_FLOAT_EQ(s.doc.autoKey.time, 10.0f / 24.0f);  // auto-key follows the playhead
+  EXPECT_DOUBLE_EQ(s.time, static_cast<float>(10.0 / 24.0));  // the time a key on frame 10 gets (Clip::frameToTime)
+  EXPECT_FLOAT_EQ(static_cast<float>(s.doc.playhead().time), 10.0f / 24.0f);  // auto-key keys at the playhead
   stepFrame(s, 1);
   EXPECT_EQ(currentFrame(s), 11);
   stepFrame(s, -1);

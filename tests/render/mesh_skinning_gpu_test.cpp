@@ -237,6 +237,29 @@ TEST(MeshSkinningGpu, QuarterTurnHalfWeightsMatchHandDerivedLbsAndDqs) {
   }
 }
 
+// The GPU on the singular joint of skinning_decomposition_test.cpp (issue 17): joint 0 a
+// quarter turn about Z flattened along Y (Q diag(1, 0, 1)), joint 1 the quarter turn Q,
+// half and half. One decomposition for both paths: both rotations are Q and the stretch
+// diag(1, 1/2, 1), so (1, 0, 0) -> (0, 1, 0) and (1, 0, 1) -> (0, 1, 1), as the CPU job
+// gives. The GPU's old copy took the identity for joint 0 and bent them 45 degrees off.
+TEST(MeshSkinningGpu, AFlattenedJointDeformsAsOnTheCpu) {
+  const glm::mat4 quarter = glm::mat4_cast(glm::angleAxis(glm::half_pi<float>(), glm::vec3(0, 0, 1)));
+  const glm::mat4 flat = quarter * glm::scale(glm::mat4(1.0f), glm::vec3(1, 0, 1));
+  const std::vector<glm::mat4> world = {flat, quarter};
+  const Scene dqs = quarterTurnScene(SkinningMethod::DualQuaternion);
+  for (HeadlessBackend backend : backends()) {
+    SCOPED_TRACE(nameOf(backend));
+    Gpu gpu;
+    if (!openGpu(backend, gpu)) continue;
+    const std::vector<DeformedPrimitive> out = gpuDeform(*gpu.renderer, dqs, world, true);
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_VEC3_NEAR(out[0].positions[0], glm::vec3(0.0f, 1.0f, 0.0f), 1e-5f);
+    EXPECT_VEC3_NEAR(out[0].positions[2], glm::vec3(0.0f, 1.0f, 1.0f), 1e-5f);
+    const Gap cpu = compareWithCpuJob(dqs, world, out, true);
+    EXPECT_LT(cpu.position, 1e-5) << "GPU and CPU differ on a singular skinning matrix";
+  }
+}
+
 // ---- The Khronos samples ----
 
 struct ReferenceCase {

@@ -9,14 +9,12 @@
 #include "editor/commands/command_sets.h"
 #include "editor/commands/file_commands.h"
 #include "editor/model/key_codes.h"
+#include "editor/model/timeline.h"
 
 namespace kinema {
 
 void showDopeSheetFrame(EditorState& state) {
-  if (!state.hasMotion() || state.playing) return;
-  Pose pose = Pose::rest(state.doc.skeleton());
-  sampleClip(state.doc.scene().clips[state.clip], static_cast<float>(state.time), pose);
-  state.doc.setAnimatedPose(pose);
+  if (!state.playing) poseAtPlayhead(state);  // the one re-pose at the current frame (timeline.h)
 }
 
 void reportDopeSheetEdit(EditorState& state, const std::string& error, const std::string& done) {
@@ -38,7 +36,7 @@ const Clip& editedClip(const EditorState& s) { return s.doc.scene().clips[s.clip
 
 void pasteKeys(EditorState& s, bool ontoSelectedJoints) {
   DopeSheetState& ds = s.dopeSheet;
-  const long long frame = std::llround(s.time / dopeSheetFrameTime(editedClip(s)));
+  const long long frame = currentFrame(s);
   const std::vector<int> onto = ontoSelectedJoints ? s.doc.selection.joints() : std::vector<int>{};
   if (ontoSelectedJoints && onto.empty())
     return showEditorError(s, "Paste keys onto the selected joints: select joints first");
@@ -89,7 +87,7 @@ void addAnimationEditorCommands(std::vector<Command>& out) {
   out.push_back(dopeSheet("dopesheet.frame_all", "Frame All Keys", keys::HOME, 0, "the whole clip fills the dope sheet")
                     .run([](CommandContext& c) {
                       const Clip& clip = editedClip(c.state);
-                      c.state.dopeSheet.view.frameRange(0.0, std::max(timeToFrame(clip, clip.duration()), 1.0));
+                      c.state.dopeSheet.view.frameRange(0.0, std::max(clip.timeToFrame(clip.duration()), 1.0));
                     }));
   out.push_back(CommandDef("curves.frame_all", "Fit Curves").key(keys::HOME).scope(CommandScope::CurveEditor)
                     .hint("the shown curves fill the curve editor")

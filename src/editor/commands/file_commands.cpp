@@ -13,27 +13,6 @@ namespace kinema {
 
 namespace {
 
-// A freshly loaded document replaces the old one; everything that pointed into the old
-// skeleton is reset.
-void replaceDocument(EditorState& state, Document doc) {
-  state.doc = std::move(doc);
-  state.tool = ToolState{};  // a running tool refers to the old skeleton
-  state.hoveredJoint = -1;
-  state.hoveredIkTarget = -1;
-  state.clip = 0;
-  state.time = 0.0;
-  state.playing = false;
-  state.sampleClip = false;
-  resetTimeline(state);
-  // The new file framed from the current direction, as Home does.
-  const float aspect = state.viewportRect.w > 0 ? state.viewportRect.z / state.viewportRect.w : 1.0f;
-  ViewportController().frameAll(state.camera, jointBounds(state.doc.worldTransforms()), aspect);
-  PanelState& p = state.panels;
-  p.collapsed.clear();
-  p.renaming = -1;
-  p.renameError.clear();
-}
-
 void rememberRecent(EditorState& state, const std::string& path) {
   std::error_code ec;
   const std::string absolute = std::filesystem::absolute(path, ec).lexically_normal().string();
@@ -53,7 +32,7 @@ void openNow(EditorState& state, const std::string& path) {
     }
     return;
   }
-  replaceDocument(state, std::move(opened.value()));
+  openDocumentInEditor(state, std::move(opened.value()));
   rememberRecent(state, path);
   state.statusMessage = "Opened " + path;
 }
@@ -72,6 +51,26 @@ void guarded(EditorState& state, PendingFileAction action, const std::string& pa
 
 }  // namespace
 
+void openDocumentInEditor(EditorState& state, Document doc) {
+  state.doc = std::move(doc);
+  state.tool = ToolState{};  // a running tool refers to the old skeleton
+  state.hoveredJoint = -1;
+  state.hoveredIkTarget = -1;
+  state.clip = 0;
+  state.time = 0.0;
+  state.playing = false;
+  state.sampleClip = false;
+  state.sampledAt = {};
+  resetTimeline(state);  // the file's playhead (or the clip's start), posed from the clip there
+  // The new file framed from the current direction, as Home does.
+  const float aspect = state.viewportRect.w > 0 ? state.viewportRect.z / state.viewportRect.w : 1.0f;
+  ViewportController().frameAll(state.camera, jointBounds(state.world()), aspect);
+  PanelState& p = state.panels;
+  p.collapsed.clear();
+  p.renaming = -1;
+  p.renameError.clear();
+}
+
 void runPendingFileAction(EditorState& state) {
   PanelState& p = state.panels;
   const PendingFileAction action = p.pending;
@@ -79,7 +78,7 @@ void runPendingFileAction(EditorState& state) {
   switch (action) {
     case PendingFileAction::None: break;
     case PendingFileAction::New:
-      replaceDocument(state, newDocument());
+      openDocumentInEditor(state, newDocument());
       state.statusMessage = "New document";
       break;
     case PendingFileAction::Open:
@@ -198,7 +197,7 @@ void acceptRecovery(EditorState& state) {
     showEditorError(state, recovered.error());
     return;
   }
-  replaceDocument(state, std::move(recovered.value()));
+  openDocumentInEditor(state, std::move(recovered.value()));
   state.statusMessage = "Recovered unsaved work from " + when;
 }
 

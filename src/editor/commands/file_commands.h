@@ -16,6 +16,12 @@ void requestSave(EditorState& state);
 void requestSaveAs(EditorState& state);
 void requestExport(EditorState& state, FileDialogPurpose format);
 void requestQuit(EditorState& state);
+// A freshly loaded document (opened, new, recovered, or the file `kinema edit` was given)
+// replaces the old one: tools, hover and panel state that pointed into the old skeleton
+// are reset, the timeline stands where the file saved it or on the clip's start frame and
+// the document is posed from the clip there before anything is drawn (resetTimeline), and
+// the view frames the new skeleton from the current direction.
+void openDocumentInEditor(EditorState& state, Document doc);
 // Shows a one-line error in the error popup (and the status bar).
 void showEditorError(EditorState& state, const std::string& message);
 

@@ -47,14 +47,14 @@ void addViewCommands(std::vector<Command>& out) {
                     .scope(CommandScope::Viewport).hint("the selected joints fill the view (all joints when none)")
                     .enabled(documentShown)
                     .run([](CommandContext& c) {
-                      const std::vector<glm::mat4>& world = c.state.world;
+                      const std::vector<glm::mat4>& world = c.state.world();
                       frameSelected(c.state.camera, world, c.state.doc.selection.joints(), aspect(c),
                                     0.1f * std::max(jointBounds(world).radius(), 1e-3f));
                     }));
   out.push_back(CommandDef("view.frame_all", "Frame All").menu("View").key(keys::HOME).scope(CommandScope::Viewport)
                     .enabled(documentShown)
                     .run([](CommandContext& c) {
-                      ViewportController().frameAll(c.state.camera, jointBounds(c.state.world), aspect(c));
+                      ViewportController().frameAll(c.state.camera, jointBounds(c.state.world()), aspect(c));
                     }));
   out.push_back(CommandDef("view.bones_none", "Bones: None").menu("View", true).hint("the body alone")
                     .enabled(documentShown)

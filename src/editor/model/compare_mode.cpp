@@ -38,20 +38,6 @@ glm::vec2 FigureViewMap::toFigure(glm::vec2 p) const {
   return {center.x + (p.x - pixelCenter.x) / pixelsPerUnit, center.y - (p.y - pixelCenter.y) / pixelsPerUnit};
 }
 
-FigureProjection FigureProjection::along(glm::vec3 d) {
-  // The same frame as solver_figure's projectToFigure (a test holds them equal): the board
-  // (x, y) when looking along Z either way; else Y stays up (Z when looking along Y).
-  FigureProjection p;
-  const float len = glm::length(d);
-  if (!(len > 1e-6f)) return p;
-  d /= len;
-  if (std::abs(d.z) > 0.9999f) return p;
-  const glm::vec3 upHint = std::abs(d.y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
-  p.right = glm::normalize(glm::cross(upHint, d));
-  p.up = glm::cross(d, p.right);
-  return p;
-}
-
 glm::vec3 orbitViewDirection(float yaw, float pitch) {
   return {std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw)};
 }

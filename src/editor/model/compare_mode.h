@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/math.h"
+#include "ik/figure_projection.h"  // FigureProjection: the figures' own plane, for hit-tests
 #include "editor/model/input_events.h"
 #include "ik/solver_comparison.h"
 
@@ -43,12 +44,6 @@ struct FigureViewMap {
   glm::vec2 toFigure(glm::vec2 pixel) const;
 };
 
-// The figure plane seen along `viewDirection` (unit): right and up axes; (0,0,1) gives X, Y.
-struct FigureProjection {
-  glm::vec3 right{1, 0, 0}, up{0, 1, 0};
-  static FigureProjection along(glm::vec3 viewDirection);
-  glm::vec2 project(glm::vec3 p) const { return {glm::dot(p, right), glm::dot(p, up)}; }
-};
 // The direction the 3D view looks along for an orbit (yaw about Y, pitch up), radians;
 // (0, 0) is +Z, the planar view.
 glm::vec3 orbitViewDirection(float yaw, float pitch);

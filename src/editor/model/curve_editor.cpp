@@ -157,10 +157,7 @@ void panView(CurveView& v, const PlotRect& r, glm::vec2 d) {
   v.t0 += dt, v.t1 += dt, v.v0 += dv, v.v1 += dv;
 }
 
-float snapToFrame(const Clip& clip, float time) {
-  if (clip.frameTime > 0.0) return clip.frameToTime(std::llround(time / clip.frameTime));
-  return static_cast<float>(static_cast<double>(std::llround(time * 30.0)) / 30.0);
-}
+float snapToFrame(const Clip& clip, float time) { return clip.frameToTime(clip.nearestFrame(time)); }
 
 float keyDisplayValue(const Channel& ch, int key, int component, RotationView view, EulerOrder order) {
   const glm::vec4& v = ch.values[key];

@@ -113,7 +113,7 @@ void zoomView(CurveView& view, const PlotRect& rect, glm::vec2 anchor, float fac
 // Pan by a mouse movement in pixels (the plane follows the mouse).
 void panView(CurveView& view, const PlotRect& rect, glm::vec2 pixelDelta);
 
-// Nearest frame of the clip's grid (clips without one: 1/30 s frames).
+// Nearest frame of the clip's grid (Clip::secondsPerFrame, the timeline's), as a time.
 float snapToFrame(const Clip& clip, float time);
 
 // Sets a key's component to a display value: vectors directly; quaternion components

@@ -1,6 +1,7 @@
 #include "editor/model/document.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 #include <set>
 
@@ -52,15 +53,23 @@ bool sameClip(const Clip& a, const Clip& b) {
   return true;
 }
 
+// Process-wide, so that revisions of different documents differ.
+std::atomic<long long> nextPoseRevision{1};
+
 }  // namespace
 
-Document::Document() = default;
+Document::Document() { poseChanged(); }
+
+void Document::poseChanged() { poseRevision_ = nextPoseRevision++; }
 
 Document::Document(Scene scene, std::string path) : scene_(std::move(scene)), path_(std::move(path)) {
+  poseChanged();
   const int n = scene_.skeleton.size();
   pose_ = scene_.pose.size() == n && scene_.pose.validate(scene_.skeleton).empty() ? scene_.pose
                                                                                  : Pose::rest(scene_.skeleton);
   scene_.pose = Pose{};  // the document's pose_ is the one truth
+  savedPlayhead_ = playhead_ = scene_.playhead;
+  scene_.playhead.reset();  // playhead_ is the one the document saves
   if (!scene_.ik.limits.empty()) scene_.ik.limits.resize(n);
   for (size_t i = 0; i < scene_.ik.targets.size(); ++i) {
     PoseIkTarget p;
@@ -85,11 +94,19 @@ void Document::syncSkinning() {
     scene_.meshInstances[i].skinning = skinning_[i];
 }
 
-std::vector<glm::mat4> Document::worldTransforms() const { return computeWorld(scene_.skeleton, pose_); }
+const std::vector<glm::mat4>& Document::worldTransforms() const {
+  if (worldRevision_ != poseRevision_) {
+    computeWorld(scene_.skeleton, pose_, world_);
+    worldRevision_ = poseRevision_;
+    ++worldEvaluations_;
+  }
+  return world_;
+}
 
 Scene Document::sceneForSaving() const {
   Scene s = scene_;
   s.pose = pose_;
+  s.playhead = playhead_;
   // The chain length is saved both as the root it resolves to (for other readers) and as
   // itself, with the solver, pinned and active flags.
   for (const PoseIkTarget& t : targets_) {
@@ -124,6 +141,7 @@ Document::Snapshot Document::capture() const {
 void Document::restore(const Snapshot& s) {
   scene_.skeleton.names = s.names;
   pose_.local = s.pose;
+  poseChanged();
   scene_.ik.limits = s.limits;
   targets_ = s.targets;
   skinning_ = s.skinning;
@@ -139,6 +157,7 @@ DocumentEdit Document::editView() {
 std::string Document::runChange(const std::function<std::string(DocumentEdit&)>& change, bool /*driven*/) {
   const std::vector<Transform> poseBefore = pose_.local;  // what auto-key compares with
   DocumentEdit view = editView();
+  poseChanged();  // the change may set the pose (an error restores it, another change)
   std::string error = change(view);
   if (!error.empty()) return error;
   // The change function is ours (pose_edits.cpp...), but a window may pass its own: keep
@@ -178,9 +197,11 @@ std::string Document::runChange(const std::function<std::string(DocumentEdit&)>&
     std::vector<int> changed;
     for (int j = 0; j < n; ++j)
       if (!sameBits(poseBefore[j], pose_.local[j])) changed.push_back(j);
-    int clip = autoKey.clip;
-    if (keyJoints(scene_.clips, clip, scene_.skeleton, pose_, changed, autoKey.time, autoKey.preferences) > 0) {
-      autoKey.clip = clip;  // a new "Action" when the scene had no clip
+    ScenePlayhead at = playhead();
+    if (keyJoints(scene_.clips, at.clip, scene_.skeleton, pose_, changed, static_cast<float>(at.time),
+                  autoKey.preferences) > 0) {
+      if (playhead_) playhead_->clip = at.clip;  // a new "Action" when the scene had no clip
+      const int clip = at.clip;
       const std::string bad = scene_.clips[clip].validate(scene_.skeleton);
       if (!bad.empty()) return "auto-key: clip " + std::to_string(clip) + ": " + bad;
     }
@@ -305,6 +326,7 @@ void Document::cancelDrag() {
 
 void Document::apply(const EditRecord& r, bool forward) {
   for (const EditRecord::JointChange& c : r.pose) pose_.local[c.joint] = forward ? c.after : c.before;
+  if (!r.pose.empty()) poseChanged();
   for (const EditRecord::NameChange& c : r.names) scene_.skeleton.names[c.joint] = forward ? c.after : c.before;
   if (r.limitsChanged) scene_.ik.limits = forward ? r.limitsAfter : r.limitsBefore;
   if (r.targetsChanged) targets_ = forward ? r.targetsAfter : r.targetsBefore;
@@ -334,7 +356,10 @@ void Document::apply(const EditRecord& r, bool forward) {
 
 bool Document::setAnimatedPose(const Pose& pose) {
   if (drag_ || pose.size() != scene_.skeleton.size() || !pose.validate(scene_.skeleton).empty()) return false;
+  // Playback and the second evaluation of a frame set the pose they already set: no change.
+  if (sameBitsArray(pose.local, pose_.local)) return true;
   pose_ = pose;
+  poseChanged();
   ikReports_.clear();
   return true;
 }

@@ -50,8 +50,18 @@ class Document {
   const Pose& pose() const { return pose_; }
   const std::vector<PoseIkTarget>& ikTargets() const { return targets_; }
   const IkRig& rig() const { return scene_.ik; }  // limits (targets live in ikTargets())
-  // World transforms of the working pose (FK each call).
-  std::vector<glm::mat4> worldTransforms() const;
+  // World transforms (model space: the scene's root frame, the skeleton's units) of the
+  // working pose, one per joint: the one evaluation every panel, tool and renderer reads.
+  // Computed by forward kinematics on the first call after the pose changed (poseRevision)
+  // and kept until the next change, so any number of reads in a frame costs one FK. The
+  // reference stays valid until the document changes or is replaced.
+  const std::vector<glm::mat4>& worldTransforms() const;
+  // Changes whenever the working pose may have changed (edits, drags, undo / redo, animated
+  // poses); equal revisions mean the same pose. Unique within the process, so a revision
+  // of a replaced document never matches one of its successor.
+  long long poseRevision() const { return poseRevision_; }
+  // How many times worldTransforms() ran forward kinematics (for tests of the cache).
+  long long worldEvaluations() const { return worldEvaluations_; }
   // The scene as it is saved: skeleton names (and the glTF node names of renamed
   // joints), pose, limits and targets written back.
   Scene sceneForSaving() const;
@@ -96,8 +106,21 @@ class Document {
 
   // The working pose set from the animation at the current frame (scrubbing, stepping,
   // pausing): not an undo step and not a change to save, as Blender re-evaluates the action
-  // on a frame change. Refused (false) during a drag or when the pose does not fit.
+  // on a frame change. Refused (false) during a drag or when the pose does not fit. A pose
+  // equal to the current one changes nothing (not even poseRevision).
   bool setAnimatedPose(const Pose& pose);
+
+  // The timeline's playhead (clip index, time in seconds): what auto-key keys at and what a
+  // save writes (.kinema "playhead"). EditorState::clip / time are the playhead the views
+  // move; the timeline copies them here whenever they change (timeline.h
+  // syncDocumentPlayhead). Not an undo step, not a change to save. Until it is set (a
+  // document no timeline showed) it is the file's, else clip 0 at time 0, and a save writes
+  // none: such a file opens on its clip's start frame.
+  ScenePlayhead playhead() const { return playhead_.value_or(ScenePlayhead{}); }
+  void setPlayhead(const ScenePlayhead& playhead) { playhead_ = playhead; }
+  // The playhead the file was saved with (.kinema "playhead"); empty for files without one
+  // (glTF, BVH, older .kinema files, a new document), which open at the clip's start.
+  const std::optional<ScenePlayhead>& savedPlayhead() const { return savedPlayhead_; }
 
   // ---- history ----
   bool canUndo() const;
@@ -116,7 +139,7 @@ class Document {
   IkSettings ikSettings;      // tolerance and iteration cap of those solves
   JointSelection selection;
   // Auto-key: applied inside every edit and drag update after the change and its IK solve,
-  // so the keys are part of the same undo step (keying.h).
+  // so the keys are part of the same undo step, at the playhead (keying.h).
   AutoKeySettings autoKey;
   const std::vector<IkTargetReport>& lastIkReports() const { return ikReports_; }
 
@@ -145,6 +168,12 @@ class Document {
   Scene scene_;
   std::vector<std::string> loadedNames_;  // joint names as loaded: renames update glTF node names
   Pose pose_;
+  void poseChanged();  // a new poseRevision_
+  long long poseRevision_ = 0;
+  mutable std::vector<glm::mat4> world_;  // worldTransforms() of pose revision worldRevision_
+  mutable long long worldRevision_ = -1;
+  mutable long long worldEvaluations_ = 0;
+  std::optional<ScenePlayhead> playhead_, savedPlayhead_;
   std::vector<PoseIkTarget> targets_;
   long long meshRevision_ = 0;
   std::vector<SkinningMethod> skinning_;  // edited here, written into scene_.meshInstances after each change

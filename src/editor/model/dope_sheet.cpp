@@ -11,22 +11,20 @@ namespace kinema {
 
 namespace {
 
-bool near(float a, float b) { return std::abs(a - b) <= kKeyColumnTolerance; }
-
 // Sorted times merged within the tolerance (the first of a group stands for it).
 std::vector<float> mergedTimes(std::vector<float> times) {
   std::sort(times.begin(), times.end());
   std::vector<float> out;
   for (float t : times)
-    if (out.empty() || !near(out.back(), t)) out.push_back(t);
+    if (out.empty() || !sameKeyTime(out.back(), t)) out.push_back(t);
   return out;
 }
 
 // Whether key time t of `joint` belongs to one of the columns (sorted by joint, then time).
 bool inColumns(const std::vector<KeyColumn>& columns, int joint, float t) {
-  auto it = std::lower_bound(columns.begin(), columns.end(), KeyColumn{joint, t - 2 * kKeyColumnTolerance});
-  for (; it != columns.end() && it->joint == joint && it->time <= t + 2 * kKeyColumnTolerance; ++it)
-    if (near(it->time, t)) return true;
+  auto it = std::lower_bound(columns.begin(), columns.end(), KeyColumn{joint, t - 2 * kKeyTimeTolerance});
+  for (; it != columns.end() && it->joint == joint && it->time <= t + 2 * kKeyTimeTolerance; ++it)
+    if (sameKeyTime(it->time, t)) return true;
   return false;
 }
 
@@ -34,14 +32,6 @@ std::vector<KeyColumn> sortedUnique(std::vector<KeyColumn> v) {
   std::sort(v.begin(), v.end());
   v.erase(std::unique(v.begin(), v.end()), v.end());
   return v;
-}
-
-// The time a key lands on: an existing key of the channel within the tolerance keeps its
-// exact time (so the moved key replaces it instead of sitting a float's width beside it).
-float landingTime(const Channel& ch, float t) {
-  for (float existing : ch.times)
-    if (near(existing, t)) return existing;
-  return t;
 }
 
 struct TakenKey {
@@ -69,12 +59,6 @@ void removeEmptyChannels(Clip& clip) {
 }
 
 }  // namespace
-
-double dopeSheetFrameTime(const Clip& clip) { return clip.frameTime > 0 ? clip.frameTime : 1.0 / 30.0; }
-double timeToFrame(const Clip& clip, float time) { return static_cast<double>(time) / dopeSheetFrameTime(clip); }
-float frameToKeyTime(const Clip& clip, long long frame) {
-  return static_cast<float>(static_cast<double>(frame) * dopeSheetFrameTime(clip));
-}
 
 std::vector<DopeSheetRow> dopeSheetRows(const Clip& clip) {
   std::map<int, std::vector<float>> byJoint;
@@ -104,9 +88,9 @@ std::vector<KeyColumn> columnsOfCell(const std::vector<DopeSheetRow>& rows, int 
   for (size_t r = 1; r < rows.size(); ++r) {
     if (row != 0 && static_cast<int>(r) != row) continue;
     const std::vector<float>& times = rows[r].times;  // sorted: look near `time` only
-    for (auto it = std::lower_bound(times.begin(), times.end(), time - 2 * kKeyColumnTolerance);
-         it != times.end() && *it <= time + 2 * kKeyColumnTolerance; ++it)
-      if (near(*it, time)) out.push_back({rows[r].joint, *it});
+    for (auto it = std::lower_bound(times.begin(), times.end(), time - 2 * kKeyTimeTolerance);
+         it != times.end() && *it <= time + 2 * kKeyTimeTolerance; ++it)
+      if (sameKeyTime(*it, time)) out.push_back({rows[r].joint, *it});
   }
   return out;
 }
@@ -121,7 +105,7 @@ std::vector<KeyColumn> columnsInBox(const Clip& clip, const std::vector<DopeShee
     const bool inRows = (static_cast<int>(r) >= r0 && static_cast<int>(r) <= r1) || (r0 == 0 && r1 >= 0);
     if (!inRows) continue;
     for (float t : rows[r].times) {
-      const double f = timeToFrame(clip, t);
+      const double f = clip.timeToFrame(t);
       if (f >= f0 && f <= f1) out.push_back({rows[r].joint, t});
     }
   }
@@ -174,9 +158,9 @@ void KeyColumnSelection::prune(const std::vector<DopeSheetRow>& rows) {
     for (float t : rows[r].times) all.push_back({rows[r].joint, t});
   std::vector<KeyColumn> kept;
   for (const KeyColumn& c : columns_) {
-    auto it = std::lower_bound(all.begin(), all.end(), KeyColumn{c.joint, c.time - 2 * kKeyColumnTolerance});
-    for (; it != all.end() && it->joint == c.joint && it->time <= c.time + 2 * kKeyColumnTolerance; ++it)
-      if (near(it->time, c.time)) {
+    auto it = std::lower_bound(all.begin(), all.end(), KeyColumn{c.joint, c.time - 2 * kKeyTimeTolerance});
+    for (; it != all.end() && it->joint == c.joint && it->time <= c.time + 2 * kKeyTimeTolerance; ++it)
+      if (sameKeyTime(it->time, c.time)) {
         kept.push_back(*it);
         break;
       }
@@ -209,7 +193,7 @@ bool hitKeyColumn(const std::vector<DopeSheetRow>& rows, const DopeSheetView& vi
   double best = radius;
   bool found = false;
   for (float t : rows[r].times) {
-    const double d = std::abs(view.frameToX(timeToFrame(clip, t)) - p.x);
+    const double d = std::abs(view.frameToX(clip.timeToFrame(t)) - p.x);
     if (d <= best) {
       best = d;
       row = r;
@@ -227,14 +211,14 @@ void moveKeyColumns(Clip& clip, const std::vector<KeyColumn>& columnsIn, double 
   const std::vector<KeyColumn> columns = sortedUnique(columnsIn);
   std::vector<KeyColumn> out;
   const auto target = [&](float t) {
-    return frameToKeyTime(clip, std::llround(timeToFrame(clip, t) + frameOffset));
+    return clip.frameToTime(std::llround(clip.timeToFrame(t) + frameOffset));
   };
   for (Channel& ch : clip.channels) {
     if (ch.joint < 0) continue;
     const bool perKey = !ch.keys.empty();
     const std::vector<TakenKey> taken = takeKeys(ch, columns);  // all out first
     for (const TakenKey& k : taken) {
-      const float t = landingTime(ch, target(k.time));
+      const float t = target(k.time);  // onto a staying key: insertKey replaces it
       if (perKey) insertKey(ch, t, k.value, k.settings);
       else insertKey(ch, t, k.value);
     }
@@ -266,7 +250,7 @@ KeyClipboard copyKeyColumns(const Clip& clip, const std::vector<KeyColumn>& colu
       if (!inColumns(columns, ch.joint, ch.times[k])) continue;
       CopiedKey c;
       c.joint = ch.joint;
-      c.frameOffset = timeToFrame(clip, ch.times[k]);
+      c.frameOffset = clip.timeToFrame(ch.times[k]);
       c.target = ch.target;
       c.property = ch.property;
       c.eulerOrder = ch.eulerOrder;
@@ -304,7 +288,7 @@ std::string pasteKeys(Clip& clip, const Skeleton& skeleton, const KeyClipboard& 
       if (to < 0 || to >= skeleton.size()) return "Paste keys: joint " + std::to_string(to) + " does not exist";
   std::vector<KeyColumn> out;
   for (const CopiedKey& c : clipboard.keys) {
-    const float t = frameToKeyTime(clip, frame + std::llround(c.frameOffset));
+    const float t = clip.frameToTime(frame + std::llround(c.frameOffset));
     for (int joint : destination[c.joint]) {
       auto it = std::find_if(clip.channels.begin(), clip.channels.end(), [&](const Channel& ch) {
         return ch.joint == joint && ch.target == c.target && ch.property == c.property;
@@ -319,7 +303,7 @@ std::string pasteKeys(Clip& clip, const Skeleton& skeleton, const KeyClipboard& 
         clip.channels.push_back(ch);
         it = clip.channels.end() - 1;
       }
-      insertKey(*it, landingTime(*it, t), c.value, c.settings);
+      insertKey(*it, t, c.value, c.settings);
       out.push_back({joint, t});
     }
   }

@@ -24,14 +24,9 @@ struct KeyColumn {
   bool operator<(const KeyColumn& o) const { return joint != o.joint ? joint < o.joint : time < o.time; }
 };
 
-// Keys of one joint closer than this (seconds) share a column (channels keyed on the same
-// frame by different tools can differ in the last float bits).
-constexpr float kKeyColumnTolerance = 1e-5f;
-
-// The clip's frame grid: its frame time, or 1/30 s for clips without one (as the timeline).
-double dopeSheetFrameTime(const Clip& clip);
-double timeToFrame(const Clip& clip, float time);          // fractional for keys off the grid
-float frameToKeyTime(const Clip& clip, long long frame);   // frame * frame time, as Clip::frameToTime
+// Keys of one joint at the same key time (sameKeyTime, anim/clip.h: channels keyed on one
+// frame by different tools can differ in the last float bits) share a column. Frames are
+// the clip's own grid (Clip::timeToFrame / frameToTime), the timeline's.
 
 // One row: a joint's key columns (times ascending), or the summary (joint -1) with the
 // times of all of them.

@@ -24,26 +24,16 @@ const char* modalToolName(ModalTool tool) {
 
 double EditorState::duration() const { return hasMotion() ? doc.scene().clips[clip].duration() : 0.0; }
 
-double EditorState::frameTime() const {
-  return hasMotion() && doc.scene().clips[clip].frameTime > 0 ? doc.scene().clips[clip].frameTime : 1.0 / 30.0;
-}
-
-long long EditorState::frameCount() const {
-  return static_cast<long long>(std::llround(duration() / frameTime())) + 1;
-}
-
 void evaluateEditorPose(EditorState& state) {
   if (state.wasPlaying && !state.playing) state.sampleClip = true;  // paused: edit from this frame
   state.wasPlaying = state.playing;
-  syncAutoKey(state);
-  if (state.hasMotion() && (state.sampleClip || state.playing)) {
-    // Joints the clip does not animate keep their pose (Blender re-evaluates the action).
-    Pose pose = state.doc.pose();
-    sampleClip(state.doc.scene().clips[state.clip], static_cast<float>(state.time), pose);
-    state.doc.setAnimatedPose(pose);
+  syncDocumentPlayhead(state);
+  const EditorState::SampledAt now{state.clip, state.time, state.doc.poseRevision(), state.doc.changeCount()};
+  if (state.sampleClip || (state.playing && !(now == state.sampledAt))) {
+    poseAtPlayhead(state);
+    state.sampledAt = {state.clip, state.time, state.doc.poseRevision(), state.doc.changeCount()};
   }
   state.sampleClip = false;
-  state.world = state.doc.worldTransforms();
 }
 
 void advancePlayback(EditorState& state, double dt) { advanceTimeline(state, dt); }

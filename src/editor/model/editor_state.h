@@ -65,15 +65,15 @@ struct ViewOptions {
 };
 
 // Everything the editor shows and edits, owned by the caller (no globals). Panels read and
-// write it; the window turns input into edits of it and evaluateEditorPose() into world
-// transforms.
+// write it; the window turns input into edits of it and evaluateEditorPose() poses the
+// document at the playhead; world() is the one evaluation of that pose everybody reads.
 struct EditorState {
   Document doc;        // the scene being edited: pose, IK targets, selection, history, path, dirty
   PanelState panels;   // the panels' own state: dialogs, buffers, clipboard, autosave (editor_panels.h)
 
-  // --- Playback (files with motion) ---
+  // --- Playback (files with motion): the playhead (timeline.h) ---
   int clip = 0;            // the clip the timeline plays, when the scene has clips
-  double time = 0.0;       // seconds
+  double time = 0.0;       // seconds; frames are the clip's grid (Clip::secondsPerFrame)
   bool playing = false;
   bool loop = true;        // playback wraps at the clip's end (sampling itself always clamps)
   bool sampleClip = false; // the timeline moved: the next evaluate poses the document at `time`
@@ -97,14 +97,25 @@ struct EditorState {
   MotionControlSettings motionControl;
   bool onionSkinWindowOpen = false;  // View > Onion Skin && Motion Path...
 
-  // Derived each frame from the fields above: the document's pose, or the clip while it plays.
-  std::vector<glm::mat4> world;
   bool wasPlaying = false;  // playback stopped since the last evaluate: the document takes the frame
+  // The playhead and document state the pose was last sampled at while playing: a second
+  // evaluate of the same frame samples nothing.
+  struct SampledAt {
+    int clip = -1;
+    double time = 0.0;
+    long long poseRevision = -1, changeCount = -1;
+    bool operator==(const SampledAt& o) const {
+      return clip == o.clip && time == o.time && poseRevision == o.poseRevision && changeCount == o.changeCount;
+    }
+  } sampledAt;
+
+  // World transforms of the document's pose (model space, one per joint): the document's
+  // cached evaluation (Document::worldTransforms), recomputed only after the pose changed.
+  // Every panel, tool and renderer reads this one.
+  const std::vector<glm::mat4>& world() const { return doc.worldTransforms(); }
 
   bool hasMotion() const { return clip >= 0 && clip < static_cast<int>(doc.scene().clips.size()); }
   double duration() const;       // the clip's length in seconds, 0 without motion
-  double frameTime() const;      // the clip's frame time, or 1/30 s
-  long long frameCount() const;  // frames on the clip's grid, at least 1
   // The panels under the 3D view this frame (layout: panel_layout.h).
   // The timeline is there whenever a skeleton is, so a pose can be keyed (timeline.h).
   bool timelineShown() const { return hasMotion() || doc.skeleton().size() > 0; }
@@ -123,9 +134,10 @@ struct EditorState {
   }
 };
 
-// state.world: the document's pose. While the clip plays, and when the timeline moved
-// (sampleClip) or playback stopped, the document's pose becomes the clip's at state.time
-// through Document::setAnimatedPose (not an undo step, not a change to save).
+// While the clip plays, and when the timeline moved (sampleClip) or playback stopped, the
+// document's pose becomes the clip's at state.time (poseAtPlayhead: not an undo step, not a
+// change to save); the playhead is copied into the document. A second call in the same
+// frame samples nothing and, the pose unchanged, costs no forward kinematics (world()).
 void evaluateEditorPose(EditorState& state);
 // Advances playback by dt seconds (wrapping or stopping at the end).
 void advancePlayback(EditorState& state, double dt);

@@ -12,7 +12,14 @@ void JointSelection::add(int joint) {
 void JointSelection::remove(int joint) {
   auto it = std::lower_bound(joints_.begin(), joints_.end(), joint);
   if (it != joints_.end() && *it == joint) joints_.erase(it);
-  if (active_ == joint) active_ = -1;
+}
+
+void JointSelection::keepActiveSelected(const std::vector<int>& preferred) {
+  if (isSelected(active_)) return;
+  active_ = -1;
+  for (int j : preferred)  // nearest the root among what the change selected
+    if (isSelected(j) && (active_ < 0 || j < active_)) active_ = j;
+  if (active_ < 0 && !joints_.empty()) active_ = joints_.front();  // sorted: nearest the root
 }
 
 bool JointSelection::isSelected(int joint) const {
@@ -30,6 +37,7 @@ void JointSelection::shiftClick(int joint) {
   if (joint < 0) return;
   if (isSelected(joint) && active_ == joint) {
     remove(joint);
+    keepActiveSelected({});
     return;
   }
   add(joint);
@@ -39,7 +47,7 @@ void JointSelection::shiftClick(int joint) {
 void JointSelection::selectAll(int jointCount) {
   joints_.clear();
   for (int i = 0; i < jointCount; ++i) joints_.push_back(i);
-  if (active_ >= jointCount) active_ = -1;
+  keepActiveSelected({});
 }
 
 void JointSelection::clear() {
@@ -48,10 +56,7 @@ void JointSelection::clear() {
 }
 
 void JointSelection::box(const std::vector<int>& joints, BoxSelectMode mode) {
-  if (mode == BoxSelectMode::Replace) {
-    joints_.clear();
-    if (std::find(joints.begin(), joints.end(), active_) == joints.end()) active_ = -1;
-  }
+  if (mode == BoxSelectMode::Replace) joints_.clear();
   for (int j : joints) {
     if (j < 0) continue;
     if (mode == BoxSelectMode::Subtract)
@@ -59,6 +64,7 @@ void JointSelection::box(const std::vector<int>& joints, BoxSelectMode mode) {
     else
       add(j);
   }
+  keepActiveSelected(mode == BoxSelectMode::Subtract ? std::vector<int>{} : joints);
 }
 
 }  // namespace kinema

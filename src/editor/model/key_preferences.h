@@ -13,12 +13,10 @@ struct KeyPreferences {
 };
 
 // Auto-key (the timeline's record button): while enabled, every posing edit and drag keys
-// the joints whose local transform it changed, at `time` in clips[clip] (created as
-// "Action" when the scene has none), in the same undo step as the edit.
+// the joints whose local transform it changed at the document's playhead (its time in its
+// clip, created as "Action" when the scene has none), in the same undo step as the edit.
 struct AutoKeySettings {
   bool enabled = false;
-  int clip = 0;
-  float time = 0.0f;
   KeyPreferences preferences;
 };
 

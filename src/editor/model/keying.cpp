@@ -11,8 +11,6 @@ namespace kinema {
 
 namespace {
 
-constexpr float kSameKeyTime = 1e-4f;  // seconds: a key "at" a frame's time
-
 bool hasChannel(const Clip& clip, int joint, ChannelTarget target) {
   for (const Channel& c : clip.channels)
     if (c.joint == joint && c.target == target) return true;
@@ -51,7 +49,7 @@ KeySettings keySettingsFor(const KeyPreferences& preferences, ChannelTarget targ
 Clip newActionClip() {
   Clip c;
   c.name = kNewClipName;
-  c.frameTime = 1.0 / kNewClipFps;
+  c.frameTime = 1.0 / kDefaultFrameRate;
   c.hasRange = true;
   c.rangeStart = c.frameToTime(kNewClipStartFrame);
   c.rangeEnd = c.frameToTime(kNewClipEndFrame);
@@ -86,11 +84,10 @@ int deleteJointKeys(Clip& clip, const std::vector<int>& joints, float time) {
   int deleted = 0;
   for (Channel& ch : clip.channels) {
     if (!contains(joints, ch.joint)) continue;
-    for (int k = ch.keyCount() - 1; k >= 0; --k)
-      if (std::abs(ch.times[k] - time) <= kSameKeyTime) {
-        deleteKey(ch, k);
-        ++deleted;
-      }
+    for (int k = findKey(ch, time); k >= 0; k = findKey(ch, time)) {
+      deleteKey(ch, k);
+      ++deleted;
+    }
   }
   // A channel left without keys animates nothing: drop it (Blender deletes empty F-curves).
   clip.channels.erase(std::remove_if(clip.channels.begin(), clip.channels.end(),

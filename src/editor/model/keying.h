@@ -10,7 +10,6 @@ namespace kinema {
 class Document;
 
 constexpr const char* kNewClipName = "Action";  // Blender's name for a new action
-constexpr double kNewClipFps = 24.0;            // a new clip's frame rate (Blender's default)
 constexpr long long kNewClipStartFrame = 1, kNewClipEndFrame = 250;  // Blender's default range
 
 // The interpolation a rotation (quaternion) key gets for a preferred one. Clip::validate
@@ -20,7 +19,8 @@ Interpolation rotationInterpolation(Interpolation preferred);
 // The settings a new key of `target` carries under `preferences`.
 KeySettings keySettingsFor(const KeyPreferences& preferences, ChannelTarget target);
 
-// A new empty clip as the first key creates it: "Action", 24 fps, range frames 1..250.
+// A new empty clip as the first key creates it: "Action", kDefaultFrameRate (24 fps),
+// range frames 1..250.
 Clip newActionClip();
 
 // Keys the joints' local transforms of `pose` at `time` into clips[clip]; when `clip` is
@@ -29,7 +29,8 @@ Clip newActionClip();
 // locRotOnly). Returns the number of keys written.
 int keyJoints(std::vector<Clip>& clips, int& clip, const Skeleton& skeleton, const Pose& pose,
               const std::vector<int>& joints, float time, const KeyPreferences& preferences);
-// Deletes the keys of the joints' channels at `time` (within 1e-4 s). Returns how many.
+// Deletes the keys of the joints' channels at `time` (findKey: within kKeyTimeTolerance).
+// Returns how many.
 int deleteJointKeys(Clip& clip, const std::vector<int>& joints, float time);
 // Sorted times holding a key of any channel of the joints (the timeline's diamonds).
 std::vector<float> jointKeyTimes(const Clip& clip, const std::vector<int>& joints);

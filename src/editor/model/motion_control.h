@@ -33,7 +33,7 @@ int translationChannelIndex(const Clip& clip, int joint);
 struct MotionControlJob {
   const Channel* path = nullptr;
   MotionControlProfile profile = MotionControlProfile::ConstantSpeed;
-  double frameTime = 1.0 / 30.0;
+  double frameTime = 1.0 / kDefaultFrameRate;  // seconds per baked key: the clip's (Clip::secondsPerFrame)
   // Empty when usable; otherwise one line saying what is wrong.
   std::string validate() const;
   // Times from the path's first key to its last, one per frame step (the last key's time

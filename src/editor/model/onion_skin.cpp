@@ -29,10 +29,6 @@ std::vector<GhostFrame> ghostFrames(const OnionSkinSettings& s, long long curren
   return out;
 }
 
-double clipFrameTime(const Clip& clip) { return clip.frameTime > 0 ? clip.frameTime : 1.0 / 30.0; }
-
-long long clipFrameAt(const Clip& clip, double time) { return std::llround(time / clipFrameTime(clip)); }
-
 std::vector<std::vector<glm::mat4>> ghostPoses(const Scene& scene, int clip, const std::vector<GhostFrame>& ghosts) {
   std::vector<std::vector<glm::mat4>> out;
   if (clip < 0 || clip >= static_cast<int>(scene.clips.size())) return out;
@@ -41,7 +37,7 @@ std::vector<std::vector<glm::mat4>> ghostPoses(const Scene& scene, int clip, con
   out.resize(ghosts.size());
   for (size_t g = 0; g < ghosts.size(); ++g) {
     Pose pose = Pose::rest(scene.skeleton);
-    sampleClip(c, static_cast<float>(static_cast<double>(ghosts[g].frame) * clipFrameTime(c)), pose, cache);
+    sampleClip(c, c.frameToTime(ghosts[g].frame), pose, cache);
     computeWorld(scene.skeleton, pose, out[g]);
   }
   return out;

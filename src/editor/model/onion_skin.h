@@ -20,7 +20,7 @@ struct OnionSkinSettings {
 
 // One ghost: the clip frame it shows and how it is tinted.
 struct GhostFrame {
-  long long frame = 0;  // on the clip's frame grid (0 .. frameCount - 1)
+  long long frame = 0;  // on the clip's frame grid (Clip::secondsPerFrame, the timeline's; 0 .. frameCount - 1)
   int offset = 0;       // signed distance in ghosts: -1 the nearest before, +1 the nearest after
   glm::vec4 color{1.0f};  // rgb tint, alpha = opacity faded with |offset|
 };
@@ -30,11 +30,6 @@ struct GhostFrame {
 // dropped (not clamped onto its ends, where they would pile up). Nearest alpha = opacity,
 // the k-th of n on a side has opacity * (n - k + 1) / n.
 std::vector<GhostFrame> ghostFrames(const OnionSkinSettings& settings, long long current, long long frameCount);
-
-// Seconds per frame of a clip: its own frame time, or 1/30 s for clips without a grid.
-double clipFrameTime(const Clip& clip);
-// The clip frame nearest to `time` seconds.
-long long clipFrameAt(const Clip& clip, double time);
 
 // World transforms of every joint at each ghost's frame: the clip sampled over the rest
 // pose (what playback shows), then forward kinematics.

@@ -25,6 +25,7 @@ struct PanelState {
   std::string renameError;
 
   // Properties
+  int propertiesJoint = -1;  // the joint the properties panel showed last frame (-1: "Select a joint")
   EulerOrder eulerOrder = EulerOrder::XYZ;
   bool quaternionEntry = false;
   bool dragging = false;  // a property drag is one undo step: begun on activate, committed on release

@@ -12,7 +12,8 @@ namespace {
 
 const Clip* editedClip(const EditorState& s) { return s.hasMotion() ? &s.doc.scene().clips[s.clip] : nullptr; }
 
-// Poses the document from the clip at the playhead (joints it does not animate keep theirs).
+}  // namespace
+
 void poseAtPlayhead(EditorState& s) {
   const Clip* clip = editedClip(s);
   if (!clip) return;
@@ -21,24 +22,18 @@ void poseAtPlayhead(EditorState& s) {
   s.doc.setAnimatedPose(pose);
 }
 
-}  // namespace
-
-double timelineFrameTime(const EditorState& s) {
+// The edited clip's frame grid (Clip::secondsPerFrame); without a clip, the grid of the
+// "Action" the first key creates, so that frame numbers stay when it appears.
+const Clip& timelineGrid(const EditorState& s) {
+  static const Clip action = newActionClip();
   const Clip* clip = editedClip(s);
-  return clip && clip->frameTime > 0 ? clip->frameTime : 1.0 / kNewClipFps;
+  return clip ? *clip : action;
 }
 
-double timelineFps(const EditorState& s) { return 1.0 / timelineFrameTime(s); }
-
-long long frameAtTime(const EditorState& s, double time) {
-  const double f = time / timelineFrameTime(s);
-  return std::isfinite(f) ? std::llround(std::clamp(f, -1e12, 1e12)) : 0;
-}
-
-double timeOfFrame(const EditorState& s, long long frame) {
-  const Clip* clip = editedClip(s);
-  return clip && clip->frameTime > 0 ? clip->frameToTime(frame) : frame * timelineFrameTime(s);
-}
+double timelineFrameTime(const EditorState& s) { return timelineGrid(s).secondsPerFrame(); }
+double timelineFps(const EditorState& s) { return timelineGrid(s).framesPerSecond(); }
+long long frameAtTime(const EditorState& s, double time) { return timelineGrid(s).nearestFrame(time); }
+double timeOfFrame(const EditorState& s, long long frame) { return timelineGrid(s).frameToTime(frame); }
 
 long long currentFrame(const EditorState& s) { return frameAtTime(s, s.time); }
 
@@ -53,21 +48,27 @@ long long rangeEndFrame(const EditorState& s) {
   return std::max(frameAtTime(s, clip->playEnd()), rangeStartFrame(s));
 }
 
-void syncAutoKey(EditorState& s) {
-  s.doc.autoKey.time = static_cast<float>(s.time);
-  s.doc.autoKey.clip = s.clip;
-}
+void syncDocumentPlayhead(EditorState& s) { s.doc.setPlayhead({s.clip, s.time}); }
 
 void goToFrame(EditorState& s, long long frame) {
   s.time = timeOfFrame(s, frame);
-  syncAutoKey(s);
+  syncDocumentPlayhead(s);
   if (!s.playing) poseAtPlayhead(s);
 }
 
 void resetTimeline(EditorState& s) {
   s.playing = s.wasPlaying = s.sampleClip = false;
-  s.time = timeOfFrame(s, rangeStartFrame(s));
-  syncAutoKey(s);
+  const std::optional<ScenePlayhead>& saved = s.doc.savedPlayhead();
+  const int clips = static_cast<int>(s.doc.scene().clips.size());
+  if (saved && std::isfinite(saved->time) && saved->clip >= 0 && (saved->clip < clips || saved->clip == 0)) {
+    s.clip = saved->clip;
+    s.time = saved->time;
+  } else {
+    if (s.clip < 0 || s.clip >= clips) s.clip = 0;
+    s.time = timeOfFrame(s, rangeStartFrame(s));
+  }
+  syncDocumentPlayhead(s);
+  poseAtPlayhead(s);
 }
 
 void stepFrame(EditorState& s, int delta) { goToFrame(s, currentFrame(s) + delta); }
@@ -92,13 +93,14 @@ void advanceTimeline(EditorState& s, double dt) {
       s.playing = false;  // evaluateEditorPose poses the document at the end frame
     }
   }
-  syncAutoKey(s);
+  syncDocumentPlayhead(s);
 }
 
 std::string setFrameRange(EditorState& s, long long start, long long end) {
   if (start > end) return "the start frame must not be after the end frame";
   if (std::llabs(start) > 100000000LL || std::llabs(end) > 100000000LL) return "frames must be within +-100000000";
-  const double frameTime = timelineFrameTime(s);
+  const Clip& grid = timelineGrid(s);
+  const float startTime = grid.frameToTime(start), endTime = grid.frameToTime(end);
   int clip = s.clip;
   const std::string error = s.doc.edit("Set frame range", [&](DocumentEdit& e) {
     if (clip < 0 || clip >= static_cast<int>(e.clips.size())) {
@@ -107,12 +109,12 @@ std::string setFrameRange(EditorState& s, long long start, long long end) {
     }
     Clip& c = e.clips[clip];
     c.hasRange = true;
-    c.rangeStart = static_cast<float>(start * frameTime);
-    c.rangeEnd = static_cast<float>(end * frameTime);
+    c.rangeStart = startTime;
+    c.rangeEnd = endTime;
     return std::string();
   });
   if (error.empty()) s.clip = clip;
-  syncAutoKey(s);
+  syncDocumentPlayhead(s);
   return error;
 }
 
@@ -143,13 +145,13 @@ std::string setFrameRate(EditorState& s, double fps) {
 std::string keySelectedJoints(EditorState& s) {
   const std::string error = insertKeys(s.doc, s.clip, static_cast<float>(s.time), s.doc.selection.joints(),
                                        s.doc.autoKey.preferences);
-  syncAutoKey(s);
+  syncDocumentPlayhead(s);
   return error.empty() ? "Inserted keys on frame " + std::to_string(currentFrame(s)) : error;
 }
 
 std::string keyAllJoints(EditorState& s) {
   const std::string error = insertKeysOnAllJoints(s.doc, s.clip, static_cast<float>(s.time), s.doc.autoKey.preferences);
-  syncAutoKey(s);
+  syncDocumentPlayhead(s);
   return error.empty() ? "Inserted keys on all joints on frame " + std::to_string(currentFrame(s)) : error;
 }
 

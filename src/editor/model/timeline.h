@@ -2,6 +2,7 @@
 #include <string>
 #include <vector>
 
+#include "anim/clip.h"
 
 namespace kinema {
 
@@ -11,11 +12,17 @@ struct EditorState;
 // frame range and rate of the edited clip (EditorState::clip; saved in .kinema as the clip's
 // hasRange/rangeStart/rangeEnd and frameTime), play/pause, step, jump and scrub. Without a
 // clip it shows Blender's defaults (frames 1..250 at 24 fps) so a user can start keying;
-// the first key creates the clip ("Action", keying.h). Frame N is at time N * frameTime.
+// the first key creates the clip ("Action", keying.h). Frame N is at time N *
+// Clip::secondsPerFrame() (a glTF clip without a frame grid: at kDefaultFrameRate, the rate
+// the dope sheet, curve editor and onion skin count in too).
 // Changing the frame poses the document from the clip with Document::setAnimatedPose: not
 // an undo step, joints the clip does not animate keep their pose.
 
-double timelineFrameTime(const EditorState& state);  // the clip's, or 1/24 s without one
+// The clip whose frame grid the timeline counts in (Clip::secondsPerFrame, the grid every
+// panel shares): the edited clip, or without one a new "Action" (24 fps, keying.h), so frame
+// numbers stay when the first key creates it.
+const Clip& timelineGrid(const EditorState& state);
+double timelineFrameTime(const EditorState& state);  // seconds per frame of timelineGrid
 double timelineFps(const EditorState& state);
 long long frameAtTime(const EditorState& state, double time);  // the nearest frame
 double timeOfFrame(const EditorState& state, long long frame);
@@ -23,10 +30,20 @@ long long currentFrame(const EditorState& state);
 long long rangeStartFrame(const EditorState& state);
 long long rangeEndFrame(const EditorState& state);
 
+// Poses the document from the edited clip at the playhead (EditorState::time) with
+// Document::setAnimatedPose: joints the clip does not animate keep their pose (Blender
+// re-evaluates the action over the pose); not an undo step, not a change to save. Nothing
+// without a clip or during a drag. Every view that moves the playhead or edits the clip's
+// keys calls this, so the pose shown is always the clip's at the playhead.
+void poseAtPlayhead(EditorState& state);
 // Moves the playhead to `frame` (also the auto-key time) and poses the document from the
 // clip there (while not playing). Frames outside the range are allowed, as in Blender.
 void goToFrame(EditorState& state, long long frame);
-// A new or opened document: stopped at the range's start frame (frame 1 without a clip).
+// A new or opened document: stopped, with the playhead where the file saved it
+// (Document::savedPlayhead, .kinema "playhead") or, for files without one (glTF, BVH,
+// older .kinema), on the edited clip's start frame (frame 1 without a clip); then the
+// document is posed from the clip there (poseAtPlayhead), so the first frame drawn shows
+// the pose at the playhead, not the rest pose.
 void resetTimeline(EditorState& state);
 void stepFrame(EditorState& state, int delta);  // Left / Right: one frame, no wrap
 void jumpToStart(EditorState& state);           // Shift+Left
@@ -37,8 +54,10 @@ void togglePlayback(EditorState& state);
 // Playback: advances by dt seconds within the range, wrapping when looping, else stopping
 // at the end.
 void advanceTimeline(EditorState& state, double dt);
-// Keeps the document's auto-key settings on the playhead and the edited clip.
-void syncAutoKey(EditorState& state);
+// Copies the playhead (EditorState::clip, time) into the document (Document::setPlayhead):
+// what auto-key keys at and a save writes. Every function here that moves the playhead
+// calls it, and so does evaluateEditorPose each frame.
+void syncDocumentPlayhead(EditorState& state);
 
 // The frame range and rate are part of the clip (undo steps; a clip is created when the
 // scene has none). Errors are one line for the status bar.

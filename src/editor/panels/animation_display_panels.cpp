@@ -7,6 +7,7 @@
 #include "editor/panels/editor_panels.h"
 #include "editor/model/motion_control.h"
 #include "editor/panels/panel_layout.h"
+#include "editor/model/timeline.h"
 
 namespace kinema {
 
@@ -86,10 +87,7 @@ void drawMotionControlWindow(EditorState& state) {
     if (!error.empty()) showEditorError(state, error);
     else {
       state.statusMessage = std::string("Motion control: ") + names[static_cast<int>(m.profile)];
-      // The pose follows the re-timed channel at the current frame (not an undo step).
-      Pose pose = state.doc.pose();
-      sampleClip(state.doc.scene().clips[state.clip], static_cast<float>(state.time), pose);
-      state.doc.setAnimatedPose(pose);
+      poseAtPlayhead(state);  // the pose follows the re-timed channel at the current frame
     }
   }
   m.applyRect = lastItemRect();

@@ -17,6 +17,7 @@
 #include "editor/panels/editor_panels.h"
 #include "editor/panels/item_names.h"
 #include "editor/panels/panel_layout.h"
+#include "editor/model/timeline.h"
 
 namespace kinema {
 
@@ -57,12 +58,7 @@ const char* const kEasingModeNames[] = {"In", "Out", "In Out"};
 const char* const kEulerOrderNames[] = {"XYZ", "XZY", "YXZ", "YZX", "ZXY", "ZYX"};
 
 // After a key edit the working pose shows the edited clip at the current frame (not an undo step).
-void reposeAtCurrentFrame(EditorState& state) {
-  if (!state.hasMotion()) return;
-  Pose pose = state.doc.pose();
-  sampleClip(state.doc.scene().clips[state.clip], static_cast<float>(state.time), pose);
-  state.doc.setAnimatedPose(pose);
-}
+void reposeAtCurrentFrame(EditorState& state) { poseAtPlayhead(state); }
 
 // Applies `change` to the selected keys' settings as one undo step.
 void editSelectedKeys(EditorState& state, const char* label, const std::function<void(KeySettings&)>& change) {
@@ -202,8 +198,7 @@ void keyPropertiesStrip(EditorState& state, const Clip& clip) {
       editSelectedKeys(state, "Key easing", [&](KeySettings& ks) { ks.easingMode = EasingMode(mode); });
   }
   // The first selected key's time (frames) and value.
-  const double ft = clip.frameTime > 0.0 ? clip.frameTime : 1.0 / 30.0;
-  int frame = static_cast<int>(std::llround(ch.times[k.key] / ft));
+  int frame = static_cast<int>(clip.nearestFrame(ch.times[k.key]));
   ImGui::SameLine();
   ImGui::SetNextItemWidth(60);
   const bool retimed = ImGui::InputInt("##frame", &frame, 0, 0, ImGuiInputTextFlags_EnterReturnsTrue);
@@ -213,7 +208,7 @@ void keyPropertiesStrip(EditorState& state, const Clip& clip) {
     std::vector<CurveKeyRef> moved;
     const std::string error = state.doc.edit("Key time", [&](DocumentEdit& e) {
       Channel& c = e.clips[clipIndex].channels[k.channel];
-      const int to = moveKey(c, k.key, snapToFrame(e.clips[clipIndex], static_cast<float>(frame * ft)));
+      const int to = moveKey(c, k.key, e.clips[clipIndex].frameToTime(frame));
       moved.push_back({k.channel, k.component, to});
       return std::string();
     });
@@ -345,7 +340,7 @@ void drawCurveEditorPanel(CommandContext& ctx) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->PushClipRect(ImVec2(plot.x, plot.y), ImVec2(plot.x + plot.w, plot.y + plot.h), true);
   dl->AddRectFilled(ImVec2(plot.x, plot.y), ImVec2(plot.x + plot.w, plot.y + plot.h), IM_COL32(40, 40, 40, 255));
-  drawGrid(dl, view, plot, clip.frameTime > 0.0 ? clip.frameTime : 1.0 / 30.0);
+  drawGrid(dl, view, plot, clip.secondsPerFrame());
 
   const glm::vec2 mouse(io.MousePos.x, io.MousePos.y);
   auto screen = [&](float t, float v) {
@@ -493,7 +488,7 @@ void drawCurveEditorPanel(CommandContext& ctx) {
         const ShownCurve* s = curveOf(k);
         const float scale = s ? displayToValueScale(s->range, ce.normalized) : 1.0f;
         const glm::vec2 offset = ce.dragHandleStart + d;
-        const float fps = static_cast<float>(1.0 / (clip.frameTime > 0.0 ? clip.frameTime : 1.0 / 30.0));
+        const float fps = static_cast<float>(clip.framesPerSecond());
         state.doc.updateDrag([&](DocumentEdit& e) {
           Channel& ch = e.clips[clipIndex].channels[k.channel];
           if (ce.dragHandleHermite) setHermiteTangentFromHandle(ch, k.key, ce.dragHandleRight, k.component, offset.x, offset.y * scale);

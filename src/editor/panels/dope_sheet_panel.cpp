@@ -13,6 +13,7 @@
 #include "editor/panels/editor_panels.h"
 #include "editor/panels/item_names.h"
 #include "editor/panels/panel_layout.h"
+#include "editor/model/timeline.h"
 
 namespace kinema {
 
@@ -144,11 +145,9 @@ void handleMouse(EditorState& state, const Clip& clip, const std::vector<DopeShe
   const bool inRuler = mouse.y >= rulerRect.y && mouse.y < rulerRect.y + rulerRect.h && mouse.x >= view.x;
   if (inRuler && ImGui::IsMouseDown(0)) {
     const long long frame = std::max(0LL, std::llround(view.xToFrame(mouse.x)));
-    const double time = frame * dopeSheetFrameTime(clip);
-    if (time != state.time) {
-      state.time = time;
+    if (frame != currentFrame(state) || state.playing) {
       state.playing = false;
-      state.sampleClip = true;
+      goToFrame(state, frame);  // the timeline's frame -> time, so both show the same frame
     }
     return;
   }
@@ -239,9 +238,8 @@ void drawDopeSheetPanel(EditorState& state) {
   const float right = r.x + r.w, bottom = r.y + r.h;
   dl->PushClipRect(ImVec2(r.x, r.y), ImVec2(right, bottom), true);
   dl->AddRectFilled(ImVec2(r.x, r.y), ImVec2(right, bottom), rgba(42, 42, 42));
-  const double ft = dopeSheetFrameTime(shown);
   // The clip's playback range, lighter (Blender darkens outside the scene's range).
-  const double x0 = view.frameToX(timeToFrame(shown, shown.playStart())), x1 = view.frameToX(timeToFrame(shown, shown.playEnd()));
+  const double x0 = view.frameToX(shown.timeToFrame(shown.playStart())), x1 = view.frameToX(shown.timeToFrame(shown.playEnd()));
   dl->AddRectFilled(ImVec2(std::max(float(x0), view.x), view.y), ImVec2(std::min(float(x1), right), bottom), rgba(52, 52, 52));
   for (int i = 0; i < static_cast<int>(shownRows.size()); ++i) {
     const float cy = view.rowCenterY(i), top = cy - view.rowHeight * 0.5f;
@@ -269,10 +267,10 @@ void drawDopeSheetPanel(EditorState& state) {
     const float cy = view.rowCenterY(i);
     if (cy < view.y || cy > bottom + view.rowHeight) continue;
     const std::vector<float>& times = shownRows[i].times;
-    auto it = std::lower_bound(times.begin(), times.end(), static_cast<float>(firstVisible * ft));
-    for (; it != times.end() && timeToFrame(shown, *it) <= lastVisible; ++it) {
+    auto it = std::lower_bound(times.begin(), times.end(), shown.frameToTime(static_cast<long long>(std::floor(firstVisible))));
+    for (; it != times.end() && shown.timeToFrame(*it) <= lastVisible; ++it) {
       const bool selected = ds.selection.containsAll(columnsOfCell(shownRows, i, *it));
-      const float x = static_cast<float>(view.frameToX(timeToFrame(shown, *it)));
+      const float x = static_cast<float>(view.frameToX(shown.timeToFrame(*it)));
       drawDiamond(dl, ImVec2(x, cy), i == 0 ? kDiamondRadius + 1 : kDiamondRadius,
                   selected ? rgba(255, 160, 40) : rgba(205, 205, 205), rgba(0, 0, 0, 200));
     }
@@ -287,12 +285,12 @@ void drawDopeSheetPanel(EditorState& state) {
   }
   dl->PopClipRect();
   // The current frame: a blue line with its number in the ruler.
-  const double frameNow = state.time / ft;
+  const double frameNow = shown.timeToFrame(state.time);
   const float xNow = static_cast<float>(view.frameToX(frameNow));
   if (xNow >= view.x && xNow <= right) {
     dl->AddLine(ImVec2(xNow, view.y), ImVec2(xNow, bottom), rgba(70, 140, 255), 2.0f);
     char label[24];
-    std::snprintf(label, sizeof label, "%lld", std::llround(frameNow));
+    std::snprintf(label, sizeof label, "%lld", currentFrame(state));  // the timeline's number
     const ImVec2 size = ImGui::CalcTextSize(label);
     dl->AddRectFilled(ImVec2(xNow - size.x / 2 - 4, r.y + 1), ImVec2(xNow + size.x / 2 + 4, view.y - 1),
                       rgba(70, 140, 255), 3.0f);

@@ -27,9 +27,9 @@ void drawJointListPanel(EditorState& state) {
     ImGui::Unindent(static_cast<float>(depth[i]) * 10.0f + 0.001f);
     ImGui::PopID();
   }
-  if (state.doc.selection.active() >= 0 && state.doc.selection.active() < static_cast<int>(state.world.size())) {
+  if (state.doc.selection.active() >= 0 && state.doc.selection.active() < static_cast<int>(state.world().size())) {
     ImGui::Separator();
-    const glm::vec3 p(state.world[state.doc.selection.active()][3]);
+    const glm::vec3 p(state.world()[state.doc.selection.active()][3]);
     ImGui::Text("%s", s.names[state.doc.selection.active()].c_str());
     ImGui::Text("world %.3f %.3f %.3f", p.x, p.y, p.z);
   }

@@ -190,6 +190,7 @@ void drawPropertiesPanel(EditorState& state) {
   const PanelRect r = propertiesRect(ImGui::GetIO().DisplaySize);
   ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(r.w, r.h), ImGuiCond_Always);
+  state.panels.propertiesJoint = -1;
   if (!ImGui::Begin("Properties", nullptr, kPanelFlags)) {
     ImGui::End();
     return;
@@ -201,6 +202,7 @@ void drawPropertiesPanel(EditorState& state) {
     ImGui::End();
     return;
   }
+  state.panels.propertiesJoint = joint;  // what the state dump reports the panel showing
   ImGui::PushItemWidth(-110);
   ImGui::PushID(joint);
   // Name: renamed when Enter is pressed; the model refuses empty or duplicate names.

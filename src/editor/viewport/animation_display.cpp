@@ -58,9 +58,9 @@ void buildAnimationDisplay(const EditorState& state, const std::vector<char>& sh
   }
   const Scene& scene = state.doc.scene();
   const Clip& clip = scene.clips[state.clip];
-  const long long current = clipFrameAt(clip, state.time);
+  const long long current = clip.nearestFrame(state.time);
   if (state.onionSkin.enabled) {
-    display.ghosts = ghostFrames(state.onionSkin, current, clipFrameAt(clip, clip.duration()) + 1);
+    display.ghosts = ghostFrames(state.onionSkin, current, clip.nearestFrame(clip.duration()) + 1);
     display.ghostLists =
         buildGhostDrawLists(scene.skeleton.parents, shownJoints, display.ghosts, ghostPoses(scene, state.clip, display.ghosts));
   }
@@ -84,12 +84,12 @@ void buildAnimationDisplay(const EditorState& state, const std::vector<char>& sh
     const int index = translationChannelIndex(clip, joint);
     if (index >= 0) {
       const Channel& path = clip.channels[index];
-      const int frames = static_cast<int>(clipFrameAt(clip, path.endTime()) - clipFrameAt(clip, path.startTime()));
+      const int frames = static_cast<int>(clip.nearestFrame(path.endTime()) - clip.nearestFrame(path.startTime()));
       display.ticks = equalTimeTicks(path, mc.profile, std::clamp(frames, 1, 2000));
       // The channel is in the parent's space: placed by the parent's current world transform.
       const int parent = scene.skeleton.parents[joint];
-      if (parent >= 0 && parent < static_cast<int>(state.world.size()))
-        for (glm::vec3& p : display.ticks) p = glm::vec3(state.world[parent] * glm::vec4(p, 1.0f));
+      if (parent >= 0 && parent < static_cast<int>(state.world().size()))
+        for (glm::vec3& p : display.ticks) p = glm::vec3(state.world()[parent] * glm::vec4(p, 1.0f));
       addMotionControlTicks(display.ticks, overlay);
     }
   }

@@ -39,6 +39,14 @@ float raySphereDistance(const PickRay& ray, const glm::vec3& center, float radiu
   return t1 >= 0.0f ? 0.0f : -1.0f;  // the origin is inside: hit at once
 }
 
+namespace {
+// The joint sphere i stands for: spheres skip the joints that are not drawn (a glTF
+// character's helper nodes), so the index is the joint only in lists that draw them all.
+int jointOfSphere(const SkeletonDrawList& list, size_t i) {
+  return i < list.joints.size() ? list.joints[i] : static_cast<int>(i);
+}
+}  // namespace
+
 SkeletonPick pickSkeleton(const SkeletonDrawList& list, const PickRay& ray) {
   static const ShapeMesh bone = makeOctahedralBone();
   SkeletonPick best;
@@ -64,7 +72,7 @@ SkeletonPick pickSkeleton(const SkeletonDrawList& list, const PickRay& ray) {
     const float t = raySphereDistance(ray, glm::vec3(m[3]), glm::length(glm::vec3(m[0])));
     if (t >= 0.0f && t <= bestT) {  // <=: the sphere wins a tie with the bone it sits on
       bestT = t;
-      best.joint = static_cast<int>(i);
+      best.joint = jointOfSphere(list, i);
       best.boneChild = -1;
       best.distance = t;
     }
@@ -76,10 +84,11 @@ SkeletonPick pickSkeletonAt(const SkeletonDrawList& list, const ViewportView& vi
                             float fallbackRadiusPixels) {
   SkeletonPick pick = pickSkeleton(list, view.rayThrough(cursor));
   if (pick.hit()) return pick;
-  pick.joint = pickJoint(list.jointMatrices, view.viewProjection(), view.size, cursor - view.origin,
-                         fallbackRadiusPixels);
-  if (pick.joint >= 0) {
-    const glm::vec3 p(list.jointMatrices[pick.joint][3]);
+  const int sphere = pickJoint(list.jointMatrices, view.viewProjection(), view.size, cursor - view.origin,
+                               fallbackRadiusPixels);
+  if (sphere >= 0) {
+    pick.joint = jointOfSphere(list, static_cast<size_t>(sphere));
+    const glm::vec3 p(list.jointMatrices[sphere][3]);
     pick.distance = glm::length(p - view.rayThrough(cursor).origin);
   }
   return pick;

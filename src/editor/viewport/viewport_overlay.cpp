@@ -20,7 +20,7 @@ void buildViewportOverlay(const EditorState& state, const ViewportView& view, co
   const int activeTarget = activeIkTarget(doc);
   for (int i = 0; i < static_cast<int>(targets.size()); ++i) {
     const int e = targets[i].target.effector;
-    const glm::vec3 effector = e >= 0 && e < static_cast<int>(state.world.size()) ? glm::vec3(state.world[e][3])
+    const glm::vec3 effector = e >= 0 && e < static_cast<int>(state.world().size()) ? glm::vec3(state.world()[e][3])
                                                                                   : targets[i].target.position;
     const bool hot = i == state.hoveredIkTarget || (mode == ModalTool::IkDrag && state.tool.ikTarget == i) ||
                      i == activeTarget;
@@ -32,10 +32,10 @@ void buildViewportOverlay(const EditorState& state, const ViewportView& view, co
     const Skeleton& s = doc.skeleton();
     for (int j : doc.selection.joints()) {
       const JointLimit* limit = doc.rig().limitOf(j);
-      if (!limit || j >= static_cast<int>(state.world.size())) continue;
+      if (!limit || j >= static_cast<int>(state.world().size())) continue;
       LimitShapeJob job;
       job.limit = *limit;
-      job.jointPosition = glm::vec3(state.world[j][3]);
+      job.jointPosition = glm::vec3(state.world()[j][3]);
       const int parent = s.parents[j];
       job.restFrameWorld = (parent >= 0 ? jointWorldRotation(doc, parent) : glm::quat(1, 0, 0, 0)) * s.rest[j].rotation;
       float size = 0.1f;
@@ -53,9 +53,9 @@ void buildViewportOverlay(const EditorState& state, const ViewportView& view, co
   // Screen shapes are drawn in the viewport's own pixels; the tools work in window pixels.
   if (mode == ModalTool::BoxSelect)
     addBoxSelectRectangle(out, state.tool.startMouse - view.origin, state.tool.mouse - view.origin);
-  if (mode == ModalTool::Rotate && doc.selection.active() >= 0 && doc.selection.active() < static_cast<int>(state.world.size())) {
+  if (mode == ModalTool::Rotate && doc.selection.active() >= 0 && doc.selection.active() < static_cast<int>(state.world().size())) {
     glm::vec2 c;
-    if (view.project(glm::vec3(state.world[doc.selection.active()][3]), c))
+    if (view.project(glm::vec3(state.world()[doc.selection.active()][3]), c))
       out.screenLines.push_back({c - view.origin, state.tool.mouse - view.origin, glm::vec4(0.9f, 0.9f, 0.9f, 0.7f), 1.0f});
   }
 }
@@ -68,10 +68,22 @@ void colorSelection(const EditorState& state, SkeletonDrawList& list) {
     const int p = list.boneParents[b];
     list.boneColors[b] = state.doc.selection.isSelected(p) ? style.selectedBone : p == state.hoveredJoint ? hover : style.bone;
   }
-  for (size_t i = 0; i < list.jointColors.size(); ++i) {
-    const int j = static_cast<int>(i);
+  // Sphere i is of joint list.joints[i]: joints that are not drawn (a glTF character's
+  // helper nodes) have none, so the index alone is not the joint.
+  for (size_t i = 0; i < list.jointColors.size() && i < list.joints.size(); ++i) {
+    const int j = list.joints[i];
     list.jointColors[i] = state.doc.selection.isSelected(j) ? style.selectedJoint : j == state.hoveredJoint ? hover : style.joint;
   }
+}
+
+bool hiddenBonesSelection(const EditorState& state, const SkeletonDrawList& list, SkeletonDrawList& out) {
+  out = SkeletonDrawList{};
+  if (state.view.showBones || state.doc.selection.empty()) return false;
+  std::vector<char> selected(static_cast<size_t>(state.doc.skeleton().size()), 0);
+  for (int j : state.doc.selection.joints())
+    if (j >= 0 && j < static_cast<int>(selected.size())) selected[j] = 1;
+  out = keepJoints(list, selected);
+  return !out.boneMatrices.empty() || !out.jointMatrices.empty();
 }
 
 }  // namespace kinema

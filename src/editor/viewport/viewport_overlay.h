@@ -16,4 +16,11 @@ void buildViewportOverlay(const EditorState& state, const ViewportView& view, co
 // and the hovered joint lighter.
 void colorSelection(const EditorState& state, SkeletonDrawList& list);
 
+// With the bones hidden (ViewOptions::showBones off) the selection is still drawn: `out`
+// gets the selected joints and the bones leaving them from `list` (coloured by
+// colorSelection), which the window draws x-ray over the body, as Blender shows the
+// selected bones of a hidden armature. Returns false (out empty) when the bones are shown
+// or nothing selected is drawn.
+bool hiddenBonesSelection(const EditorState& state, const SkeletonDrawList& list, SkeletonDrawList& out);
+
 }  // namespace kinema

@@ -49,12 +49,12 @@ glm::quat jointWorldRotation(const Document& doc, int joint) {
 }
 
 glm::vec3 ViewportTools::jointPosition(const EditorState& state, int joint) const {
-  return joint >= 0 && joint < static_cast<int>(state.world.size()) ? glm::vec3(state.world[joint][3]) : glm::vec3(0.0f);
+  return joint >= 0 && joint < static_cast<int>(state.world().size()) ? glm::vec3(state.world()[joint][3]) : glm::vec3(0.0f);
 }
 
 bool ViewportTools::gizmo(const EditorState& state, const ViewportView& view, RotateGizmo& out) const {
   const int j = state.doc.selection.active();
-  if (!state.view.showGizmo || j < 0 || j >= static_cast<int>(state.world.size())) return false;
+  if (!state.view.showGizmo || j < 0 || j >= static_cast<int>(state.world().size())) return false;
   out = RotateGizmo{};
   out.pivot = jointPosition(state, j);
   out.axesRotation = RotateGizmo::axesFor(state.view.localGizmo ? GizmoOrientation::Local : GizmoOrientation::Global,
@@ -97,17 +97,17 @@ SkeletonPick ViewportTools::pickAt(const EditorState& state, const ViewportView&
   const Scene& scene = state.doc.scene();
   if (scene.meshInstances.empty()) return pick;
   if (deformedScene_ != &scene || deformedRevision_ != state.doc.meshRevision() ||
-      deformedChange_ != state.doc.changeCount() || deformedWorld_ != state.world) {
+      deformedChange_ != state.doc.changeCount() || deformedPose_ != state.doc.poseRevision()) {
     deformed_.clear();
     SceneDeformationJob job;
     job.scene = &scene;
-    job.world = &state.world;
+    job.world = &state.world();
     job.out = &deformed_;
     if (!job.run()) deformed_.clear();
     deformedScene_ = &scene;
     deformedRevision_ = state.doc.meshRevision();
     deformedChange_ = state.doc.changeCount();
-    deformedWorld_ = state.world;
+    deformedPose_ = state.doc.poseRevision();
   }
   const MeshPick m = pickMeshJoint(scene, deformed_, view.rayThrough(mouse_));
   if (m.hit()) {
@@ -387,7 +387,7 @@ void ViewportTools::handle(EditorState& state, const InputEvent& e, const Viewpo
       if (state.tool.mode == ModalTool::GizmoDrag || state.tool.mode == ModalTool::IkDrag) {
         confirm(state);
       } else if (state.tool.mode == ModalTool::BoxSelect) {
-        const std::vector<int> inside = boxSelectJoints(state.world, view, state.tool.startMouse, mouse_);
+        const std::vector<int> inside = boxSelectJoints(state.world(), view, state.tool.startMouse, mouse_);
         state.tool = ToolState{};
         state.doc.selection.box(inside, (mods_ & kModShift)  ? BoxSelectMode::Extend
                                         : (mods_ & kModCtrl) ? BoxSelectMode::Subtract

@@ -63,10 +63,10 @@ class ViewportTools {
   RotateMode rotateMode_;
   SweepTracker sweep_;
   // The body deformed at the pose last picked on: hover picks on every mouse move, the pose
-  // changes far less often. Valid while the world transforms and the document's change
-  // count (skinning methods, binds) match.
+  // changes far less often. Valid while the pose revision and the document's change count
+  // (skinning methods, binds) match.
   mutable std::vector<DeformedPrimitive> deformed_;
-  mutable std::vector<glm::mat4> deformedWorld_;
+  mutable long long deformedPose_ = -1;  // Document::poseRevision the deformed meshes are of
   mutable long long deformedRevision_ = -1, deformedChange_ = -1;  // meshRevision, changeCount
   mutable const Scene* deformedScene_ = nullptr;
   glm::vec3 startTranslation_{0.0f};

@@ -1,4 +1,3 @@
-#include "editor/model/timeline.h"
 #include "editor/window/editor_window.h"
 
 #include <glad/gl.h>
@@ -250,14 +249,14 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       // Measured once per upload at the current pose, so framing and the grid take in the
       // body without reading vertices back every frame.
       MeshFrame now;
-      now.world = &state.world;
-      const Bounds body = meshes.deformedBounds(now), joints = jointBounds(state.world);
+      now.world = &state.world();
+      const Bounds body = meshes.deformedBounds(now), joints = jointBounds(state.world());
       if (!body.empty && !joints.empty)
         meshReach = glm::max(glm::max(joints.min - body.min, body.max - joints.max), glm::vec3(0.0f));
       return {};
     };
     auto viewBounds = [&state, &meshReach]() {
-      Bounds b = jointBounds(state.world);
+      Bounds b = jointBounds(state.world());
       if (!b.empty) {
         b.add(b.min - meshReach);
         b.add(b.max + meshReach);
@@ -276,9 +275,9 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     }
     EditorInput input;
     SkeletonDrawList list;  // last frame's drawing: picking casts rays against it
+    SkeletonDrawList selectionAlone;  // with the bones hidden: the selected bones (hiddenBonesSelection)
     OverlayDrawList overlay;
     AnimationDisplay animationDisplay;  // onion-skin ghosts, motion path (kept: the path is cached)
-    if (state.time == 0.0 && !state.playing) resetTimeline(state);  // frame 1 without a clip, as in Blender
     evaluateEditorPose(state);
     int fbw = 0, fbh = 0, ww = 0, wh = 0;
     glfwGetFramebufferSize(window, &fbw, &fbh);
@@ -372,12 +371,12 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         }
         SkeletonDrawJob job;
         job.parents = &state.doc.skeleton().parents;
-        job.world = &state.world;
+        job.world = &state.world();
         job.shownJoints = &skinJoints;
         job.run(list);
         MeshDraw meshDraw;
         meshDraw.renderer = &meshes;
-        meshDraw.frame.world = &state.world;
+        meshDraw.frame.world = &state.world();
         std::vector<std::vector<float>> morphWeights;  // animated blend shapes at the playhead
         if (!meshes.empty()) morphWeights = sampleMorphWeights(state.doc.scene(), state.hasMotion() ? state.clip : -1, state.time);
         meshDraw.frame.morphWeights = &morphWeights;
@@ -410,6 +409,11 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         description.bones = !state.view.showBones ? BoneDisplay::None
                             : state.view.xrayBones ? BoneDisplay::XRay
                                                    : BoneDisplay::On;
+        // Bones hidden: the selected ones alone, x-ray over the body, so the selection shows.
+        if (hiddenBonesSelection(state, list, selectionAlone)) {
+          description.skeleton = &selectionAlone;
+          description.bones = BoneDisplay::XRay;
+        }
         if (!state.compare.active) renderer.draw(description);  // the compare mode draws with ImGui
       }
       imguiBackendsRenderDrawData(ImGui::GetDrawData());

@@ -116,11 +116,11 @@ json dopeSheetJson(const EditorState& s) {
     const Clip& clip = s.doc.scene().clips[s.clip];
     for (const DopeSheetRow& r : dopeSheetRows(clip)) {
       json frames = json::array();
-      for (float t : r.times) frames.push_back(timeToFrame(clip, t));
+      for (float t : r.times) frames.push_back(clip.timeToFrame(t));
       rows.push_back({{"joint", r.joint < 0 ? json("Summary") : jointName(s, r.joint)}, {"frames", frames}});
     }
     for (const KeyColumn& c : ds.selection.columns())
-      selected.push_back({{"joint", jointName(s, c.joint)}, {"frame", timeToFrame(clip, c.time)}});
+      selected.push_back({{"joint", jointName(s, c.joint)}, {"frame", clip.timeToFrame(c.time)}});
   }
   out["rows"] = rows;
   out["selected"] = selected;
@@ -134,7 +134,7 @@ void addAnimationDisplayState(const EditorState& s, json& out) {
   json ghosts = json::array();
   if (o.enabled && s.hasMotion()) {
     const Clip& clip = s.doc.scene().clips[s.clip];
-    for (const GhostFrame& g : ghostFrames(o, clipFrameAt(clip, s.time), clipFrameAt(clip, clip.duration()) + 1))
+    for (const GhostFrame& g : ghostFrames(o, clip.nearestFrame(s.time), clip.nearestFrame(clip.duration()) + 1))
       ghosts.push_back({{"frame", g.frame}, {"offset", g.offset}, {"color", json::array({g.color.r, g.color.g, g.color.b, g.color.a})}});
   }
   out["onion_skin"] = {{"enabled", o.enabled}, {"before", o.before}, {"after", o.after}, {"step", o.step},
@@ -157,6 +157,7 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
   out["undo_depth"] = doc.historyPosition();
   out["redo_depth"] = static_cast<int>(doc.historyLabels().size()) - doc.historyPosition();
   out["frames"] = frames;
+  out["world_evaluations"] = doc.worldEvaluations();  // forward kinematics runs of this document (one per pose change)
   out["window"] = {{"width", windowWidth}, {"height", windowHeight}};
   out["viewport"] = {{"x", s.viewportRect.x}, {"y", s.viewportRect.y}, {"width", s.viewportRect.z},
                      {"height", s.viewportRect.w}};
@@ -169,6 +170,7 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
   for (int j : doc.selection.joints()) selection.push_back(jointName(s, j));
   out["selection"] = selection;
   out["active"] = jointName(s, doc.selection.active());
+  out["properties_joint"] = jointName(s, s.panels.propertiesJoint);  // the joint the properties panel showed
   out["hovered"] = jointName(s, s.hoveredJoint);
   out["auto_ik"] = s.view.autoIk;
   out["bones"] = !s.view.showBones ? "none" : s.view.xrayBones ? "x-ray" : "on";
@@ -203,7 +205,7 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
       e["rotation"] = json::array({q.x, q.y, q.z, q.w});
       e["translation"] = vec(doc.pose().local[j].translation);
     }
-    if (j < static_cast<int>(s.world.size())) e["world_position"] = vec(glm::vec3(s.world[j][3]));
+    if (j < static_cast<int>(s.world().size())) e["world_position"] = vec(glm::vec3(s.world()[j][3]));
     joints.push_back(e);
   }
   out["joints"] = joints;

@@ -1,0 +1,165 @@
+// One frame grid per clip (issue 17): a clip without its own frame time (glTF) is counted at
+// kDefaultFrameRate (24 fps) by the timeline, the dope sheet, the curve editor, the onion
+// skin, the motion path and motion control alike. Before, the timeline counted at 24 and
+// the others at 30, so on Fox.glb the timeline said 31 where the dope sheet said 39.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "anim/sampling.h"
+#include "editor/model/curve_editor.h"
+#include "editor/model/document_files.h"
+#include "editor/model/dope_sheet.h"
+#include "editor/model/editor_state.h"
+#include "editor/model/motion_control.h"
+#include "editor/model/motion_path.h"
+#include "editor/model/onion_skin.h"
+#include "editor/model/timeline.h"
+#include "io/scene.h"
+#include "test_support.h"
+
+namespace kinema {
+namespace {
+
+// A glTF-like clip (no frame grid) moving the root along X with x = 24 t: at 24 fps the
+// root's x is the frame number, which makes every view's frame easy to check by hand.
+// Linear keys at 0, at frame 31 (31/24 s) and at 2 s.
+Scene gltfLikeScene() {
+  Scene scene;
+  scene.skeleton.addJoint("Root", -1, Transform{});
+  scene.skeleton.addJoint("Tip", 0, Transform{glm::vec3(0, 1, 0)});
+  Clip clip;
+  clip.name = "glTF";
+  const float t31 = static_cast<float>(31.0 / 24.0);
+  clip.channels.push_back(Channel{0, ChannelTarget::Translation, Interpolation::Linear, {0.0f, t31, 2.0f},
+                                  {glm::vec4(0), glm::vec4(31, 0, 0, 0), glm::vec4(48, 0, 0, 0)}});
+  EXPECT_EQ(clip.frameTime, 0.0);  // as glTF clips come in
+  scene.clips.push_back(clip);
+  return scene;
+}
+
+float rootX(const std::vector<glm::mat4>& world) { return world[0][3].x; }
+
+TEST(FrameGrid, AClipWithoutAGridCountsAtTwentyFourFps) {
+  Clip clip;
+  EXPECT_DOUBLE_EQ(clip.secondsPerFrame(), 1.0 / 24.0);  // Blender's default
+  EXPECT_DOUBLE_EQ(clip.framesPerSecond(), 24.0);
+  EXPECT_FLOAT_EQ(clip.frameToTime(31), 31.0f / 24.0f);
+  EXPECT_EQ(clip.nearestFrame(1.3), 31);  // 31.2
+  EXPECT_DOUBLE_EQ(clip.timeToFrame(0.5), 12.0);
+  clip.frameTime = 1.0 / 30.0;  // a clip's own grid wins
+  EXPECT_EQ(clip.nearestFrame(1.3), 39);
+}
+
+// Regression: before, the dope sheet, curve editor, onion skin, motion path and motion
+// control counted this clip at 30 fps (frame 31 of the timeline was their 38.75), so each
+// check below after the timeline's failed.
+TEST(FrameGrid, TimelineDopeSheetCurveEditorAndOnionSkinAgreeOnAGltfClip) {
+  EditorState s;
+  s.doc = Document(gltfLikeScene());
+  resetTimeline(s);
+  const Clip& clip = s.doc.scene().clips[0];
+  const float t31 = static_cast<float>(31.0 / 24.0);
+
+  // Timeline: frame 31 is at 31/24 s and shows the root at x = 31.
+  goToFrame(s, 31);
+  EXPECT_EQ(currentFrame(s), 31);
+  EXPECT_DOUBLE_EQ(s.time, t31);
+  EXPECT_DOUBLE_EQ(timelineFps(s), 24.0);
+  EXPECT_NEAR(rootX(s.world()), 31.0f, 1e-4f);
+
+  // Dope sheet: the key at 31/24 s is in frame column 31 (a box over frame 31 takes it),
+  // and moving it two frames lands on frame 33 = 33/24 s.
+  const std::vector<DopeSheetRow> rows = dopeSheetRows(clip);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_NEAR(clip.timeToFrame(rows[1].times[1]), 31.0, 1e-4);
+  const std::vector<KeyColumn> box = columnsInBox(clip, rows, 31.0, 31.0, 1, 1);
+  ASSERT_EQ(box.size(), 1u);
+  EXPECT_FLOAT_EQ(box[0].time, t31);
+  Clip moved = clip;
+  moveKeyColumns(moved, box, 2.0);
+  EXPECT_FLOAT_EQ(moved.channels[0].times[1], 33.0f / 24.0f);
+
+  // Curve editor: a key dragged to 1.3 s snaps to frame 31 (31.2 rounds down), not 1.3 s
+  // (frame 39 of 30 fps).
+  EXPECT_FLOAT_EQ(snapToFrame(clip, 1.3f), t31);
+
+  // Onion skin: one ghost each side of frame 31, one frame apart: frames 30 and 32, posed
+  // at 30/24 and 32/24 s (the root at x = 30 and 32).
+  OnionSkinSettings onion;
+  onion.enabled = true;
+  onion.before = onion.after = onion.step = 1;
+  const std::vector<GhostFrame> ghosts = ghostFrames(onion, clip.nearestFrame(s.time), clip.nearestFrame(clip.duration()) + 1);
+  ASSERT_EQ(ghosts.size(), 2u);
+  EXPECT_EQ(ghosts[0].frame, 30);
+  EXPECT_EQ(ghosts[1].frame, 32);
+  const std::vector<std::vector<glm::mat4>> poses = ghostPoses(s.doc.scene(), 0, ghosts);
+  ASSERT_EQ(poses.size(), 2u);
+  EXPECT_NEAR(rootX(poses[0]), 30.0f, 1e-4f);
+  EXPECT_NEAR(rootX(poses[1]), 32.0f, 1e-4f);
+
+  // Motion path: one point per frame, at the frame's x.
+  const MotionPath path = computeMotionPath(s.doc.scene(), 0, 0, 30, 32);
+  ASSERT_EQ(path.points.size(), 3u);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(path.points[i].x, 30.0f + i, 1e-4f) << "frame " << 30 + i;
+  EXPECT_EQ(path.keyed, (std::vector<char>{0, 1, 0}));  // the key on frame 31
+
+  // Motion control bakes one key per frame: 48 intervals over the 2 s path.
+  ASSERT_EQ(applyMotionControl(s.doc, 0, 0, MotionControlProfile::ConstantSpeed), "");
+  const Channel& baked = s.doc.scene().clips[0].channels[0];
+  ASSERT_EQ(baked.keyCount(), 49);
+  EXPECT_NEAR(baked.times[1] - baked.times[0], 1.0 / 24.0, 1e-6);
+}
+
+TEST(FrameGrid, SettingTheRateInTheTimelineIsSavedAndEveryViewFollows) {
+  EditorState s;
+  s.doc = Document(gltfLikeScene());
+  resetTimeline(s);
+  ASSERT_EQ(setFrameRate(s, 30.0), "");  // the timeline's fps field
+  const Clip& clip = s.doc.scene().clips[0];
+  EXPECT_DOUBLE_EQ(clip.frameTime, 1.0 / 30.0);
+  EXPECT_EQ(frameAtTime(s, 1.3), 39);
+  EXPECT_FLOAT_EQ(snapToFrame(clip, 1.3f), static_cast<float>(39.0 / 30.0));
+  EXPECT_NEAR(clip.timeToFrame(1.3f), 39.0, 1e-4);
+  // Saved with the clip (.kinema frame_time) and read back.
+  const std::string dir = test::makeTempDir(), path = dir + "/rate.kinema";
+  ASSERT_EQ(saveDocumentAs(s.doc, path), "");
+  Result<Document> back = openDocument(path);
+  ASSERT_TRUE(back.ok()) << back.error();
+  EXPECT_DOUBLE_EQ(back.value().scene().clips[0].frameTime, 1.0 / 30.0);
+  test::runCommand("rm -rf '" + dir + "'");
+}
+
+// The file of issue 17's report: Fox.glb's clips have no frame grid. At every key of its
+// first clip the timeline's frame, the dope sheet's column and the curve editor's snapped
+// frame are round(t * 24).
+TEST(FrameGrid, FoxFramesAgreeAcrossTheViews) {
+  KINEMA_REQUIRE_SHARED_DATA();
+  Result<Document> opened = openDocument(test::sharedDataDir() + "/gltf/Fox.glb");
+  ASSERT_TRUE(opened.ok()) << opened.error();
+  EditorState s;
+  s.doc = std::move(opened.value());
+  resetTimeline(s);
+  ASSERT_FALSE(s.doc.scene().clips.empty());
+  const Clip& clip = s.doc.scene().clips[0];
+  ASSERT_EQ(clip.frameTime, 0.0) << "Fox.glb's clips have no frame grid";
+  const std::vector<DopeSheetRow> rows = dopeSheetRows(clip);
+  ASSERT_GT(rows.size(), 1u);
+  int checked = 0;
+  for (float t : rows[0].times) {
+    const long long expected = std::llround(double(t) * 24.0);
+    EXPECT_EQ(frameAtTime(s, t), expected) << "timeline at " << t;
+    EXPECT_EQ(std::llround(clip.timeToFrame(t)), expected) << "dope sheet at " << t;
+    EXPECT_EQ(clip.nearestFrame(snapToFrame(clip, t)), expected) << "curve editor at " << t;
+    goToFrame(s, expected);
+    EXPECT_EQ(clip.nearestFrame(s.time), expected) << "onion skin's current frame at " << t;
+    ++checked;
+  }
+  EXPECT_GT(checked, 10);
+  // The report's case: 1.3 s is frame 31 in the timeline and in the dope sheet.
+  EXPECT_EQ(frameAtTime(s, 1.3), 31);
+  EXPECT_EQ(std::llround(clip.timeToFrame(1.3)), 31);
+}
+
+}  // namespace
+}  // namespace kinema
