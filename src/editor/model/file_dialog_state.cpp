@@ -12,15 +12,13 @@ namespace kinema {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-void setField(FileDialogState& d, const std::string& text) {
+void setFileDialogField(FileDialogState& d, const std::string& text) {
   std::snprintf(d.path, sizeof(d.path), "%s", text.c_str());
 }
 
-bool isSave(FileDialogPurpose p) { return p != FileDialogPurpose::Open; }
+bool isSaveDialog(FileDialogPurpose p) { return p != FileDialogPurpose::Open; }
 
-void relist(FileDialogState& d, const std::string& folder) {
+void relistFileDialog(FileDialogState& d, const std::string& folder) {
   Result<FolderListing> listing = listFolder(folder, fileDialogExtensions(d.purpose));
   if (!listing) {
     d.listingError = listing.error();
@@ -30,8 +28,6 @@ void relist(FileDialogState& d, const std::string& folder) {
   d.listing = std::move(listing.value());
   d.folder = d.listing.folder;
 }
-
-}  // namespace
 
 const char* fileDialogTitle(FileDialogPurpose purpose) {
   switch (purpose) {
@@ -64,7 +60,7 @@ std::string resolveDialogPath(const FileDialogState& d) {
   fs::path p(typed);
   if (p.is_relative()) p = fs::path(d.folder.empty() ? "." : d.folder) / p;
   std::string resolved = p.lexically_normal().string();
-  if (isSave(d.purpose)) resolved = withExtension(resolved, fileDialogExtensions(d.purpose).front());
+  if (isSaveDialog(d.purpose)) resolved = withExtension(resolved, fileDialogExtensions(d.purpose).front());
   return resolved;
 }
 
@@ -79,12 +75,12 @@ void openFileDialog(FileDialogState& d, FileDialogPurpose purpose, const std::st
     if (p.has_parent_path()) folder = p.parent_path().string();
     name = p.filename().string();
     // A save purpose proposes the document's name with the purpose's extension.
-    if (isSave(purpose)) name = p.stem().string() + fileDialogExtensions(purpose).front();
+    if (isSaveDialog(purpose)) name = p.stem().string() + fileDialogExtensions(purpose).front();
     else name.clear();
   }
-  relist(d, folder);
-  if (!d.listingError.empty()) relist(d, ".");
-  setField(d, name);
+  relistFileDialog(d, folder);
+  if (!d.listingError.empty()) relistFileDialog(d, ".");
+  setFileDialogField(d, name);
 }
 
 }  // namespace kinema

@@ -27,6 +27,13 @@ std::vector<std::string> fileDialogExtensions(FileDialogPurpose purpose);
 
 // Shows the dialog; `startPath` preselects a folder and name (the document's path).
 void openFileDialog(FileDialogState& dialog, FileDialogPurpose purpose, const std::string& startPath);
+// Whether the purpose writes a file (Save As, the exports): those ask before replacing one.
+bool isSaveDialog(FileDialogPurpose purpose);
+// Lists `folder` for the dialog's purpose (the error lands in listingError, the old listing stays).
+void relistFileDialog(FileDialogState& dialog, const std::string& folder);
+// Puts `text` into the path field (cut to the field's size).
+void setFileDialogField(FileDialogState& dialog, const std::string& text);
+
 // The path the field names: absolute as typed, else relative to the listed folder, with the
 // purpose's extension appended for saves when it has none.
 std::string resolveDialogPath(const FileDialogState& dialog);

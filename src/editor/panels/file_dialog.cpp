@@ -14,26 +14,6 @@ namespace kinema {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-void setField(FileDialogState& d, const std::string& text) {
-  std::snprintf(d.path, sizeof(d.path), "%s", text.c_str());
-}
-
-bool isSave(FileDialogPurpose p) { return p != FileDialogPurpose::Open; }
-
-void relist(FileDialogState& d, const std::string& folder) {
-  Result<FolderListing> listing = listFolder(folder, fileDialogExtensions(d.purpose));
-  if (!listing) {
-    d.listingError = listing.error();
-    return;
-  }
-  d.listingError.clear();
-  d.listing = std::move(listing.value());
-  d.folder = d.listing.folder;
-}
-
-}  // namespace
 
 bool drawFileDialog(FileDialogState& d, const std::vector<std::string>& recentFiles, std::string& chosen) {
   if (!d.visible) return false;
@@ -52,7 +32,7 @@ bool drawFileDialog(FileDialogState& d, const std::vector<std::string>& recentFi
   }
   bool done = false;
   ImGui::TextUnformatted(d.folder.c_str());
-  if (ImGui::Button("Up")) relist(d, fs::path(d.folder).parent_path().string());
+  if (ImGui::Button("Up")) relistFileDialog(d, fs::path(d.folder).parent_path().string());
   ImGui::SameLine();
   ImGui::SetNextItemWidth(-1);
   if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
@@ -60,17 +40,17 @@ bool drawFileDialog(FileDialogState& d, const std::vector<std::string>& recentFi
                                  ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
   if (!d.listingError.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", d.listingError.c_str());
 
-  const float recentHeight = recentFiles.empty() || isSave(d.purpose) ? 0.0f : 96.0f;
+  const float recentHeight = recentFiles.empty() || isSaveDialog(d.purpose) ? 0.0f : 96.0f;
   if (ImGui::BeginListBox("##folder", ImVec2(-1, -ImGui::GetFrameHeightWithSpacing() * 2 - recentHeight))) {
     for (const FolderEntry& e : d.listing.entries) {
       const std::string label = e.isFolder ? e.name + "/" : e.name;
       const bool selected = !e.isFolder && e.name == d.path;
       if (ImGui::Selectable(label.c_str(), selected, ImGuiSelectableFlags_AllowDoubleClick)) {
         if (e.isFolder) {
-          relist(d, (fs::path(d.folder) / e.name).string());  // one click enters a folder
+          relistFileDialog(d, (fs::path(d.folder) / e.name).string());  // one click enters a folder
           break;  // the listing changed under the loop
         } else {
-          setField(d, e.name);
+          setFileDialogField(d, e.name);
           if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) accept = true;
         }
       }
@@ -82,13 +62,13 @@ bool drawFileDialog(FileDialogState& d, const std::vector<std::string>& recentFi
     if (ImGui::BeginListBox("##recent", ImVec2(-1, recentHeight - ImGui::GetTextLineHeightWithSpacing()))) {
       for (const std::string& r : recentFiles)
         if (ImGui::Selectable(r.c_str(), false, ImGuiSelectableFlags_AllowDoubleClick)) {
-          setField(d, r);
+          setFileDialogField(d, r);
           if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) accept = true;
         }
       ImGui::EndListBox();
     }
   }
-  if (ImGui::Button(isSave(d.purpose) ? "Save" : "Open", ImVec2(120, 0))) accept = true;
+  if (ImGui::Button(isSaveDialog(d.purpose) ? "Save" : "Open", ImVec2(120, 0))) accept = true;
   ImGui::SameLine();
   const bool escape = d.confirmOverwrite.empty() && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
   if (ImGui::Button("Cancel", ImVec2(120, 0)) || escape) {
@@ -102,9 +82,9 @@ bool drawFileDialog(FileDialogState& d, const std::vector<std::string>& recentFi
     if (path.empty()) {
       // Nothing typed: stay open.
     } else if (fs::is_directory(path, ec)) {
-      relist(d, path);
-      setField(d, "");
-    } else if (isSave(d.purpose) && fs::exists(path, ec)) {
+      relistFileDialog(d, path);
+      setFileDialogField(d, "");
+    } else if (isSaveDialog(d.purpose) && fs::exists(path, ec)) {
       d.confirmOverwrite = path;
       ImGui::OpenPopup("Replace file?");
     } else {

@@ -7,8 +7,8 @@ namespace kinema {
 
 // The editor's fixed panel layout (pixels, origin top left): outliner and history on the
 // left, properties and IK targets on the right, the status bar along the bottom, the
-// viewport in between. Fixed so that the layout is the same in every session and scripted
-// tests can click into it.
+// viewport in between. Scripts and the e2e tests find widgets by name (item_names.h), not by
+// these pixels, so the layout may change.
 struct PanelRect {
   float x, y, w, h;
 };
