@@ -15,6 +15,7 @@
 
 #include "editor/commands/editor_input.h"
 #include "editor/commands/keymap.h"
+#include "editor/model/key_codes.h"
 #include "editor/panels/editor_panels.h"
 #include "editor/window/imgui_backends.h"
 #include "editor/panels/panel_layout.h"
@@ -31,6 +32,15 @@
 #include "skin/scene_deformation.h"
 
 namespace kinema {
+
+// model/key_codes.h copies GLFW's key numbering so the window-free layers need no GLFW header;
+// live events pass GLFW's codes straight through, so the two must agree.
+static_assert(keys::A == GLFW_KEY_A && keys::Z == GLFW_KEY_Z && keys::Num0 == GLFW_KEY_0 && keys::SPACE == GLFW_KEY_SPACE,
+              "key_codes.h: letters, digits and space");
+static_assert(keys::ESCAPE == GLFW_KEY_ESCAPE && keys::HOME == GLFW_KEY_HOME && keys::F1 == GLFW_KEY_F1 &&
+                  keys::F25 == GLFW_KEY_F25 && keys::KP_0 == GLFW_KEY_KP_0 && keys::KP_ENTER == GLFW_KEY_KP_ENTER &&
+                  keys::LEFT_SHIFT == GLFW_KEY_LEFT_SHIFT && keys::MENU == GLFW_KEY_MENU,
+              "key_codes.h: named keys, function keys, keypad, modifiers");
 
 namespace {
 
