@@ -7,10 +7,10 @@ namespace kinema {
 
 namespace {
 
-const Command& commandOf(const std::string& id) {
+const Command* commandOf(const std::string& id) {
   const Command* c = editorCommands().find(id);
   IM_ASSERT(c && "a panel names a command the registry does not have");
-  return *c;
+  return c;
 }
 
 }  // namespace
@@ -24,25 +24,27 @@ void commandMenuItem(CommandContext& ctx, const Command& c, const std::string& i
 }
 
 bool commandButton(CommandContext& ctx, const std::string& id, const std::string& window, const char* shown, ImVec2 size) {
-  const Command& c = commandOf(id);
-  const bool enabled = c.isEnabled(ctx);
+  const Command* c = commandOf(id);
+  const bool enabled = c && c->isEnabled(ctx);
   ImGui::BeginDisabled(!enabled);
-  const bool clicked = ImGui::Button(shown ? shown : c.label.c_str(), size);
+  const bool clicked = ImGui::Button(shown ? shown : c ? c->label.c_str() : id.c_str(), size);
   ImGui::EndDisabled();
-  recordItem(ctx.state.items, window + "/" + c.label);
-  if (clicked && enabled) c.run(ctx);
+  if (!c) return false;
+  recordItem(ctx.state.items, window + "/" + c->label);
+  if (clicked && enabled) c->run(ctx);
   return clicked && enabled;
 }
 
 bool commandSelectable(CommandContext& ctx, const std::string& id, const std::string& window, const char* shown,
                        ImVec2 size) {
-  const Command& c = commandOf(id);
-  const bool enabled = c.isEnabled(ctx);
+  const Command* c = commandOf(id);
+  const bool enabled = c && c->isEnabled(ctx);
   ImGui::BeginDisabled(!enabled);
-  const bool clicked = ImGui::Selectable(shown, c.isChecked(ctx), 0, size);
+  const bool clicked = ImGui::Selectable(shown, c && c->isChecked(ctx), 0, size);
   ImGui::EndDisabled();
-  recordItem(ctx.state.items, window + "/" + c.label);
-  if (clicked && enabled) c.run(ctx);
+  if (!c) return false;
+  recordItem(ctx.state.items, window + "/" + c->label);
+  if (clicked && enabled) c->run(ctx);
   return clicked && enabled;
 }
 
