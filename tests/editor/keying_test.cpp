@@ -198,7 +198,7 @@ TEST(Keying, DeleteRemovesOnlyThatFramesKeysAsOneUndoStep) {
 TEST(Keying, AutoKeyRecordsAnFkEditInTheSameUndoStep) {
   Document doc = newDocument();
   doc.autoKey.enabled = true;
-  doc.setPlayhead({0, 0.25});
+  doc.setPlayheadTime(0.25);
   const int arm = joint(doc, "UpperArm.L");
   const Pose start = doc.pose();
   const glm::quat q = glm::angleAxis(0.9f, glm::normalize(glm::vec3(0.2f, 0.3f, 1.0f)));
@@ -225,7 +225,7 @@ TEST(Keying, AutoKeyRecordsAnFkEditInTheSameUndoStep) {
 TEST(Keying, AutoKeyRecordsTheChainOfAnIkDragOnce) {
   Document doc = newDocument();
   doc.autoKey.enabled = true;
-  doc.setPlayhead({0, 0.5});
+  doc.setPlayheadTime(0.5);
   const int hand = joint(doc, "Hand.L");
   const Pose start = doc.pose();
   ASSERT_EQ(beginAutoIkDrag(doc, hand, 3), "");

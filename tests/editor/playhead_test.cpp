@@ -103,7 +103,7 @@ TEST(Playhead, TheKinemaPlayheadRoundTripsExactly) {
 TEST(Playhead, ADocumentNoTimelineShowedSavesNoPlayhead) {
   Document doc(movingRootScene());
   EXPECT_FALSE(doc.sceneForSaving().playhead.has_value());  // opens on the clip's start frame
-  doc.setPlayhead({0, 0.25});
+  doc.setPlayheadTime(0.25);
   ASSERT_TRUE(doc.sceneForSaving().playhead.has_value());
   EXPECT_EQ(doc.sceneForSaving().playhead->time, 0.25);
 }

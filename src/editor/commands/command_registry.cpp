@@ -48,11 +48,12 @@ const CommandRegistry& editorCommands() {
   static const CommandRegistry registry = [] {
     CommandRegistry r;
     std::vector<Command> all;
-    // Menu order: File, Edit, View, Pose, Teach, Help; commands without a menu anywhere.
+    // Menu order: File, Edit, View, Pose, Clip, Teach, Help; commands without a menu anywhere.
     addFileCommands(all);
     addEditCommands(all);
     addViewCommands(all);
     addPoseCommands(all);
+    addClipCommands(all);
     addTimelineCommands(all);
     addAnimationEditorCommands(all);
     addCompareCommands(all);

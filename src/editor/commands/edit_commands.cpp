@@ -4,6 +4,7 @@
 #include "editor/commands/file_commands.h"
 #include "editor/model/key_codes.h"
 #include "editor/model/pose_edits.h"
+#include "editor/model/timeline.h"
 
 namespace kinema {
 
@@ -26,12 +27,16 @@ void addEditCommands(std::vector<Command>& out) {
   out.push_back(CommandDef("edit.undo", "Undo").menu("Edit").key(keys::Z, kModCtrl)
                     .enabled([](const CommandContext& c) { return idle(c) && c.state.doc.canUndo(); })
                     .run([](CommandContext& c) {
-                      if (c.state.doc.undo()) c.state.statusMessage = "Undo";
+                      if (!c.state.doc.undo()) return;
+                      c.state.statusMessage = "Undo";
+                      followDocumentClip(c.state);  // an undone clip list change: its active clip again
                     }));
   out.push_back(CommandDef("edit.redo", "Redo").menu("Edit").key(keys::Z, kModCtrl | kModShift).key(keys::Y, kModCtrl)
                     .enabled([](const CommandContext& c) { return idle(c) && c.state.doc.canRedo(); })
                     .run([](CommandContext& c) {
-                      if (c.state.doc.redo()) c.state.statusMessage = "Redo";
+                      if (!c.state.doc.redo()) return;
+                      c.state.statusMessage = "Redo";
+                      followDocumentClip(c.state);
                     }));
   out.push_back(CommandDef("edit.copy_pose", "Copy Pose").menu("Edit", true).key(keys::C, kModCtrl)
                     .hint("copy the selected joints' pose").enabled(hasSelection)

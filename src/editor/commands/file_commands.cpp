@@ -1,5 +1,6 @@
 // New / Open / Save / Save As / Export / Quit as the menu and its shortcuts run them, the
 // "discard unsaved changes?" guard, recent files, and the autosave + recovery session.
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 
@@ -147,12 +148,14 @@ void finishFileDialog(EditorState& state, const std::string& path) {
     return;
   }
   std::vector<std::string> report;
-  if (const std::string error = exportDocument(state.doc, path, &report, state.clip); !error.empty()) {
+  if (const std::string error = exportDocument(state.doc, path, &report); !error.empty()) {
     showEditorError(state, error);
     return;
   }
   state.statusMessage = "Exported " + path;
   for (const std::string& line : report) state.statusMessage += "; " + line;
+  // The status line may be cut short: what the format lost also goes to stderr, in full.
+  for (const std::string& line : report) std::fprintf(stderr, "kinema edit: %s: %s\n", path.c_str(), line.c_str());
 }
 
 double autosaveIntervalSeconds() {

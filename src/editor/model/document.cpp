@@ -58,18 +58,31 @@ std::atomic<long long> nextPoseRevision{1};
 
 }  // namespace
 
-Document::Document() { poseChanged(); }
+Document::Document() {
+  poseChanged();
+  clipListRevision_ = nextPoseRevision++;
+}
 
 void Document::poseChanged() { poseRevision_ = nextPoseRevision++; }
 
+void Document::noteClipList(int activeBefore, size_t countBefore) {
+  if (activeBefore != activeClip_ || countBefore != scene_.clips.size()) clipListRevision_ = nextPoseRevision++;
+}
+
 Document::Document(Scene scene, std::string path) : scene_(std::move(scene)), path_(std::move(path)) {
   poseChanged();
+  clipListRevision_ = nextPoseRevision++;
   const int n = scene_.skeleton.size();
   pose_ = scene_.pose.size() == n && scene_.pose.validate(scene_.skeleton).empty() ? scene_.pose
                                                                                  : Pose::rest(scene_.skeleton);
   scene_.pose = Pose{};  // the document's pose_ is the one truth
-  savedPlayhead_ = playhead_ = scene_.playhead;
-  scene_.playhead.reset();  // playhead_ is the one the document saves
+  savedPlayhead_ = scene_.playhead;
+  if (scene_.playhead) {
+    playheadTime_ = scene_.playhead->time;
+    if (scene_.playhead->clip >= 0 && scene_.playhead->clip < static_cast<int>(scene_.clips.size()))
+      activeClip_ = scene_.playhead->clip;
+  }
+  scene_.playhead.reset();  // activeClip_ and playheadTime_ are what the document saves
   if (!scene_.ik.limits.empty()) scene_.ik.limits.resize(n);
   for (size_t i = 0; i < scene_.ik.targets.size(); ++i) {
     PoseIkTarget p;
@@ -106,7 +119,7 @@ const std::vector<glm::mat4>& Document::worldTransforms() const {
 Scene Document::sceneForSaving() const {
   Scene s = scene_;
   s.pose = pose_;
-  s.playhead = playhead_;
+  if (playheadTime_ || activeClip_ != 0) s.playhead = playhead();
   // The chain length is saved both as the root it resolves to (for other readers) and as
   // itself, with the solver, pinned and active flags.
   for (const PoseIkTarget& t : targets_) {
@@ -135,7 +148,7 @@ void Document::markSaved() {
 void Document::markModified() { savedReachable_ = false; }
 
 Document::Snapshot Document::capture() const {
-  return Snapshot{scene_.skeleton.names, pose_.local, scene_.ik.limits, targets_, skinning_, scene_.clips};
+  return Snapshot{scene_.skeleton.names, pose_.local, scene_.ik.limits, targets_, skinning_, scene_.clips, activeClip_};
 }
 
 void Document::restore(const Snapshot& s) {
@@ -146,12 +159,13 @@ void Document::restore(const Snapshot& s) {
   targets_ = s.targets;
   skinning_ = s.skinning;
   scene_.clips = s.clips;
+  activeClip_ = s.activeClip;
   syncSkinning();
 }
 
 DocumentEdit Document::editView() {
   return DocumentEdit{scene_.skeleton, scene_.skeleton.names, pose_, scene_.ik.limits, targets_, skinning_,
-                      scene_.clips};
+                      scene_.clips, activeClip_};
 }
 
 std::string Document::runChange(const std::function<std::string(DocumentEdit&)>& change, bool /*driven*/) {
@@ -181,6 +195,8 @@ std::string Document::runChange(const std::function<std::string(DocumentEdit&)>&
     const std::string bad = scene_.clips[c].validate(scene_.skeleton);
     if (!bad.empty()) return "clip " + std::to_string(c) + ": " + bad;
   }
+  // A change that removed clips without choosing another leaves the last one active.
+  activeClip_ = std::clamp(activeClip_, 0, std::max(static_cast<int>(scene_.clips.size()) - 1, 0));
   syncSkinning();
   if (autoSolveIk) {
     IkPosingInput in;
@@ -200,7 +216,7 @@ std::string Document::runChange(const std::function<std::string(DocumentEdit&)>&
     ScenePlayhead at = playhead();
     if (keyJoints(scene_.clips, at.clip, scene_.skeleton, pose_, changed, static_cast<float>(at.time),
                   autoKey.preferences) > 0) {
-      if (playhead_) playhead_->clip = at.clip;  // a new "Action" when the scene had no clip
+      activeClip_ = at.clip;  // a new "Action" when the scene had no clip
       const int clip = at.clip;
       const std::string bad = scene_.clips[clip].validate(scene_.skeleton);
       if (!bad.empty()) return "auto-key: clip " + std::to_string(clip) + ": " + bad;
@@ -245,6 +261,11 @@ EditRecord Document::diff(const std::string& label, const Snapshot& before) cons
   }
   r.clipCountBefore = static_cast<int>(before.clips.size());
   r.clipCountAfter = static_cast<int>(scene_.clips.size());
+  if (before.activeClip != activeClip_) {
+    r.activeClipChanged = true;
+    r.activeClipBefore = before.activeClip;
+    r.activeClipAfter = activeClip_;
+  }
   return r;
 }
 
@@ -264,6 +285,7 @@ std::string Document::edit(const std::string& label, const std::function<std::st
     return error;
   }
   EditRecord record = diff(label, before);
+  noteClipList(before.activeClip, before.clips.size());
   if (!record.empty()) {
     pushRecord(std::move(record));
     ++changeCount_;
@@ -298,9 +320,12 @@ std::string Document::beginDrag(const std::string& label) {
 
 std::string Document::updateDrag(const std::function<std::string(DocumentEdit&)>& change) {
   if (!drag_) return "no drag in progress";
+  const int active = activeClip_;
+  const size_t count = scene_.clips.size();
   restore(drag_->start);
   const std::string error = runChange(change, true);
   if (!error.empty()) restore(drag_->start);
+  noteClipList(active, count);
   ++changeCount_;
   return error;
 }
@@ -317,7 +342,10 @@ void Document::commitDrag() {
 
 void Document::cancelDrag() {
   if (!drag_) return;
+  const int active = activeClip_;
+  const size_t count = scene_.clips.size();
   restore(drag_->start);
+  noteClipList(active, count);
   drag_.reset();
   temporaryTarget_.reset();
   drivenTarget_ = -1;
@@ -343,6 +371,8 @@ void Document::apply(const EditRecord& r, bool forward) {
     skinning_ = forward ? r.skinningAfter : r.skinningBefore;
     syncSkinning();
   }
+  const int activeBefore = activeClip_;
+  const size_t countBefore = scene_.clips.size();
   if (!r.clips.empty()) {
     scene_.clips.resize(static_cast<size_t>(forward ? r.clipCountAfter : r.clipCountBefore));
     for (const EditRecord::ClipChange& c : r.clips) {
@@ -350,6 +380,8 @@ void Document::apply(const EditRecord& r, bool forward) {
       if (value) scene_.clips[c.clip] = *value;
     }
   }
+  if (r.activeClipChanged) activeClip_ = forward ? r.activeClipAfter : r.activeClipBefore;
+  noteClipList(activeBefore, countBefore);
   ikReports_.clear();
   ++changeCount_;
 }

@@ -31,6 +31,7 @@ struct DocumentEdit {
   std::vector<PoseIkTarget>& targets;  // the IK targets
   std::vector<SkinningMethod>& skinning;  // one per scene mesh instance (linear blend / dual quaternion)
   std::vector<Clip>& clips;            // the scene's clips: keys, ranges, names (validated after the change)
+  int& activeClip;                     // the clip the timeline plays and edits (clamped into clips after the change)
 };
 
 // The scene being edited plus everything the editor adds to it: the working pose, the IK
@@ -110,14 +111,25 @@ class Document {
   // equal to the current one changes nothing (not even poseRevision).
   bool setAnimatedPose(const Pose& pose);
 
-  // The timeline's playhead (clip index, time in seconds): what auto-key keys at and what a
-  // save writes (.kinema "playhead"). EditorState::clip / time are the playhead the views
-  // move; the timeline copies them here whenever they change (timeline.h
+  // The active clip: the index into scene().clips the timeline, dope sheet, curve editor
+  // and onion skin play and edit (Blender's active action); 0 when the scene has none. Part
+  // of the document: it changes only in an edit (DocumentEdit::activeClip, the clip list's
+  // commands, clip_list.h), so undo and redo bring it back, and a save writes it (.kinema
+  // "playhead.clip"). Opened from the file's playhead, else 0.
+  int activeClip() const { return activeClip_; }
+  // Changes whenever the active clip or the number of clips may have changed (edits, undo,
+  // redo, drags): the views compare it to follow the document (timeline.h
+  // followDocumentClip). Unique within the process, like poseRevision.
+  long long clipListRevision() const { return clipListRevision_; }
+  // The timeline's playhead: the active clip and the time in seconds, what auto-key keys at
+  // and what a save writes (.kinema "playhead"). EditorState::time is the time the views
+  // move; the timeline copies it here whenever it changes (timeline.h
   // syncDocumentPlayhead). Not an undo step, not a change to save. Until it is set (a
-  // document no timeline showed) it is the file's, else clip 0 at time 0, and a save writes
-  // none: such a file opens on its clip's start frame.
-  ScenePlayhead playhead() const { return playhead_.value_or(ScenePlayhead{}); }
-  void setPlayhead(const ScenePlayhead& playhead) { playhead_ = playhead; }
+  // document no timeline showed) it is the file's, else time 0, and a save writes a
+  // playhead only when the active clip is not the first: such a file opens on its clip's
+  // start frame.
+  ScenePlayhead playhead() const { return {activeClip_, playheadTime_.value_or(0.0)}; }
+  void setPlayheadTime(double seconds) { playheadTime_ = seconds; }
   // The playhead the file was saved with (.kinema "playhead"); empty for files without one
   // (glTF, BVH, older .kinema files, a new document), which open at the clip's start.
   const std::optional<ScenePlayhead>& savedPlayhead() const { return savedPlayhead_; }
@@ -151,6 +163,7 @@ class Document {
     std::vector<PoseIkTarget> targets;
     std::vector<SkinningMethod> skinning;
     std::vector<Clip> clips;
+    int activeClip = 0;
   };
   struct Drag {
     std::string label;
@@ -173,7 +186,12 @@ class Document {
   mutable std::vector<glm::mat4> world_;  // worldTransforms() of pose revision worldRevision_
   mutable long long worldRevision_ = -1;
   mutable long long worldEvaluations_ = 0;
-  std::optional<ScenePlayhead> playhead_, savedPlayhead_;
+  int activeClip_ = 0;
+  long long clipListRevision_ = 0;
+  // A new clipListRevision_ when the active clip or the clip count differs from these.
+  void noteClipList(int activeBefore, size_t countBefore);
+  std::optional<double> playheadTime_;
+  std::optional<ScenePlayhead> savedPlayhead_;
   std::vector<PoseIkTarget> targets_;
   long long meshRevision_ = 0;
   std::vector<SkinningMethod> skinning_;  // edited here, written into scene_.meshInstances after each change

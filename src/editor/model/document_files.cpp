@@ -81,8 +81,16 @@ std::string exportDocument(const Document& doc, const std::string& path, std::ve
     report->push_back("the working pose is not exported: the scene's clips are");
   }
   try {
-    if (bvhClip < 0 || bvhClip >= static_cast<int>(scene.clips.size())) bvhClip = 0;
-    if (ext == ".bvh") return saveBvh(path, scene.skeleton, &scene.clips[bvhClip], BvhWriteOptions{}, report);
+    if (bvhClip < 0) bvhClip = doc.activeClip();
+    if (bvhClip >= static_cast<int>(scene.clips.size())) bvhClip = 0;
+    if (ext == ".bvh") {
+      const size_t clips = scene.clips.size();
+      if (clips > 1 && report)
+        report->push_back("BVH holds one clip: wrote '" + scene.clips[bvhClip].name + "' (clip " +
+                          std::to_string(bvhClip + 1) + " of " + std::to_string(clips) + "), the other " +
+                          std::to_string(clips - 1) + " not written");
+      return saveBvh(path, scene.skeleton, &scene.clips[bvhClip], BvhWriteOptions{}, report);
+    }
     GltfWriteOptions options;
     options.binary = ext == ".glb";
     return saveGltf(path, scene, options, report);

@@ -23,9 +23,10 @@ std::string saveDocument(Document& doc);
 std::string saveDocumentAs(Document& doc, const std::string& path);
 // Export to .gltf, .glb or .bvh through the io writers. The document keeps its path and
 // dirty flag. `report` receives what the format could not hold.
-// BVH holds one clip: `bvhClip` (the timeline's, EditorState::clip), the first when out of range.
+// glTF writes every clip, in file order. BVH holds one clip: `bvhClip`, by default (-1) the
+// active one (Document::activeClip); when the scene has more, `report` says which went out.
 std::string exportDocument(const Document& doc, const std::string& path, std::vector<std::string>* report = nullptr,
-                           int bvhClip = 0);
+                           int bvhClip = -1);
 
 // The window title: the file's name (or "untitled"), a "*" when dirty, then " - Kinema".
 std::string documentTitle(const Document& doc);

@@ -47,9 +47,12 @@ struct EditRecord {
   };
   std::vector<ClipChange> clips;
   int clipCountBefore = 0, clipCountAfter = 0;
+  // The active clip (Document::activeClip) before and after, when the edit chose another.
+  bool activeClipChanged = false;
+  int activeClipBefore = 0, activeClipAfter = 0;
 
   bool empty() const { return pose.empty() && names.empty() && !limitsChanged && !targetsChanged && !skinningChanged &&
-                        !meshesBefore && clips.empty(); }
+                        !meshesBefore && clips.empty() && !activeClipChanged; }
 };
 
 // A linear undo history: entries [0, position) are applied, [position, size) can be redone.

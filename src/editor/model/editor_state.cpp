@@ -27,6 +27,7 @@ double EditorState::duration() const { return hasMotion() ? doc.scene().clips[cl
 void evaluateEditorPose(EditorState& state) {
   if (state.wasPlaying && !state.playing) state.sampleClip = true;  // paused: edit from this frame
   state.wasPlaying = state.playing;
+  followDocumentClip(state);  // after undo / redo of a clip list change: the document's active clip
   syncDocumentPlayhead(state);
   const EditorState::SampledAt now{state.clip, state.time, state.doc.poseRevision(), state.doc.changeCount()};
   if (state.sampleClip || (state.playing && !(now == state.sampledAt))) {

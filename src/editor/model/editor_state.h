@@ -72,7 +72,11 @@ struct EditorState {
   PanelState panels;   // the panels' own state: dialogs, buffers, clipboard, autosave (editor_panels.h)
 
   // --- Playback (files with motion): the playhead (timeline.h) ---
-  int clip = 0;            // the clip the timeline plays, when the scene has clips
+  // The clip the timeline plays, when the scene has clips: the views' copy of the
+  // document's active clip (Document::activeClip), which it follows (timeline.h
+  // followDocumentClip) as of the document's clipListRevision followedClipList.
+  int clip = 0;
+  long long followedClipList = -1;
   double time = 0.0;       // seconds; frames are the clip's grid (Clip::secondsPerFrame)
   bool playing = false;
   bool loop = true;        // playback wraps at the clip's end (sampling itself always clamps)

@@ -113,7 +113,9 @@ std::string insertKeys(Document& doc, int& clip, float time, const std::vector<i
     if (j < 0 || j >= doc.skeleton().size()) return "joint " + std::to_string(j) + " does not exist";
   int target = clip;
   const std::string error = doc.edit("Insert keyframes", [&](DocumentEdit& e) {
+    const int clipsBefore = static_cast<int>(e.clips.size());
     keyJoints(e.clips, target, e.skeleton, e.pose, joints, time, preferences);
+    if (static_cast<int>(e.clips.size()) > clipsBefore) e.activeClip = target;  // the new "Action" plays
     return std::string();
   });
   if (error.empty()) clip = target;

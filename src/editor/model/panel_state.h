@@ -38,6 +38,12 @@ struct PanelState {
   int nameJoint = -1;
   bool nameEditing = false;
 
+  // Clip list (the outliner's Clips section): the clip whose name is edited inline.
+  int renamingClip = -1;
+  bool clipRenameFocus = false;
+  char clipRenameBuffer[256] = {};
+  std::string clipRenameError;
+
   // IK panel (the target it shows is the active joint's: active_ik_target.h)
   int ikChainLength = 2;  // for "Add IK Target" (pose.add_ik_target)
 

@@ -48,7 +48,19 @@ long long rangeEndFrame(const EditorState& s) {
   return std::max(frameAtTime(s, clip->playEnd()), rangeStartFrame(s));
 }
 
-void syncDocumentPlayhead(EditorState& s) { s.doc.setPlayhead({s.clip, s.time}); }
+void syncDocumentPlayhead(EditorState& s) { s.doc.setPlayheadTime(s.time); }
+
+void followDocumentClip(EditorState& s) {
+  if (s.followedClipList == s.doc.clipListRevision()) return;
+  s.followedClipList = s.doc.clipListRevision();
+  const long long frame = currentFrame(s);  // on the grid of the clip shown until now
+  s.clip = s.doc.activeClip();
+  s.time = timeOfFrame(s, frame);
+  s.dopeSheet.selection.clear();
+  s.curveEditor.selected.clear();
+  syncDocumentPlayhead(s);
+  poseAtPlayhead(s);
+}
 
 void goToFrame(EditorState& s, long long frame) {
   s.time = timeOfFrame(s, frame);
@@ -59,14 +71,10 @@ void goToFrame(EditorState& s, long long frame) {
 void resetTimeline(EditorState& s) {
   s.playing = s.wasPlaying = s.sampleClip = false;
   const std::optional<ScenePlayhead>& saved = s.doc.savedPlayhead();
-  const int clips = static_cast<int>(s.doc.scene().clips.size());
-  if (saved && std::isfinite(saved->time) && saved->clip >= 0 && (saved->clip < clips || saved->clip == 0)) {
-    s.clip = saved->clip;
-    s.time = saved->time;
-  } else {
-    if (s.clip < 0 || s.clip >= clips) s.clip = 0;
-    s.time = timeOfFrame(s, rangeStartFrame(s));
-  }
+  s.clip = s.doc.activeClip();
+  s.followedClipList = s.doc.clipListRevision();
+  if (saved && std::isfinite(saved->time)) s.time = saved->time;
+  else s.time = timeOfFrame(s, rangeStartFrame(s));
   syncDocumentPlayhead(s);
   poseAtPlayhead(s);
 }
@@ -105,7 +113,7 @@ std::string setFrameRange(EditorState& s, long long start, long long end) {
   const std::string error = s.doc.edit("Set frame range", [&](DocumentEdit& e) {
     if (clip < 0 || clip >= static_cast<int>(e.clips.size())) {
       e.clips.push_back(newActionClip());
-      clip = static_cast<int>(e.clips.size()) - 1;
+      clip = e.activeClip = static_cast<int>(e.clips.size()) - 1;
     }
     Clip& c = e.clips[clip];
     c.hasRange = true;
@@ -127,7 +135,7 @@ std::string setFrameRate(EditorState& s, double fps) {
   const std::string error = s.doc.edit("Set frame rate", [&](DocumentEdit& e) {
     if (clip < 0 || clip >= static_cast<int>(e.clips.size())) {
       e.clips.push_back(newActionClip());
-      clip = static_cast<int>(e.clips.size()) - 1;
+      clip = e.activeClip = static_cast<int>(e.clips.size()) - 1;
     }
     Clip& c = e.clips[clip];
     c.frameTime = 1.0 / fps;

@@ -39,8 +39,8 @@ void poseAtPlayhead(EditorState& state);
 // Moves the playhead to `frame` (also the auto-key time) and poses the document from the
 // clip there (while not playing). Frames outside the range are allowed, as in Blender.
 void goToFrame(EditorState& state, long long frame);
-// A new or opened document: stopped, with the playhead where the file saved it
-// (Document::savedPlayhead, .kinema "playhead") or, for files without one (glTF, BVH,
+// A new or opened document: stopped, on its active clip (Document::activeClip), with the
+// playhead where the file saved it (Document::savedPlayhead, .kinema "playhead") or, for files without one (glTF, BVH,
 // older .kinema), on the edited clip's start frame (frame 1 without a clip); then the
 // document is posed from the clip there (poseAtPlayhead), so the first frame drawn shows
 // the pose at the playhead, not the rest pose.
@@ -54,10 +54,17 @@ void togglePlayback(EditorState& state);
 // Playback: advances by dt seconds within the range, wrapping when looping, else stopping
 // at the end.
 void advanceTimeline(EditorState& state, double dt);
-// Copies the playhead (EditorState::clip, time) into the document (Document::setPlayhead):
-// what auto-key keys at and a save writes. Every function here that moves the playhead
-// calls it, and so does evaluateEditorPose each frame.
+// Copies the playhead's time (EditorState::time) into the document
+// (Document::setPlayheadTime): what auto-key keys at and a save writes. Every function here
+// that moves the playhead calls it, and so does evaluateEditorPose each frame.
 void syncDocumentPlayhead(EditorState& state);
+// EditorState::clip follows the document's active clip (Document::activeClip) after an
+// edit, undo or redo changed it or the clip list (Document::clipListRevision): the frame
+// number stays (Blender keeps the current frame when the action changes), the dope sheet's
+// and curve editor's key selections (keys of the other clip) are cleared, and the document
+// is posed from the clip there. Nothing when the document's clips did not change since the
+// last call. The clip list's commands, undo, redo and evaluateEditorPose call it.
+void followDocumentClip(EditorState& state);
 
 // The frame range and rate are part of the clip (undo steps; a clip is created when the
 // scene has none). Errors are one line for the status bar.

@@ -16,7 +16,12 @@ namespace kinema {
 void drawEditorPanels(CommandContext& ctx, float fps);
 
 void drawMainMenuBar(CommandContext& ctx);     // File / Edit / View / Pose / Teach / Help, from the registry
-void drawOutlinerPanel(EditorState& state);   // joint tree, search, select, rename
+void drawOutlinerPanel(CommandContext& ctx);  // joint tree, search, select, rename; the clip list under it
+// The clip list at the bottom of the outliner (clip_list_panel.cpp): choose, new, duplicate,
+// rename, delete; clipListHeight is what it takes of the outliner's height.
+void drawClipList(CommandContext& ctx);
+float clipListHeight(const EditorState& state);
+void drawClipMenuList(CommandContext& ctx);  // the Clip menu's list of clips (a click chooses)
 void drawPropertiesPanel(EditorState& state); // active joint: rotation, location, limits
 void drawIkTargetsPanel(CommandContext& ctx);  // IK targets and the active joint's target settings
 void drawHistoryPanel(EditorState& state);    // undo stack, click to jump

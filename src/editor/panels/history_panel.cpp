@@ -7,6 +7,7 @@
 #include "editor/panels/editor_panels.h"
 #include "editor/panels/item_names.h"
 #include "editor/panels/panel_layout.h"
+#include "editor/model/timeline.h"
 
 namespace kinema {
 
@@ -38,6 +39,7 @@ void drawHistoryPanel(EditorState& state) {
     ImGui::SetScrollHereY(1.0f);  // keep the newest step in view
   if (jump >= 0 && jump != position && !doc.dragging()) {
     if (doc.jumpToHistory(jump)) state.statusMessage = "History: " + std::to_string(jump) + " step(s) applied";
+    followDocumentClip(state);  // the active clip of that step
   }
   ImGui::End();
 }

@@ -2,7 +2,8 @@
 // registry: each command with a menu path is an item there, in the registry's order, with
 // the active keymap's shortcut. The keys themselves are dispatched by the window's input
 // routing (commands/editor_input.h), not here. Two entries are not commands: File > Open
-// Recent (one item per recent file) and the Pose menu's chain-length slider.
+// Recent (one item per recent file), the Pose menu's chain-length slider and the Clip
+// menu's list of clips.
 #include <imgui.h>
 
 #include <algorithm>
@@ -40,6 +41,8 @@ void drawExtrasAfter(CommandContext& ctx, const std::string& id) {
     ImGui::SetNextItemWidth(80);
     ImGui::SliderInt("Chain length", &p.ikChainLength, 1, 8);
     recordItem(state.items, "Pose/Chain length");
+  } else if (id == "clip.next") {
+    drawClipMenuList(ctx);  // the clips by name, the active one checked
   }
 }
 

@@ -1,6 +1,6 @@
 // The outliner: the joint tree (collapsible, indented by parent) with a search box that
 // keeps matching joints and their ancestors; click selects (Shift toggles), double-click
-// renames in place.
+// renames in place. The clip list sits under the tree (clip_list_panel.cpp).
 #include <imgui.h>
 
 #include <cstdio>
@@ -24,7 +24,8 @@ void startRename(PanelState& p, int joint, const std::string& name) {
 
 }  // namespace
 
-void drawOutlinerPanel(EditorState& state) {
+void drawOutlinerPanel(CommandContext& ctx) {
+  EditorState& state = ctx.state;
   Document& doc = state.doc;
   PanelState& p = state.panels;
   const Skeleton& s = doc.skeleton();
@@ -42,7 +43,7 @@ void drawOutlinerPanel(EditorState& state) {
   if (static_cast<int>(p.collapsed.size()) != s.size()) p.collapsed.assign(static_cast<size_t>(s.size()), false);
   if (p.renaming >= s.size()) p.renaming = -1;
 
-  ImGui::BeginChild("##tree");
+  ImGui::BeginChild("##tree", ImVec2(0, -clipListHeight(state)));
   const std::vector<OutlinerRow> rows = outlinerRows(s, p.search, p.collapsed);
   if (rows.empty()) ImGui::TextDisabled(s.empty() ? "no joints" : "no joint matches");
   const float toggleWidth = ImGui::CalcTextSize("+").x + 2.0f * ImGui::GetStyle().FramePadding.x;
@@ -94,6 +95,7 @@ void drawOutlinerPanel(EditorState& state) {
     ImGui::PopID();
   }
   ImGui::EndChild();
+  drawClipList(ctx);
   ImGui::End();
 }
 

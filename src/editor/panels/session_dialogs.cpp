@@ -191,7 +191,7 @@ void drawEditorPanels(CommandContext& ctx, float fps) {
     return;
   }
   drawMainMenuBar(ctx);
-  drawOutlinerPanel(state);
+  drawOutlinerPanel(ctx);
   drawHistoryPanel(state);
   drawPropertiesPanel(state);
   drawIkTargetsPanel(ctx);

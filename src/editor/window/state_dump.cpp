@@ -162,6 +162,9 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
   out["viewport"] = {{"x", s.viewportRect.x}, {"y", s.viewportRect.y}, {"width", s.viewportRect.z},
                      {"height", s.viewportRect.w}};
   out["playback"] = {{"clip", s.hasMotion() ? s.clip : -1}, {"time", s.time}, {"playing", s.playing}};
+  json clipNames = json::array();  // the clip list in file order; playback.clip indexes it
+  for (const Clip& c : doc.scene().clips) clipNames.push_back(c.name);
+  out["clips"] = clipNames;
   out["timeline"] = timelineJson(s, windowWidth, windowHeight);
   out["tool"] = modalToolName(s.tool.mode);
   out["compare"] = compareStateJson(s.compare);  // Teach > Compare Solvers (docs/cli.md)
