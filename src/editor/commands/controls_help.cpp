@@ -14,6 +14,7 @@ struct Gesture {
 // compare_mode.h). Panels' own gestures are listed under Global.
 const Gesture kGestures[] = {
     {CommandScope::Global, "Double-click a joint in the outliner", "rename it"},
+    {CommandScope::Global, "Click / double-click a clip in the clip list", "make it the active clip / rename it"},
     {CommandScope::Global, "Drag in the timeline's ruler", "scrub"},
     {CommandScope::Viewport, "Left click", "select a joint (Shift: add / toggle)"},
     {CommandScope::Viewport, "Left drag on empty space", "box select (Shift adds, Ctrl removes)"},

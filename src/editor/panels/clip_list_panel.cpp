@@ -90,16 +90,18 @@ void drawClipList(CommandContext& ctx) {
   // After the loop: a choice changes the document the rows were drawn from.
   if (chosen >= 0 && chosen != state.doc.activeClip() && !state.doc.dragging()) chooseClipInEditor(state, chosen);
   if (renamed >= 0) startClipRename(state, renamed);
-  // Four buttons sharing the row, whatever the panel's width.
-  const float spacing = ImGui::GetStyle().ItemSpacing.x * 0.5f;
-  const float w = std::max(1.0f, (ImGui::GetContentRegionAvail().x - 3 * spacing) / 4);
-  commandButton(ctx, "clip.new", "Clips", "New", ImVec2(w, 0));
-  ImGui::SameLine(0, spacing);
-  commandButton(ctx, "clip.duplicate", "Clips", "Duplicate", ImVec2(w, 0));
-  ImGui::SameLine(0, spacing);
-  commandButton(ctx, "clip.rename", "Clips", "Rename", ImVec2(w, 0));
-  ImGui::SameLine(0, spacing);
-  commandButton(ctx, "clip.delete", "Clips", "Delete", ImVec2(w, 0));
+  // Four buttons sharing the row, each as wide as its text needs, stretched (or squeezed)
+  // together to the panel's width.
+  const char* const ids[] = {"clip.new", "clip.duplicate", "clip.rename", "clip.delete"};
+  const char* const shown[] = {"New", "Duplicate", "Rename", "Delete"};
+  const float spacing = ImGui::GetStyle().ItemSpacing.x * 0.5f, pad = 2.0f * ImGui::GetStyle().FramePadding.x;
+  float natural = 0.0f;
+  for (const char* text : shown) natural += ImGui::CalcTextSize(text).x + pad;
+  const float scale = std::max(ImGui::GetContentRegionAvail().x - 3 * spacing, 4.0f) / natural;
+  for (int b = 0; b < 4; ++b) {
+    if (b > 0) ImGui::SameLine(0, spacing);
+    commandButton(ctx, ids[b], "Clips", shown[b], ImVec2((ImGui::CalcTextSize(shown[b]).x + pad) * scale, 0));
+  }
   // The whole section, so a script or test finds it as it finds a panel.
   if (ItemRects* rects = namedItems())
     rects->record("Clips", glm::vec2(titleMin.x, titleMin.y),
