@@ -20,13 +20,19 @@ constexpr int kVisibleClipRows = 5;  // more clips scroll within the list
 
 const ImVec4 kErrorColor(1.0f, 0.45f, 0.4f, 1.0f);
 
+// The refusal under the name field, wrapped to the panel's width.
+float errorHeight(const std::string& error) {
+  return ImGui::CalcTextSize(error.c_str(), nullptr, false, ImGui::GetContentRegionAvail().x).y +
+         ImGui::GetStyle().ItemSpacing.y;
+}
+
 // The list's own height: its rows, the taller name field while renaming, the refusal under it.
 float listAreaHeight(const EditorState& state) {
   const int rows = std::clamp(static_cast<int>(state.doc.scene().clips.size()), 1, kVisibleClipRows);
   const PanelState& p = state.panels;
   return static_cast<float>(rows) * ImGui::GetTextLineHeightWithSpacing() +
          (p.renamingClip >= 0 ? 2.0f * ImGui::GetStyle().FramePadding.y : 0.0f) +
-         (p.clipRenameError.empty() ? 0.0f : ImGui::GetTextLineHeightWithSpacing());
+         (p.clipRenameError.empty() ? 0.0f : errorHeight(p.clipRenameError));
 }
 
 void drawRenameField(EditorState& state) {
@@ -74,7 +80,11 @@ void drawClipList(CommandContext& ctx) {
     ImGui::PushID(i);
     if (p.renamingClip == i) {
       drawRenameField(state);
-      if (!p.clipRenameError.empty()) ImGui::TextColored(kErrorColor, "%s", p.clipRenameError.c_str());
+      if (!p.clipRenameError.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, kErrorColor);
+        ImGui::TextWrapped("%s", p.clipRenameError.c_str());
+        ImGui::PopStyleColor();
+      }
     } else {
       const bool clicked = ImGui::Selectable(clips[c].name.empty() ? "(unnamed)" : clips[c].name.c_str(),
                                              i == state.doc.activeClip(), ImGuiSelectableFlags_AllowDoubleClick);
