@@ -1,5 +1,5 @@
 // The clip list (Blender's action list): the scene's clips in file order under the
-// outliner's joint tree, the active one highlighted. A click chooses a clip, a double click
+// outliner's joint tree, the active one highlighted; shown while the scene has clips. A click chooses a clip, a double click
 // renames it in place; New / Duplicate / Rename / Delete run the Clip menu's commands. The
 // Clip menu lists the clips too.
 #include <imgui.h>
@@ -57,6 +57,7 @@ void drawRenameField(EditorState& state) {
 }  // namespace
 
 float clipListHeight(const EditorState& state) {
+  if (state.doc.scene().clips.empty()) return 0.0f;
   const ImGuiStyle& style = ImGui::GetStyle();
   // The spacing after the tree, the separator (1 px and its spacing), the "Clips" title,
   // the list and its spacing, the row of buttons.
@@ -69,11 +70,13 @@ void drawClipList(CommandContext& ctx) {
   PanelState& p = state.panels;
   const std::vector<Clip>& clips = state.doc.scene().clips;
   if (p.renamingClip >= static_cast<int>(clips.size())) p.renamingClip = -1;  // undone or deleted
+  // Without clips the joint tree keeps the whole outliner; Clip > New Clip or the first key
+  // (I) makes one, and the list appears.
+  if (clips.empty()) return;
   ImGui::Separator();
   ImGui::TextUnformatted("Clips");
   const ImVec2 titleMin = ImGui::GetItemRectMin();
   ImGui::BeginChild("##clips", ImVec2(0, listAreaHeight(state)));
-  if (clips.empty()) ImGui::TextDisabled("no clips: New, or key a pose (I)");
   int chosen = -1, renamed = -1;
   for (size_t c = 0; c < clips.size(); ++c) {
     const int i = static_cast<int>(c);

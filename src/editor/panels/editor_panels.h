@@ -18,7 +18,8 @@ void drawEditorPanels(CommandContext& ctx, float fps);
 void drawMainMenuBar(CommandContext& ctx);     // File / Edit / View / Pose / Teach / Help, from the registry
 void drawOutlinerPanel(CommandContext& ctx);  // joint tree, search, select, rename; the clip list under it
 // The clip list at the bottom of the outliner (clip_list_panel.cpp): choose, new, duplicate,
-// rename, delete; clipListHeight is what it takes of the outliner's height.
+// rename, delete, shown while the scene has clips; clipListHeight is what it takes of the
+// outliner's height (0 without clips).
 void drawClipList(CommandContext& ctx);
 float clipListHeight(const EditorState& state);
 void drawClipMenuList(CommandContext& ctx);  // the Clip menu's list of clips (a click chooses)
