@@ -53,4 +53,10 @@ void OverlayDrawList::addScreenRectangle(glm::vec2 cornerA, glm::vec2 cornerB, c
   }
 }
 
+void OverlayDrawList::scaleWidths(float k) {
+  for (Line& l : lines) l.widthPixels *= k;
+  for (Handle& h : handles) h.radiusPixels *= k;
+  for (ScreenLine& l : screenLines) l.widthPixels *= k;
+}
+
 }  // namespace kinema

@@ -45,6 +45,8 @@ struct OverlayDrawList {
   std::vector<ScreenRect> screenRects;
 
   void clear() { *this = OverlayDrawList{}; }
+  // Every line width and handle radius times k (thicker lines for a projector).
+  void scaleWidths(float k);
   bool empty() const { return lines.empty() && handles.empty() && screenLines.empty() && screenRects.empty(); }
   void addLine(const glm::vec3& a, const glm::vec3& b, const glm::vec4& color, float widthPixels = 1.0f,
                Layer layer = Layer::OnTop);

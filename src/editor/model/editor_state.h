@@ -13,6 +13,9 @@
 #include "editor/model/curve_editor.h"
 #include "editor/model/dope_sheet.h"
 #include "editor/model/item_rects.h"
+#include "editor/model/editor_layout.h"
+#include "editor/model/message_log.h"
+#include "editor/model/user_preferences.h"
 #include "editor/model/panel_state.h"
 #include "io/scene.h"
 #include "render/camera.h"
@@ -96,6 +99,13 @@ struct EditorState {
   MotionPathSettings motionPath;
   MotionControlSettings motionControl;
   bool onionSkinWindowOpen = false;  // View > Onion Skin && Motion Path...
+  // Look and layout (Edit > Preferences): the UI scale, theme, 3D line scale, splitters and
+  // window placement. Its loop and keys fields are only the file's copy: in a session the
+  // settings are `loop` and doc.autoKey.preferences (currentPreferences / applyPreferences).
+  UserPreferences preferences;
+  EditorLayout layout;      // this frame's panel rectangles (window pixels), set by the window
+  MessageLog log;           // every message in full (View > Log)
+  bool preferencesWindowOpen = false, logWindowOpen = false;
 
   bool wasPlaying = false;  // playback stopped since the last evaluate: the document takes the frame
   // The playhead and document state the pose was last sampled at while playing: a second
@@ -130,7 +140,7 @@ struct EditorState {
   bool animationEditorContains(glm::vec2 p) const {
     return animationEditor != AnimationEditorKind::None && p.x >= viewportRect.x &&
            p.x < viewportRect.x + viewportRect.z && p.y >= viewportRect.y + viewportRect.w &&
-           p.y < viewportRect.y + viewportRect.w + kAnimationEditorHeight;
+           p.y < viewportRect.y + viewportRect.w + layout.animationEditor.h;
   }
 };
 
@@ -141,4 +151,8 @@ struct EditorState {
 void evaluateEditorPose(EditorState& state);
 // Advances playback by dt seconds (wrapping or stopping at the end).
 void advancePlayback(EditorState& state, double dt);
+// The preferences as the file keeps them: state.preferences with the session's loop switch
+// and new-key defaults; applyPreferences sets all of them (at start).
+UserPreferences currentPreferences(const EditorState& state);
+void applyPreferences(EditorState& state, const UserPreferences& p);
 }  // namespace kinema
