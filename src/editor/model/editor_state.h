@@ -138,9 +138,11 @@ struct EditorState {
   // Whether window pixel p is over the animation editor (right under the 3D view, when
   // shown): keys pressed there go to that editor, not to the viewport (Blender).
   bool animationEditorContains(glm::vec2 p) const {
+    // Before the window's first layout: the stored height (at UI scale 1).
+    const float h = layout.animationEditor.h > 0.0f ? layout.animationEditor.h : preferences.panels.animationEditorHeight;
     return animationEditor != AnimationEditorKind::None && p.x >= viewportRect.x &&
            p.x < viewportRect.x + viewportRect.z && p.y >= viewportRect.y + viewportRect.w &&
-           p.y < viewportRect.y + viewportRect.w + layout.animationEditor.h;
+           p.y < viewportRect.y + viewportRect.w + h;
   }
 };
 

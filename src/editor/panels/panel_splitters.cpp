@@ -1,5 +1,5 @@
 // The boundaries between the panels move with the mouse, as Blender's area edges do: a thin
-// window straddles each boundary (above the panels, which never come to the front), and
+// window straddles each boundary (above the panels, which stay at the back), and
 // dragging it moves the splitter within the limits of editor_layout.h (dragSplitter). The
 // sizes are state.preferences.panels, saved with the preferences on exit.
 #include <imgui.h>
@@ -42,9 +42,11 @@ void drawPanelSplitters(EditorState& state) {
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
     ImGui::PushStyleVar(ImGuiStyleVar_WindowMinSize, ImVec2(1, 1));
     ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+    // Without NoBringToFrontOnFocus, which ImGui puts at the back of the display order when
+    // created: the splitters must lie over the panels.
     ImGui::Begin((std::string("##") + e.name).c_str(), nullptr,
-                 kPanelFlags | ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground |
-                     ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+                 (kPanelFlags & ~ImGuiWindowFlags_NoBringToFrontOnFocus) | ImGuiWindowFlags_NoDecoration |
+                     ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
     ImGui::InvisibleButton("##drag", ImVec2(e.zone.w, e.zone.h));
     recordItem(e.name);
     const bool active = ImGui::IsItemActive(), hovered = ImGui::IsItemHovered();
