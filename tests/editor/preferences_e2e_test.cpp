@@ -62,6 +62,14 @@ int menuBarPixels(const Image& img, int x) {
   return img.height;
 }
 
+TEST(PreferencesCli, UiScaleOutsideItsRangeIsOneLineAndExitOne) {
+  for (const char* bad : {"5", "0.5", "0"}) {
+    std::string out, err;
+    EXPECT_EQ(runCommand(std::string(KINEMA_BINARY) + " edit --ui-scale " + bad, &out, &err), 1) << bad;
+    EXPECT_EQ(err, std::string("kinema: --ui-scale ") + bad + ": expected a scale from 0.75 to 3\n");
+  }
+}
+
 class PreferencesE2e : public ::testing::Test {
  protected:
   void SetUp() override {
