@@ -10,9 +10,10 @@ KINEMA_PACKAGES=(build-essential cmake ninja-build pkg-config
   libglfw3-dev libglm-dev libimgui-dev libstb-dev python3-glad libtinygltf-dev nlohmann-json3-dev
   libcli11-dev libeigen3-dev libegl-dev libosmesa6-dev libgtest-dev libbenchmark-dev
   xvfb xauth xdotool imagemagick clang libclang-rt-14-dev
-  libegl-mesa0 libgl1-mesa-dri libglx-mesa0 ffmpeg)
+  libegl-mesa0 libgl1-mesa-dri libglx-mesa0 ffmpeg fonts-dejavu-core)
 # The last three are Mesa's EGL, llvmpipe and GLX drivers: they come in today through
 # libegl1 and libgl1, but rendering needs them, so they are named rather than assumed.
+# fonts-dejavu-core: the editor's text font (DejaVu Sans; ImGui's built-in font without it).
 # ffmpeg is optional for users (`kinema demo` says so when it is absent and writes no GIF or
 # MP4); the suite installs it so the GIF and MP4 path is tested for real.
 # The Khronos glTF validator (npm package, tests/tools/gltf_validator) runs on node. Only

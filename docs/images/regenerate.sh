@@ -7,7 +7,17 @@ kinema=${1:-$root/build/src/kinema}
 export LIBGL_ALWAYS_SOFTWARE=1 MESA_GL_VERSION_OVERRIDE=3.3
 cd "$root"  # the editor shows the path it was given: keep it short
 bvh=../shared/data/bvh/cmu_01_01_first720.bvh
-xvfb-run -a -s "-screen 0 1280x800x24" "$kinema" edit "$bvh" --frame-count 5 --screenshot "$root/docs/images/editor.png"
+tmp=$(mktemp -d)  # the user's preferences (window size, UI scale) stay out of it
+XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp xvfb-run -a -s "-screen 0 1280x800x24" "$kinema" edit "$bvh" --size 1280x720 \
+  --frame-count 5 --screenshot "$root/docs/images/editor.png"
+rm -rf "$tmp"
+# The editor at UI scale 1 and at the presentation preset (issue 18) on a 1600x1000 screen.
+for shot in editor_scale1 editor_presentation; do
+  tmp=$(mktemp -d)
+  XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp xvfb-run -a -s "-screen 0 1600x1000x24" "$kinema" edit "$bvh" --size 1600x1000 \
+    --script "$root/docs/images/$shot.jsonl" --screenshot "$root/docs/images/$shot.png"
+  rm -rf "$tmp"
+done
 "$kinema" render "$bvh" --frame 240 --select LeftArm --size 960x540 --out "$root/docs/images/render_cmu_frame240.png"
 "$kinema" render ../shared/data/gltf/CesiumMan.glb --time 1 --bones xray --size 960x540 --out "$root/docs/images/skinned_cesium_man.png"
 "$kinema" render ../shared/data/gltf/Fox.glb --clip 2 --time 0.6 --camera 60,15 --size 960x540 --out "$root/docs/images/skinned_fox.png"

@@ -22,7 +22,9 @@ CLI::App* addEditCommand(CLI::App& app, EditOptions& o) {
   cmd->add_option("--script", o.script,
                   "Replay input events from this file (JSON lines or array, see docs/cli.md) at 1/60 s per frame");
   cmd->add_option("--dump-state", o.dumpState, "On exit, write the editor's state as JSON to this file");
-  cmd->add_option("--size", o.size, "Window size WxH in pixels (default 1280x720)");
+  cmd->add_option("--size", o.size, "Window size WxH in pixels (default: the last size, at most the screen)");
+  cmd->add_option("--ui-scale", o.uiScale,
+                  "Text and widget scale from 0.75 to 3 for this run (default: Edit > Preferences, saved)");
   cmd->add_flag("--report-frame-times", o.reportFrameTimes, "Print mean and median frame times (ms) on stderr at exit");
   cmd->add_flag("--empty-frame", o.emptyFrame, "Draw only an empty ImGui frame (baseline for --report-frame-times)");
   cmd->add_option("--compare", o.compare, "Open in Teach > Compare Solvers with this preset (kinema demo list)");
@@ -40,9 +42,15 @@ int runEdit(const EditOptions& o) {
     return kExitOk;
   }
   if (o.frameCount < 0) return badInput("--frame-count must not be negative");
+  if (!std::isnan(o.uiScale) && !(o.uiScale >= kMinUiScale && o.uiScale <= kMaxUiScale)) {
+    char given[32];
+    std::snprintf(given, sizeof given, "%g", o.uiScale);
+    return badInput(std::string("--ui-scale ") + given + ": expected a scale from 0.75 to 3");
+  }
   EditorWindowOptions options;
   options.width = o.width;
   options.height = o.height;
+  options.uiScale = std::isnan(o.uiScale) ? 0.0f : o.uiScale;
   if (!o.size.empty()) {
     int w = 0, h = 0;
     char x = 0, extra = 0;

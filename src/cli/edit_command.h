@@ -1,10 +1,12 @@
 #pragma once
 #include <CLI/CLI.hpp>
 
+#include <limits>
+
 namespace kinema::cli {
 
 // `kinema edit [FILE] [--frame-count N] [--screenshot PATH] [--script FILE] [--dump-state FILE]
-//  [--size WxH] [--report-frame-times] [--empty-frame] [--compare PRESET] [--list-commands]`
+//  [--size WxH] [--ui-scale S] [--report-frame-times] [--empty-frame] [--compare PRESET] [--list-commands]`
 struct EditOptions {
   std::string file;
   long long frameCount = 0;
@@ -16,7 +18,8 @@ struct EditOptions {
   bool emptyFrame = false;
   std::string compare;  // open straight into Teach > Compare Solvers with this preset
   bool listCommands = false;  // print every command and its keys as markdown, open no window
-  int width = 1280, height = 720;
+  float uiScale = std::numeric_limits<float>::quiet_NaN();  // --ui-scale; NaN: not given (the preferences')
+  int width = 0, height = 0;  // 0: remembered, else most of the screen
 };
 
 CLI::App* addEditCommand(CLI::App& app, EditOptions& options);

@@ -53,4 +53,11 @@ void OverlayDrawList::addScreenRectangle(glm::vec2 cornerA, glm::vec2 cornerB, c
   }
 }
 
+void OverlayDrawList::scaleWidths(float k) {
+  for (Line& l : lines) l.widthPixels *= k;
+  for (Handle& h : handles)
+    if (h.radiusPixels <= kMarkerPixels) h.radiusPixels *= k;  // markers; larger discs are areas (a gizmo's)
+  for (ScreenLine& l : screenLines) l.widthPixels *= k;
+}
+
 }  // namespace kinema

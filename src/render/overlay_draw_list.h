@@ -45,6 +45,10 @@ struct OverlayDrawList {
   std::vector<ScreenRect> screenRects;
 
   void clear() { *this = OverlayDrawList{}; }
+  // Every line width, and the radius of every handle up to kMarkerPixels (markers, not the
+  // larger discs that mark areas), times k: thicker lines for a projector.
+  static constexpr float kMarkerPixels = 16.0f;
+  void scaleWidths(float k);
   bool empty() const { return lines.empty() && handles.empty() && screenLines.empty() && screenRects.empty(); }
   void addLine(const glm::vec3& a, const glm::vec3& b, const glm::vec4& color, float widthPixels = 1.0f,
                Layer layer = Layer::OnTop);

@@ -103,6 +103,14 @@ void SkeletonRenderer::drawGrid(const FrameDescription& frame, const glm::mat4& 
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(gridCache_.size() * sizeof(LineVertex)), gridCache_.data(),
                  GL_STATIC_DRAW);
   }
+  if (frame.lineScale > 1.0f) {  // wide lines: triangles (core profiles draw GL_LINES 1 px wide)
+    OverlayDrawList wide;
+    for (size_t i = 0; i + 1 < gridCache_.size(); i += 2)
+      wide.addLine(gridCache_[i].position, gridCache_[i + 1].position, gridCache_[i].color, frame.lineScale,
+                   OverlayDrawList::Layer::Scene);
+    overlay_.draw(wide, viewProjection, frame.width, frame.height);
+    return;
+  }
   glUseProgram(lines_.id());
   glUniformMatrix4fv(lines_.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
   glBindVertexArray(lineVao_);
@@ -193,7 +201,13 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
     }
   }
   if (frame.ghosts && !frame.ghosts->empty()) drawGhosts(*frame.ghosts, viewProjection, view);
-  if (frame.overlay) overlay_.draw(*frame.overlay, viewProjection, frame.width, frame.height);
+  if (frame.overlay && frame.lineScale != 1.0f) {
+    OverlayDrawList scaled = *frame.overlay;
+    scaled.scaleWidths(frame.lineScale);
+    overlay_.draw(scaled, viewProjection, frame.width, frame.height);
+  } else if (frame.overlay) {
+    overlay_.draw(*frame.overlay, viewProjection, frame.width, frame.height);
+  }
   glBindVertexArray(0);
   glUseProgram(0);
 }

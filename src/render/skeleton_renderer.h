@@ -32,6 +32,9 @@ struct FrameDescription {
   // Onion-skin ghosts: whole skeletons blended by their colours' alpha after the bones,
   // depth-tested against the scene, front faces only (each bone blends once). May be null.
   const std::vector<SkeletonDrawList>* ghosts = nullptr;
+  // The grid's and the overlay's line widths and marker sizes, times their pixels (the
+  // editor's presentation preset makes them thicker for a projector); 1 = as built.
+  float lineScale = 1.0f;
 };
 
 // Draws grid, axes, bones and joints with OpenGL 3.3 core into whatever framebuffer is

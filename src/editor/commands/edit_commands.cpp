@@ -66,6 +66,11 @@ void addEditCommands(std::vector<Command>& out) {
                     .hint("dragging a joint moves it by IK up the chain").enabled(documentShown)
                     .checked([](const CommandContext& c) { return c.state.view.autoIk; })
                     .run([](CommandContext& c) { c.state.view.autoIk = !c.state.view.autoIk; }));
+  // Blender's Edit > Preferences (Ctrl+Comma): UI scale, theme, 3D line scale, loop, new keys.
+  out.push_back(CommandDef("edit.preferences", "Preferences...").menu("Edit", true).key(keys::COMMA, kModCtrl)
+                    .hint("UI scale, theme, presentation preset, loop, new keys")
+                    .checked([](const CommandContext& c) { return c.state.preferencesWindowOpen; })
+                    .run([](CommandContext& c) { c.state.preferencesWindowOpen = !c.state.preferencesWindowOpen; }));
 }
 
 }  // namespace kinema

@@ -53,7 +53,9 @@ void guarded(EditorState& state, PendingFileAction action, const std::string& pa
 }  // namespace
 
 void openDocumentInEditor(EditorState& state, Document doc) {
+  const KeyPreferences newKeys = state.doc.autoKey.preferences;  // the user's (Edit > Preferences), not the file's
   state.doc = std::move(doc);
+  state.doc.autoKey.preferences = newKeys;
   state.tool = ToolState{};  // a running tool refers to the old skeleton
   state.hoveredJoint = -1;
   state.hoveredIkTarget = -1;
@@ -104,6 +106,12 @@ void showEditorError(EditorState& state, const std::string& message) {
   if (message.empty()) return;
   state.panels.errors.push_back(message);
   state.statusMessage = message;
+  state.log.note(message, MessageLog::clockTime(), true);
+}
+
+void saveEditorPreferences(EditorState& state) {
+  const std::string failed = saveUserPreferences(currentPreferences(state));
+  if (!failed.empty()) showEditorError(state, "preferences: " + failed);
 }
 
 void requestNewDocument(EditorState& state) { guarded(state, PendingFileAction::New); }

@@ -24,6 +24,8 @@ void requestQuit(EditorState& state);
 void openDocumentInEditor(EditorState& state, Document doc);
 // Shows a one-line error in the error popup (and the status bar).
 void showEditorError(EditorState& state, const std::string& message);
+// Writes currentPreferences(state) to the user's preferences file; a failure is shown.
+void saveEditorPreferences(EditorState& state);
 
 // Called by drawEditorPanels each frame: on the first call, loads the recent files and
 // looks for a crashed session's recovery file (offered in a modal); afterwards writes the

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "editor/commands/command_sets.h"
+#include "editor/commands/file_commands.h"
 #include "editor/model/key_codes.h"
 #include "editor/viewport/viewport_controller.h"
 
@@ -110,6 +111,18 @@ void addViewCommands(std::vector<Command>& out) {
                     .scope(CommandScope::Viewport).hint("the active joint's speed along its path").enabled(documentShown)
                     .checked([](const CommandContext& c) { return c.state.motionControl.windowOpen; })
                     .run([](CommandContext& c) { c.state.motionControl.windowOpen = !c.state.motionControl.windowOpen; }));
+  out.push_back(CommandDef("view.presentation", "Presentation Mode").menu("View", true)
+                    .hint("text twice as large and thicker 3D lines, for a projector (saved in the preferences)")
+                    .checked([](const CommandContext& c) { return isPresentation(c.state.preferences); })
+                    .run([](CommandContext& c) {
+                      const UserPreferences& p = c.state.preferences;
+                      c.state.preferences = isPresentation(p) ? deskPreset(p) : presentationPreset(p);
+                      saveEditorPreferences(c.state);
+                    }));
+  out.push_back(CommandDef("view.log", "Log...").menu("View")
+                    .hint("every message of the session in full, with its time")
+                    .checked([](const CommandContext& c) { return c.state.logWindowOpen; })
+                    .run([](CommandContext& c) { c.state.logWindowOpen = !c.state.logWindowOpen; }));
 }
 
 }  // namespace kinema

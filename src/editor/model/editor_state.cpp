@@ -39,4 +39,17 @@ void evaluateEditorPose(EditorState& state) {
 
 void advancePlayback(EditorState& state, double dt) { advanceTimeline(state, dt); }
 
+UserPreferences currentPreferences(const EditorState& state) {
+  UserPreferences p = state.preferences;
+  p.loop = state.loop;
+  p.keys = state.doc.autoKey.preferences;
+  return p;
+}
+
+void applyPreferences(EditorState& state, const UserPreferences& p) {
+  state.preferences = p;
+  state.loop = p.loop;
+  state.doc.autoKey.preferences = p.keys;
+}
+
 }  // namespace kinema

@@ -13,6 +13,9 @@
 #include "editor/model/curve_editor.h"
 #include "editor/model/dope_sheet.h"
 #include "editor/model/item_rects.h"
+#include "editor/model/editor_layout.h"
+#include "editor/model/message_log.h"
+#include "editor/model/user_preferences.h"
 #include "editor/model/panel_state.h"
 #include "io/scene.h"
 #include "render/camera.h"
@@ -100,6 +103,13 @@ struct EditorState {
   MotionPathSettings motionPath;
   MotionControlSettings motionControl;
   bool onionSkinWindowOpen = false;  // View > Onion Skin && Motion Path...
+  // Look and layout (Edit > Preferences): the UI scale, theme, 3D line scale, splitters and
+  // window placement. Its loop and keys fields are only the file's copy: in a session the
+  // settings are `loop` and doc.autoKey.preferences (currentPreferences / applyPreferences).
+  UserPreferences preferences;
+  EditorLayout layout;      // this frame's panel rectangles (window pixels), set by the window
+  MessageLog log;           // every message in full (View > Log)
+  bool preferencesWindowOpen = false, logWindowOpen = false;
 
   bool wasPlaying = false;  // playback stopped since the last evaluate: the document takes the frame
   // The playhead and document state the pose was last sampled at while playing: a second
@@ -132,9 +142,11 @@ struct EditorState {
   // Whether window pixel p is over the animation editor (right under the 3D view, when
   // shown): keys pressed there go to that editor, not to the viewport (Blender).
   bool animationEditorContains(glm::vec2 p) const {
+    // Before the window's first layout: the stored height (at UI scale 1).
+    const float h = layout.animationEditor.h > 0.0f ? layout.animationEditor.h : preferences.panels.animationEditorHeight;
     return animationEditor != AnimationEditorKind::None && p.x >= viewportRect.x &&
            p.x < viewportRect.x + viewportRect.z && p.y >= viewportRect.y + viewportRect.w &&
-           p.y < viewportRect.y + viewportRect.w + kAnimationEditorHeight;
+           p.y < viewportRect.y + viewportRect.w + h;
   }
 };
 
@@ -145,4 +157,8 @@ struct EditorState {
 void evaluateEditorPose(EditorState& state);
 // Advances playback by dt seconds (wrapping or stopping at the end).
 void advancePlayback(EditorState& state, double dt);
+// The preferences as the file keeps them: state.preferences with the session's loop switch
+// and new-key defaults; applyPreferences sets all of them (at start).
+UserPreferences currentPreferences(const EditorState& state);
+void applyPreferences(EditorState& state, const UserPreferences& p);
 }  // namespace kinema

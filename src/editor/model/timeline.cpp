@@ -183,8 +183,9 @@ TimelineRuler timelineRuler(const EditorState& s, float x, float y, float w, flo
   TimelineRuler r;
   r.x = x + 4;
   r.w = std::max(w - 8, 1.0f);
-  r.h = kTimelineRulerHeight;
-  r.y = y + h - kTimelineRulerHeight - 2;
+  const float k = h / kTimelineHeight;  // the strip grows with the UI scale: so does the ruler
+  r.h = kTimelineRulerHeight * k;
+  r.y = y + h - r.h - 2 * k;
   r.first = rangeStartFrame(s);
   r.last = std::max(rangeEndFrame(s), r.first + 1);
   return r;

@@ -22,7 +22,7 @@ void colorEdit(const char* label, glm::vec3& c) { ImGui::ColorEdit3(label, &c.x,
 
 void drawOnionSkinWindow(EditorState& state) {
   if (!state.onionSkinWindowOpen) return;
-  const PanelRect v = viewportRect(ImGui::GetIO().DisplaySize, state.bottomPanels());
+  const PanelRect v = state.layout.viewport;
   ImGui::SetNextWindowPos(ImVec2(v.x + 10.0f, v.y + 10.0f), ImGuiCond_Appearing);
   if (!ImGui::Begin("Onion Skin & Motion Path", &state.onionSkinWindowOpen, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::End();
@@ -57,7 +57,7 @@ void drawOnionSkinWindow(EditorState& state) {
 void drawMotionControlWindow(EditorState& state) {
   MotionControlSettings& m = state.motionControl;
   if (!m.windowOpen) return;
-  const PanelRect v = viewportRect(ImGui::GetIO().DisplaySize, state.bottomPanels());
+  const PanelRect v = state.layout.viewport;
   ImGui::SetNextWindowPos(ImVec2(v.x + 10.0f, v.y + 10.0f), ImGuiCond_Appearing);
   if (!ImGui::Begin("Motion Control", &m.windowOpen, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::End();

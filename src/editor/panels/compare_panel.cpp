@@ -81,7 +81,12 @@ void drawFigure(ImDrawList* dl, const Figure& f, const FigureViewMap& map, const
     for (float t = 0; t < len; t += 2 * dash)
       dl->AddLine(im(a + (b - a) * (t / len)), im(a + (b - a) * (std::min(t + dash, len) / len)), color(l.color), l.width);
   }
-  for (const FigureText& t : f.texts) dl->AddText(im(map.toPixel(t.at)), color(t.color), t.text.c_str());
+  // Wrapped at the view's right edge, so a long caption or plot title is never cut.
+  for (const FigureText& t : f.texts) {
+    const glm::vec2 at = map.toPixel(t.at);
+    dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), im(at), color(t.color), t.text.c_str(), nullptr,
+                std::max(r.x + r.w - at.x - 4.0f, ImGui::GetFontSize() * 4.0f));
+  }
   dl->PopClipRect();
 }
 
@@ -242,7 +247,8 @@ void drawComparePanel(CommandContext& ctx) {
   ImGuiIO& io = ImGui::GetIO();
   if (!m.ready() && m.error.empty()) openComparePreset(m, teachingPresets().front().name);
   advanceComparePlay(m, io.DeltaTime);
-  const CompareRect area{0.0f, kMenuBarHeight, io.DisplaySize.x, std::max(panelAreaHeight(io.DisplaySize), 1.0f)};
+  const PanelRect& panels = ctx.state.layout.panelArea;
+  const CompareRect area{panels.x, panels.y, panels.w, panels.h};
   m.layout = compareLayout(area, m.ready() ? static_cast<int>(m.comparison.runs.size()) : 2);
 
   ImDrawList* dl = ImGui::GetBackgroundDrawList();

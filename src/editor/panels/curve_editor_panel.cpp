@@ -240,7 +240,7 @@ void drawCurveEditorPanel(CommandContext& ctx) {
   // Shift+F6 (view.curve_editor) opens it; Home over it (curves.frame_all) fits.
   if (state.animationEditor != AnimationEditorKind::CurveEditor) return;
   CurveEditorState& ce = state.curveEditor;
-  const PanelRect r = animationEditorRect(io.DisplaySize, state.bottomPanels());
+  const PanelRect r = state.layout.animationEditor;
   ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(r.w, r.h), ImGuiCond_Always);
   ImGui::Begin("Curve Editor", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |

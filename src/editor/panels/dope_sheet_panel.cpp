@@ -192,7 +192,7 @@ void handleMouse(EditorState& state, const Clip& clip, const std::vector<DopeShe
 
 void drawDopeSheetPanel(EditorState& state) {
   if (state.animationEditor != AnimationEditorKind::DopeSheet) return;
-  const PanelRect r = animationEditorRect(ImGui::GetIO().DisplaySize, state.bottomPanels());
+  const PanelRect r = state.layout.animationEditor;
   ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(r.w, r.h), ImGuiCond_Always);
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));

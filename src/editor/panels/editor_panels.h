@@ -29,6 +29,11 @@ void drawHistoryPanel(EditorState& state);    // undo stack, click to jump
 void drawStatusBar(CommandContext& ctx, float fps);
 void drawSessionDialogs(CommandContext& ctx);  // file dialog, discard / recover modals, errors, Help > Controls
 void drawAnimationDisplayWindows(EditorState& state);  // onion skin & motion path settings, motion control
+void drawPreferencesWindow(CommandContext& ctx);  // Edit > Preferences: UI scale, theme, presentation, loop, new keys
+void drawLogWindow(EditorState& state);           // View > Log: every message in full, with its time
+void drawPanelSplitters(EditorState& state);      // the draggable boundaries between the panels
+// The new-key defaults (radio buttons, named itemPrefix + label), in the Keys popup and Preferences.
+void drawKeyPreferenceChoices(EditorState& state, const std::string& itemPrefix);
 
 // Older panels kept for the joint list view and playback.
 void drawJointListPanel(EditorState& state);

@@ -24,7 +24,7 @@ bool drawFileDialog(FileDialogState& d, const std::vector<std::string>& recentFi
   }
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-  ImGui::SetNextWindowSize(ImVec2(560, 440), ImGuiCond_Appearing);
+  ImGui::SetNextWindowSize(ImVec2(ImGui::GetFontSize() * 40.0f, ImGui::GetFontSize() * 31.0f), ImGuiCond_Appearing);  // 560 x 440 at 14 px
   bool stillOpen = true;
   if (!ImGui::BeginPopupModal(title, &stillOpen)) {
     d.visible = false;
@@ -68,10 +68,10 @@ bool drawFileDialog(FileDialogState& d, const std::vector<std::string>& recentFi
       ImGui::EndListBox();
     }
   }
-  if (ImGui::Button(isSaveDialog(d.purpose) ? "Save" : "Open", ImVec2(120, 0))) accept = true;
+  if (ImGui::Button(isSaveDialog(d.purpose) ? "Save" : "Open", ImVec2(ImGui::GetFontSize() * 8.5f, 0))) accept = true;
   ImGui::SameLine();
   const bool escape = d.confirmOverwrite.empty() && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
-  if (ImGui::Button("Cancel", ImVec2(120, 0)) || escape) {
+  if (ImGui::Button("Cancel", ImVec2(ImGui::GetFontSize() * 8.5f, 0)) || escape) {
     ImGui::CloseCurrentPopup();
     d.visible = false;
   }
@@ -96,13 +96,13 @@ bool drawFileDialog(FileDialogState& d, const std::vector<std::string>& recentFi
   if (ImGui::BeginPopupModal("Replace file?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::Text("%s already exists.", d.confirmOverwrite.c_str());
     ImGui::TextUnformatted("Replace it?");
-    if (ImGui::Button("Replace", ImVec2(120, 0))) {
+    if (ImGui::Button("Replace", ImVec2(ImGui::GetFontSize() * 8.5f, 0))) {
       chosen = d.confirmOverwrite;
       done = true;
       ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
-    if (ImGui::Button("Cancel", ImVec2(120, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
+    if (ImGui::Button("Cancel", ImVec2(ImGui::GetFontSize() * 8.5f, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
       d.confirmOverwrite.clear();
       ImGui::CloseCurrentPopup();
     }

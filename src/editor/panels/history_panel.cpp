@@ -13,7 +13,7 @@ namespace kinema {
 
 void drawHistoryPanel(EditorState& state) {
   Document& doc = state.doc;
-  const PanelRect r = historyRect(ImGui::GetIO().DisplaySize);
+  const PanelRect r = state.layout.history;
   ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(r.w, r.h), ImGuiCond_Always);
   if (!ImGui::Begin("History", nullptr, kPanelFlags)) {

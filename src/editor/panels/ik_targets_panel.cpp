@@ -163,7 +163,7 @@ void drawIkTargetsPanel(CommandContext& ctx) {
   EditorState& state = ctx.state;
   Document& doc = state.doc;
   PanelState& p = state.panels;
-  const PanelRect r = ikTargetsRect(ImGui::GetIO().DisplaySize);
+  const PanelRect r = state.layout.ikTargets;
   ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(r.w, r.h), ImGuiCond_Always);
   if (!ImGui::Begin("IK Targets", nullptr, kPanelFlags)) {
@@ -175,7 +175,7 @@ void drawIkTargetsPanel(CommandContext& ctx) {
   // Add and Remove are the Pose menu's commands: they act on the active joint and its target.
   commandButton(ctx, "pose.add_ik_target", "IK Targets", "Add to selected");
   ImGui::SameLine();
-  ImGui::SetNextItemWidth(70);
+  ImGui::SetNextItemWidth(scaled(state, 70));
   ImGui::InputInt("bones", &p.ikChainLength);
   recordStepper("IK Targets/Bones", 70);
   if (p.ikChainLength < 1) p.ikChainLength = 1;

@@ -12,6 +12,7 @@
 #include "editor/panels/command_widgets.h"
 #include "editor/panels/editor_panels.h"
 #include "editor/panels/item_names.h"
+#include "editor/panels/panel_layout.h"
 
 namespace kinema {
 
@@ -38,7 +39,7 @@ void drawExtrasAfter(CommandContext& ctx, const std::string& id) {
     }
   } else if (id == "pose.pin_ik_target") {
     // The chain length new IK targets get (Add IK Target, Shift+I, the IK panel).
-    ImGui::SetNextItemWidth(80);
+    ImGui::SetNextItemWidth(scaled(state, 80));
     ImGui::SliderInt("Chain length", &p.ikChainLength, 1, 8);
     recordItem(state.items, "Pose/Chain length");
   } else if (id == "clip.next") {

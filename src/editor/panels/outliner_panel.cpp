@@ -29,7 +29,7 @@ void drawOutlinerPanel(CommandContext& ctx) {
   Document& doc = state.doc;
   PanelState& p = state.panels;
   const Skeleton& s = doc.skeleton();
-  const PanelRect r = outlinerRect(ImGui::GetIO().DisplaySize);
+  const PanelRect r = state.layout.outliner;
   ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(r.w, r.h), ImGuiCond_Always);
   if (!ImGui::Begin("Outliner", nullptr, kPanelFlags)) {
@@ -50,7 +50,7 @@ void drawOutlinerPanel(CommandContext& ctx) {
   for (const OutlinerRow& row : rows) {
     const int i = row.joint;
     ImGui::PushID(i);
-    const float indent = static_cast<float>(row.depth) * kOutlinerIndent + 0.001f;
+    const float indent = static_cast<float>(row.depth) * scaled(state, kOutlinerIndent) + 0.001f;
     ImGui::Indent(indent);
     if (row.hasChildren && p.search[0] == '\0') {
       if (ImGui::SmallButton(p.collapsed[i] ? "+" : "-")) p.collapsed[i] = !p.collapsed[i];

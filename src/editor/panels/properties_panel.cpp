@@ -28,7 +28,7 @@ void rotationSection(EditorState& state, int joint) {
   PanelState& p = state.panels;
   const glm::quat q = doc.pose().local[joint].rotation;
   const char* preview = p.quaternionEntry ? "Quaternion" : toString(p.eulerOrder);
-  ImGui::SetNextItemWidth(120);
+  ImGui::SetNextItemWidth(scaled(state, 120));
   const bool modeOpen = ImGui::BeginCombo("Rotation mode", preview);
   recordItem("Properties/Rotation mode");
   if (modeOpen) {
@@ -129,7 +129,7 @@ void limitSection(EditorState& state, int joint) {
   if (!enabled) return;
   const char* types[] = {"Hinge", "Cone", "Euler"};
   int type = static_cast<int>(limit.type) - 1;
-  ImGui::SetNextItemWidth(120);
+  ImGui::SetNextItemWidth(scaled(state, 120));
   const bool retyped = ImGui::Combo("Type", &type, types, 3);
   recordItem("Properties/Limit type");
   if (retyped) {
@@ -187,7 +187,7 @@ void limitSection(EditorState& state, int joint) {
 
 void drawPropertiesPanel(EditorState& state) {
   Document& doc = state.doc;
-  const PanelRect r = propertiesRect(ImGui::GetIO().DisplaySize);
+  const PanelRect r = state.layout.properties;
   ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(r.w, r.h), ImGuiCond_Always);
   state.panels.propertiesJoint = -1;

@@ -2,6 +2,7 @@
 // changes?", "Recover unsaved work?", the error popup and Help > Controls.
 #include <imgui.h>
 
+#include <algorithm>
 #include <ctime>
 
 #include "editor/commands/controls_help.h"
@@ -9,6 +10,7 @@
 #include "editor/panels/editor_panels.h"
 #include "editor/panels/item_names.h"
 #include "editor/panels/compare_panel.h"
+#include "editor/panels/panel_layout.h"
 
 namespace kinema {
 
@@ -51,14 +53,14 @@ void discardModal(EditorState& state) {
   if (!ImGui::BeginPopupModal("Discard unsaved changes?", nullptr, kModalFlags)) return;
   ImGui::Text("%s has changes that are not saved.", documentTitle(state).c_str());
   ImGui::Text("Discard them before %s?", pendingVerb(p.pending));
-  const bool discard = ImGui::Button("Discard", ImVec2(110, 0));
+  const bool discard = ImGui::Button("Discard", ImVec2(ImGui::GetFontSize() * 8.0f, 0));
   recordItem("Discard unsaved changes?/Discard");
   if (discard) {
     ImGui::CloseCurrentPopup();
     runPendingFileAction(state);
   }
   ImGui::SameLine();
-  const bool saveFirst = ImGui::Button("Save first", ImVec2(110, 0));
+  const bool saveFirst = ImGui::Button("Save first", ImVec2(ImGui::GetFontSize() * 8.0f, 0));
   recordItem("Discard unsaved changes?/Save first");
   if (saveFirst) {
     ImGui::CloseCurrentPopup();
@@ -74,7 +76,7 @@ void discardModal(EditorState& state) {
     }
   }
   ImGui::SameLine();
-  const bool cancel = ImGui::Button("Cancel", ImVec2(110, 0));
+  const bool cancel = ImGui::Button("Cancel", ImVec2(ImGui::GetFontSize() * 8.0f, 0));
   recordItem("Discard unsaved changes?/Cancel");
   if (cancel || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
     ImGui::CloseCurrentPopup();
@@ -97,12 +99,12 @@ void recoveryModal(EditorState& state) {
   ImGui::TextDisabled("%s", session.originalPath.empty() ? "(a new document)" : session.originalPath.c_str());
   ImGui::TextDisabled("autosave: %s", session.recoveryPath.c_str());
   ImGui::TextDisabled("Enter recovers, Esc discards");
-  if (ImGui::Button("Recover", ImVec2(110, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false)) {
+  if (ImGui::Button("Recover", ImVec2(ImGui::GetFontSize() * 8.0f, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false)) {
     ImGui::CloseCurrentPopup();
     acceptRecovery(state);
   }
   ImGui::SameLine();
-  if (ImGui::Button("Discard", ImVec2(110, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
+  if (ImGui::Button("Discard", ImVec2(ImGui::GetFontSize() * 8.0f, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
     ImGui::CloseCurrentPopup();
     declineRecovery(state);
   }
@@ -115,7 +117,8 @@ void errorPopup(EditorState& state) {
   if (!ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) ImGui::OpenPopup("Error");
   centreNextWindow();
   if (!ImGui::BeginPopupModal("Error", nullptr, kModalFlags)) return;
-  ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40.0f);
+  // Wrapped within the window, however large the text (the UI scale) and small the window.
+  ImGui::PushTextWrapPos(std::min(ImGui::GetFontSize() * 40.0f, ImGui::GetIO().DisplaySize.x * 0.8f));
   ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", p.errors.front().c_str());
   ImGui::PopTextWrapPos();
   if (p.errors.size() > 1) ImGui::TextDisabled("(%d more)", static_cast<int>(p.errors.size() - 1));
@@ -123,7 +126,7 @@ void errorPopup(EditorState& state) {
   // not also dismiss the error it caused.
   const bool key = !ImGui::IsWindowAppearing() && (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false) ||
                                                    ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false));
-  if (ImGui::Button("OK", ImVec2(110, 0)) || key) {
+  if (ImGui::Button("OK", ImVec2(ImGui::GetFontSize() * 8.0f, 0)) || key) {
     p.errors.erase(p.errors.begin());
     ImGui::CloseCurrentPopup();
   }
@@ -187,10 +190,13 @@ void drawEditorPanels(CommandContext& ctx, float fps) {
     drawMainMenuBar(ctx);
     drawComparePanel(ctx);
     drawStatusBar(ctx, fps);
+    drawPreferencesWindow(ctx);
+    drawLogWindow(state);
     drawSessionDialogs(ctx);
     return;
   }
   drawMainMenuBar(ctx);
+  relayoutPanels(state);
   drawOutlinerPanel(ctx);
   drawHistoryPanel(state);
   drawPropertiesPanel(state);
@@ -199,7 +205,10 @@ void drawEditorPanels(CommandContext& ctx, float fps) {
   drawTimelinePanel(ctx);
   drawCurveEditorPanel(ctx);
   drawDopeSheetPanel(state);
+  drawPanelSplitters(state);
   drawAnimationDisplayWindows(state);
+  drawPreferencesWindow(ctx);
+  drawLogWindow(state);
   drawSessionDialogs(ctx);
 }
 

@@ -26,27 +26,9 @@ const ImU32 kDiamondFill = IM_COL32(240, 180, 50, 255);    // keys of the select
 const ImU32 kDiamondOutline = IM_COL32(0, 0, 0, 255);
 constexpr float kDiamondRadius = 4.5f;
 
-const Interpolation kPreferenceChoices[] = {Interpolation::Bezier, Interpolation::Linear, Interpolation::Step,
-                                            Interpolation::CatmullRom, Interpolation::Ease};
-
 void keyPreferencesPopup(EditorState& state) {
   if (!ImGui::BeginPopup("Key preferences")) return;
-  KeyPreferences& p = state.doc.autoKey.preferences;
-  ImGui::TextUnformatted("New keys");
-  for (Interpolation i : kPreferenceChoices) {
-    if (ImGui::RadioButton(toString(i), p.interpolation == i)) p.interpolation = i;
-    recordItem(std::string("Timeline/Keys/") + toString(i));
-  }
-  if (p.interpolation == Interpolation::Bezier) {
-    const HandleType handles[] = {HandleType::AutoClamped, HandleType::Auto, HandleType::Vector};
-    for (HandleType h : handles) {
-      if (ImGui::RadioButton((std::string("handles: ") + toString(h)).c_str(), p.handles == h)) p.handles = h;
-      recordItem(std::string("Timeline/Keys/handles: ") + toString(h));
-    }
-  }
-  ImGui::Checkbox("Location + rotation only", &p.locRotOnly);
-  recordItem("Timeline/Keys/Location + rotation only");
-  ImGui::TextDisabled("Rotations (quaternions) take %s", toString(rotationInterpolation(p.interpolation)));
+  drawKeyPreferenceChoices(state, "Timeline/Keys/");  // also in Edit > Preferences
   ImGui::EndPopup();
 }
 
@@ -67,7 +49,7 @@ void drawRuler(EditorState& state, const TimelineRuler& r) {
   // Ticks every 1, 2, 5, 10, 20, 50... frames, at least 40 px apart.
   const double pxPerFrame = (r.w - 2 * kTimelineRulerMargin) / double(std::max(r.last - r.first, 1LL));
   long long step = 1;
-  for (int i = 0; step * pxPerFrame < 40.0 && i < 30; ++i) step = (i % 3 == 1) ? step / 2 * 5 : step * 2;
+  for (int i = 0; step * pxPerFrame < scaled(state, 40.0f) && i < 30; ++i) step = (i % 3 == 1) ? step / 2 * 5 : step * 2;
   for (long long f = (r.first / step) * step; f <= r.last; f += step) {
     if (f <= r.first) f = r.first;  // the first frame is always labelled
     const float x = r.xOfFrame(f);
@@ -83,7 +65,7 @@ void drawRuler(EditorState& state, const TimelineRuler& r) {
   const float cy = r.y + r.h * 0.5f + 2.0f;  // below the tick labels' middle
   for (long long f : selectedKeyFrames(state)) {
     if (f < r.first || f > r.last) continue;
-    const float x = r.xOfFrame(f), d = kDiamondRadius;
+    const float x = r.xOfFrame(f), d = scaled(state, kDiamondRadius);
     draw->AddQuadFilled(ImVec2(x, cy - d - 1), ImVec2(x + d + 1, cy), ImVec2(x, cy + d + 1), ImVec2(x - d - 1, cy),
                         kDiamondOutline);
     draw->AddQuadFilled(ImVec2(x, cy - d), ImVec2(x + d, cy), ImVec2(x, cy + d), ImVec2(x - d, cy), kDiamondFill);
@@ -95,13 +77,13 @@ void drawRuler(EditorState& state, const TimelineRuler& r) {
 void drawTimelinePanel(CommandContext& ctx) {
   EditorState& state = ctx.state;
   if (!state.timelineShown()) return;
-  const PanelRect r = timelineRect(ImGui::GetIO().DisplaySize);
+  const PanelRect r = state.layout.timeline;
   ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(r.w, r.h), ImGuiCond_Always);
-  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 2));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, scaled(state, ImVec2(4, 2)));
   ImGui::Begin("Timeline", nullptr, kPanelFlags | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
   recordWindow("Timeline");
-  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(4, 1));
+  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, scaled(state, ImVec2(4, 1)));
   auto status = [&](const std::string& message) {
     if (!message.empty()) state.statusMessage = message;
   };
@@ -122,24 +104,24 @@ void drawTimelinePanel(CommandContext& ctx) {
   int start = static_cast<int>(rangeStartFrame(state)), end = static_cast<int>(rangeEndFrame(state));
   ImGui::TextUnformatted("Start");
   ImGui::SameLine(0, 3);
-  ImGui::SetNextItemWidth(40);
+  ImGui::SetNextItemWidth(scaled(state, 40));
   if (ImGui::InputInt("##start", &start, 0, 0, enter)) status(setFrameRange(state, start, end));
   recordItem("Timeline/Start frame");
   ImGui::SameLine();
   ImGui::TextUnformatted("End");
   ImGui::SameLine(0, 3);
-  ImGui::SetNextItemWidth(40);
+  ImGui::SetNextItemWidth(scaled(state, 40));
   if (ImGui::InputInt("##end", &end, 0, 0, enter)) status(setFrameRange(state, start, end));
   recordItem("Timeline/End frame");
   ImGui::SameLine();
   ImGui::TextUnformatted("fps");
   ImGui::SameLine(0, 3);
   int fps = static_cast<int>(std::lround(timelineFps(state)));
-  ImGui::SetNextItemWidth(28);
+  ImGui::SetNextItemWidth(scaled(state, 28));
   if (ImGui::InputInt("##fps", &fps, 0, 0, enter)) status(setFrameRate(state, fps));
   recordItem("Timeline/Fps");
   ImGui::SameLine();
-  ImGui::Checkbox("Loop", &state.loop);
+  if (ImGui::Checkbox("Loop", &state.loop)) saveEditorPreferences(state);  // also in Edit > Preferences
   recordItem("Timeline/Loop");
   ImGui::SameLine();
   // Auto-key: Blender's record button, red while on.
@@ -152,9 +134,9 @@ void drawTimelinePanel(CommandContext& ctx) {
   recordItem("Timeline/Keys");
   keyPreferencesPopup(state);
   ImGui::SameLine();
-  commandSelectable(ctx, "view.dope_sheet", "Timeline", "Dope", ImVec2(34, 0));
+  commandSelectable(ctx, "view.dope_sheet", "Timeline", "Dope", scaled(state, ImVec2(34, 0)));
   ImGui::SameLine();
-  commandSelectable(ctx, "view.curve_editor", "Timeline", "Curves", ImVec2(44, 0));
+  commandSelectable(ctx, "view.curve_editor", "Timeline", "Curves", scaled(state, ImVec2(44, 0)));
   ImGui::PopStyleVar();
   drawRuler(state, timelineRuler(state, r.x, r.y, r.w, r.h));
   ImGui::End();

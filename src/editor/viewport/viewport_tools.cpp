@@ -29,9 +29,10 @@ bool hasSelectedAncestor(const Document& doc, int joint) {
 
 int ikHandleUnder(const EditorState& state, const ViewportView& view, glm::vec2 mouse) {
   const std::vector<PoseIkTarget>& targets = state.doc.ikTargets();
+  const float radius = kHandlePickPixels * std::max(state.preferences.lineScale, 1.0f);  // markers grow with it
   for (int i = 0; i < static_cast<int>(targets.size()); ++i) {
     glm::vec2 p;
-    if (view.project(targets[i].target.position, p) && glm::length(p - mouse) < kHandlePickPixels) return i;
+    if (view.project(targets[i].target.position, p) && glm::length(p - mouse) < radius) return i;
   }
   return -1;
 }

@@ -20,6 +20,7 @@
 #include "editor/window/imgui_backends.h"
 #include "editor/panels/panel_layout.h"
 #include "editor/window/state_dump.h"
+#include "editor/window/ui_style.h"
 #include "editor/viewport/viewport_overlay.h"
 #include "editor/viewport/animation_display.h"
 #include "editor/viewport/viewport_controller.h"
@@ -53,14 +54,29 @@ void onGlfwError(int code, const char* description) {
   lastGlfwError() = "GLFW error " + std::to_string(code) + ": " + (description ? description : "");
 }
 
-GLFWwindow* createWindow(const EditorWindowOptions& o, const std::string& title, int samples) {
+GLFWwindow* createWindow(const WindowPlacement& place, const std::string& title, int samples) {
   glfwDefaultWindowHints();
+  glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);  // shown once placed
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_SAMPLES, samples);
-  return glfwCreateWindow(o.width, o.height, title.c_str(), nullptr, nullptr);
+  return glfwCreateWindow(place.width, place.height, title.c_str(), nullptr, nullptr);
+}
+
+// The primary monitor's work area (without panels and docks); width 0 when unknown.
+ScreenArea primaryWorkArea() {
+  ScreenArea a;
+  if (GLFWmonitor* m = glfwGetPrimaryMonitor()) glfwGetMonitorWorkarea(m, &a.x, &a.y, &a.width, &a.height);
+  return a;
+}
+
+// Text and widget scale: the preference times the monitor's factor (HiDPI, ui_style.h).
+float effectiveUiScale(GLFWwindow* window, const EditorState& state, float framebufferRatio) {
+  float cx = 1.0f, cy = 1.0f;
+  glfwGetWindowContentScale(window, &cx, &cy);
+  return state.preferences.uiScale * monitorUiFactor(cx, framebufferRatio);
 }
 
 // Live GLFW callbacks only queue events; the frame loop hands them to the same handler as
@@ -198,14 +214,27 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     result.error = "cannot start GLFW: " + lastGlfwError();
     return result;
   }
+  // Edit > Preferences as saved last; a bad file is reported (below) and the defaults used.
+  std::vector<std::string> preferenceProblems;
+  applyPreferences(state, loadUserPreferences(preferenceProblems));
+  if (o.uiScale > 0.0f) state.preferences.uiScale = o.uiScale;
+  WindowPlacement place;
+  if (o.width > 0 && o.height > 0) {  // --size wins over anything remembered
+    place.width = o.width;
+    place.height = o.height;
+  } else {
+    place = initialWindowPlacement(state.preferences.window, primaryWorkArea());
+  }
   std::string title = editorWindowTitle(state);
-  GLFWwindow* window = createWindow(o, title, 4);
-  if (!window) window = createWindow(o, title, 0);  // no multisampled visual: draw without MSAA
+  GLFWwindow* window = createWindow(place, title, 4);
+  if (!window) window = createWindow(place, title, 0);  // no multisampled visual: draw without MSAA
   if (!window) {
     result.error = "cannot open an OpenGL 3.3 core window: " + lastGlfwError();
     glfwTerminate();
     return result;
   }
+  if (place.positioned) glfwSetWindowPos(window, place.x, place.y);
+  glfwShowWindow(window);
   glfwMakeContextCurrent(window);
   const int version = gladLoadGL(glfwGetProcAddress);
   if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < 33) {
@@ -236,7 +265,17 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
   io.GetClipboardTextFn = getClipboard;
   io.ClipboardUserData = window;
   mapImGuiKeys(io);
-  ImGui::StyleColorsDark();
+  UiStyle uiStyle;  // fonts and style at the UI scale, rebuilt when it or the theme changes
+  auto updateLayout = [&](int w, int h, int fw) {
+    const float ratio = w > 0 ? float(fw) / float(w) : 1.0f;
+    const float scale = effectiveUiScale(window, state, ratio);
+    uiStyle.update(scale, ratio, state.preferences.theme);
+    LayoutMetrics metrics;
+    metrics.fontSize = uiStyle.fontSize();
+    metrics.scale = scale;
+    metrics.framePaddingY = uiStyle.framePaddingY();
+    state.layout = computeEditorLayout(float(w), float(h), state.preferences.panels, state.bottomPanels(), metrics);
+  };
   imguiBackendsInit(window);
 
   std::vector<double> frameMs;
@@ -283,6 +322,10 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       std::cerr << "kinema edit: keymap: " << problem << "\n";
       showEditorError(state, "keymap: " + problem);
     }
+    for (const std::string& problem : preferenceProblems) {
+      std::cerr << "kinema edit: preferences: " << problem << "\n";
+      showEditorError(state, "preferences: " + problem);
+    }
     EditorInput input;
     SkeletonDrawList list;  // last frame's drawing: picking casts rays against it
     SkeletonDrawList selectionAlone;  // with the bones hidden: the selected bones (hiddenBonesSelection)
@@ -294,7 +337,8 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     if (error.empty()) error = uploadMeshes();
     long long uploadedMeshRevision = state.doc.meshRevision();  // a bind replaces the meshes
     glfwGetWindowSize(window, &ww, &wh);
-    const PanelRect startRect = viewportRect(ImVec2(float(ww), float(wh)), state.bottomPanels());
+    updateLayout(ww, wh, fbw);
+    const PanelRect startRect = state.layout.viewport;
     state.camera = defaultCamera(viewBounds(), startRect.w / startRect.h);
     size_t nextScripted = 0;
     const long long lastScriptFrame = o.script.empty() ? 0 : o.script.back().frame;
@@ -313,9 +357,10 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       previous = now;
       glfwGetWindowSize(window, &ww, &wh);
       glfwGetFramebufferSize(window, &fbw, &fbh);
+      updateLayout(ww, wh, fbw);  // between frames: the font atlas may be rebuilt
       // The 3D view is the free area between the panels (the empty-frame measurement has none).
       const PanelRect vp = o.emptyFrame ? PanelRect{0.0f, 0.0f, float(std::max(ww, 1)), float(std::max(wh, 1))}
-                                        : viewportRect(ImVec2(float(ww), float(wh)), state.bottomPanels());
+                                        : state.layout.viewport;
       state.viewportRect = glm::vec4(vp.x, vp.y, vp.w, vp.h);
       const ViewportView view = ViewportView::of(state.camera, glm::vec2(vp.w, vp.h), glm::vec2(vp.x, vp.y));
 
@@ -414,6 +459,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         description.height = vh;
         description.sceneRadius = bounds.radius();
         description.showGrid = state.view.showGrid;
+        description.lineScale = state.preferences.lineScale;  // thicker for a projector (Edit > Preferences)
         description.meshes = meshes.empty() ? nullptr : &meshDraw;
         description.ghosts = &animationDisplay.ghostLists;
         description.bones = !state.view.showBones ? BoneDisplay::None
@@ -454,6 +500,18 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       if (last) break;
     }
     result.frames = frame;
+    // The window's size and place and the splitters, for the next start (the rest of the
+    // preferences is saved when changed); a file that could not be read is left alone.
+    std::vector<std::string> unreadable;
+    UserPreferences saved = loadUserPreferences(unreadable);
+    if (unreadable.empty()) {
+      saved.panels = state.preferences.panels;
+      glfwGetWindowPos(window, &saved.window.x, &saved.window.y);
+      glfwGetWindowSize(window, &saved.window.width, &saved.window.height);
+      saved.window.positioned = true;
+      if (const std::string failed = saveUserPreferences(saved); !failed.empty())
+        std::cerr << "kinema edit: preferences: " << failed << "\n";
+    }
     if (!o.dumpStatePath.empty()) {
       const std::string dumpError = writeFileAtomically(o.dumpStatePath, editorStateJson(state, ww, wh, frame));
       if (result.error.empty()) result.error = dumpError;

@@ -8,7 +8,10 @@
 namespace kinema {
 
 struct EditorWindowOptions {
-  int width = 1280, height = 720;
+  // Window size in pixels (--size); 0: the size remembered in the preferences, else most of
+  // the screen (never more than the monitor's work area).
+  int width = 0, height = 0;
+  float uiScale = 0.0f;       // > 0: --ui-scale, instead of the preferences' (not saved)
   long long frameCount = 0;   // > 0: stop after this many frames (tests under Xvfb)
   std::string screenshotPath; // with frameCount: the last frame's pixels go here as PNG
   // Replayed input (kinema edit --script): each event is handled in its frame, and every

@@ -12,4 +12,8 @@ void imguiBackendsInit(GLFWwindow*) { ImGui_ImplOpenGL3_Init("#version 330 core"
 void imguiBackendsNewFrame() { ImGui_ImplOpenGL3_NewFrame(); }
 void imguiBackendsRenderDrawData(ImDrawData* data) { ImGui_ImplOpenGL3_RenderDrawData(data); }
 void imguiBackendsShutdown() { ImGui_ImplOpenGL3_Shutdown(); }
+void imguiBackendsReloadFonts() {
+  ImGui_ImplOpenGL3_DestroyFontsTexture();
+  ImGui_ImplOpenGL3_CreateFontsTexture();
+}
 }  // namespace kinema

@@ -9,4 +9,6 @@ void imguiBackendsInit(GLFWwindow* window);
 void imguiBackendsNewFrame();
 void imguiBackendsRenderDrawData(ImDrawData* data);
 void imguiBackendsShutdown();
+// Uploads the font atlas again after it was rebuilt (a new UI scale): between frames.
+void imguiBackendsReloadFonts();
 }  // namespace kinema

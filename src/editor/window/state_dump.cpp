@@ -18,8 +18,8 @@ json jointName(const EditorState& s, int j) {
 }
 // The timeline (timeline.h): frame, range, rate, playback switches, the ruler's pixels and
 // the edited clip's channels with their key times.
-json timelineJson(const EditorState& s, int windowWidth, int windowHeight) {
-  const PanelRect strip = timelineRect(ImVec2(float(windowWidth), float(windowHeight)));
+json timelineJson(const EditorState& s) {
+  const PanelRect strip = s.layout.timeline;
   const TimelineRuler r = timelineRuler(s, strip.x, strip.y, strip.w, strip.h);
   const AutoKeySettings& a = s.doc.autoKey;
   json t = {{"shown", s.timelineShown()},
@@ -159,13 +159,29 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
   out["frames"] = frames;
   out["world_evaluations"] = doc.worldEvaluations();  // forward kinematics runs of this document (one per pose change)
   out["window"] = {{"width", windowWidth}, {"height", windowHeight}};
+  // Edit > Preferences (user_preferences.h): the chosen UI scale; the font's pixel height
+  // and the effective scale (times the monitor's content scale) as laid out this frame.
+  out["ui_scale"] = s.preferences.uiScale;
+  out["preferences"] = {{"ui_scale", s.preferences.uiScale},
+                        {"line_scale", s.preferences.lineScale},
+                        {"theme", toString(s.preferences.theme)},
+                        {"font_size", s.layout.metrics.fontSize},
+                        {"effective_scale", s.layout.metrics.scale},
+                        {"panels",
+                         {{"left_width", s.preferences.panels.leftWidth},
+                          {"right_width", s.preferences.panels.rightWidth},
+                          {"outliner_fraction", s.preferences.panels.outlinerFraction},
+                          {"properties_fraction", s.preferences.panels.propertiesFraction},
+                          {"animation_editor_height", s.preferences.panels.animationEditorHeight}}}};
+  out["log"] = json::array();  // View > Log: every message in full, oldest first
+  for (const LogEntry& e : s.log.entries()) out["log"].push_back({{"time", e.time}, {"text", e.text}, {"error", e.error}});
   out["viewport"] = {{"x", s.viewportRect.x}, {"y", s.viewportRect.y}, {"width", s.viewportRect.z},
                      {"height", s.viewportRect.w}};
   out["playback"] = {{"clip", s.hasMotion() ? s.clip : -1}, {"time", s.time}, {"playing", s.playing}};
   json clipNames = json::array();  // the clip list in file order; playback.clip indexes it
   for (const Clip& c : doc.scene().clips) clipNames.push_back(c.name);
   out["clips"] = clipNames;
-  out["timeline"] = timelineJson(s, windowWidth, windowHeight);
+  out["timeline"] = timelineJson(s);
   out["tool"] = modalToolName(s.tool.mode);
   out["compare"] = compareStateJson(s.compare);  // Teach > Compare Solvers (docs/cli.md)
   out["dope_sheet"] = dopeSheetJson(s);
