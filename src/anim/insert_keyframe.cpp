@@ -17,7 +17,7 @@ Channel* findChannel(Clip& clip, int joint, ChannelTarget target) {
 
 KeySettings defaultsFor(ChannelTarget target) {
   KeySettings s;
-  s.interpolation = target == ChannelTarget::Rotation ? Interpolation::Squad : Interpolation::Bezier;
+  s.interpolation = Interpolation::Bezier;  // auto-clamped handles (KeySettings' default), rotations too
   return s;
 }
 

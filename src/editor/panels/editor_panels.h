@@ -23,6 +23,9 @@ void drawHistoryPanel(EditorState& state);    // undo stack, click to jump
 void drawStatusBar(CommandContext& ctx, float fps);
 void drawSessionDialogs(CommandContext& ctx);  // file dialog, discard / recover modals, errors, Help > Controls
 void drawAnimationDisplayWindows(EditorState& state);  // onion skin & motion path settings, motion control
+// Esc closes the open non-modal popups (menus, combos, context popups) above the topmost
+// modal (modals answer Esc themselves); sets PanelState::popupOpen. Last in each frame.
+void closePopupsOnEscape(EditorState& state);
 
 // Older panels kept for the joint list view and playback.
 void drawJointListPanel(EditorState& state);

@@ -188,6 +188,7 @@ void drawEditorPanels(CommandContext& ctx, float fps) {
     drawComparePanel(ctx);
     drawStatusBar(ctx, fps);
     drawSessionDialogs(ctx);
+    closePopupsOnEscape(state);
     return;
   }
   drawMainMenuBar(ctx);
@@ -201,6 +202,7 @@ void drawEditorPanels(CommandContext& ctx, float fps) {
   drawDopeSheetPanel(state);
   drawAnimationDisplayWindows(state);
   drawSessionDialogs(ctx);
+  closePopupsOnEscape(state);
 }
 
 }  // namespace kinema
