@@ -520,6 +520,24 @@ TEST(CurveEditorHandles, RotationHandlesInTheEulerViewRoundTripInDegrees) {
   EXPECT_NEAR(after, 80.0, 8.0);
 }
 
+// New channels carry one interpolation for all keys (Channel::interpolation, `keys` empty):
+// editing one key's settings or handle gives every key its own copy of the channel's, so
+// the others stay Bezier (they were reset to the default Linear before).
+TEST(CurveEditorHandles, EditingOneKeyOfAChannelWideBezierKeepsTheOthersBezier) {
+  Clip clip;
+  clip.channels.push_back(translationChannel());
+  clip.channels[0].interpolation = Interpolation::Bezier;
+  changeKeySettings(clip, {{0, 1, 1}}, [](KeySettings& s) { s.interpolation = Interpolation::Step; });
+  ASSERT_EQ(clip.channels[0].keys.size(), 4u);
+  EXPECT_EQ(clip.channels[0].keys[0].interpolation, Interpolation::Bezier);
+  EXPECT_EQ(clip.channels[0].keys[1].interpolation, Interpolation::Step);
+  EXPECT_EQ(clip.channels[0].keys[2].interpolation, Interpolation::Bezier);
+  Channel ch = translationChannel();
+  ch.interpolation = Interpolation::Bezier;
+  dragBezierHandle(ch, 1, true, 1, 0.1f, 0.2f, 30.0f);
+  for (int k : {0, 2, 3}) EXPECT_EQ(ch.keys[size_t(k)].interpolation, Interpolation::Bezier) << k;
+}
+
 // A selects every key of the visible curves; a box selects those whose dots lie inside it.
 TEST(CurveEditorSelection, SelectAllAndBoxSelect) {
   Clip clip;

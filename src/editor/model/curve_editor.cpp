@@ -21,6 +21,13 @@ glm::vec4 toVec(const glm::quat& q) { return {q.x, q.y, q.z, q.w}; }
 
 constexpr float kDegrees = 180.0f / kPi;
 
+// A channel with one interpolation for all keys (`keys` empty) gets per-key settings, each
+// the channel's, before one key's are edited. (Filling after a resize would read the
+// default-constructed ones: Channel::settings reads `keys` once it is not empty.)
+void giveKeysTheirSettings(Channel& ch) {
+  if (ch.keys.empty()) ch.keys.assign(ch.times.size(), ch.settings(0));
+}
+
 // `angle` plus whole turns (`turn`: 2 pi in radians, 360 in degrees), within half a turn of `previous`.
 float unwrapNear(float angle, float previous, float turn) {
   return angle - turn * std::round((angle - previous) / turn);
@@ -342,10 +349,7 @@ int changeKeySettings(Clip& clip, const std::vector<CurveKeyRef>& keys, const st
       ++skipped;
       continue;
     }
-    if (ch.keys.empty()) {
-      ch.keys.resize(ch.times.size());
-      for (int i = 0; i < ch.keyCount(); ++i) ch.keys[i] = ch.settings(i);
-    }
+    giveKeysTheirSettings(ch);
     ch.keys[k.key] = s;
   }
   return skipped;
@@ -358,10 +362,7 @@ glm::vec2 handleDeltaFromPixels(const CurveView& v, const PlotRect& r, glm::vec2
 void dragBezierHandle(Channel& ch, int key, bool right, int component, float timeOffset, float valueOffset,
                       float framesPerSecond) {
   if (key < 0 || key >= ch.keyCount()) return;
-  if (ch.keys.empty()) {
-    ch.keys.resize(ch.times.size());
-    for (int i = 0; i < ch.keyCount(); ++i) ch.keys[i] = ch.settings(i);
-  }
+  giveKeysTheirSettings(ch);
   // The handles as drawn (auto types computed) become the stored ones, so that turning an
   // auto handle into an aligned one keeps the curve's shape, as in Blender.
   const BezierHandles eff = effectiveHandles(ch, key);
@@ -464,10 +465,7 @@ void dragCurveHandle(Channel& ch, const CurveHandle& h, glm::vec2 offset, Rotati
   // The control point on the tangent plane at the key (key + handle orthogonal to it); a
   // handle turned a half turn or more away is held just short of it.
   const float along = std::max(glm::dot(p, q), 0.05f);
-  if (ch.keys.empty()) {
-    ch.keys.resize(ch.times.size());
-    for (int i = 0; i < ch.keyCount(); ++i) ch.keys[i] = ch.settings(i);
-  }
+  giveKeysTheirSettings(ch);
   // The handles as drawn (auto types computed) become the stored ones, as in dragBezierHandle.
   KeySettings& s = ch.keys[key];
   s.leftHandleTime = eff.leftTime, s.rightHandleTime = eff.rightTime;
@@ -477,10 +475,7 @@ void dragCurveHandle(Channel& ch, const CurveHandle& h, glm::vec2 offset, Rotati
 
 void setHermiteTangentFromHandle(Channel& ch, int key, bool right, int component, float timeOffset, float valueOffset) {
   if (key < 0 || key >= ch.keyCount()) return;
-  if (ch.keys.empty()) {
-    ch.keys.resize(ch.times.size());
-    for (int i = 0; i < ch.keyCount(); ++i) ch.keys[i] = ch.settings(i);
-  }
+  giveKeysTheirSettings(ch);
   // A handle pulled through the key onto the other side would flip the slope's meaning: clamp.
   const float t = right ? std::max(timeOffset, 1e-4f) : std::min(timeOffset, -1e-4f);
   (right ? ch.keys[key].outTangent : ch.keys[key].inTangent)[component] = valueOffset / t;
