@@ -93,7 +93,7 @@ void keyPropertiesStrip(EditorState& state, const Clip& clip) {
   CurveEditorState& ce = state.curveEditor;
   ImGui::AlignTextToFramePadding();  // the same row height with or without widgets: the plot stays put
   if (ce.selected.empty()) {
-    ImGui::TextDisabled("Click a key (Shift: add) or drag a box (B) to select, A: all; drag keys to move; middle drag: pan");
+    ImGui::TextDisabled("Select keys: click (Shift: add), drag a box (B), A: all; drag keys to move");
     return;
   }
   const CurveKeyRef k = ce.selected.front();
