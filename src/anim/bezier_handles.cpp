@@ -41,8 +41,17 @@ void side(const Channel& ch, int k, bool right, const KeySettings& s, float& dt,
     return;
   }
   if (!hasNeighbour) {
-    dt = 0.0f;
-    dv = glm::vec4(0.0f);
+    // The outer handle of an end key (never evaluated: extrapolation is constant) mirrors
+    // the inner one through the key, as Blender draws it; a lone key has none.
+    const int inner = right ? k - 1 : k + 1;
+    if (inner < 0 || inner >= n) {
+      dt = 0.0f;
+      dv = glm::vec4(0.0f);
+      return;
+    }
+    side(ch, k, !right, s, dt, dv);
+    dt = -dt;
+    dv = -dv;
     return;
   }
   const float span = ch.times[neighbour] - ch.times[k];  // negative on the left

@@ -12,7 +12,8 @@ struct BezierHandles {
 
 // Free and Aligned handles come from the key; Vector, Auto and AutoClamped handles are
 // computed from the neighbouring keys (Blender's meaning, see HandleType). End keys with
-// Auto or AutoClamped handles are flat, as in Blender with constant extrapolation.
+// Auto or AutoClamped handles are flat, as in Blender with constant extrapolation; their
+// outer computed handle (used by no segment) is the inner one mirrored through the key.
 BezierHandles effectiveHandles(const Channel& channel, int key);
 
 // The value of the Bezier segment from key k to key k+1 at time t (inside the segment).

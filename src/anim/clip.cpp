@@ -37,7 +37,8 @@ bool finite(const glm::vec4& v) {
 bool suits(Interpolation i, ChannelTarget target) {
   if (target == ChannelTarget::Rotation)
     return i == Interpolation::Step || i == Interpolation::Linear || i == Interpolation::Nlerp ||
-           i == Interpolation::Squad || i == Interpolation::Hermite || i == Interpolation::Ease;
+           i == Interpolation::Squad || i == Interpolation::Hermite || i == Interpolation::Ease ||
+           i == Interpolation::Bezier;
   return i != Interpolation::Nlerp && i != Interpolation::Squad;
 }
 

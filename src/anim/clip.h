@@ -20,7 +20,9 @@ enum class ChannelTarget { Translation, Rotation, Scale, Euler, Scalar };
 //              second); rotations: glTF CUBICSPLINE (component-wise, then normalised).
 //  CatmullRom  automatic tangents (f[k+1]-f[k-1]) / (t[k+1]-t[k-1]); natural ends.
 //  TCB         Kochanek-Bartels: Catmull-Rom shaped by each key's tension/continuity/bias.
-//  Bezier      Blender-style handles (HandleType), time axis solved so f is a function of t.
+//  Bezier      Blender-style handles (HandleType), time axis solved so f is a function of t;
+//              rotations: Blender's quaternion F-curves (the four components as stored,
+//              each a Bezier curve with its own handle values, then normalised).
 //  Ease        easing preset (easing, easingMode) from the key's value to the next.
 //  Nlerp       rotations only: normalised linear blend of the quaternions (shortest arc).
 //  Squad       rotations only: Shoemake's spherical spline through the keys (C1 at keys).

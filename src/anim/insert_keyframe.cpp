@@ -15,9 +15,10 @@ Channel* findChannel(Clip& clip, int joint, ChannelTarget target) {
   return nullptr;
 }
 
-KeySettings defaultsFor(ChannelTarget target) {
+// New channels' keys: Bezier with auto-clamped handles (KeySettings' default), rotations too.
+KeySettings defaultKeySettings() {
   KeySettings s;
-  s.interpolation = target == ChannelTarget::Rotation ? Interpolation::Squad : Interpolation::Bezier;
+  s.interpolation = Interpolation::Bezier;
   return s;
 }
 
@@ -28,7 +29,7 @@ void key(Clip& clip, int joint, ChannelTarget target, float time, glm::vec4 valu
     Channel c;
     c.joint = joint;
     c.target = target;
-    c.interpolation = settings ? settings->interpolation : defaultsFor(target).interpolation;
+    c.interpolation = settings ? settings->interpolation : defaultKeySettings().interpolation;
     clip.channels.push_back(c);
     ch = &clip.channels.back();
   }

@@ -21,9 +21,9 @@ struct InsertKeyframeJob {
   std::string validate(const Skeleton& skeleton, const Pose& pose) const;
 };
 
-// New channels get Bezier keys with auto-clamped handles (translation, scale, Euler) or
-// squad keys (rotation): automatic tangents, so inserting a key between others keeps the
-// motion smooth. A key inserted into an existing channel takes the settings of the key it
+// New channels get Bezier keys with auto-clamped handles (rotations too: quaternion
+// components, as Blender keys them): automatic handles, so two keys ease in and out and
+// inserting a key between others keeps the motion smooth. A key inserted into an existing channel takes the settings of the key it
 // follows. Rotation keys take the sign nearest the previous key; Euler keys are unwrapped
 // to within pi of it. Returns the number of keys written.
 int insertKeyframe(Clip& clip, const InsertKeyframeJob& job, const Pose& pose);

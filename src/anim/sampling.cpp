@@ -24,7 +24,7 @@ glm::vec4 toVec(const glm::quat& q) { return {q.x, q.y, q.z, q.w}; }
 
 glm::vec4 inTangentOf(const Channel& ch, int k) { return ch.keys.empty() ? glm::vec4(0.0f) : ch.keys[k].inTangent; }
 
-glm::vec4 rotationSegment(const Channel& ch, const KeySettings& s, int lo, float u) {
+glm::vec4 rotationSegment(const Channel& ch, const KeySettings& s, int lo, float time, float u) {
   const int hi = lo + 1;
   const glm::quat a = toQuat(ch.values[lo]), b = toQuat(ch.values[hi]);
   switch (s.interpolation) {
@@ -40,6 +40,11 @@ glm::vec4 rotationSegment(const Channel& ch, const KeySettings& s, int lo, float
       return toVec(gltfCubicRotation(ch.values[lo], s.outTangent, ch.values[hi], inTangentOf(ch, hi),
                                      ch.times[hi] - ch.times[lo], u));
     case Interpolation::Ease: return toVec(safeNormalize(slerpShortest(a, b, ease(s.easing, s.easingMode, u))));
+    case Interpolation::Bezier: {
+      // Blender's quaternion F-curves: each stored component a Bezier curve, then normalised.
+      const glm::vec4 v = evaluateBezierSegment(ch, lo, time);
+      return toVec(safeNormalize(glm::quat(v.w, v.x, v.y, v.z)));
+    }
     default: return toVec(safeNormalize(slerpShortest(a, b, u)));
   }
 }
@@ -121,7 +126,7 @@ glm::vec4 sampleChannel(const Channel& ch, float time, int* cursor) {
     return rotation ? toVec(unit(slerpShortest(toQuat(ch.values[lo]), toQuat(ch.values[hi]), u)))
                     : glm::mix(ch.values[lo], ch.values[hi], u);
   const KeySettings s = ch.settings(lo);
-  return rotation ? rotationSegment(ch, s, lo, u) : vectorSegment(ch, s, lo, time, u);
+  return rotation ? rotationSegment(ch, s, lo, time, u) : vectorSegment(ch, s, lo, time, u);
 }
 
 void sampleClip(const Clip& clip, float time, Pose& pose) { sampleInto(clip, time, pose, nullptr); }

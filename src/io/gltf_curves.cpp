@@ -167,12 +167,13 @@ GltfSampler toGltfSampler(const Channel& ch, double rate) {
     if (n == 1) push(s.values, keyValue(ch, 0), c);
     return s;
   }
-  bool allStep = true, allLinear = true, allHermite = true;
+  bool allStep = true, allLinear = true, allCubic = true;
   for (int k = 0; k + 1 < n; ++k) {
     const Interpolation m = modeOf(ch, k);
     allStep = allStep && m == Interpolation::Step;
     allLinear = allLinear && m == Interpolation::Linear;
-    allHermite = allHermite && m == Interpolation::Hermite;
+    // Rotations: Hermite, or Bezier (quaternion F-curves) whose handles make a cubic in time.
+    allCubic = allCubic && (m == Interpolation::Hermite || m == Interpolation::Bezier);
   }
   std::string reason;
   if (allStep) {
@@ -189,14 +190,14 @@ GltfSampler toGltfSampler(const Channel& ch, double rate) {
     }
   } else if (ch.target == ChannelTarget::Euler) {
     reason = "Euler angles are not interpolated like quaternions";
-  } else if (rotation && !allHermite) {
+  } else if (rotation && !allCubic) {
     reason = "glTF rotations are slerped or cubic; this curve is neither";
   } else {
     // CUBICSPLINE: each segment sets the out-tangent of its first key and the in-tangent
     // of its second; the file's first in-tangent and last out-tangent are never used.
     std::vector<glm::vec4> in(n, glm::vec4(0.0f)), out(n, glm::vec4(0.0f));
     for (int k = 0; k + 1 < n && reason.empty(); ++k) {
-      if (rotation) {
+      if (rotation && modeOf(ch, k) == Interpolation::Hermite) {
         out[k] = ch.settings(k).outTangent;
         in[k + 1] = ch.keys.empty() ? glm::vec4(0.0f) : ch.keys[k + 1].inTangent;
       } else if (!segmentTangents(ch, k, out[k], in[k + 1])) {

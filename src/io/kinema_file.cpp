@@ -535,14 +535,12 @@ bool readKeySettings(Reader& r, const Json& j, const std::string& p, int n, KeyS
 }
 
 bool isRotationMode(Interpolation i) { return i == Interpolation::Nlerp || i == Interpolation::Squad; }
-bool onlyVectorMode(Interpolation i) {
-  return i == Interpolation::CatmullRom || i == Interpolation::TCB || i == Interpolation::Bezier;
-}
+bool onlyVectorMode(Interpolation i) { return i == Interpolation::CatmullRom || i == Interpolation::TCB; }
 
 bool checkMode(Reader& r, const std::string& path, Interpolation i, ChannelTarget t) {
   if (t == ChannelTarget::Rotation && onlyVectorMode(i))
     return r.fail(path, std::string("'") + toString(i) +
-                            "' does not apply to rotation (use linear, nlerp, squad, hermite, ease or step)");
+                            "' does not apply to rotation (use bezier, linear, nlerp, squad, hermite, ease or step)");
   if (t != ChannelTarget::Rotation && isRotationMode(i))
     return r.fail(path, std::string("'") + toString(i) + "' applies to rotation channels only");
   return true;

@@ -58,7 +58,8 @@ Channel randomChannel(Gen& g) {
     while (ch.target == ChannelTarget::Rotation
                ? !(s.interpolation == Interpolation::Step || s.interpolation == Interpolation::Linear ||
                    s.interpolation == Interpolation::Nlerp || s.interpolation == Interpolation::Squad ||
-                   s.interpolation == Interpolation::Hermite || s.interpolation == Interpolation::Ease)
+                   s.interpolation == Interpolation::Hermite || s.interpolation == Interpolation::Ease ||
+                   s.interpolation == Interpolation::Bezier)
                : (s.interpolation == Interpolation::Nlerp || s.interpolation == Interpolation::Squad));
     s.easing = static_cast<EasingFunction>(g.pick(10));
     s.easingMode = static_cast<EasingMode>(g.pick(3));

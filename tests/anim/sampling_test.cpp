@@ -27,7 +27,7 @@ Clip randomClip(int joints, int keys, unsigned seed) {
                                     Interpolation::CatmullRom, Interpolation::TCB, Interpolation::Bezier,
                                     Interpolation::Ease};
   const Interpolation rotModes[] = {Interpolation::Linear, Interpolation::Nlerp, Interpolation::Squad,
-                                    Interpolation::Hermite, Interpolation::Step};
+                                    Interpolation::Hermite, Interpolation::Step, Interpolation::Bezier};
   Clip clip;
   for (int j = 0; j < joints; ++j)
     for (ChannelTarget target : {ChannelTarget::Translation, ChannelTarget::Rotation}) {
@@ -169,11 +169,13 @@ TEST(ClipValidate, RejectsModesThatDoNotFitTheTarget) {
   Channel r;
   r.joint = 0;
   r.target = ChannelTarget::Rotation;
-  r.interpolation = Interpolation::Bezier;
+  r.interpolation = Interpolation::TCB;
   r.times = {0};
   r.values = {{0, 0, 0, 1}};
   clip.channels.push_back(r);
-  EXPECT_NE(clip.validate(s).find("bezier"), std::string::npos);
+  EXPECT_NE(clip.validate(s).find("tcb"), std::string::npos);
+  clip.channels[0].interpolation = Interpolation::Bezier;  // quaternion F-curves: accepted
+  EXPECT_EQ(clip.validate(s), "");
   clip.channels[0].target = ChannelTarget::Translation;
   clip.channels[0].interpolation = Interpolation::Squad;
   EXPECT_NE(clip.validate(s).find("squad"), std::string::npos);
@@ -214,8 +216,10 @@ TEST(InsertKeyframe, KeysThePoseAndKeepsMotionSmooth) {
   auto x = [&](double t) { return static_cast<double>(sampleChannel(c, static_cast<float>(t)).x); };
   const double h = 1e-3;
   EXPECT_NEAR((x(1) - x(1 - h)) / h, (x(1 + h) - x(1)) / h, 0.02);
-  // Rotation keys are squad (C1) and keep the sign nearest the previous key.
-  EXPECT_EQ(clip.channels[1].settings(0).interpolation, Interpolation::Squad);
+  // Rotation keys are Bezier with auto-clamped handles (eased, as Blender's) and keep the
+  // sign nearest the previous key.
+  EXPECT_EQ(clip.channels[1].settings(0).interpolation, Interpolation::Bezier);
+  EXPECT_EQ(clip.channels[1].settings(0).rightHandleType, HandleType::AutoClamped);
   pose.local[1].rotation = -axisAngle({0, 0, 1}, 0.1f);
   job.time = 5.0f;
   insertKeyframe(clip, job, pose);

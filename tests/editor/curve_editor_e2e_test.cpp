@@ -6,6 +6,8 @@
 // Expected values are derived by hand in the comments (Kochanek-Bartels with tension 1 has
 // zero tangents, so the segment is a cubic Hermite with zero tangents).
 #include <cmath>
+#include <set>
+#include <tuple>
 
 #include "anim/sampling.h"
 #include "editor/e2e_harness.h"
@@ -258,8 +260,9 @@ TEST_F(CurveEditorE2e, ViewMenuOpensItAndTheRotationViewSwitches) {
   ASSERT_EQ(euler["curve_editor"]["open"], true);
   ASSERT_EQ(euler["curve_editor"]["curves"].size(), 6u);
   EXPECT_EQ(euler["curve_editor"]["curves"][5]["label"], "Spine Rotation Z (XYZ)");
-  // Spine turns 60 degrees about Z: its Euler Z key goes 0 -> pi/3.
-  EXPECT_NEAR(double(euler["curve_editor"]["curves"][5]["keys"][1]["value"]), M_PI / 3, 1e-5);
+  // Spine turns 60 degrees about Z: its Euler Z key goes 0 -> 60 (degrees, as the properties panel shows).
+  EXPECT_EQ(euler["curve_editor"]["curves"][5]["unit"], "deg");
+  EXPECT_NEAR(double(euler["curve_editor"]["curves"][5]["keys"][1]["value"]), 60.0, 1e-3);
   s.clickItem("Curve Editor/Rotation view").wait(2);
   // A key of the y curve selected, Bezier, so that the screenshot shows handles.
   const json q = run(s, "curve_quaternion_view");
@@ -267,6 +270,7 @@ TEST_F(CurveEditorE2e, ViewMenuOpensItAndTheRotationViewSwitches) {
   EXPECT_EQ(q["curve_editor"]["rotation_view"], "quaternion");
   ASSERT_EQ(q["curve_editor"]["curves"].size(), 7u);
   EXPECT_NEAR(double(q["curve_editor"]["curves"][6]["keys"][1]["value"]), std::cos(M_PI / 6), 1e-5);  // w
+  EXPECT_EQ(q["curve_editor"]["curves"][6]["unit"], "");  // quaternion components: unitless
 }
 
 // The README's picture (docs/images/curve_editor.png): Hips and Spine in the normalized
@@ -286,6 +290,101 @@ TEST_F(CurveEditorE2e, ReadmeScreenshotNormalizedWithABezierKey) {
   EXPECT_EQ(d["curve_editor"]["normalized"], true);
   EXPECT_EQ(d["curve_editor"]["curves"].size(), 6u);
   EXPECT_EQ(yKey(d, 1)["interpolation"], "bezier");
+}
+
+// Head (no channels in the file) keyed with I at frame 0 (its rest, 0 degrees about Z) and
+// at frame 10 at 90 degrees (typed into the properties panel), then the playhead back at
+// frame 2 (u = 0.2). The new keys ease: Bezier with auto-clamped handles, flat at both end
+// keys and a third of the interval long, so the quaternion moves by s = 3u^2 - 2u^3 and
+// is normalised: the angle is 2 atan2(s sin 45, (1 - s) + s cos 45) = 8.68 degrees, not
+// the 18 of a straight line. The curve editor shows it in degrees.
+Script& keyHeadTwice(Script& s) {
+  s.select("Head").key("I").wait(2);
+  for (int i = 0; i < 10; ++i) s.key("RIGHT").wait(1);
+  s.euler(2, 90.0).select("Head").key("I").wait(2);
+  s.keyDown("LEFT_SHIFT").key("F6").keyUp("LEFT_SHIFT").wait(2);
+  for (int i = 0; i < 8; ++i) s.key("LEFT").wait(1);
+  return s.wait(2);
+}
+double easedDegrees(double u) {
+  const double sm = 3 * u * u - 2 * u * u * u, h = M_PI / 4;
+  return 2 * std::atan2(sm * std::sin(h), (1 - sm) + sm * std::cos(h)) * 180 / M_PI;
+}
+const json* curveLabelled(const json& d, const std::string& label) {
+  for (const json& c : d["curve_editor"]["curves"])
+    if (c["label"] == label) return &c;
+  ADD_FAILURE() << "no curve " << label;
+  return nullptr;
+}
+
+// One run keys and dumps (degrees, the eased default, playback); a second replays that and
+// then selects: A (all 12 keys of Head's 6 curves) and Linear from the interpolation combo
+// for all of them; the combo opened again and closed with Esc, so a click where its Step
+// entry was picks nothing; A then Alt+A (none); a Shift+drag from empty plot space boxes the
+// 90-degree key (added to the empty selection); B then a Shift+drag starting on the
+// frame-0 keys boxes them without moving them. The boxed keys are computed here from the
+// first run's plot, view and key values.
+TEST_F(CurveEditorE2e, NewRotationKeysEaseInDegreesAndKeysSelectWithABoxAndEsc) {
+  Script first;
+  keyHeadTwice(first);
+  const json d = run(first, "curve_degrees_ease");
+  ASSERT_TRUE(d.is_object());
+  ASSERT_EQ(d["curve_editor"]["curves"].size(), 6u);  // Head location x y z, rotation X Y Z
+  const json* z = curveLabelled(d, "Head Rotation Z (XYZ)");
+  ASSERT_NE(z, nullptr);
+  EXPECT_EQ((*z)["unit"], "deg");
+  ASSERT_EQ((*z)["keys"].size(), 2u);
+  EXPECT_NEAR(double((*z)["keys"][0]["value"]), 0.0, 1e-3);
+  EXPECT_NEAR(double((*z)["keys"][1]["value"]), 90.0, 1e-3);
+  EXPECT_EQ((*z)["keys"][0]["interpolation"], "bezier");
+  // The playhead's place between the keys (frame 2 of 0..10).
+  const double k0 = (*z)["keys"][0]["time"], k1 = (*z)["keys"][1]["time"];
+  const double u = (double(d["playback"]["time"]) - k0) / (k1 - k0);
+  EXPECT_NEAR(u, 0.2, 1e-4);
+  const double eased = easedDegrees(u);
+  EXPECT_NEAR(double((*z)["value_now"]), eased, 1e-2);
+  EXPECT_LT(double((*z)["value_now"]), u * 90 - 5) << "an ease lags the straight line here";
+  // Playback follows the curve: Head's pose at frame 2 is that rotation about Z.
+  expectRotation(rotationIn(d, "Head"), glm::angleAxis(glm::radians(eased), glm::dvec3(0, 0, 1)), 1e-4, "frame 2");
+
+  const glm::dvec2 z1 = pixel(d, (*z)["keys"][1]["time"], (*z)["keys"][1]["display"]);
+  const glm::dvec2 z0 = pixel(d, (*z)["keys"][0]["time"], (*z)["keys"][0]["display"]);
+  const glm::dvec2 centre = pixel(d, 5.0 / 30, 45.0 + 20.0);  // empty plot space above the curves
+  const glm::dvec2 box{14, 14};
+  Script s;
+  keyHeadTwice(s);
+  s.move(centre).wait(1).key("A").wait(2);
+  s.clickItem(kInterpolationCombo).wait(2).clickItem(interpolationItem("Linear")).wait(2);
+  s.clickItem(kInterpolationCombo).wait(2).key("ESCAPE").wait(2).clickItem(interpolationItem("Step")).wait(2);
+  s.move(centre).wait(1).key("A").wait(1).keyDown("LEFT_ALT").key("A").keyUp("LEFT_ALT").wait(2);
+  s.keyDown("LEFT_SHIFT").move(z1 - box).down().path(z1 - box, z1 + box, 6).up().keyUp("LEFT_SHIFT").wait(2);
+  s.move(centre).wait(1).key("B").wait(1);
+  const glm::dvec2 b0 = z0 - glm::dvec2(4, 4), b1 = z0 + box;  // pressed on the keys (within their pick radius)
+  s.keyDown("LEFT_SHIFT").move(b0).down().path(b0, b1, 4).up().keyUp("LEFT_SHIFT").wait(2);
+  const json e = run(s, "curve_select_box_esc");
+  ASSERT_TRUE(e.is_object());
+  EXPECT_EQ(e["popup_open"], false);
+  EXPECT_EQ(e["curve_editor"]["box_armed"], false);
+  // A then Linear: every key of the six curves is linear; the click after Esc picked no Step.
+  for (const json& c : e["curve_editor"]["curves"])
+    for (const json& k : c["keys"]) EXPECT_EQ(k["interpolation"], "linear") << c["label"];
+  // The selection: the 90-degree key, then the keys inside the B box (corners b0, b1), none
+  // of them moved.
+  std::set<std::tuple<int, int, int>> expected{{int((*z)["channel"]), int((*z)["component"]), 1}};
+  for (const json& c : d["curve_editor"]["curves"])
+    for (size_t k = 0; k < c["keys"].size(); ++k) {
+      const glm::dvec2 p = pixel(d, c["keys"][k]["time"], c["keys"][k]["display"]);
+      if (p.x >= b0.x && p.x <= b1.x && p.y >= b0.y && p.y <= b1.y)
+        expected.insert({int(c["channel"]), int(c["component"]), int(k)});
+    }
+  EXPECT_GE(expected.size(), 3u) << "the Z key at frame 0 and others at 0 degrees";
+  std::set<std::tuple<int, int, int>> got;
+  for (const json& k : e["curve_editor"]["selected_keys"]) got.insert({int(k["channel"]), int(k["component"]), int(k["key"])});
+  EXPECT_EQ(got, expected);
+  const json* ez = curveLabelled(e, "Head Rotation Z (XYZ)");
+  ASSERT_NE(ez, nullptr);
+  EXPECT_NEAR(double((*ez)["keys"][0]["value"]), 0.0, 1e-3);
+  EXPECT_EQ(double((*ez)["keys"][0]["time"]), double((*z)["keys"][0]["time"]));
 }
 
 }  // namespace

@@ -11,12 +11,14 @@
 
 #include "anim/sampling.h"
 #include "editor/model/curve_editor.h"
+#include "anim/insert_keyframe.h"
 #include "editor/model/document.h"
 
 namespace kinema {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+constexpr double kDeg = 180.0 / kPi;  // the Euler view shows angles in degrees
 
 // R = Rx(x) Ry(y) Rz(z) built from axis-angle quaternions (double precision, glm only).
 glm::dquat xyzQuat(double x, double y, double z) {
@@ -55,11 +57,11 @@ TEST(CurveEditor, EulerViewOfAQuaternionChannelEqualsTheIndependentDecomposition
     const CurvePoints p = curvePoints(ch, c, RotationView::Euler, EulerOrder::XYZ, 2);
     ASSERT_EQ(p.keyValues.size(), 2u);
     ASSERT_EQ(p.times.size(), 3u);
-    EXPECT_NEAR(p.keyValues[0], expectedKeys[0][c], 1e-5) << "component " << c;
-    EXPECT_NEAR(p.keyValues[1], expectedKeys[1][c], 1e-5) << "component " << c;
+    EXPECT_NEAR(p.keyValues[0], expectedKeys[0][c] * kDeg, 1e-3) << "component " << c;
+    EXPECT_NEAR(p.keyValues[1], expectedKeys[1][c] * kDeg, 1e-3) << "component " << c;
     EXPECT_FLOAT_EQ(p.times[1], 0.5f);
-    EXPECT_NEAR(p.values[1], mid[c], 1e-5) << "component " << c;
-    EXPECT_NEAR(keyDisplayValue(ch, 1, c, RotationView::Euler, EulerOrder::XYZ), expectedKeys[1][c], 1e-5);
+    EXPECT_NEAR(p.values[1], mid[c] * kDeg, 1e-3) << "component " << c;
+    EXPECT_NEAR(keyDisplayValue(ch, 1, c, RotationView::Euler, EulerOrder::XYZ), expectedKeys[1][c] * kDeg, 1e-3);
   }
 }
 
@@ -68,10 +70,10 @@ TEST(CurveEditor, EulerViewUnwrapsAnglesAlongTheCurve) {
   const double d = kPi / 180;
   const Channel ch = rotationChannel({0.0f, 1.0f, 2.0f}, {xyzQuat(0, 0, 0), xyzQuat(0, 0, 170 * d), xyzQuat(0, 0, 190 * d)});
   const CurvePoints p = curvePoints(ch, 2, RotationView::Euler, EulerOrder::XYZ, 8);
-  EXPECT_NEAR(p.keyValues[0], 0.0, 1e-5);
-  EXPECT_NEAR(p.keyValues[1], 170 * d, 1e-5);
-  EXPECT_NEAR(p.keyValues[2], 190 * d, 1e-5);
-  for (size_t i = 1; i < p.values.size(); ++i) EXPECT_LT(std::abs(p.values[i] - p.values[i - 1]), kPi / 4) << i;
+  EXPECT_NEAR(p.keyValues[0], 0.0, 1e-3);
+  EXPECT_NEAR(p.keyValues[1], 170.0, 1e-3);
+  EXPECT_NEAR(p.keyValues[2], 190.0, 1e-3);
+  for (size_t i = 1; i < p.values.size(); ++i) EXPECT_LT(std::abs(p.values[i] - p.values[i - 1]), 45.0) << i;
 }
 
 TEST(CurveEditor, QuaternionComponentViewAndRenormalisingEdits) {
@@ -92,7 +94,7 @@ TEST(CurveEditor, QuaternionComponentViewAndRenormalisingEdits) {
 
 TEST(CurveEditor, EulerViewEditsConvertBackToTheQuaternion) {
   Channel ch = rotationChannel({0.0f, 1.0f}, {xyzQuat(0.3, -0.4, 0.5), xyzQuat(0, 0, 0)});
-  setKeyDisplayValue(ch, 0, 2, RotationView::Euler, EulerOrder::XYZ, 0.9f);
+  setKeyDisplayValue(ch, 0, 2, RotationView::Euler, EulerOrder::XYZ, float(0.9 * kDeg));  // typed in degrees
   const glm::dquat expected = xyzQuat(0.3, -0.4, 0.9);
   const glm::dquat got(ch.values[0].w, ch.values[0].x, ch.values[0].y, ch.values[0].z);
   EXPECT_NEAR(std::abs(glm::dot(got, expected)), 1.0, 1e-6);
@@ -297,11 +299,12 @@ TEST(CurveEditor, NlerpAndSquadApplyToRotationKeysOnly) {
 }
 
 TEST(CurveEditor, DraggingARotationKeyInTheEulerViewTurnsOnlyThatAngle) {
-  // Key 1 at XYZ angles (0.2, 0.1, 0.4); its Z curve dragged up by 0.3 in the view.
+  // Key 1 at XYZ angles (0.2, 0.1, 0.4) rad; its Z curve dragged up by 0.3 rad (in degrees) in the view.
   Clip clip;
   clip.frameTime = 1.0 / 30;
   clip.channels.push_back(rotationChannel({0.0f, 1.0f}, {xyzQuat(0, 0, 0), xyzQuat(0.2, 0.1, 0.4)}));
-  moveCurveKeys(clip, {{0, 2, 1}}, {0.4f}, {1.0f}, 0.0f, 0.3f, RotationView::Euler, EulerOrder::XYZ);
+  moveCurveKeys(clip, {{0, 2, 1}}, {float(0.4 * kDeg)}, {1.0f}, 0.0f, float(0.3 * kDeg), RotationView::Euler,
+                EulerOrder::XYZ);
   const glm::vec4 v = clip.channels[0].values[1];
   EXPECT_NEAR(std::abs(glm::dot(glm::dquat(v.w, v.x, v.y, v.z), xyzQuat(0.2, 0.1, 0.7))), 1.0, 1e-6);
   EXPECT_NEAR(glm::length(v), 1.0, 1e-6);
@@ -375,6 +378,199 @@ TEST(CurveEditor, MovingAKeyPastItsNeighbourKeepsTheSelectionOnIt) {
   EXPECT_EQ(out[0].key, 2);
   EXPECT_FLOAT_EQ(clip.channels[0].times[2], clip.frameToTime(25));
   EXPECT_FLOAT_EQ(clip.channels[0].values[2].y, 1.0f);
+}
+
+
+// The numbers: a rotation of -1.0796 rad about X is -61.86 degrees in the curve
+// editor (as in the properties panel); typing degrees stores the radian value.
+TEST(CurveEditorDegrees, AnglesAreShownAndTypedInDegrees) {
+  Channel rot = rotationChannel({0.0f, 1.0f}, {xyzQuat(-1.0796, 0, 0), xyzQuat(0, 0, 0)});
+  EXPECT_NEAR(keyDisplayValue(rot, 0, 0, RotationView::Euler, EulerOrder::XYZ), -61.857, 1e-3);
+  EXPECT_NEAR(curvePoints(rot, 0, RotationView::Euler, EulerOrder::XYZ).keyValues[0], -61.857, 1e-3);
+  EXPECT_FLOAT_EQ(displayUnitScale(rot, RotationView::Euler), float(kDeg));
+  EXPECT_STREQ(displayUnitName(rot, RotationView::Euler), "deg");
+  // The quaternion view stays unitless.
+  EXPECT_EQ(displayUnitScale(rot, RotationView::Quaternion), 1.0f);
+  EXPECT_STREQ(displayUnitName(rot, RotationView::Quaternion), "");
+  EXPECT_NEAR(keyDisplayValue(rot, 0, 0, RotationView::Quaternion, EulerOrder::XYZ), std::sin(-1.0796 / 2), 1e-6);
+  // 45 typed into the X field of key 1: a rotation of pi/4 about X.
+  setKeyDisplayValue(rot, 1, 0, RotationView::Euler, EulerOrder::XYZ, 45.0f);
+  EXPECT_NEAR(std::abs(glm::dot(glm::dquat(rot.values[1].w, rot.values[1].x, rot.values[1].y, rot.values[1].z),
+                                xyzQuat(kPi / 4, 0, 0))),
+              1.0, 1e-6);
+  // Euler channels (radians stored) show degrees too; locations stay as stored.
+  Channel euler(0, ChannelTarget::Euler, Interpolation::Linear, {0.0f}, {{0.5f, 0, 0, 0}});
+  EXPECT_NEAR(keyDisplayValue(euler, 0, 0, RotationView::Quaternion, EulerOrder::XYZ), 0.5 * kDeg, 1e-4);
+  setKeyDisplayValue(euler, 0, 1, RotationView::Euler, EulerOrder::XYZ, 90.0f);
+  EXPECT_NEAR(euler.values[0].y, kPi / 2, 1e-6);
+  Channel loc = translationChannel();
+  EXPECT_EQ(displayUnitScale(loc, RotationView::Euler), 1.0f);
+  EXPECT_FLOAT_EQ(keyDisplayValue(loc, 1, 1, RotationView::Euler, EulerOrder::XYZ), 1.0f);
+}
+
+// A rotation keyed twice with the defaults (insertKeyframe: Bezier, auto-clamped) eases in
+// and out. Closed form: the two end keys' handles are flat and a third of the interval
+// long, so each quaternion component is a + (b - a) s(u), s = 3u^2 - 2u^3, normalised;
+// about one axis the angle is 2 atan2 of the blended (sin, cos) of the half angles.
+TEST(CurveEditorDefaults, ANewRotationKeyEasesInAndOutInThePlotAndInPlayback) {
+  Skeleton skeleton;
+  skeleton.addJoint("root", -1, Transform());
+  Clip clip;
+  clip.frameTime = 1.0 / 24;
+  const double a0 = 0.0, a1 = kPi / 2;  // 0 -> 90 degrees about Z
+  for (int k = 0; k < 2; ++k) {
+    Pose pose = Pose::rest(skeleton);
+    pose.local[0].rotation = glm::angleAxis(float(k == 0 ? a0 : a1), glm::vec3(0, 0, 1));
+    InsertKeyframeJob job;
+    job.joints = {0};
+    job.time = k == 0 ? 0.0f : 1.0f;
+    ASSERT_EQ(insertKeyframe(clip, job, pose), 2);
+  }
+  ASSERT_EQ(clip.validate(skeleton), "");
+  const Channel* rot = nullptr;
+  for (const Channel& c : clip.channels)
+    if (c.target == ChannelTarget::Rotation) rot = &c;
+  ASSERT_NE(rot, nullptr);
+  EXPECT_EQ(rot->settings(0).interpolation, Interpolation::Bezier);
+  auto eased = [&](double u) {
+    const double s = 3 * u * u - 2 * u * u * u;
+    return 2 * std::atan2(s * std::sin(a1 / 2), (1 - s) + s * std::cos(a1 / 2)) * kDeg;
+  };
+  // 4 samples a segment: the plotted points at u = 1/4, 1/2, 3/4.
+  const CurvePoints z = curvePoints(*rot, 2, RotationView::Euler, EulerOrder::XYZ, 4);
+  ASSERT_EQ(z.times.size(), 5u);
+  for (int i = 1; i < 4; ++i) {
+    const double u = i / 4.0;
+    EXPECT_NEAR(z.values[size_t(i)], eased(u), 1e-3) << u;
+    EXPECT_NEAR(curveValueAt(*rot, 2, RotationView::Euler, EulerOrder::XYZ, z, float(u)), eased(u), 1e-3) << u;
+    // Playback follows the plotted curve.
+    Pose pose = Pose::rest(skeleton);
+    sampleClip(clip, float(u), pose);
+    EXPECT_NEAR(2 * std::atan2(pose.local[0].rotation.z, pose.local[0].rotation.w) * kDeg, z.values[size_t(i)], 1e-3);
+  }
+  EXPECT_LT(z.values[1], 90.0 * 0.25 - 5.0) << "a quarter in, the ease lags the straight line";
+  EXPECT_NEAR(z.values[2], 45.0, 1e-3) << "symmetric about the middle";
+  EXPECT_GT(z.values[3], 90.0 * 0.75 + 5.0);
+  // Zero slope at both keys: the first 1% of the interval moves far less than 1% of the angle.
+  const float start = curveValueAt(*rot, 2, RotationView::Euler, EulerOrder::XYZ, z, 0.01f);
+  const float end = curveValueAt(*rot, 2, RotationView::Euler, EulerOrder::XYZ, z, 0.99f);
+  EXPECT_LT(start, 0.9 * 0.05);
+  EXPECT_GT(end, 90.0 - 0.9 * 0.05);
+}
+
+// Both handles of a Bezier key are shown, also the outer ones of the end keys (mirrored)
+// and a left handle whose segment is not Bezier.
+TEST(CurveEditorHandles, ABezierKeyShowsBothHandles) {
+  Channel ch = translationChannel();
+  ch.keys.resize(4);
+  for (KeySettings& k : ch.keys) k.interpolation = Interpolation::Bezier;
+  ch.keys[0].interpolation = Interpolation::Linear;  // key 1's left side is a linear segment
+  for (int k : {1, 2, 3}) {
+    const std::vector<CurveHandle> h = curveHandles(ch, {0, 1, k}, RotationView::Euler, EulerOrder::XYZ);
+    ASSERT_EQ(h.size(), 2u) << k;
+    EXPECT_FALSE(h[0].right);
+    EXPECT_TRUE(h[1].right);
+    EXPECT_LT(h[0].offset.x, 0.0f);
+    EXPECT_GT(h[1].offset.x, 0.0f);
+  }
+  // Key 3 is the last: its right handle mirrors the left one (flat: auto-clamped end).
+  const std::vector<CurveHandle> last = curveHandles(ch, {0, 1, 3}, RotationView::Euler, EulerOrder::XYZ);
+  EXPECT_FLOAT_EQ(last[1].offset.x, -last[0].offset.x);
+  EXPECT_EQ(last[1].offset.y, 0.0f);
+  // Key 0 is Linear with a Bezier neighbour after it only: no handles.
+  EXPECT_TRUE(curveHandles(ch, {0, 1, 0}, RotationView::Euler, EulerOrder::XYZ).empty());
+  // The left handle of key 1 (an unused side) drags like any other: it becomes aligned.
+  dragCurveHandle(ch, curveHandles(ch, {0, 1, 1}, RotationView::Euler, EulerOrder::XYZ)[0], {-0.1f, -0.5f},
+                  RotationView::Euler, EulerOrder::XYZ, 30.0f);
+  EXPECT_EQ(ch.keys[1].leftHandleType, HandleType::Aligned);
+  EXPECT_FLOAT_EQ(ch.keys[1].leftHandleTime, -0.1f);
+  EXPECT_FLOAT_EQ(ch.keys[1].leftHandleValue.y, -0.5f);
+}
+
+// In the Euler view a rotation key's handle shows (in degrees) where its control point
+// turns the joint; dragging it there and reading it back gives the dragged angle, and
+// the plotted curve leaves the key in the handle's direction.
+TEST(CurveEditorHandles, RotationHandlesInTheEulerViewRoundTripInDegrees) {
+  Channel ch = rotationChannel({0.0f, 1.0f, 2.0f}, {xyzQuat(0, 0, 0), xyzQuat(0.2, 0.1, 0.6), xyzQuat(0.3, 0.1, 1.2)});
+  ch.interpolation = Interpolation::Bezier;
+  const CurveKeyRef key{0, 2, 1};
+  std::vector<CurveHandle> h = curveHandles(ch, key, RotationView::Euler, EulerOrder::XYZ);
+  ASSERT_EQ(h.size(), 2u);
+  // Right handle of key 1 to (0.25 s, +20 degrees) on the Z curve.
+  dragCurveHandle(ch, h[1], {0.25f, 20.0f}, RotationView::Euler, EulerOrder::XYZ, 24.0f);
+  EXPECT_EQ(ch.keys[1].rightHandleType, HandleType::Aligned);
+  h = curveHandles(ch, key, RotationView::Euler, EulerOrder::XYZ);
+  ASSERT_EQ(h.size(), 2u);
+  EXPECT_NEAR(h[1].offset.x, 0.25, 1e-6);
+  EXPECT_NEAR(h[1].offset.y, 20.0, 1e-2);
+  // The X and Y angles of the control point were kept.
+  const CurveHandle hx = curveHandles(ch, {0, 0, 1}, RotationView::Euler, EulerOrder::XYZ)[1];
+  EXPECT_NEAR(hx.offset.x, 0.25, 1e-6);
+  // Aligned: the left handle turned to stay collinear in quaternion space, so the curve is
+  // smooth through the key: the slopes just before and after it agree.
+  const CurvePoints p = curvePoints(ch, 2, RotationView::Euler, EulerOrder::XYZ);
+  const float e = 1e-3f;
+  const double before = (curveValueAt(ch, 2, RotationView::Euler, EulerOrder::XYZ, p, 1.0f) -
+                         curveValueAt(ch, 2, RotationView::Euler, EulerOrder::XYZ, p, 1.0f - e)) / e;
+  const double after = (curveValueAt(ch, 2, RotationView::Euler, EulerOrder::XYZ, p, 1.0f + e) -
+                        curveValueAt(ch, 2, RotationView::Euler, EulerOrder::XYZ, p, 1.0f)) / e;
+  EXPECT_NEAR(before, after, 0.05 * std::abs(after) + 1.0);
+  // Tangent direction: a Bezier with its handle a third of the segment long leaves the key
+  // at the handle's slope (first order in the handle; 20 degrees over 0.25 s = 80 deg/s).
+  EXPECT_NEAR(after, 80.0, 8.0);
+}
+
+// New channels carry one interpolation for all keys (Channel::interpolation, `keys` empty):
+// editing one key's settings or handle gives every key its own copy of the channel's, so
+// the others stay Bezier (they were reset to the default Linear before).
+TEST(CurveEditorHandles, EditingOneKeyOfAChannelWideBezierKeepsTheOthersBezier) {
+  Clip clip;
+  clip.channels.push_back(translationChannel());
+  clip.channels[0].interpolation = Interpolation::Bezier;
+  changeKeySettings(clip, {{0, 1, 1}}, [](KeySettings& s) { s.interpolation = Interpolation::Step; });
+  ASSERT_EQ(clip.channels[0].keys.size(), 4u);
+  EXPECT_EQ(clip.channels[0].keys[0].interpolation, Interpolation::Bezier);
+  EXPECT_EQ(clip.channels[0].keys[1].interpolation, Interpolation::Step);
+  EXPECT_EQ(clip.channels[0].keys[2].interpolation, Interpolation::Bezier);
+  Channel ch = translationChannel();
+  ch.interpolation = Interpolation::Bezier;
+  dragBezierHandle(ch, 1, true, 1, 0.1f, 0.2f, 30.0f);
+  for (int k : {0, 2, 3}) EXPECT_EQ(ch.keys[size_t(k)].interpolation, Interpolation::Bezier) << k;
+}
+
+// A selects every key of the visible curves; a box selects those whose dots lie inside it.
+TEST(CurveEditorSelection, SelectAllAndBoxSelect) {
+  Clip clip;
+  clip.frameTime = 1.0 / 30;
+  clip.channels.push_back(translationChannel());  // keys at t = 0, 1/3, 2/3, 1: x = 10y, y = 0 1 3 2, z = -y
+  JointSelection sel;
+  sel.click(0);
+  CurveEditorState ce;
+  std::vector<ShownCurve> curves = shownCurves(clip, sel, ce);
+  ASSERT_EQ(curves.size(), 3u);
+  EXPECT_EQ(allVisibleKeys(curves, ce).size(), 12u);
+  ce.toggleHidden({0, 0});
+  const std::vector<CurveKeyRef> all = allVisibleKeys(curves, ce);
+  EXPECT_EQ(all.size(), 8u) << "hidden curves' keys are not selected";
+  for (const CurveKeyRef& k : all) EXPECT_NE(k.component, 0);
+  // View: time 0..1 across 100 px, values -5..35 up 400 px (10 px per unit).
+  ce.view = {0.0f, 1.0f, -5.0f, 35.0f};
+  ce.plot = {0.0f, 0.0f, 100.0f, 400.0f};
+  // The key of y at t = 1/3 (value 1) is at (33.3, 340); z's there (value -1) at (33.3, 360).
+  EXPECT_EQ(keysInBox(curves, ce, {25, 335}, {40, 345}), (std::vector<CurveKeyRef>{{0, 1, 1}}));
+  EXPECT_EQ(keysInBox(curves, ce, {40, 365}, {25, 335}), (std::vector<CurveKeyRef>{{0, 1, 1}, {0, 2, 1}}))
+      << "either corner first";
+  // x's key there (value 10, y = 250) is inside this box but its curve is hidden.
+  EXPECT_TRUE(keysInBox(curves, ce, {25, 245}, {40, 255}).empty());
+  ce.selected = {{0, 1, 3}};
+  applyBoxSelection(ce, {{0, 1, 1}}, true);
+  EXPECT_EQ(ce.selected, (std::vector<CurveKeyRef>{{0, 1, 3}, {0, 1, 1}})) << "Shift adds";
+  applyBoxSelection(ce, {{0, 2, 1}}, false);
+  EXPECT_EQ(ce.selected, (std::vector<CurveKeyRef>{{0, 2, 1}})) << "a plain box replaces";
+  // The normalized view boxes the dots where they are drawn: y (range 0..3) at 1 -> -1/3.
+  ce.normalized = true;
+  ce.view = {0.0f, 1.0f, -1.0f, 1.0f};  // 200 px per unit: -1/3 at y = 266.7
+  EXPECT_EQ(keysInBox(curves, ce, {30, 260}, {36, 272}), (std::vector<CurveKeyRef>{{0, 1, 1}}));
 }
 
 }  // namespace

@@ -53,7 +53,7 @@ const Channel* channel(const Clip& c, int joint, ChannelTarget target) {
 float angleAboutZ(const glm::quat& q) { return 2.0f * std::atan2(q.z, q.w); }
 
 TEST(Keying, RotationInterpolationMapsToOnesTheEngineAccepts) {
-  EXPECT_EQ(rotationInterpolation(Interpolation::Bezier), Interpolation::Squad);
+  EXPECT_EQ(rotationInterpolation(Interpolation::Bezier), Interpolation::Bezier);  // quaternion F-curves
   EXPECT_EQ(rotationInterpolation(Interpolation::CatmullRom), Interpolation::Squad);
   EXPECT_EQ(rotationInterpolation(Interpolation::TCB), Interpolation::Squad);
   EXPECT_EQ(rotationInterpolation(Interpolation::Linear), Interpolation::Linear);
@@ -105,7 +105,9 @@ TEST(Keying, FirstKeyCreatesActionAndUndoRedoRestoreClipsExactly) {
   EXPECT_EQ(rot->times[0], t1);
   EXPECT_NEAR(rot->values[0].z, std::sin(0.3f), 1e-6f);
   EXPECT_NEAR(rot->values[0].w, std::cos(0.3f), 1e-6f);
-  EXPECT_EQ(rot->settings(0).interpolation, Interpolation::Squad);
+  EXPECT_EQ(rot->settings(0).interpolation, Interpolation::Bezier);  // eased, as Blender's default
+  EXPECT_EQ(rot->settings(0).leftHandleType, HandleType::AutoClamped);
+  EXPECT_EQ(rot->settings(0).rightHandleType, HandleType::AutoClamped);
   EXPECT_EQ(loc->settings(0).interpolation, Interpolation::Bezier);
   EXPECT_EQ(loc->settings(0).rightHandleType, HandleType::AutoClamped);
   EXPECT_EQ(glm::vec3(loc->values[0]), doc.pose().local[arm].translation);
@@ -141,7 +143,9 @@ TEST(Keying, ScaleIsKeyedWhereItDiffersFromRestUnlessLocRotOnly) {
 
 // Frame 1 and frame 24 keyed with rotations about Z of a1 and a2; Linear keys slerp, so
 // at frame 12 the angle is a1 + (a2 - a1) * 11/23 (one axis: slerp is linear in angle).
-// The default (Squad / Bezier) stays strictly between.
+// The default (Bezier, auto-clamped) eases: two end keys get flat handles a third of the
+// interval long, so each quaternion component follows a + (b - a) s with the smoothstep
+// s = 3u^2 - 2u^3, and the rotation is that blend normalised (zero slope at both keys).
 TEST(Keying, TwoKeysInterpolateBetweenThePoses) {
   for (Interpolation i : {Interpolation::Linear, Interpolation::Bezier}) {
     Document doc = newDocument();
@@ -160,8 +164,22 @@ TEST(Keying, TwoKeysInterpolateBetweenThePoses) {
     if (i == Interpolation::Linear) {
       EXPECT_NEAR(a, a1 + (a2 - a1) * 11.0f / 23.0f, 1e-5f);
     } else {
-      EXPECT_GT(a, a1 + 1e-3f);
-      EXPECT_LT(a, a2 - 1e-3f);
+      auto eased = [&](double u) {
+        const double s = 3 * u * u - 2 * u * u * u;
+        const double z = (1 - s) * std::sin(a1 / 2.0) + s * std::sin(a2 / 2.0);
+        const double w = (1 - s) * std::cos(a1 / 2.0) + s * std::cos(a2 / 2.0);
+        return 2 * std::atan2(z, w);
+      };
+      EXPECT_NEAR(a, eased(11.0 / 23.0), 1e-5);
+      // A quarter of the way in it lags the straight line; three quarters in it leads it.
+      for (double u : {0.25, 0.75}) {
+        sampleClip(doc.scene().clips[clip], float(t1 + u * (t24 - t1)), pose);
+        const double got = angleAboutZ(pose.local[arm].rotation), linear = a1 + (a2 - a1) * u;
+        EXPECT_NEAR(got, eased(u), 1e-5);
+        if (u < 0.5) EXPECT_LT(got, linear - 0.05);
+        else EXPECT_GT(got, linear + 0.05);
+      }
+      sampleClip(doc.scene().clips[clip], t12, pose);
     }
     EXPECT_NEAR(std::abs(glm::dot(pose.local[arm].rotation, glm::angleAxis(a, glm::vec3(0, 0, 1)))), 1.0f, 1e-6f);
   }

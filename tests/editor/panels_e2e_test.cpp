@@ -476,9 +476,11 @@ namespace {
 
 // Issue 9: a clip authored in the editor (UpperArm.L keyed at Rz(40) on frame 1 and Rz(-20)
 // on frame 24 with I, the Right key stepping between) goes out through File > Export as
-// GLB and BVH; read back, frame 12 (0.5 s) is the slerp of the two keys at 11/23, about Z
-// by 40 - 60 * 11/23 degrees (two squad keys without neighbours are a slerp). The status
-// bar shows the export and its report.
+// GLB and BVH; read back, frame 12 (0.5 s) is the eased blend of the two keys (Bezier with
+// auto-clamped handles, the default: flat end handles, so the quaternion components move
+// by s = 3u^2 - 2u^3 at u = 11/23, then normalised), about Z by
+// 2 atan2((1 - s) sin 20 + s sin -10, (1 - s) cos 20 + s cos -10) degrees. The status bar
+// shows the export and its report.
 TEST_F(PanelsE2e, TheAuthoredClipExportsThroughTheFileMenu) {
   const std::pair<std::string, std::string> formats[] = {{"GLB (.glb)...", "/authored.glb"},
                                                         {"BVH (.bvh)...", "/authored.bvh"}};
@@ -496,8 +498,10 @@ TEST_F(PanelsE2e, TheAuthoredClipExportsThroughTheFileMenu) {
     ASSERT_FALSE(exported->clips.empty()) << name;
     const int arm = exported->skeleton.find("UpperArm.L");
     ASSERT_GE(arm, 0) << name;
-    for (const auto& [time, degrees] : {std::pair<float, double>{1.0f / 24, 40.0}, {0.5f, 40.0 - 60.0 * 11 / 23},
-                                        {1.0f, -20.0}}) {
+    const double u = 11.0 / 23, sm = 3 * u * u - 2 * u * u * u, h0 = glm::radians(20.0), h1 = glm::radians(-10.0);
+    const double eased = glm::degrees(2 * std::atan2((1 - sm) * std::sin(h0) + sm * std::sin(h1),
+                                                     (1 - sm) * std::cos(h0) + sm * std::cos(h1)));
+    for (const auto& [time, degrees] : {std::pair<float, double>{1.0f / 24, 40.0}, {0.5f, eased}, {1.0f, -20.0}}) {
       Pose pose = Pose::rest(exported->skeleton);
       sampleClip(exported->clips[0], time, pose);
       EXPECT_ROTATION(glm::dquat(pose.local[arm].rotation), rotZ(degrees));

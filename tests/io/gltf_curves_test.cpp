@@ -2,6 +2,7 @@
 // glTF cubic spline evaluated on hand-computed values.
 #include <gtest/gtest.h>
 
+#include "anim/sampling.h"
 #include "io/gltf_curves.h"
 
 namespace kinema {
@@ -44,6 +45,32 @@ TEST(GltfCurves, HermiteTangentsAreCopiedPerSegment) {
   EXPECT_EQ(s.values[1 * 9 + 3], 2.0f);
   EXPECT_EQ(s.values[1 * 9 + 6], 3.0f);
   EXPECT_EQ(s.values[2 * 9 + 0], 0.5f);
+}
+
+// The editor's default rotation keys (Bezier, auto-clamped: handles a third of each
+// interval) are a cubic in time per quaternion component, then normalised: exactly glTF's
+// CUBICSPLINE rotation, so they export without resampling. Checked against sampleChannel.
+TEST(GltfCurves, DefaultBezierRotationKeysAreAnExactCubicSpline) {
+  const glm::quat a = glm::angleAxis(0.2f, glm::vec3(0, 0, 1)), b = glm::angleAxis(1.4f, glm::vec3(1, 0, 0)),
+                  c = glm::angleAxis(0.7f, glm::normalize(glm::vec3(1, 1, 0)));
+  Channel ch(0, ChannelTarget::Rotation, Interpolation::Bezier, {0.0f, 0.5f, 1.5f},
+             {{a.x, a.y, a.z, a.w}, {b.x, b.y, b.z, b.w}, {c.x, c.y, c.z, c.w}});
+  const GltfSampler s = toGltfSampler(ch, 30.0);
+  ASSERT_FALSE(s.resampled) << s.reason;
+  ASSERT_EQ(s.interpolation, GltfInterpolation::CubicSpline);
+  for (float t : {0.1f, 0.25f, 0.4f, 0.7f, 1.0f, 1.3f}) {
+    const std::vector<float> got = evaluateGltfSampler(s, true, t);
+    const glm::vec4 want = sampleChannel(ch, t);
+    const float dot = got[0] * want.x + got[1] * want.y + got[2] * want.z + got[3] * want.w;
+    EXPECT_NEAR(std::abs(dot), 1.0f, 1e-6f) << t;
+  }
+  // Free handles of other lengths are no cubic in time: resampled.
+  ch.keys.resize(3);
+  ch.keys[1].interpolation = ch.keys[0].interpolation = Interpolation::Bezier;
+  ch.keys[1].rightHandleType = HandleType::Free;
+  ch.keys[1].rightHandleTime = 0.1f;
+  ch.keys[1].rightHandleValue = {0.05f, 0, 0, 0};
+  EXPECT_TRUE(toGltfSampler(ch, 30.0).resampled);
 }
 
 TEST(GltfCurves, StepThenLinearIsResampledAndTheJumpShowsInTheError) {

@@ -58,10 +58,16 @@ Scene everySetting() {
   // Rotation: every rotation mode.
   Channel r = channel(1, ChannelTarget::Rotation, Interpolation::Squad);
   const Interpolation rmodes[] = {Interpolation::Step, Interpolation::Linear, Interpolation::Nlerp,
-                                  Interpolation::Squad, Interpolation::Hermite, Interpolation::Ease};
-  for (int k = 0; k < 6; ++k) {
+                                  Interpolation::Squad, Interpolation::Hermite, Interpolation::Ease,
+                                  Interpolation::Bezier};
+  for (int k = 0; k < 7; ++k) {
     KeySettings s;
     s.interpolation = rmodes[k];
+    if (k == 6) {  // quaternion F-curve handles: four components
+      s.leftHandleType = HandleType::Free;
+      s.leftHandleTime = -0.1f;
+      s.leftHandleValue = glm::vec4(0.01f, -0.02f, 0.03f, -0.04f);
+    }
     s.outTangent = glm::vec4(0.1f, 0.2f, 0.3f, 0.4f * k);
     s.inTangent = glm::vec4(-0.1f, 0, 0, 1);
     const glm::quat q = glm::normalize(glm::quat(1.0f, 0.1f * k, -0.2f, 0.05f * k));
@@ -190,7 +196,7 @@ TEST(KinemaFileClips, BadSettingsNameTheirPath) {
        "clips[0].channels[0].interpolation", "catmull-rom"},
       {R"({"joint": "Hips", "target": "translation", "interpolation": "squad", "times": [0], "values": [[0,0,0]]})",
        "clips[0].channels[0].interpolation", "rotation channels only"},
-      {R"({"joint": "Hips", "target": "rotation", "times": [0], "values": [[0,0,0,1]], "keys": [{"interpolation": "bezier"}]})",
+      {R"({"joint": "Hips", "target": "rotation", "times": [0], "values": [[0,0,0,1]], "keys": [{"interpolation": "tcb"}]})",
        "clips[0].channels[0].keys[0].interpolation", "does not apply to rotation"},
       {R"({"joint": "Hips", "target": "translation", "times": [0, 1], "values": [[0,0,0],[1,1,1]], "keys": [{}]})",
        "clips[0].channels[0].keys", "one object per key"},

@@ -47,6 +47,17 @@ CommandDef dopeSheet(const char* id, const char* label, int key, int mods, const
   return CommandDef(id, label).key(key, mods).scope(CommandScope::DopeSheet).hint(hint).enabled(dopeSheetIdle);
 }
 
+// The curve editor is shown on a clip and no mouse drag of its own is running.
+bool curveEditorIdle(const CommandContext& c) {
+  const EditorState& s = c.state;
+  return documentShown(c) && s.animationEditor == AnimationEditorKind::CurveEditor && s.hasMotion() &&
+         s.curveEditor.drag == CurveEditorState::Drag::None && !s.doc.dragging();
+}
+
+CommandDef curveEditor(const char* id, const char* label, int key, int mods, const char* hint) {
+  return CommandDef(id, label).key(key, mods).scope(CommandScope::CurveEditor).hint(hint).enabled(curveEditorIdle);
+}
+
 }  // namespace
 
 void addAnimationEditorCommands(std::vector<Command>& out) {
@@ -95,6 +106,19 @@ void addAnimationEditorCommands(std::vector<Command>& out) {
                       return documentShown(c) && c.state.animationEditor == AnimationEditorKind::CurveEditor;
                     })
                     .run([](CommandContext& c) { c.state.curveEditor.fitPending = true; }));
+  out.push_back(curveEditor("curves.select_all", "Select All Curve Keys", keys::A, 0, "every key of the shown curves")
+                    .run([](CommandContext& c) {
+                      CurveEditorState& ce = c.state.curveEditor;
+                      ce.selected = allVisibleKeys(shownCurves(editedClip(c.state), c.state.doc.selection, ce), ce);
+                    }));
+  out.push_back(curveEditor("curves.select_none", "Deselect All Curve Keys", keys::A, kModAlt, "")
+                    .run([](CommandContext& c) { c.state.curveEditor.selected.clear(); }));
+  out.push_back(curveEditor("curves.box_select", "Box Select Curve Keys", keys::B, 0,
+                            "then drag a box over keys (Shift: add); a drag from empty space does it too")
+                    .run([](CommandContext& c) {
+                      c.state.curveEditor.boxArmed = true;
+                      c.state.statusMessage = "Box select: drag over the keys (Esc cancels)";
+                    }));
 }
 
 }  // namespace kinema

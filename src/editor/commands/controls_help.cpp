@@ -16,6 +16,7 @@ const Gesture kGestures[] = {
     {CommandScope::Global, "Double-click a joint in the outliner", "rename it"},
     {CommandScope::Global, "Click / double-click a clip in the clip list", "make it the active clip / rename it"},
     {CommandScope::Global, "Drag in the timeline's ruler", "scrub"},
+    {CommandScope::Global, "Esc with a menu, combo or popup open", "closes it (and does nothing else)"},
     {CommandScope::Viewport, "Left click", "select a joint (Shift: add / toggle)"},
     {CommandScope::Viewport, "Left drag on empty space", "box select (Shift adds, Ctrl removes)"},
     {CommandScope::Viewport, "Middle drag / Alt+left drag", "orbit"},
@@ -26,7 +27,8 @@ const Gesture kGestures[] = {
     {CommandScope::DopeSheet, "Click / drag keys", "select (Shift: toggle) / move, snapped to frames"},
     {CommandScope::DopeSheet, "Drag on empty space", "box select"},
     {CommandScope::DopeSheet, "Click in the ruler / a joint's name", "set the current frame / select the joint"},
-    {CommandScope::CurveEditor, "Click / drag keys and handles", "select (Shift: add) / move"},
+    {CommandScope::CurveEditor, "Click / drag keys and handles", "select (Shift: add) / move (both handles of a Bezier key)"},
+    {CommandScope::CurveEditor, "Drag on empty space", "box select keys (Shift: add); a click deselects"},
     {CommandScope::CurveEditor, "Wheel / middle drag", "zoom (Ctrl: time, Shift: values) / pan"},
     {CommandScope::Compare, "Drag the target or a joint", "the solvers start again from there"},
 };

@@ -1,5 +1,6 @@
 #include "editor/commands/editor_input.h"
 
+#include "editor/model/key_codes.h"
 #include "editor/viewport/viewport_tools.h"
 
 namespace kinema {
@@ -44,6 +45,8 @@ void EditorInput::handle(CommandContext& ctx, const InputEvent& e, const Skeleto
     if (!why.empty()) state.statusMessage = why;
     return;
   }
+  // The Esc that closes an open menu or combo (closePopupsOnEscape) is that popup's alone.
+  if (e.type == InputEventType::KeyDown && e.key == keys::ESCAPE && state.panels.popupOpen) return;
   const bool toolRunning = state.tool.mode != ModalTool::None;  // before the event: Esc may end it
   if (state.compare.active) handleCompareEvent(state.compare, e, mouseCaptured);
   else if (ctx.tools) ctx.tools->handle(state, e, ctx.view, list, mouseCaptured);

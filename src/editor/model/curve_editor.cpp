@@ -19,18 +19,56 @@ bool isRotationEuler(const Channel& ch, RotationView view) {
 glm::quat toQuat(const glm::vec4& v) { return glm::quat(v.w, v.x, v.y, v.z); }
 glm::vec4 toVec(const glm::quat& q) { return {q.x, q.y, q.z, q.w}; }
 
-float unwrapNear(float angle, float previous) {
-  return angle - 2.0f * kPi * std::round((angle - previous) / (2.0f * kPi));
+constexpr float kDegrees = 180.0f / kPi;
+
+// A channel with one interpolation for all keys (`keys` empty) gets per-key settings, each
+// the channel's, before one key's are edited. (Filling after a resize would read the
+// default-constructed ones: Channel::settings reads `keys` once it is not empty.)
+void giveKeysTheirSettings(Channel& ch) {
+  if (ch.keys.empty()) ch.keys.assign(ch.times.size(), ch.settings(0));
+}
+
+// `angle` plus whole turns (`turn`: 2 pi in radians, 360 in degrees), within half a turn of `previous`.
+float unwrapNear(float angle, float previous, float turn) {
+  return angle - turn * std::round((angle - previous) / turn);
 }
 
 // The channel's value at `time` in display units (all components).
 glm::vec4 displayAt(const Channel& ch, float time, RotationView view, EulerOrder order) {
   const glm::vec4 v = sampleChannel(ch, time);
-  if (!isRotationEuler(ch, view)) return v;
-  return glm::vec4(quatToEuler(toQuat(v), order), 0.0f);
+  const float unit = displayUnitScale(ch, view);
+  if (!isRotationEuler(ch, view)) return v * unit;
+  return glm::vec4(quatToEuler(toQuat(v), order) * unit, 0.0f);
+}
+
+// Linear interpolation of the plotted points at `time` (clamped to their ends).
+float pointsAt(const CurvePoints& p, float time) {
+  if (p.times.empty()) return 0.0f;
+  const auto it = std::upper_bound(p.times.begin(), p.times.end(), time);
+  if (it == p.times.begin()) return p.values.front();
+  if (it == p.times.end()) return p.values.back();
+  const size_t hi = size_t(it - p.times.begin()), lo = hi - 1;
+  const float span = p.times[hi] - p.times[lo];
+  const float u = span > 0.0f ? (time - p.times[lo]) / span : 0.0f;
+  return p.values[lo] + (p.values[hi] - p.values[lo]) * u;
 }
 
 }  // namespace
+
+float displayUnitScale(const Channel& ch, RotationView view) {
+  return ch.target == ChannelTarget::Euler || isRotationEuler(ch, view) ? kDegrees : 1.0f;
+}
+
+const char* displayUnitName(const Channel& ch, RotationView view) {
+  return displayUnitScale(ch, view) == 1.0f ? "" : "deg";
+}
+
+float curveValueAt(const Channel& ch, int component, RotationView view, EulerOrder order, const CurvePoints& points,
+                   float time) {
+  const float v = displayAt(ch, time, view, order)[component];
+  if (!isRotationEuler(ch, view) || points.times.empty()) return v;
+  return unwrapNear(v, pointsAt(points, time), 2.0f * kPi * displayUnitScale(ch, view));
+}
 
 glm::vec2 curveToScreen(const CurveView& v, const PlotRect& r, float time, float value) {
   const float sx = r.w / std::max(v.t1 - v.t0, 1e-9f), sy = r.h / std::max(v.v1 - v.v0, 1e-9f);
@@ -47,12 +85,13 @@ CurvePoints curvePoints(const Channel& ch, int component, RotationView view, Eul
   if (n == 0) return out;
   const int steps = std::max(1, samplesPerSegment);
   const bool euler = isRotationEuler(ch, view);
+  const float turn = 2.0f * kPi * displayUnitScale(ch, view);
   glm::vec4 previous(0.0f);
   bool first = true;
   auto add = [&](float t, bool isKey, const glm::vec4* exact) {
     glm::vec4 v = exact ? *exact : displayAt(ch, t, view, order);
     if (euler) {
-      for (int i = 0; i < 3; ++i) v[i] = first ? v[i] : unwrapNear(v[i], previous[i]);
+      for (int i = 0; i < 3; ++i) v[i] = first ? v[i] : unwrapNear(v[i], previous[i], turn);
       previous = v;
       first = false;
     }
@@ -103,6 +142,57 @@ std::vector<int> shownChannels(const Clip& clip, const JointSelection& selection
   for (size_t c = 0; c < clip.channels.size(); ++c)
     if (clip.channels[c].joint >= 0 && selection.isSelected(clip.channels[c].joint)) out.push_back(static_cast<int>(c));
   return out;
+}
+
+std::vector<ShownCurve> shownCurves(const Clip& clip, const JointSelection& selection, const CurveEditorState& state) {
+  std::vector<ShownCurve> out;
+  for (int c : shownChannels(clip, selection)) {
+    const Channel& ch = clip.channels[c];
+    const int perSegment = ch.keyCount() > 200 ? 1 : 12;
+    for (int i = 0; i < curveCount(ch, state.rotationView); ++i) {
+      ShownCurve s;
+      s.ref = {c, i};
+      s.points = curvePoints(ch, i, state.rotationView, state.eulerOrder, perSegment);
+      s.range = curveRange(s.points);
+      out.push_back(std::move(s));
+    }
+  }
+  return out;
+}
+
+glm::vec2 keyPlotPoint(const ShownCurve& c, int key, bool normalized) {
+  const float v = c.points.keyValues[size_t(key)];
+  return {c.points.keyTimes[size_t(key)], normalized ? normalizeValue(c.range, v) : v};
+}
+
+std::vector<CurveKeyRef> allVisibleKeys(const std::vector<ShownCurve>& curves, const CurveEditorState& state) {
+  std::vector<CurveKeyRef> out;
+  for (const ShownCurve& c : curves) {
+    if (state.isHidden(c.ref)) continue;
+    for (size_t k = 0; k < c.points.keyTimes.size(); ++k) out.push_back({c.ref.channel, c.ref.component, int(k)});
+  }
+  return out;
+}
+
+std::vector<CurveKeyRef> keysInBox(const std::vector<ShownCurve>& curves, const CurveEditorState& state, glm::vec2 a,
+                                   glm::vec2 b) {
+  const glm::vec2 lo = glm::min(a, b), hi = glm::max(a, b);
+  std::vector<CurveKeyRef> out;
+  for (const ShownCurve& c : curves) {
+    if (state.isHidden(c.ref)) continue;
+    for (size_t k = 0; k < c.points.keyTimes.size(); ++k) {
+      const glm::vec2 q = keyPlotPoint(c, int(k), state.normalized);
+      const glm::vec2 p = curveToScreen(state.view, state.plot, q.x, q.y);
+      if (p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y) out.push_back({c.ref.channel, c.ref.component, int(k)});
+    }
+  }
+  return out;
+}
+
+void applyBoxSelection(CurveEditorState& state, const std::vector<CurveKeyRef>& boxed, bool extend) {
+  if (!extend) state.selected.clear();
+  for (const CurveKeyRef& k : boxed)
+    if (!state.isSelected(k)) state.selected.push_back(k);
 }
 
 int curveCount(const Channel& ch, RotationView view) {
@@ -163,14 +253,15 @@ float keyDisplayValue(const Channel& ch, int key, int component, RotationView vi
   const glm::vec4& v = ch.values[key];
   if (ch.target == ChannelTarget::Rotation) {
     const glm::quat q = glm::normalize(toQuat(v));
-    if (view == RotationView::Euler) return quatToEuler(q, order)[component];
+    if (view == RotationView::Euler) return quatToEuler(q, order)[component] * kDegrees;
     return toVec(q)[component];
   }
-  return v[component];
+  return v[component] * displayUnitScale(ch, view);
 }
 
 void setKeyDisplayValue(Channel& ch, int key, int component, RotationView view, EulerOrder order, float value) {
   glm::vec4& v = ch.values[key];
+  value /= displayUnitScale(ch, view);  // degrees -> radians for angles
   if (ch.target != ChannelTarget::Rotation) {
     v[component] = value;
     return;
@@ -238,7 +329,8 @@ std::vector<CurveKeyRef> moveCurveKeys(Clip& clip, const std::vector<CurveKeyRef
 bool interpolationSuits(Interpolation i, ChannelTarget target) {
   if (target == ChannelTarget::Rotation)
     return i == Interpolation::Step || i == Interpolation::Linear || i == Interpolation::Nlerp ||
-           i == Interpolation::Squad || i == Interpolation::Hermite || i == Interpolation::Ease;
+           i == Interpolation::Squad || i == Interpolation::Hermite || i == Interpolation::Ease ||
+           i == Interpolation::Bezier;
   return i != Interpolation::Nlerp && i != Interpolation::Squad;
 }
 
@@ -257,10 +349,7 @@ int changeKeySettings(Clip& clip, const std::vector<CurveKeyRef>& keys, const st
       ++skipped;
       continue;
     }
-    if (ch.keys.empty()) {
-      ch.keys.resize(ch.times.size());
-      for (int i = 0; i < ch.keyCount(); ++i) ch.keys[i] = ch.settings(i);
-    }
+    giveKeysTheirSettings(ch);
     ch.keys[k.key] = s;
   }
   return skipped;
@@ -273,10 +362,7 @@ glm::vec2 handleDeltaFromPixels(const CurveView& v, const PlotRect& r, glm::vec2
 void dragBezierHandle(Channel& ch, int key, bool right, int component, float timeOffset, float valueOffset,
                       float framesPerSecond) {
   if (key < 0 || key >= ch.keyCount()) return;
-  if (ch.keys.empty()) {
-    ch.keys.resize(ch.times.size());
-    for (int i = 0; i < ch.keyCount(); ++i) ch.keys[i] = ch.settings(i);
-  }
+  giveKeysTheirSettings(ch);
   // The handles as drawn (auto types computed) become the stored ones, so that turning an
   // auto handle into an aligned one keeps the curve's shape, as in Blender.
   const BezierHandles eff = effectiveHandles(ch, key);
@@ -312,12 +398,84 @@ void dragBezierHandle(Channel& ch, int key, bool right, int component, float tim
   }
 }
 
+namespace {
+
+// Rotation keys in the Euler view: the Euler angles (radians) of the quaternion key plus a
+// handle's value offset, unwrapped next to the key's own angles.
+glm::vec3 handleEuler(const glm::quat& key, const glm::vec4& handle, EulerOrder order) {
+  const glm::vec3 k = quatToEuler(key, order);
+  glm::vec3 e = quatToEuler(safeNormalize(toQuat(toVec(key) + handle)), order);
+  for (int i = 0; i < 3; ++i) e[i] = unwrapNear(e[i], k[i], 2.0f * kPi);
+  return e;
+}
+
+}  // namespace
+
+std::vector<CurveHandle> curveHandles(const Channel& ch, const CurveKeyRef& k, RotationView view, EulerOrder order) {
+  std::vector<CurveHandle> out;
+  const int n = ch.keyCount();
+  if (k.key < 0 || k.key >= n) return out;
+  const KeySettings s = ch.settings(k.key);
+  const bool eulerRotation = isRotationEuler(ch, view);
+  const float unit = displayUnitScale(ch, view);
+  const bool bezier = s.interpolation == Interpolation::Bezier ||
+                      (k.key > 0 && ch.settings(k.key - 1).interpolation == Interpolation::Bezier);
+  if (bezier) {
+    const BezierHandles h = effectiveHandles(ch, k.key);
+    const glm::quat q = safeNormalize(toQuat(ch.values[k.key]));
+    for (bool right : {false, true}) {
+      const float time = right ? h.rightTime : h.leftTime;
+      const glm::vec4& value = right ? h.rightValue : h.leftValue;
+      if (time == 0.0f && value == glm::vec4(0.0f)) continue;  // a lone key's: nothing to draw
+      float dv = value[k.component] * unit;
+      if (eulerRotation) dv = (handleEuler(q, value, order)[k.component] - quatToEuler(q, order)[k.component]) * unit;
+      out.push_back({k, right, false, {time, dv}});
+    }
+  }
+  if (eulerRotation) return out;
+  if (k.key > 0 && ch.settings(k.key - 1).interpolation == Interpolation::Hermite) {
+    const float ht = -(ch.times[k.key] - ch.times[k.key - 1]) / 3.0f;
+    out.push_back({k, false, true, {ht, s.inTangent[k.component] * ht * unit}});
+  }
+  if (k.key + 1 < n && s.interpolation == Interpolation::Hermite) {
+    const float ht = (ch.times[k.key + 1] - ch.times[k.key]) / 3.0f;
+    out.push_back({k, true, true, {ht, s.outTangent[k.component] * ht * unit}});
+  }
+  return out;
+}
+
+void dragCurveHandle(Channel& ch, const CurveHandle& h, glm::vec2 offset, RotationView view, EulerOrder order,
+                     float framesPerSecond) {
+  const int key = h.key.key, component = h.key.component;
+  if (key < 0 || key >= ch.keyCount()) return;
+  const float value = offset.y / displayUnitScale(ch, view);  // stored units (radians for angles)
+  if (h.hermite) return setHermiteTangentFromHandle(ch, key, h.right, component, offset.x, value);
+  if (!isRotationEuler(ch, view)) return dragBezierHandle(ch, key, h.right, component, offset.x, value, framesPerSecond);
+  // Euler view of a quaternion curve: the handle's control point turned to the dragged angle.
+  const BezierHandles eff = effectiveHandles(ch, key);
+  const float oldTime = h.right ? eff.rightTime : eff.leftTime;
+  const float time = h.right ? std::max(0.0f, offset.x) : std::min(0.0f, offset.x);
+  glm::vec4 handle = h.right ? eff.rightValue : eff.leftValue;
+  if (oldTime != 0.0f) handle *= time / oldTime;  // the other angles keep their slopes
+  const glm::quat q = safeNormalize(toQuat(ch.values[key]));
+  glm::vec3 e = handleEuler(q, handle, order);
+  e[component] = quatToEuler(q, order)[component] + value;
+  glm::quat p = eulerToQuat(e, order);
+  if (glm::dot(p, q) < 0.0f) p = -p;
+  // The control point on the tangent plane at the key (key + handle orthogonal to it); a
+  // handle turned a half turn or more away is held just short of it.
+  const float along = std::max(glm::dot(p, q), 0.05f);
+  giveKeysTheirSettings(ch);
+  // The handles as drawn (auto types computed) become the stored ones, as in dragBezierHandle.
+  KeySettings& s = ch.keys[key];
+  s.leftHandleTime = eff.leftTime, s.rightHandleTime = eff.rightTime;
+  s.leftHandleValue = eff.leftValue, s.rightHandleValue = eff.rightValue;
+  setBezierHandle(ch, key, h.right, time, toVec(p) / along - toVec(q));
+}
+
 void setHermiteTangentFromHandle(Channel& ch, int key, bool right, int component, float timeOffset, float valueOffset) {
   if (key < 0 || key >= ch.keyCount()) return;
-  if (ch.keys.empty()) {
-    ch.keys.resize(ch.times.size());
-    for (int i = 0; i < ch.keyCount(); ++i) ch.keys[i] = ch.settings(i);
-  }
+  giveKeysTheirSettings(ch);
   // A handle pulled through the key onto the other side would flip the slope's meaning: clamp.
   const float t = right ? std::max(timeOffset, 1e-4f) : std::min(timeOffset, -1e-4f);
   (right ? ch.keys[key].outTangent : ch.keys[key].inTangent)[component] = valueOffset / t;

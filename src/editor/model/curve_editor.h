@@ -46,16 +46,29 @@ struct PlotRect {
 glm::vec2 curveToScreen(const CurveView& view, const PlotRect& rect, float time, float value);
 glm::vec2 screenToCurve(const CurveView& view, const PlotRect& rect, glm::vec2 pixel);  // (time, value)
 
+// Display units per stored unit of a channel's curves: angles (Euler channels, rotations
+// in the Euler view) are shown, typed and dragged in degrees, as the properties panel shows
+// them (180 / pi); locations, scales, quaternion components and scalars as stored (1).
+// The data stay radians / quaternions.
+float displayUnitScale(const Channel& channel, RotationView view);
+// "deg" for angle curves, "" otherwise (the dump's and the value field's unit).
+const char* displayUnitName(const Channel& channel, RotationView view);
+
 // A curve in display units: dense points from the first key to the last (the key times
 // included exactly) and the keys' display values. Euler angles of rotation channels are
-// unwrapped along the points (each angle within pi of the previous point's), starting from
-// the first key's decomposition, so keys and curve agree.
+// unwrapped along the points (each angle within 180 degrees of the previous point's),
+// starting from the first key's decomposition, so keys and curve agree.
 struct CurvePoints {
   std::vector<float> times, values;
   std::vector<float> keyTimes, keyValues;
 };
 CurvePoints curvePoints(const Channel& channel, int component, RotationView view, EulerOrder order,
                         int samplesPerSegment = 12);
+
+// The curve's display value at `time` (sampled, not read off the points); Euler angles are
+// unwrapped next to the plotted points, so it lies on the drawn curve.
+float curveValueAt(const Channel& channel, int component, RotationView view, EulerOrder order,
+                   const CurvePoints& points, float time);
 
 // Value range of a curve (its points); a flat curve gets a unit-wide range around its value.
 struct ValueRange {
@@ -77,8 +90,12 @@ struct CurveEditorState {
   bool fitPending = true;             // fit on the next frame (opened, channels changed, Home)
   std::vector<CurveRef> hidden;       // curves switched off in the channel list
   std::vector<CurveKeyRef> selected;  // selected keys
-  // Mouse drags in the plot (one Document drag each for keys and handles).
-  enum class Drag { None, Keys, Handle, Pan } drag = Drag::None;
+  // Mouse drags in the plot (one Document drag each for keys and handles). Box: a
+  // rectangle from dragStart to the mouse selects the keys inside on release (a plain
+  // drag on empty plot space, or any drag after B); Shift adds to the selection.
+  enum class Drag { None, Keys, Handle, Pan, Box } drag = Drag::None;
+  bool boxArmed = false;    // B: the next left drag in the plot is a box, wherever it starts
+  bool boxExtend = false;   // the box adds to the selection (Shift at its press)
   glm::vec2 dragStart{0.0f};
   CurveKeyRef dragHandleKey;
   bool dragHandleRight = false;
@@ -97,6 +114,27 @@ struct CurveEditorState {
 
 // Channels of `clip` animating a selected joint, in clip order.
 std::vector<int> shownChannels(const Clip& clip, const JointSelection& selection);
+
+// One curve the editor shows this frame: its points (display units) and value range.
+struct ShownCurve {
+  CurveRef ref;
+  CurvePoints points;
+  ValueRange range;
+};
+// The curves of the selected joints' channels in the editor's rotation view (hidden ones
+// included: CurveEditorState::isHidden says which are drawn). Dense keys (imported
+// motion, over 200) are sampled only at the keys; authored keys with 12 points a segment.
+std::vector<ShownCurve> shownCurves(const Clip& clip, const JointSelection& selection, const CurveEditorState& state);
+// A key's place in the plot's plane: (time, display value, normalized when the view is).
+glm::vec2 keyPlotPoint(const ShownCurve& curve, int key, bool normalized);
+// Every key of the visible (not hidden) curves (A: select all).
+std::vector<CurveKeyRef> allVisibleKeys(const std::vector<ShownCurve>& curves, const CurveEditorState& state);
+// The keys of the visible curves inside the window-pixel rectangle spanned by a and b
+// (either corner first), in the state's view and plot.
+std::vector<CurveKeyRef> keysInBox(const std::vector<ShownCurve>& curves, const CurveEditorState& state, glm::vec2 a,
+                                   glm::vec2 b);
+// Box select: the box's keys replace the selection, or are added to it (extend).
+void applyBoxSelection(CurveEditorState& state, const std::vector<CurveKeyRef>& boxed, bool extend);
 // Scalar curves a channel shows: 3 (translation, scale, Euler; rotation in the Euler view),
 // 4 (rotation in the quaternion view) or 1 (scalar).
 int curveCount(const Channel& channel, RotationView view);
@@ -116,9 +154,9 @@ void panView(CurveView& view, const PlotRect& rect, glm::vec2 pixelDelta);
 // Nearest frame of the clip's grid (Clip::secondsPerFrame, the timeline's), as a time.
 float snapToFrame(const Clip& clip, float time);
 
-// Sets a key's component to a display value: vectors directly; quaternion components
-// renormalise the quaternion; Euler angles of a rotation key are converted back to the
-// quaternion (kept in the key's hemisphere).
+// Sets a key's component to a display value (degrees for angles: displayUnitScale):
+// vectors directly; quaternion components renormalise the quaternion; Euler angles of a
+// rotation key are converted back to the quaternion (kept in the key's hemisphere).
 void setKeyDisplayValue(Channel& channel, int key, int component, RotationView view, EulerOrder order, float value);
 // A key's component in display units (Euler: the plain decomposition, not unwrapped).
 float keyDisplayValue(const Channel& channel, int key, int component, RotationView view, EulerOrder order);
@@ -147,6 +185,27 @@ glm::vec2 handleDeltaFromPixels(const CurveView& view, const PlotRect& rect, glm
 // time measured in frames (`framesPerSecond`) as Blender's graph does.
 void dragBezierHandle(Channel& channel, int key, bool right, int component, float timeOffset, float valueOffset,
                       float framesPerSecond);
+// The handles the plot shows on a selected key, relative to it in (seconds, display units,
+// not normalized). A key whose own segment or the one before it is Bezier shows both its
+// handles (an end key's outer one mirrors the inner, as in Blender); rotations in the
+// Euler view show where each handle's control point turns the joint (the quaternion
+// key plus the handle, normalised, in Euler angles), which is the curve's tangent
+// direction at the key. Hermite tangents show on their own sides (not in the Euler view
+// of rotations, where tangents of quaternion components have no single angle).
+struct CurveHandle {
+  CurveKeyRef key;
+  bool right = false, hermite = false;
+  glm::vec2 offset{0.0f};
+};
+std::vector<CurveHandle> curveHandles(const Channel& channel, const CurveKeyRef& key, RotationView view,
+                                      EulerOrder order);
+// Moves one of curveHandles' handles to `offset` (seconds, display units, not normalized),
+// with dragBezierHandle / setHermiteTangentFromHandle, or for a rotation's Euler view by
+// turning the handle's control point to that angle (the other angles kept) and setting
+// the quaternion handle with setBezierHandle (Blender's type rules).
+void dragCurveHandle(Channel& channel, const CurveHandle& handle, glm::vec2 offset, RotationView view, EulerOrder order,
+                     float framesPerSecond);
+
 // Hermite tangents as handles: the handle of a slope m sits at (±h, ±m h); setting it from a
 // dragged offset stores the slope (value per second) in outTangent (right) or inTangent (left).
 void setHermiteTangentFromHandle(Channel& channel, int key, bool right, int component, float timeOffset,

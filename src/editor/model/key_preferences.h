@@ -4,8 +4,8 @@
 namespace kinema {
 
 // What newly inserted keys carry (Blender: Edit > Preferences > Animation > F-Curves).
-// Default: Bezier with auto-clamped handles, Blender's default. Rotation channels
-// (quaternions) do not accept Bezier: they get rotationInterpolation() of the choice.
+// Default: Bezier with auto-clamped handles, Blender's default, for rotations too (their
+// quaternion components, as Blender's); rotations get rotationInterpolation() of the choice.
 struct KeyPreferences {
   Interpolation interpolation = Interpolation::Bezier;
   HandleType handles = HandleType::AutoClamped;

@@ -28,8 +28,8 @@ Interpolation rotationInterpolation(Interpolation preferred) {
     case Interpolation::Nlerp:
     case Interpolation::Squad:
     case Interpolation::Hermite:
-    case Interpolation::Ease: return preferred;
     case Interpolation::Bezier:
+    case Interpolation::Ease: return preferred;
     case Interpolation::CatmullRom:
     case Interpolation::TCB: return Interpolation::Squad;
   }

@@ -13,8 +13,9 @@ constexpr const char* kNewClipName = "Action";  // Blender's name for a new acti
 constexpr long long kNewClipStartFrame = 1, kNewClipEndFrame = 250;  // Blender's default range
 
 // The interpolation a rotation (quaternion) key gets for a preferred one. Clip::validate
-// accepts Step, Linear, Nlerp, Squad, Hermite and Ease on rotations; Bezier, Catmull-Rom
-// and TCB (splines through the keys) become Squad, the spherical spline through the keys.
+// accepts Step, Linear, Nlerp, Squad, Hermite, Ease and Bezier (quaternion F-curves, as
+// Blender keys them) on rotations; Catmull-Rom and TCB (splines through the keys) become
+// Squad, the spherical spline through the keys.
 Interpolation rotationInterpolation(Interpolation preferred);
 // The settings a new key of `target` carries under `preferences`.
 KeySettings keySettingsFor(const KeyPreferences& preferences, ChannelTarget target);

@@ -43,6 +43,9 @@ struct PanelState {
   bool clipRenameFocus = false;
   char clipRenameBuffer[256] = {};
   std::string clipRenameError;
+  // A menu, combo or other non-modal popup was open at the end of the last frame: the Esc
+  // that closes it (closePopupsOnEscape) reaches no tool or command.
+  bool popupOpen = false;
 
   // IK panel (the target it shows is the active joint's: active_ik_target.h)
   int ikChainLength = 2;  // for "Add IK Target" (pose.add_ik_target)

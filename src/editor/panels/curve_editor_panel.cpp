@@ -43,13 +43,6 @@ float gridStep(float extent, float target) {
   return 10.0f * p;
 }
 
-// One shown curve this frame.
-struct ShownCurve {
-  CurveRef ref;
-  CurvePoints points;
-  ValueRange range;
-};
-
 const char* const kInterpolationNames[] = {"Step", "Linear", "Hermite", "Catmull-Rom", "TCB",
                                            "Bezier", "Ease", "Nlerp", "Squad"};
 const char* const kHandleNames[] = {"Free", "Aligned", "Vector", "Auto", "Auto Clamped"};
@@ -72,40 +65,6 @@ void editSelectedKeys(EditorState& state, const char* label, const std::function
   if (!error.empty()) showEditorError(state, error);
   else if (skipped > 0) state.statusMessage = std::to_string(skipped) + " key(s) left alone: the interpolation does not suit their channel";
   reposeAtCurrentFrame(state);
-}
-
-struct HandleHit {
-  CurveKeyRef key;
-  bool right = false, hermite = false;
-  glm::vec2 offset{0.0f};  // (time, display value) relative to the key
-};
-
-// The handles shown for a selected key: Bezier handles on the sides whose segment is
-// Bezier, Hermite tangents on the sides whose segment is Hermite (not in the Euler view
-// of rotations, where tangents of quaternion components have no single angle).
-std::vector<HandleHit> handlesOf(const Channel& ch, const CurveKeyRef& k, const ShownCurve& c, bool normalized,
-                                 RotationView view) {
-  std::vector<HandleHit> out;
-  if (ch.target == ChannelTarget::Rotation && view == RotationView::Euler) return out;
-  const int n = ch.keyCount();
-  const float scale = 1.0f / displayToValueScale(c.range, normalized);
-  const KeySettings s = ch.settings(k.key);
-  const bool leftBezier = k.key > 0 && ch.settings(k.key - 1).interpolation == Interpolation::Bezier;
-  const bool rightBezier = k.key + 1 < n && s.interpolation == Interpolation::Bezier;
-  if (leftBezier || rightBezier) {
-    const BezierHandles h = effectiveHandles(ch, k.key);
-    if (leftBezier) out.push_back({k, false, false, {h.leftTime, h.leftValue[k.component] * scale}});
-    if (rightBezier) out.push_back({k, true, false, {h.rightTime, h.rightValue[k.component] * scale}});
-  }
-  if (k.key > 0 && ch.settings(k.key - 1).interpolation == Interpolation::Hermite) {
-    const float ht = -(ch.times[k.key] - ch.times[k.key - 1]) / 3.0f;
-    out.push_back({k, false, true, {ht, s.inTangent[k.component] * ht * scale}});
-  }
-  if (k.key + 1 < n && s.interpolation == Interpolation::Hermite) {
-    const float ht = (ch.times[k.key + 1] - ch.times[k.key]) / 3.0f;
-    out.push_back({k, true, true, {ht, s.outTangent[k.component] * ht * scale}});
-  }
-  return out;
 }
 
 void drawGrid(ImDrawList* dl, const CurveView& v, const PlotRect& r, double frameTime) {
@@ -134,7 +93,7 @@ void keyPropertiesStrip(EditorState& state, const Clip& clip) {
   CurveEditorState& ce = state.curveEditor;
   ImGui::AlignTextToFramePadding();  // the same row height with or without widgets: the plot stays put
   if (ce.selected.empty()) {
-    ImGui::TextDisabled("Click a key to select it (Shift: add), drag to move; middle drag: pan, wheel: zoom");
+    ImGui::TextDisabled("Select keys: click (Shift: add), drag a box (B), A: all; drag keys to move");
     return;
   }
   const CurveKeyRef k = ce.selected.front();
@@ -216,11 +175,18 @@ void keyPropertiesStrip(EditorState& state, const Clip& clip) {
     else ce.selected = moved;
     reposeAtCurrentFrame(state);
   }
+  // Angles in degrees (displayUnitScale), as the properties panel shows them.
   float value = keyDisplayValue(ch, k.key, k.component, ce.rotationView, ce.eulerOrder);
+  const bool degrees = *displayUnitName(ch, ce.rotationView) != '\0';
   ImGui::SameLine();
   ImGui::SetNextItemWidth(80);
-  const bool revalued = ImGui::InputFloat("##value", &value, 0, 0, "%.4f", ImGuiInputTextFlags_EnterReturnsTrue);
+  const bool revalued =
+      ImGui::InputFloat("##value", &value, 0, 0, degrees ? "%.2f" : "%.4f", ImGuiInputTextFlags_EnterReturnsTrue);
   recordItem("Curve Editor/Key value");
+  if (degrees) {
+    ImGui::SameLine(0, 4);
+    ImGui::TextDisabled("deg");
+  }
   if (revalued) {
     const int clipIndex = state.clip;
     const std::string error = state.doc.edit("Key value", [&](DocumentEdit& e) {
@@ -255,20 +221,8 @@ void drawCurveEditorPanel(CommandContext& ctx) {
   const Skeleton& skeleton = state.doc.skeleton();
 
   // The curves of the selected joints' channels.
-  std::vector<ShownCurve> curves;
+  const std::vector<ShownCurve> curves = shownCurves(clip, state.doc.selection, ce);
   const std::vector<int> channels = shownChannels(clip, state.doc.selection);
-  for (int c : channels) {
-    const Channel& ch = clip.channels[c];
-    // Dense keys (imported motion) are drawn through the keys; authored keys with 12 points per segment.
-    const int perSegment = ch.keyCount() > 200 ? 1 : 12;
-    for (int i = 0; i < curveCount(ch, ce.rotationView); ++i) {
-      ShownCurve s;
-      s.ref = {c, i};
-      s.points = curvePoints(ch, i, ce.rotationView, ce.eulerOrder, perSegment);
-      s.range = curveRange(s.points);
-      curves.push_back(std::move(s));
-    }
-  }
   // Drop selected keys that no longer exist (undo, other edits) or are not shown.
   ce.selected.erase(std::remove_if(ce.selected.begin(), ce.selected.end(),
                                    [&](const CurveKeyRef& k) {
@@ -347,10 +301,20 @@ void drawCurveEditorPanel(CommandContext& ctx) {
     const glm::vec2 p = curveToScreen(view, plot, t, v);
     return ImVec2(p.x, p.y);
   };
+  auto curveOf = [&](const CurveKeyRef& k) -> const ShownCurve* {
+    for (const ShownCurve& c : curves)
+      if (c.ref.channel == k.channel && c.ref.component == k.component) return &c;
+    return nullptr;
+  };
+  // A handle's point in the plot: the key plus its offset, the value scaled in the normalized view.
+  auto handlePoint = [&](const ShownCurve& s, const CurveHandle& h) {
+    const glm::vec2 key = keyPlotPoint(s, h.key.key, ce.normalized);
+    return screen(key.x + h.offset.x, key.y + h.offset.y / displayToValueScale(s.range, ce.normalized));
+  };
   // Curves, extended flat before the first and after the last key (constant extrapolation).
   CurveKeyRef keyUnderMouse;
   float bestKey = kPickRadius;
-  std::vector<HandleHit> handles;
+  std::vector<CurveHandle> handles;
   for (const ShownCurve& s : curves) {
     if (ce.isHidden(s.ref) || s.points.times.empty()) continue;
     const Channel& ch = clip.channels[s.ref.channel];
@@ -381,8 +345,8 @@ void drawCurveEditorPanel(CommandContext& ctx) {
       const float d = glm::length(glm::vec2(p.x, p.y) - mouse);
       if (d < bestKey) bestKey = d, keyUnderMouse = ref;
       if (sel)
-        for (const HandleHit& h : handlesOf(ch, ref, s, ce.normalized, ce.rotationView)) {
-          const ImVec2 hp = screen(s.points.keyTimes[k] + h.offset.x, display(s, s.points.keyValues[k]) + h.offset.y);
+        for (const CurveHandle& h : curveHandles(ch, ref, ce.rotationView, ce.eulerOrder)) {
+          const ImVec2 hp = handlePoint(s, h);
           dl->AddLine(p, hp, IM_COL32(200, 200, 200, 200));
           if (h.hermite) dl->AddRectFilled(ImVec2(hp.x - 3, hp.y - 3), ImVec2(hp.x + 3, hp.y + 3), IM_COL32(230, 230, 230, 255));
           else dl->AddCircleFilled(hp, 3.5f, IM_COL32(230, 230, 230, 255));
@@ -393,38 +357,45 @@ void drawCurveEditorPanel(CommandContext& ctx) {
   // The current frame.
   const float nowX = screen(static_cast<float>(state.time), 0).x;
   dl->AddLine(ImVec2(nowX, plot.y), ImVec2(nowX, plot.y + plot.h), IM_COL32(80, 140, 255, 255), 2.0f);
+  // The box being dragged (B, or a drag from empty space).
+  if (ce.drag == CurveEditorState::Drag::Box) {
+    const glm::vec2 lo = glm::min(ce.dragStart, mouse), hi = glm::max(ce.dragStart, mouse);
+    dl->AddRectFilled(ImVec2(lo.x, lo.y), ImVec2(hi.x, hi.y), IM_COL32(255, 255, 255, 30));
+    dl->AddRect(ImVec2(lo.x, lo.y), ImVec2(hi.x, hi.y), IM_COL32(230, 230, 230, 200));
+  } else if (ce.boxArmed && hovered) {  // B: a crosshair until the press
+    dl->AddLine(ImVec2(mouse.x, plot.y), ImVec2(mouse.x, plot.y + plot.h), IM_COL32(230, 230, 230, 120));
+    dl->AddLine(ImVec2(plot.x, mouse.y), ImVec2(plot.x + plot.w, mouse.y), IM_COL32(230, 230, 230, 120));
+  }
   dl->PopClipRect();
 
   // Handle under the mouse (handles win over keys: they sit on top).
-  const HandleHit* handleUnderMouse = nullptr;
+  const CurveHandle* handleUnderMouse = nullptr;
   float bestHandle = kPickRadius;
-  for (const HandleHit& h : handles) {
-    const ShownCurve* s = nullptr;
-    for (const ShownCurve& c : curves)
-      if (c.ref.channel == h.key.channel && c.ref.component == h.key.component) s = &c;
+  for (const CurveHandle& h : handles) {
+    const ShownCurve* s = curveOf(h.key);
     if (!s) continue;
-    const ImVec2 hp = screen(s->points.keyTimes[h.key.key] + h.offset.x, display(*s, s->points.keyValues[h.key.key]) + h.offset.y);
+    const ImVec2 hp = handlePoint(*s, h);
     const float d = glm::length(glm::vec2(hp.x, hp.y) - mouse);
     if (d < bestHandle) bestHandle = d, handleUnderMouse = &h;
   }
 
   const int clipIndex = state.clip;
-  auto curveOf = [&](const CurveKeyRef& k) -> const ShownCurve* {
-    for (const ShownCurve& c : curves)
-      if (c.ref.channel == k.channel && c.ref.component == k.component) return &c;
-    return nullptr;
-  };
-  // Mouse: press on a handle / key starts a drag, on empty space clears the selection.
+  // Mouse: press on a handle / key starts a drag, on empty space a box (a click without
+  // moving clears the selection); after B any press starts a box.
   if (hovered && ce.drag == CurveEditorState::Drag::None && !state.doc.dragging()) {
     if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
-      if (handleUnderMouse) {
+      if (ce.boxArmed || (!handleUnderMouse && keyUnderMouse.key < 0)) {
+        ce.drag = CurveEditorState::Drag::Box;
+        ce.dragStart = mouse;
+        ce.boxExtend = io.KeyShift;
+      } else if (handleUnderMouse) {
         ce.drag = CurveEditorState::Drag::Handle;
         ce.dragHandleKey = handleUnderMouse->key;
         ce.dragHandleRight = handleUnderMouse->right;
         ce.dragHandleHermite = handleUnderMouse->hermite;
         ce.dragHandleStart = handleUnderMouse->offset;
         ce.dragStart = mouse;
-      } else if (keyUnderMouse.key >= 0) {
+      } else {
         if (io.KeyShift) {
           if (ce.isSelected(keyUnderMouse)) ce.selected.erase(std::find(ce.selected.begin(), ce.selected.end(), keyUnderMouse));
           else ce.selected.push_back(keyUnderMouse);
@@ -435,9 +406,8 @@ void drawCurveEditorPanel(CommandContext& ctx) {
           ce.drag = CurveEditorState::Drag::Keys;
           ce.dragStart = mouse;
         }
-      } else if (!io.KeyShift) {
-        ce.selected.clear();
       }
+      ce.boxArmed = false;
     } else if (ImGui::IsMouseClicked(ImGuiMouseButton_Middle)) {
       ce.drag = CurveEditorState::Drag::Pan;
       ce.dragStart = mouse;
@@ -448,9 +418,25 @@ void drawCurveEditorPanel(CommandContext& ctx) {
       zoomView(ce.view, plot, mouse, factor, !io.KeyShift, !io.KeyCtrl);
     }
   }
+  // B waits for a press: Esc or a right click drops it, as in Blender.
+  if (ce.boxArmed && (ImGui::IsMouseClicked(ImGuiMouseButton_Right) || ImGui::IsKeyPressed(keys::ESCAPE, false)))
+    ce.boxArmed = false;
   if (ce.drag == CurveEditorState::Drag::Pan) {
     panView(ce.view, plot, glm::vec2(io.MouseDelta.x, io.MouseDelta.y));
     if (!ImGui::IsMouseDown(ImGuiMouseButton_Middle)) ce.drag = CurveEditorState::Drag::None;
+  }
+  if (ce.drag == CurveEditorState::Drag::Box) {
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Right) || ImGui::IsKeyPressed(keys::ESCAPE, false)) {
+      ce.drag = CurveEditorState::Drag::None;  // cancelled: the selection stays
+    } else if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+      ce.drag = CurveEditorState::Drag::None;
+      // A click without a drag on empty space clears the selection (Shift keeps it).
+      if (glm::length(mouse - ce.dragStart) < 3.0f) {
+        if (!ce.boxExtend) ce.selected.clear();
+      } else {
+        applyBoxSelection(ce, keysInBox(curves, ce, ce.dragStart, mouse), ce.boxExtend);
+      }
+    }
   }
   if (ce.drag == CurveEditorState::Drag::Keys || ce.drag == CurveEditorState::Drag::Handle) {
     const glm::vec2 delta = mouse - ce.dragStart;
@@ -484,15 +470,17 @@ void drawCurveEditorPanel(CommandContext& ctx) {
         });
         if (!moved.empty()) ce.selected = moved;
       } else {
-        const CurveKeyRef k = ce.dragHandleKey;
-        const ShownCurve* s = curveOf(k);
+        CurveHandle h;
+        h.key = ce.dragHandleKey;
+        h.right = ce.dragHandleRight;
+        h.hermite = ce.dragHandleHermite;
+        const ShownCurve* s = curveOf(h.key);
+        // The plot's offset (normalized in that view) back to display units.
         const float scale = s ? displayToValueScale(s->range, ce.normalized) : 1.0f;
-        const glm::vec2 offset = ce.dragHandleStart + d;
+        const glm::vec2 offset(ce.dragHandleStart.x + d.x, ce.dragHandleStart.y + d.y * scale);
         const float fps = static_cast<float>(clip.framesPerSecond());
         state.doc.updateDrag([&](DocumentEdit& e) {
-          Channel& ch = e.clips[clipIndex].channels[k.channel];
-          if (ce.dragHandleHermite) setHermiteTangentFromHandle(ch, k.key, ce.dragHandleRight, k.component, offset.x, offset.y * scale);
-          else dragBezierHandle(ch, k.key, ce.dragHandleRight, k.component, offset.x, offset.y * scale, fps);
+          dragCurveHandle(e.clips[clipIndex].channels[h.key.channel], h, offset, ce.rotationView, ce.eulerOrder, fps);
           return std::string();
         });
       }

@@ -34,6 +34,9 @@ void drawLogWindow(EditorState& state);           // View > Log: every message i
 void drawPanelSplitters(EditorState& state);      // the draggable boundaries between the panels
 // The new-key defaults (radio buttons, named itemPrefix + label), in the Keys popup and Preferences.
 void drawKeyPreferenceChoices(EditorState& state, const std::string& itemPrefix);
+// Esc closes the open non-modal popups (menus, combos, context popups) above the topmost
+// modal (modals answer Esc themselves); sets PanelState::popupOpen. Last in each frame.
+void closePopupsOnEscape(EditorState& state);
 
 // Older panels kept for the joint list view and playback.
 void drawJointListPanel(EditorState& state);

@@ -193,6 +193,7 @@ void drawEditorPanels(CommandContext& ctx, float fps) {
     drawPreferencesWindow(ctx);
     drawLogWindow(state);
     drawSessionDialogs(ctx);
+    closePopupsOnEscape(state);
     return;
   }
   drawMainMenuBar(ctx);
@@ -210,6 +211,7 @@ void drawEditorPanels(CommandContext& ctx, float fps) {
   drawPreferencesWindow(ctx);
   drawLogWindow(state);
   drawSessionDialogs(ctx);
+  closePopupsOnEscape(state);
 }
 
 }  // namespace kinema

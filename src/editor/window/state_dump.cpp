@@ -87,7 +87,9 @@ json curveEditorJson(const EditorState& s) {
         curves.push_back({{"channel", c},
                           {"component", i},
                           {"label", curveLabel(s.doc.skeleton(), ch, i, ce.rotationView, ce.eulerOrder)},
+                          {"unit", displayUnitName(ch, ce.rotationView)},
                           {"visible", !ce.isHidden({c, i})},
+                          {"value_now", curveValueAt(ch, i, ce.rotationView, ce.eulerOrder, p, float(s.time))},
                           {"keys", keys}});
       }
     }
@@ -96,6 +98,7 @@ json curveEditorJson(const EditorState& s) {
   json selected = json::array();
   for (const CurveKeyRef& k : ce.selected) selected.push_back({{"channel", k.channel}, {"component", k.component}, {"key", k.key}});
   out["selected_keys"] = selected;
+  out["box_armed"] = ce.boxArmed;
   return out;
 }
 
@@ -250,6 +253,7 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
   }
   out["ik_targets"] = targets;
   out["curve_editor"] = curveEditorJson(s);
+  out["popup_open"] = s.panels.popupOpen;  // a menu, combo or popup (not a modal) is open
   addAnimationDisplayState(s, out);  // onion skin, motion path, motion control
   return out.dump(1) + "\n";
 }
