@@ -12,6 +12,7 @@
 namespace kinema {
 
 struct MeshDraw;
+struct MeshGhost;
 
 // How bones show over meshes: not at all, depth-tested like any surface (hidden inside a
 // body), or x-ray: on top of everything, blended by the bone colours' alpha (draw with
@@ -32,6 +33,10 @@ struct FrameDescription {
   // Onion-skin ghosts: whole skeletons blended by their colours' alpha after the bones,
   // depth-tested against the scene, front faces only (each bone blends once). May be null.
   const std::vector<SkeletonDrawList>* ghosts = nullptr;
+  // Onion-skin ghosts of the meshes (MeshRenderer::drawGhosts), drawn right after the meshes
+  // with their renderer (so before the bones, whose x-ray pass would clear the body's depth).
+  // Needs `meshes`; may be null.
+  const std::vector<MeshGhost>* meshGhosts = nullptr;
 };
 
 // Draws grid, axes, bones and joints with OpenGL 3.3 core into whatever framebuffer is

@@ -220,6 +220,61 @@ TEST_F(CompareE2e, ThePlotShowsOneSeriesPerSolver) {
   }
 }
 
+// Pixels of `color` (each channel within `tol`) inside rect r of the screenshot.
+int colorCount(const Image& img, const Rect& r, const json& color, int tol) {
+  int n = 0;
+  for (int y = std::max(0, int(r.y)); y < std::min(img.height, int(r.bottom())); ++y)
+    for (int x = std::max(0, int(r.x)); x < std::min(img.width, int(r.right())); ++x) {
+      const std::uint8_t* px = img.pixel(x, y);
+      n += std::abs(px[0] - int(color[0])) <= tol && std::abs(px[1] - int(color[1])) <= tol &&
+           std::abs(px[2] - int(color[2])) <= tol;
+    }
+  return n;
+}
+
+// The plot reveals the curves step by step: after one sub-step each solver's curve has its
+// start point and the point under way (plot_points 2 or 1), far fewer of its pixels than at
+// the end. The 3D view, orbited, shows the ground grid and Blender's red X, green Y and blue
+// Z axes; the 2D board shows none of them.
+TEST_F(CompareE2e, ThePlotRevealsStepByStepAndThe3dViewHasGridAndAxes) {
+  ASSERT_TRUE(probe().is_object());
+  const glm::dvec2 a = rectOf(probe()["compare"]["views"][0]).at(0.1, 0.9), b = a + glm::dvec2(60, -40);
+  Script s;
+  s.wait(2).clickItem("Compare/3D").wait(2).move(a).wait(1).down().path(a, b).wait(1).up().wait(2).key("RIGHT").wait(3);
+  const json first = run(s, "reveal_step_one_3d", "ccd-steps");
+  ASSERT_TRUE(first.is_object());
+  Script end;
+  end.wait(4).key("END").wait(3);
+  const json last = run(end, "reveal_end_2d", "ccd-steps");
+  ASSERT_TRUE(last.is_object());
+  const auto shotFirst = loadPng(shotDir() + "/reveal_step_one_3d.png"), shotLast = loadPng(shotDir() + "/reveal_end_2d.png");
+  ASSERT_TRUE(shotFirst.ok() && shotLast.ok());
+  const Rect plotFirst = rectOf(first["compare"]["plot"]), plotLast = rectOf(last["compare"]["plot"]);
+  ASSERT_EQ(first["compare"]["view"], "3d");
+  for (size_t i = 0; i < first["compare"]["solvers"].size(); ++i) {
+    const json& one = first["compare"]["solvers"][i];
+    const json& all = last["compare"]["solvers"][i];
+    EXPECT_EQ(one["cursor"], 1);
+    EXPECT_EQ(one["plot_points"], int(one["iteration"]) + 1) << one["solver"];
+    EXPECT_EQ(all["plot_points"], int(all["iterations"]) + 1) << all["solver"] << ": the whole curve at the end";
+    ASSERT_GE(int(all["iterations"]), 3) << "a case with curves long enough to tell apart";
+    const int early = colorCount(shotFirst.value(), plotFirst, one["color"], 24);
+    const int late = colorCount(shotLast.value(), plotLast, all["color"], 24);
+    EXPECT_GT(early, 0) << one["solver"] << ": the start point is drawn";
+    EXPECT_GT(late, 2 * early) << one["solver"] << ": step 1 shows " << early << " px of the curve, the end " << late;
+  }
+  // The axes in their colours in every 3D view; none on the 2D board.
+  const json axes[3] = {json::array({255, 51, 82}), json::array({139, 220, 0}), json::array({40, 144, 255})};
+  for (size_t v = 0; v < first["compare"]["views"].size(); ++v) {
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_GE(colorCount(shotFirst.value(), rectOf(first["compare"]["views"][v]), axes[k], 24), 15)
+          << "view " << v << " axis " << k;
+      EXPECT_EQ(colorCount(shotLast.value(), rectOf(last["compare"]["views"][v]), axes[k], 24), 0)
+          << "view " << v << " axis " << k << " on the 2D board";
+    }
+  }
+}
+
 TEST_F(CompareE2e, DraggingAJointSetsTheStartPoseOfEverySolver) {
   Script idle;
   idle.wait(2);
