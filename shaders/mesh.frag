@@ -33,7 +33,7 @@ void main() {
   if (uGhost) {
     float rim = 1.0 - abs(n.z);  // 0 facing the camera, 1 at the silhouette
     float lit = 0.65 + 0.35 * max(dot(n, normalize(vec3(-0.4, 0.6, 0.7))), 0.0);
-    fragColor = vec4(uGhostColor.rgb * lit + vec3(0.3) * rim * rim, uGhostColor.a * mix(0.75, 1.0, rim));
+    fragColor = vec4(uGhostColor.rgb * lit + vec3(0.3) * rim * rim, uGhostColor.a * mix(0.85, 1.0, rim));
     return;
   }
   vec4 base = uBaseColor;

@@ -460,6 +460,10 @@ void MeshRenderer::drawGhosts(const std::vector<MeshGhost>& ghosts, const glm::m
   glEnable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  // Ghosts a little behind their true depth: where a ghost coincides with the body (the parts
+  // the clip does not move) the body wins, so only what moved is tinted.
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(1.0f, 4.0f);
   for (size_t g = 0; g < count; ++g) {
     if (!ghosts[g].world) continue;
     MeshFrame frame;
@@ -484,6 +488,7 @@ void MeshRenderer::drawGhosts(const std::vector<MeshGhost>& ghosts, const glm::m
   }
   jointSlotBase_ = 0;
   glUniform1i(program_.uniform("uGhost"), 0);
+  glDisable(GL_POLYGON_OFFSET_FILL);
   glDisable(GL_BLEND);
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_LESS);

@@ -63,8 +63,9 @@ class MeshRenderer {
 
   // Onion-skin ghosts over what the framebuffer holds: each ghost is depth-tested against
   // the scene and blended once per pixel (its nearest surface: a depth-only pass, then a
-  // colour pass at equal depth), so a ghost reads as one translucent body and is hidden only
-  // where something opaque is in front of it. Leaves the ghosts' depth in the depth buffer.
+  // colour pass at equal depth), so a ghost reads as one translucent body and is hidden
+  // where something opaque is in front of it or coincides with it (the body's parts that did
+  // not move). Leaves the ghosts' depth in the depth buffer.
   void drawGhosts(const std::vector<MeshGhost>& ghosts, const glm::mat4& viewProjection, const glm::mat4& view);
 
   // The same vertex shader run through transform feedback: world-space positions and

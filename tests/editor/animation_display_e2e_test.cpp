@@ -84,10 +84,10 @@ class AnimationDisplayE2e : public ::testing::Test {
     return png.ok() ? png.value() : Image();
   }
   // Plays ~1 s (60 replay frames of 1/60 s), pauses, frames the pose (Home) and zooms out
-  // so the ghosts 0.4 s away on either side are in the view.
+  // so the ghosts up to 1 s away on either side (x 0 .. 6 m) are in the view.
   static Script playToAboutFrame10() {
     Script s;
-    s.key("SPACE").wait(59).key("SPACE").wait(2).key("HOME").wait(2).scroll(-3).wait(2);
+    s.key("SPACE").wait(59).key("SPACE").wait(2).key("HOME").wait(2).scroll(-3).wait(2).scroll(-3).wait(2).scroll(-3).wait(2);
     return s;
   }
   std::string dir_, bvh_;
@@ -231,19 +231,21 @@ TEST_F(AnimationDisplayE2e, MotionControlRetimesTheRootsTranslation) {
 // past's tint), where the same run without the onion skin has no tint. The ghost poses are
 // the saved clip sampled here, not the editor's ghosts.
 TEST_F(AnimationDisplayE2e, OnionSkinShowsTheBodysGhostsOnTheDefaultCharacter) {
+  // Two copies of the character: the run with the onion skin saves its keys into its own.
   Document doc = newDocument();
-  const std::string file = dir_ + "/character.kinema";
+  const std::string file = dir_ + "/character.kinema", plain = dir_ + "/plain.kinema";
   ASSERT_EQ(saveDocumentAs(doc, file), "");
+  ASSERT_EQ(saveDocumentAs(doc, plain), "");
   Script s;
   s.select("UpperArm.L");
   s.key("I");
   for (int i = 0; i < 19; ++i) s.key("RIGHT");
   s.wait(21);
-  s.key("R").key("Z").key("8").key("0").key("ENTER").key("I");
-  s.keyDown("LEFT_CONTROL").key("S").keyUp("LEFT_CONTROL").wait(2);
+  s.key("R").key("Z").key("8").key("0").key("ENTER").key("I").wait(2);
   Script on = s;
+  on.keyDown("LEFT_CONTROL").key("S").keyUp("LEFT_CONTROL").wait(2);
   on.keyDown("LEFT_ALT").key("O").keyUp("LEFT_ALT").wait(3);
-  const json off = runEditor(dir_, shotDir(), s, "body_onion_off", file);
+  const json off = runEditor(dir_, shotDir(), s, "body_onion_off", plain);
   const json d = runEditor(dir_, shotDir(), on, "body_onion_on", file);
   ASSERT_TRUE(d.is_object() && off.is_object());
   EXPECT_EQ(d["timeline"]["frame"], 20);

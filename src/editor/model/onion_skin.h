@@ -11,12 +11,12 @@ namespace kinema {
 // fading with the distance from the current frame.
 // The defaults are chosen to read at a glance on a character with a body: ghosts 5 frames
 // apart (at 24 fps a fifth of a second, far enough apart not to merge with the current pose)
-// at half opacity for the nearest.
+// at 0.6 opacity for the nearest.
 struct OnionSkinSettings {
   bool enabled = false;
   int before = 2, after = 2;  // ghosts on each side
   int step = 5;               // frames between ghosts (and from the current frame to the nearest)
-  float opacity = 0.5f;       // alpha of the nearest ghosts; the farthest fade towards 0
+  float opacity = 0.6f;       // alpha of the nearest ghosts; the farthest fade towards 0
   bool bodies = true;         // ghosts of the skinned body where the scene has meshes (else bones)
   glm::vec3 beforeColor{0.20f, 0.85f, 0.30f};  // green: frames already played
   glm::vec3 afterColor{0.25f, 0.50f, 1.00f};   // blue: frames to come
