@@ -2,6 +2,8 @@
 // Meshes lit like Blender's solid mode: a key light from the camera's side (upper left,
 // fixed to the view) plus hemispheric ambient (sky above, ground below, in world space),
 // base colour factor times texture, both faces lit. Or heat colours of a joint's weights.
+// Or an onion-skin ghost: a flat tint, lit a little, more opaque towards the silhouette
+// (a fresnel rim), so the shape reads without hiding what is behind it.
 in vec3 vWorldNormal;
 in vec3 vNormalView;
 in vec2 vTexcoord;
@@ -12,6 +14,8 @@ uniform vec4 uBaseColor;
 uniform bool uHasTexture;
 uniform sampler2D uBaseColorTexture;
 uniform bool uShowWeights;
+uniform bool uGhost;
+uniform vec4 uGhostColor;  // rgb tint, alpha = the ghost's opacity
 
 // Blue (0) -> cyan -> green -> yellow -> red (1), as weight painting shows it.
 vec3 heatColor(float w) {
@@ -25,6 +29,12 @@ void main() {
   if (!gl_FrontFacing) {
     n = -n;
     worldN = -worldN;
+  }
+  if (uGhost) {
+    float rim = 1.0 - abs(n.z);  // 0 facing the camera, 1 at the silhouette
+    float lit = 0.65 + 0.35 * max(dot(n, normalize(vec3(-0.4, 0.6, 0.7))), 0.0);
+    fragColor = vec4(uGhostColor.rgb * lit + vec3(0.3) * rim * rim, uGhostColor.a * mix(0.85, 1.0, rim));
+    return;
   }
   vec4 base = uBaseColor;
   if (uHasTexture) base *= texture(uBaseColorTexture, vTexcoord);

@@ -153,6 +153,7 @@ int runPreset(const TeachingCase& preset, const DemoOptions& o, int width, int h
   }
   if (!onPath("ffmpeg")) std::cerr << "kinema demo: ffmpeg is not on PATH (apt-get install ffmpeg): no GIF or MP4 written\n";
   numbers["solvers"] = std::move(solvers);
+  runToEnd(cmp);  // the plot of the whole runs
   const Image plot = rasterizeFigure(drawConvergencePlot(cmp, style), width, static_cast<int>(width / 1.6f), true);
   if (std::string bad = savePng((out / "convergence.png").string(), plot); !bad.empty()) return badInput(bad);
   for (const auto& [file, text] : {std::pair<const char*, std::string>{"numbers.json", numbers.dump() + "\n"},

@@ -136,9 +136,12 @@ std::vector<std::string> ikCommandArguments(const TeachingCase& setup, IkSolver 
   return args;
 }
 
-std::vector<float> SolverRun::convergence() const {
+namespace {
+// Largest error per iteration over entries [0, end).
+std::vector<float> convergenceOf(const std::vector<IkTraceEntry>& entries, size_t end) {
   std::vector<float> out;
-  for (const IkTraceEntry& e : trace.entries) {
+  for (size_t k = 0; k < end && k < entries.size(); ++k) {
+    const IkTraceEntry& e = entries[k];
     if (e.iteration < 0) continue;
     if (static_cast<int>(out.size()) <= e.iteration) out.resize(e.iteration + 1, -1.0f);
     out[e.iteration] = e.error;  // the last entry of each iteration wins
@@ -147,6 +150,13 @@ std::vector<float> SolverRun::convergence() const {
   for (size_t i = 1; i < out.size(); ++i)
     if (out[i] < 0.0f) out[i] = out[i - 1];
   return out;
+}
+}  // namespace
+
+std::vector<float> SolverRun::convergence() const { return convergenceOf(trace.entries, trace.entries.size()); }
+
+std::vector<float> SolverRun::convergenceSoFar() const {
+  return convergenceOf(trace.entries, static_cast<size_t>(std::max(cursor, 0)) + 1);
 }
 
 std::string startComparison(const TeachingCase& setup, SolverComparison& out, int timingRepeats) {

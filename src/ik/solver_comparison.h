@@ -81,6 +81,10 @@ struct SolverRun {
   bool finished() const { return cursor + 1 >= static_cast<int>(trace.entries.size()); }
   // Largest effector error after each completed iteration, index 0 = the start.
   std::vector<float> convergence() const;
+  // The same, revealed up to the cursor (a step-by-step replay must not show what is to
+  // come): only iterations the entries 0 .. cursor reach, the last one being the cursor's
+  // iteration with the error at the cursor (that iteration may still be under way).
+  std::vector<float> convergenceSoFar() const;
 };
 
 struct SolverComparison {

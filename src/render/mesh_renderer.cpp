@@ -78,10 +78,10 @@ void packJointTexels(const glm::mat4& m, float* out) {
 MeshRenderer::~MeshRenderer() {
   release();
   if (!program_.id()) return;  // init() never succeeded: no GL objects (and maybe no GL loaded)
-  const GLuint buffers[] = {jointBuffer_, feedbackBuffer_, emptyBuffer_};
-  glDeleteBuffers(3, buffers);
-  const GLuint textures[] = {jointTexture_, emptyTexture_};
-  glDeleteTextures(2, textures);
+  const GLuint buffers[] = {jointBuffer_, feedbackBuffer_, emptyBuffer_, ghostBuffer_};
+  glDeleteBuffers(4, buffers);
+  const GLuint textures[] = {jointTexture_, emptyTexture_, ghostTexture_};
+  glDeleteTextures(3, textures);
   glDeleteFramebuffers(1, &feedbackFbo_);
   glDeleteRenderbuffers(1, &feedbackColor_);
 }
@@ -109,6 +109,10 @@ std::string MeshRenderer::init() {
   glBindBuffer(GL_TEXTURE_BUFFER, jointBuffer_);
   glBufferData(GL_TEXTURE_BUFFER, 16, nullptr, GL_STREAM_DRAW);
   jointTexture_ = makeBufferTexture(jointBuffer_, GL_RGBA32F);
+  glGenBuffers(1, &ghostBuffer_);
+  glBindBuffer(GL_TEXTURE_BUFFER, ghostBuffer_);
+  glBufferData(GL_TEXTURE_BUFFER, 16, nullptr, GL_STREAM_DRAW);
+  ghostTexture_ = makeBufferTexture(ghostBuffer_, GL_RGBA32F);
   // Samplers must always name a complete texture, also for primitives without morphs.
   glGenBuffers(1, &emptyBuffer_);
   glBindBuffer(GL_TEXTURE_BUFFER, emptyBuffer_);
@@ -281,6 +285,7 @@ std::string MeshRenderer::upload(const Scene& scene) {
     skinOffset_.push_back(static_cast<int>(std::min<long long>(slots, 1 << 30)));
     slots += static_cast<long long>(skin.joints.size());
   }
+  jointSlots_ = static_cast<int>(std::min<long long>(slots, 1 << 30));
   // A file decides these sizes: refuse what the driver's texture buffers cannot hold
   // (at least 65,536 texels: over 4,000 joints) instead of drawing garbage.
   GLint maxTexels = 0;
@@ -306,16 +311,21 @@ std::string MeshRenderer::upload(const Scene& scene) {
   return {};
 }
 
-void MeshRenderer::uploadJointMatrices(const MeshFrame& frame) {
-  // Every skin's matrices in one buffer, skin after skin; instances index from their skin's offset.
-  jointScratch_.clear();
+void MeshRenderer::appendJointTexels(const std::vector<glm::mat4>& world) {
+  // Every skin's matrices, skin after skin; instances index from their skin's offset.
   for (size_t k = 0; k < scene_->skins.size() && k < skinOffset_.size(); ++k) {
-    computeSkinningMatrices(scene_->skins[k], *frame.world, skinScratch_);
+    computeSkinningMatrices(scene_->skins[k], world, skinScratch_);
     const size_t at = jointScratch_.size();
     jointScratch_.resize(at + skinScratch_.size() * kJointTexels * 4);
     for (size_t j = 0; j < skinScratch_.size(); ++j) packJointTexels(skinScratch_[j], &jointScratch_[at + j * kJointTexels * 4]);
   }
+}
+
+void MeshRenderer::uploadJointMatrices(const MeshFrame& frame) {
+  jointScratch_.clear();
+  appendJointTexels(*frame.world);
   if (jointScratch_.empty()) jointScratch_.assign(4, 0.0f);
+  jointSlotBase_ = 0;
   glBindBuffer(GL_TEXTURE_BUFFER, jointBuffer_);
   glBufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(jointScratch_.size() * sizeof(float)), jointScratch_.data(),
                GL_STREAM_DRAW);
@@ -341,7 +351,7 @@ void MeshRenderer::bindInstance(const MeshFrame& frame, int instance, const GpuP
   glUniformMatrix4fv(program_.uniform("uModel"), 1, GL_FALSE, glm::value_ptr(model));
   const glm::mat3 normal = inverseTranspose3(glm::mat3(model));
   glUniformMatrix3fv(program_.uniform("uModelNormal"), 1, GL_FALSE, glm::value_ptr(normal));
-  glUniform1i(program_.uniform("uJointOffset"), skinned ? skinOffset_[inst.skin] : 0);
+  glUniform1i(program_.uniform("uJointOffset"), skinned ? jointSlotBase_ + skinOffset_[inst.skin] : 0);
 
   int weightJoint = -1;
   if (weightsView && frame.weightJoint >= 0) {
@@ -395,19 +405,93 @@ void MeshRenderer::draw(const MeshFrame& frame, const glm::mat4& viewProjection,
   glUniformMatrix4fv(program_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_BUFFER, jointTexture_);
+  glUniform1i(program_.uniform("uGhost"), 0);
   glEnable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);  // double-sided: the fragment shader lights back faces too
+  drawInstances(frame, true);
+  glBindVertexArray(0);
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_BUFFER, 0);
+  glActiveTexture(GL_TEXTURE2);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_BUFFER, 0);
+  glUseProgram(0);
+}
+
+void MeshRenderer::drawInstances(const MeshFrame& frame, bool weightsView) {
   for (size_t i = 0; i < scene_->meshInstances.size(); ++i) {
     const MeshInstance& inst = scene_->meshInstances[i];
     if (!uploadedMesh(inst.mesh)) continue;
     for (int index : primitivesOfMesh_[inst.mesh]) {
       const GpuPrimitive& p = primitives_[index];
       if (p.indexCount == 0 || p.primitive >= static_cast<int>(scene_->meshes[inst.mesh].primitives.size())) continue;
-      bindInstance(frame, static_cast<int>(i), p, true);
+      bindInstance(frame, static_cast<int>(i), p, weightsView);
       glBindVertexArray(p.vao);
       glDrawElements(GL_TRIANGLES, p.indexCount, GL_UNSIGNED_INT, nullptr);
     }
   }
+}
+
+void MeshRenderer::drawGhosts(const std::vector<MeshGhost>& ghosts, const glm::mat4& viewProjection, const glm::mat4& view) {
+  if (!scene_ || primitives_.empty() || ghosts.empty()) return;
+  // Every ghost's joints in one buffer of its own, pose after pose, uploaded once: as many
+  // ghosts as the driver's texture buffers hold (the rest are left out).
+  GLint maxTexels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+  const long long perPose = std::max(1LL, static_cast<long long>(jointSlots_) * kJointTexels);
+  const size_t count = std::min(ghosts.size(), static_cast<size_t>(std::max(1LL, maxTexels / perPose)));
+  jointScratch_.clear();
+  for (size_t g = 0; g < count; ++g) {
+    const size_t at = jointScratch_.size();
+    if (ghosts[g].world) appendJointTexels(*ghosts[g].world);
+    jointScratch_.resize(at + static_cast<size_t>(jointSlots_) * kJointTexels * 4, 0.0f);
+  }
+  if (jointScratch_.empty()) jointScratch_.assign(4, 0.0f);
+  glBindBuffer(GL_TEXTURE_BUFFER, ghostBuffer_);
+  glBufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(jointScratch_.size() * sizeof(float)), jointScratch_.data(),
+               GL_STREAM_DRAW);
+  glBindBuffer(GL_TEXTURE_BUFFER, 0);
+  glUseProgram(program_.id());
+  glUniformMatrix4fv(program_.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
+  glUniformMatrix4fv(program_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_BUFFER, ghostTexture_);
+  glEnable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  // Ghosts a little behind their true depth: where a ghost coincides with the body (the parts
+  // the clip does not move) the body wins, so only what moved is tinted.
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(1.0f, 4.0f);
+  for (size_t g = 0; g < count; ++g) {
+    if (!ghosts[g].world) continue;
+    MeshFrame frame;
+    frame.world = ghosts[g].world;
+    frame.morphWeights = ghosts[g].morphWeights;
+    jointSlotBase_ = static_cast<int>(g) * jointSlots_;
+    // Depth only: the ghost's nearest surface where nothing opaque is in front of it...
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_BLEND);
+    glUniform1i(program_.uniform("uGhost"), 0);
+    drawInstances(frame, false);
+    // ...then that surface alone in the tint, blended once per pixel.
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_FALSE);
+    glDepthFunc(GL_LEQUAL);
+    glEnable(GL_BLEND);
+    glUniform1i(program_.uniform("uGhost"), 1);
+    glUniform4fv(program_.uniform("uGhostColor"), 1, glm::value_ptr(ghosts[g].color));
+    drawInstances(frame, false);
+  }
+  jointSlotBase_ = 0;
+  glUniform1i(program_.uniform("uGhost"), 0);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glDisable(GL_BLEND);
+  glDepthMask(GL_TRUE);
+  glDepthFunc(GL_LESS);
   glBindVertexArray(0);
   glActiveTexture(GL_TEXTURE1);
   glBindTexture(GL_TEXTURE_BUFFER, 0);

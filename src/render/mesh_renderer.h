@@ -23,6 +23,15 @@ struct MeshFrame {
   int weightJoint = -1;
 };
 
+// One onion-skin ghost of the meshes: the scene posed by `world` (one matrix per skeleton
+// joint, as MeshFrame::world) with its morph weights (as MeshFrame::morphWeights; may be
+// null), drawn in a translucent tint: rgb, alpha = opacity (brighter at the silhouette).
+struct MeshGhost {
+  const std::vector<glm::mat4>* world = nullptr;
+  const std::vector<std::vector<float>>* morphWeights = nullptr;
+  glm::vec4 color{1.0f};
+};
+
 // Draws a Scene's meshes with OpenGL 3.3 core, skinned in the vertex shader
 // (shaders/mesh.vert): the scene's vertex data and textures are uploaded once by upload(),
 // each frame sends only the skinning matrices (computeSkinningMatrices) as a texture
@@ -52,6 +61,13 @@ class MeshRenderer {
   // Draws every mesh instance into the bound framebuffer (depth test on, both faces lit).
   void draw(const MeshFrame& frame, const glm::mat4& viewProjection, const glm::mat4& view);
 
+  // Onion-skin ghosts over what the framebuffer holds: each ghost is depth-tested against
+  // the scene and blended once per pixel (its nearest surface: a depth-only pass, then a
+  // colour pass at equal depth), so a ghost reads as one translucent body and is hidden
+  // where something opaque is in front of it or coincides with it (the body's parts that did
+  // not move). Leaves the ghosts' depth in the depth buffer.
+  void drawGhosts(const std::vector<MeshGhost>& ghosts, const glm::mat4& viewProjection, const glm::mat4& view);
+
   // The same vertex shader run through transform feedback: world-space positions and
   // normals of every instance x primitive, in SceneDeformationJob's order and layout (normals
   // empty where the primitive has none), so tests compare the GPU with the CPU.
@@ -77,6 +93,8 @@ class MeshRenderer {
   };
   void bindInstance(const MeshFrame& frame, int instance, const GpuPrimitive& p, bool weightsView);
   void uploadJointMatrices(const MeshFrame& frame);
+  void appendJointTexels(const std::vector<glm::mat4>& world);  // one pose's texels onto jointScratch_
+  void drawInstances(const MeshFrame& frame, bool weightsView);
   bool uploadedMesh(int mesh) const;
   void release();
 
@@ -88,6 +106,9 @@ class MeshRenderer {
   GLuint feedbackFbo_ = 0, feedbackColor_ = 0;
   GLuint jointBuffer_ = 0, jointTexture_ = 0, feedbackBuffer_ = 0, emptyBuffer_ = 0, emptyTexture_ = 0;
   std::vector<int> skinOffset_;  // first joint slot of each skin in the joint buffer
+  int jointSlots_ = 0;           // joint slots of one pose (every skin's joints)
+  int jointSlotBase_ = 0;        // the pose drawn starts at this slot (ghosts: one pose after another)
+  GLuint ghostBuffer_ = 0, ghostTexture_ = 0;  // every ghost's joints (the frame's buffer is not re-filled mid-frame)
   std::vector<float> jointScratch_;
   std::vector<glm::mat4> skinScratch_;
   std::vector<std::string> warnings_;

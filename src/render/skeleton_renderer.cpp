@@ -174,6 +174,8 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
   const glm::mat4 viewProjection = frame.camera.projection(aspect) * view;
   if (frame.showGrid) drawGrid(frame, viewProjection);
   if (frame.meshes && frame.meshes->renderer) frame.meshes->renderer->draw(frame.meshes->frame, viewProjection, view);
+  if (frame.meshes && frame.meshes->renderer && frame.meshGhosts && !frame.meshGhosts->empty())
+    frame.meshes->renderer->drawGhosts(*frame.meshGhosts, viewProjection, view);
   if (frame.skeleton && frame.bones != BoneDisplay::None) {
     glUseProgram(shaded_.id());
     glUniformMatrix4fv(shaded_.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));

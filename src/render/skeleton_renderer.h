@@ -12,6 +12,7 @@
 namespace kinema {
 
 struct MeshDraw;
+struct MeshGhost;
 
 // How bones show over meshes: not at all, depth-tested like any surface (hidden inside a
 // body), or x-ray: on top of everything, blended by the bone colours' alpha (draw with
@@ -35,6 +36,10 @@ struct FrameDescription {
   // The grid's and the overlay's line widths and marker sizes, times their pixels (the
   // editor's presentation preset makes them thicker for a projector); 1 = as built.
   float lineScale = 1.0f;
+  // Onion-skin ghosts of the meshes (MeshRenderer::drawGhosts), drawn right after the meshes
+  // with their renderer (so before the bones, whose x-ray pass would clear the body's depth).
+  // Needs `meshes`; may be null.
+  const std::vector<MeshGhost>* meshGhosts = nullptr;
 };
 
 // Draws grid, axes, bones and joints with OpenGL 3.3 core into whatever framebuffer is

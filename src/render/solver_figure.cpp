@@ -141,6 +141,35 @@ void addElbowSolutions(Figure& f, const SolverComparison& c, const FigureStyle& 
   }
 }
 
+// The ground grid through the base (XZ plane), cells of a round length (1, 2 or 5 x 10^n)
+// about a fifth of the reach, out to twice the reach; then the axes through the base.
+void addGround(Figure& f, const SolverComparison& c, const FigureStyle& style) {
+  const glm::vec3 base = c.setup.chain.base;
+  const float reach = std::max(c.setup.chain.reach(), 1e-3f);
+  const float rough = reach / 5.0f, decade = std::pow(10.0f, std::floor(std::log10(rough)));
+  const float cell = rough >= 5.0f * decade ? 5.0f * decade : rough >= 2.0f * decade ? 2.0f * decade : decade;
+  const int n = static_cast<int>(std::ceil(2.0f * reach / cell));
+  const float extent = static_cast<float>(n) * cell;
+  const Rgba grid = style.slides ? Rgba{215, 215, 215, 255} : Rgba{62, 62, 68, 255};
+  auto line = [&](glm::vec3 a, glm::vec3 b, Rgba col, float width) {
+    f.lines.push_back({projectToFigure(base + a, style), projectToFigure(base + b, style), col, width, false});
+  };
+  for (int i = -n; i <= n; ++i) {
+    if (i == 0) continue;  // the axes go there
+    const float v = static_cast<float>(i) * cell;
+    line({v, 0, -extent}, {v, 0, extent}, grid, 1.0f);
+    line({-extent, 0, v}, {extent, 0, v}, grid, 1.0f);
+  }
+  const Rgba x{255, 51, 82, 255}, y{139, 220, 0, 255}, z{40, 144, 255, 255};  // Blender's axis colours
+  line({-extent, 0, 0}, {extent, 0, 0}, x, 1.5f);
+  line({0, 0, -extent}, {0, 0, extent}, z, 1.5f);
+  line({0, 0, 0}, {0, reach, 0}, y, 1.5f);
+  const char* names[3] = {"X", "Y", "Z"};
+  const glm::vec3 ends[3] = {{0.6f * reach, 0, 0}, {0, reach, 0}, {0, 0, 0.6f * reach}};
+  const Rgba colors[3] = {x, y, z};
+  for (int k = 0; k < 3; ++k) f.texts.push_back({projectToFigure(base + ends[k], style), names[k], colors[k], 1});
+}
+
 }  // namespace
 
 std::string solverDisplayName(IkSolver s, bool abbreviated) {
@@ -187,6 +216,7 @@ Figure drawSolverStep(const SolverComparison& c, int runIndex, const FigureStyle
   const float reach = c.setup.chain.reach();
   const bool twoBone = c.setup.chain.boneLengths.size() == 2;
 
+  if (style.showGround) addGround(f, c, style);
   if (twoBone) addElbowSolutions(f, c, style, pal);
   if (style.showReach) {
     FigureCircle r;
@@ -296,9 +326,12 @@ Figure drawConvergencePlot(const SolverComparison& c, const FigureStyle& style) 
   const glm::vec2 lo(0.16f, 0.1f), hi(1.2f, 0.86f);
   int iterations = 1;
   float emax = 1e-7f, emin = 1e30f;
-  std::vector<std::vector<float>> series;
+  // The axes fit the whole runs (the view does not jump as steps are taken); the curves
+  // show only what the cursors have reached.
+  std::vector<std::vector<float>> series, shown;
   for (const SolverRun& r : c.runs) {
     series.push_back(r.convergence());
+    shown.push_back(r.convergenceSoFar());
     iterations = std::max(iterations, static_cast<int>(series.back().size()) - 1);
     for (float e : series.back()) {
       emax = std::max(emax, e);
@@ -344,21 +377,34 @@ Figure drawConvergencePlot(const SolverComparison& c, const FigureStyle& style) 
     f.lines.push_back({{lo.x, y}, {hi.x, y}, pal.target, 1.0f, true});
     f.texts.push_back({{hi.x + 0.01f, y + 0.015f}, "tolerance", pal.target, 1});
   }
-  for (size_t r = 0; r < series.size(); ++r) {
+  for (size_t r = 0; r < shown.size(); ++r) {
     const Rgba col = solverColor(c.runs[r].solver);
-    for (size_t k = 1; k < series[r].size(); ++k)
-      f.lines.push_back({map(static_cast<float>(k - 1), series[r][k - 1]), map(static_cast<float>(k), series[r][k]), col, 2.5f, false});
-    for (size_t k = 0; k < series[r].size(); ++k) {
+    const std::vector<float>& so = shown[r];
+    for (size_t k = 1; k < so.size(); ++k)
+      f.lines.push_back({map(static_cast<float>(k - 1), so[k - 1]), map(static_cast<float>(k), so[k]), col, 2.5f, false});
+    for (size_t k = 0; k < so.size(); ++k) {
       FigureCircle dot;
-      dot.center = map(static_cast<float>(k), series[r][k]);
+      dot.center = map(static_cast<float>(k), so[k]);
       dot.pixelRadius = 3.0f;
       dot.color = col;
       dot.filled = true;
       f.circles.push_back(dot);
     }
+    if (!so.empty() && !c.runs[r].finished()) {
+      // Where the cursor is: a ring around the newest point (a finished curve simply ends).
+      FigureCircle now;
+      now.center = map(static_cast<float>(so.size() - 1), so.back());
+      now.pixelRadius = 7.0f;
+      now.color = col;
+      now.width = 2.0f;
+      f.circles.push_back(now);
+    }
     FigureText legend;
     legend.at = {hi.x + 0.04f, hi.y - 0.08f * static_cast<float>(r)};
-    legend.text = solverDisplayName(c.runs[r].solver) + " (" + std::to_string(c.runs[r].result.iterations) + ")";
+    // The iteration count so far; the total once the run is at its end.
+    legend.text = solverDisplayName(c.runs[r].solver) +
+                  (c.runs[r].finished() ? " (" + std::to_string(c.runs[r].result.iterations) + ")"
+                                        : "  it " + std::to_string(std::max(0, c.runs[r].current().iteration)));
     legend.color = col;
     legend.scale = 1;
     f.texts.push_back(legend);

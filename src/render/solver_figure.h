@@ -56,6 +56,9 @@ struct FigureStyle {
   bool showGhost = true;         // the previous sub-step, faded
   bool showReach = true;         // the reach circle (sum of bone lengths)
   glm::vec3 viewDirection{0.0f, 0.0f, 1.0f};  // 3D chains: projected along this onto the figure plane
+  // A ground grid (the XZ plane through the base, Y up) and the X / Y / Z axes through the
+  // base in red / green / blue (Blender's colours), so an orbited 3D view shows which way is up.
+  bool showGround = false;
 };
 
 // Run `run` of the comparison at its cursor: the chain, the target, the ghost, and what the
@@ -65,7 +68,9 @@ struct FigureStyle {
 // the iteration and the error.
 Figure drawSolverStep(const SolverComparison& comparison, int run, const FigureStyle& style);
 
-// Error against iteration, log scale, one series per run, in the solvers' colours.
+// Error against iteration, log scale, one series per run, in the solvers' colours, revealed
+// up to each run's cursor (SolverRun::convergenceSoFar) with a ring at the cursor's point;
+// the axes span the whole runs, so they stay put while the steps are taken.
 Figure drawConvergencePlot(const SolverComparison& comparison, const FigureStyle& style);
 
 // A solver's name on figures ("Jacobian DLS"; abbreviated: "J DLS", for narrow labels).

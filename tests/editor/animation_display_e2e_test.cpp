@@ -6,9 +6,13 @@
 #include <cmath>
 #include <fstream>
 
+#include "anim/sampling.h"
+#include "core/forward_kinematics.h"
 #include "editor/e2e_harness.h"
+#include "editor/model/document_files.h"
 #include "io/image.h"
 #include "io/kinema_file.h"
+#include "io/scene.h"
 
 namespace kinema::test {
 namespace {
@@ -80,17 +84,18 @@ class AnimationDisplayE2e : public ::testing::Test {
     return png.ok() ? png.value() : Image();
   }
   // Plays ~1 s (60 replay frames of 1/60 s), pauses, frames the pose (Home) and zooms out
-  // so the ghosts 0.4 s away on either side are in the view.
+  // so the ghosts up to 1 s away on either side (x 0 .. 6 m) are in the view.
   static Script playToAboutFrame10() {
     Script s;
-    s.key("SPACE").wait(59).key("SPACE").wait(2).key("HOME").wait(2).scroll(-3).wait(2);
+    s.key("SPACE").wait(59).key("SPACE").wait(2).key("HOME").wait(2).scroll(-3).wait(2).scroll(-3).wait(2).scroll(-3).wait(2);
     return s;
   }
   std::string dir_, bvh_;
 };
 
-// Alt+O: four ghosts (2 before in green, 2 after in blue, every 2nd frame) at the clip's
-// poses of those frames; Alt+O again: gone.
+// Alt+O: ghosts 2 before in green, 2 after in blue, every `step` frames (the dumped
+// default), at the clip's poses of those frames (those inside the clip); Alt+O again: gone.
+// The BVH has no mesh: the ghosts are bones.
 TEST_F(AnimationDisplayE2e, OnionSkinDrawsOneGhostPerGhostFrameAndGoesAway) {
   Script on = playToAboutFrame10();
   on.keyDown("LEFT_ALT").key("O").keyUp("LEFT_ALT").wait(3);
@@ -100,26 +105,31 @@ TEST_F(AnimationDisplayE2e, OnionSkinDrawsOneGhostPerGhostFrameAndGoesAway) {
   ASSERT_GE(current, 4);
   ASSERT_LE(current, 16);
   EXPECT_EQ(d["onion_skin"]["enabled"], true);
+  EXPECT_EQ(d["onion_skin"]["drawn_as"], "bones");
+  const long long step = d["onion_skin"]["step"];
+  ASSERT_GE(step, 1);
+  std::vector<long long> expected;
+  for (long long f : {current - 2 * step, current - step, current + step, current + 2 * step})
+    if (f >= 0 && f < kFrames) expected.push_back(f);
   const json& ghosts = d["onion_skin"]["ghosts"];
-  ASSERT_EQ(ghosts.size(), 4u);
-  const long long expected[4] = {current - 4, current - 2, current + 2, current + 4};
+  ASSERT_EQ(ghosts.size(), expected.size());
+  ASSERT_GE(expected.size(), 2u);
   const Image img = shot("onion_on");
   const DumpCamera cam(d);
-  for (int i = 0; i < 4; ++i) {
+  for (size_t i = 0; i < expected.size(); ++i) {
     EXPECT_EQ(ghosts[i]["frame"], expected[i]);
+    const bool before = expected[i] < current;
     // The ghost's Chest joint and the middle of its Hips -> Chest bone, where the clip puts them.
     const glm::dvec3 chest = chestAt(double(expected[i])), bone = chest - glm::dvec3(0, 0.5, 0);
     for (glm::dvec3 p : {chest, bone}) {
       const glm::dvec2 px = cam.pixel(p);
       ASSERT_TRUE(px.x > cam.x0 && px.x < cam.x0 + cam.w && px.y > cam.y0 && px.y < cam.y0 + cam.h)
           << "ghost " << i << " is outside the view";
-      const bool tinted = i < 2 ? anyNear(img, px, 2, greenTint) : anyNear(img, px, 2, blueTint);
+      const bool tinted = before ? anyNear(img, px, 2, greenTint) : anyNear(img, px, 2, blueTint);
       EXPECT_TRUE(tinted) << "ghost of frame " << expected[i] << " at pixel (" << px.x << ", " << px.y << "): "
                           << pixelAt(img, px).r << "," << pixelAt(img, px).g << "," << pixelAt(img, px).b;
     }
   }
-  // Between the ghosts (half way from the nearest ghost's chest to the current one's) there is
-  // no tint: the ghosts are separate poses, not a smear.
   Script off = playToAboutFrame10();
   off.keyDown("LEFT_ALT").key("O").keyUp("LEFT_ALT").wait(3).keyDown("LEFT_ALT").key("O").keyUp("LEFT_ALT").wait(3);
   const json d2 = run(off, "onion_off");
@@ -128,7 +138,7 @@ TEST_F(AnimationDisplayE2e, OnionSkinDrawsOneGhostPerGhostFrameAndGoesAway) {
   EXPECT_TRUE(d2["onion_skin"]["ghosts"].empty());
   const Image img2 = shot("onion_off");
   const DumpCamera cam2(d2);
-  for (int i = 0; i < 4; ++i) {
+  for (size_t i = 0; i < expected.size(); ++i) {
     const glm::dvec2 px = cam2.pixel(chestAt(double(expected[i])));
     EXPECT_FALSE(anyNear(img2, px, 3, greenTint) || anyNear(img2, px, 3, blueTint)) << "ghost " << i << " still drawn";
   }
@@ -212,6 +222,77 @@ TEST_F(AnimationDisplayE2e, MotionControlRetimesTheRootsTranslation) {
       EXPECT_NEAR(hipsT->values[f].y, 0.0, 1e-5);
     }
   }
+}
+
+// The default character (a skinned body): UpperArm.L keyed at rest on frame 1 and turned 80
+// degrees about Z on frame 20, the playhead on frame 20. With the onion skin on, the body's
+// ghosts at frames 10 and 15 (every 5th frame, the default step) show where the arm was: at
+// points of those ghost arms away from the current arm, the pixels are tinted green (the
+// past's tint), where the same run without the onion skin has no tint. The ghost poses are
+// the saved clip sampled here, not the editor's ghosts.
+TEST_F(AnimationDisplayE2e, OnionSkinShowsTheBodysGhostsOnTheDefaultCharacter) {
+  // Two copies of the character: the run with the onion skin saves its keys into its own.
+  Document doc = newDocument();
+  const std::string file = dir_ + "/character.kinema", plain = dir_ + "/plain.kinema";
+  ASSERT_EQ(saveDocumentAs(doc, file), "");
+  ASSERT_EQ(saveDocumentAs(doc, plain), "");
+  Script s;
+  s.select("UpperArm.L");
+  s.key("I");
+  for (int i = 0; i < 19; ++i) s.key("RIGHT");
+  s.wait(21);
+  s.key("R").key("Z").key("8").key("0").key("ENTER").key("I").wait(2);
+  Script on = s;
+  on.keyDown("LEFT_CONTROL").key("S").keyUp("LEFT_CONTROL").wait(2);
+  on.keyDown("LEFT_ALT").key("O").keyUp("LEFT_ALT").wait(3);
+  const json off = runEditor(dir_, shotDir(), s, "body_onion_off", plain);
+  const json d = runEditor(dir_, shotDir(), on, "body_onion_on", file);
+  ASSERT_TRUE(d.is_object() && off.is_object());
+  EXPECT_EQ(d["timeline"]["frame"], 20);
+  EXPECT_EQ(d["onion_skin"]["enabled"], true);
+  EXPECT_EQ(d["onion_skin"]["drawn_as"], "bodies");
+  ASSERT_EQ(d["onion_skin"]["ghosts"].size(), 2u) << "frames 10 and 15 (none after the clip's end)";
+  EXPECT_EQ(d["onion_skin"]["ghosts"][0]["frame"], 10);
+  EXPECT_EQ(d["onion_skin"]["ghosts"][1]["frame"], 15);
+
+  Result<Scene> saved = loadScene(file);
+  ASSERT_TRUE(saved.ok()) << saved.error();
+  const Scene& sc = saved.value();
+  ASSERT_EQ(sc.clips.size(), 1u);
+  const Image imgOn = shot("body_onion_on"), imgOff = shot("body_onion_off");
+  ASSERT_EQ(imgOn.width, imgOff.width);
+  const DumpCamera cam(d);
+  const char* arm[3] = {"UpperArm.L", "LowerArm.L", "Hand.L"};
+  std::vector<glm::dvec2> current;  // the arm at frame 20, on screen
+  for (const char* name : arm) current.push_back(cam.pixel(e2e::jointIn(d, name)));
+  auto distanceToCurrentArm = [&](glm::dvec2 p) {
+    double best = 1e9;
+    for (int k = 0; k + 1 < 3; ++k) {
+      const glm::dvec2 a = current[k], b = current[k + 1];
+      const double t = std::clamp(glm::dot(p - a, b - a) / std::max(glm::dot(b - a, b - a), 1e-9), 0.0, 1.0);
+      best = std::min(best, glm::length(p - (a + t * (b - a))));
+    }
+    return best;
+  };
+  int checked = 0;
+  for (long long frame : {10LL, 15LL}) {
+    Pose pose = Pose::rest(sc.skeleton);
+    sampleClip(sc.clips[0], sc.clips[0].frameToTime(frame), pose);
+    const std::vector<glm::mat4> world = computeWorld(sc.skeleton, pose);
+    // Along the ghost's forearm (lower arm to hand), where the arm's axis is.
+    const glm::dvec3 elbow = glm::dvec3(world[sc.skeleton.find("LowerArm.L")][3]);
+    const glm::dvec3 hand = glm::dvec3(world[sc.skeleton.find("Hand.L")][3]);
+    for (double t : {0.3, 0.5, 0.7}) {
+      const glm::dvec2 px = cam.pixel(elbow + t * (hand - elbow));
+      if (distanceToCurrentArm(px) < 25.0) continue;  // too near the arm as it is now
+      ++checked;
+      EXPECT_TRUE(anyNear(imgOn, px, 1, greenTint))
+          << "frame " << frame << " ghost at (" << px.x << ", " << px.y << "): " << pixelAt(imgOn, px).r << ","
+          << pixelAt(imgOn, px).g << "," << pixelAt(imgOn, px).b;
+      EXPECT_FALSE(anyNear(imgOff, px, 3, greenTint)) << "frame " << frame << ": tinted without the onion skin";
+    }
+  }
+  EXPECT_GE(checked, 4) << "the ghost arms lie away from the current one";
 }
 
 }  // namespace

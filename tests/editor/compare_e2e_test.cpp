@@ -220,6 +220,75 @@ TEST_F(CompareE2e, ThePlotShowsOneSeriesPerSolver) {
   }
 }
 
+// Pixels of `color` (each channel within `tol`) inside rect r of the screenshot.
+int colorCount(const Image& img, const Rect& r, const json& color, int tol) {
+  int n = 0;
+  for (int y = std::max(0, int(r.y)); y < std::min(img.height, int(r.bottom())); ++y)
+    for (int x = std::max(0, int(r.x)); x < std::min(img.width, int(r.right())); ++x) {
+      const std::uint8_t* px = img.pixel(x, y);
+      n += std::abs(px[0] - int(color[0])) <= tol && std::abs(px[1] - int(color[1])) <= tol &&
+           std::abs(px[2] - int(color[2])) <= tol;
+    }
+  return n;
+}
+
+// Window pixel x of plot figure x (drawConvergencePlot's 1.6 x 1 box fitted into the dumped
+// plot rect less 6 px margins, centred) and of iteration `it` of `iterations` (its axis runs
+// from 0.16 to 1.2).
+double plotPixelX(const Rect& p, double fx) {
+  const double ppu = std::min((p.width - 12) / 1.6, (p.height - 12) / 1.0);
+  return p.x + p.width / 2 + (fx - 0.8) * ppu;
+}
+double iterationX(const Rect& p, double it, double iterations) { return plotPixelX(p, 0.16 + 1.04 * it / iterations); }
+
+// The plot reveals the curves step by step: after one sub-step each solver's curve ends at
+// iteration 1 (plot_points: the cursor's iteration + 1), with nothing of its colour to the
+// right of it in the plot, where the finished run's curve is. The 3D view, orbited, shows the
+// ground grid and Blender's red X, green Y and blue Z axes; the 2D board shows none of them.
+TEST_F(CompareE2e, ThePlotRevealsStepByStepAndThe3dViewHasGridAndAxes) {
+  ASSERT_TRUE(probe().is_object());
+  const glm::dvec2 a = rectOf(probe()["compare"]["views"][0]).at(0.1, 0.9), b = a + glm::dvec2(60, -40);
+  Script orbit;
+  orbit.wait(2).clickItem("Compare/3D").wait(2).move(a).wait(1).down().path(a, b).wait(1).up().wait(2);
+  Script one = orbit, all = orbit;
+  one.key("RIGHT").wait(3);
+  all.key("END").wait(3);
+  const json first = run(one, "reveal_step_one_3d", "ccd-steps");
+  const json last = run(all, "reveal_end_3d", "ccd-steps");
+  ASSERT_TRUE(first.is_object() && last.is_object());
+  const auto shotFirst = loadPng(shotDir() + "/reveal_step_one_3d.png"), shotLast = loadPng(shotDir() + "/reveal_end_3d.png");
+  const auto shotBoard = loadPng(shotDir() + "/probe.png");
+  ASSERT_TRUE(shotFirst.ok() && shotLast.ok() && shotBoard.ok());
+  ASSERT_EQ(first["compare"]["view"], "3d");
+  const Rect plot = rectOf(first["compare"]["plot"]);
+  int iterations = 1;
+  for (const json& s : last["compare"]["solvers"]) iterations = std::max(iterations, int(s["iterations"]));
+  ASSERT_GE(iterations, 3) << "a case with curves long enough to tell apart";
+  // Right of iteration 1 (and its ring) up to the last iteration: the plot's data area only.
+  const Rect later{iterationX(plot, 1, iterations) + 10, plot.y, iterationX(plot, iterations, iterations) + 4 -
+                                                                      (iterationX(plot, 1, iterations) + 10),
+                   plot.height};
+  for (size_t i = 0; i < first["compare"]["solvers"].size(); ++i) {
+    const json& s1 = first["compare"]["solvers"][i];
+    const json& sn = last["compare"]["solvers"][i];
+    EXPECT_EQ(s1["cursor"], 1);
+    EXPECT_EQ(s1["iteration"], 1);
+    EXPECT_EQ(s1["plot_points"], 2) << s1["solver"];
+    EXPECT_EQ(sn["plot_points"], int(sn["iterations"]) + 1) << sn["solver"] << ": the whole curve at the end";
+    EXPECT_EQ(colorCount(shotFirst.value(), later, s1["color"], 24), 0) << s1["solver"] << ": nothing past iteration 1";
+    EXPECT_GT(colorCount(shotLast.value(), later, sn["color"], 24), 20) << sn["solver"] << ": the rest of the curve at the end";
+  }
+  // The axes in their colours in every 3D view; none on the 2D board.
+  const json axes[3] = {json::array({255, 51, 82}), json::array({139, 220, 0}), json::array({40, 144, 255})};
+  for (size_t v = 0; v < first["compare"]["views"].size(); ++v)
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_GE(colorCount(shotFirst.value(), rectOf(first["compare"]["views"][v]), axes[k], 24), 8)
+          << "view " << v << " axis " << k;
+      EXPECT_EQ(colorCount(shotBoard.value(), rectOf(probe()["compare"]["views"][v]), axes[k], 24), 0)
+          << "view " << v << " axis " << k << " on the 2D board";
+    }
+}
+
 TEST_F(CompareE2e, DraggingAJointSetsTheStartPoseOfEverySolver) {
   Script idle;
   idle.wait(2);

@@ -92,5 +92,41 @@ TEST(OnionSkin, GhostPosesAreTheClipAtTheGhostFrames) {
   EXPECT_TRUE(ghostPoses(scene, 3, g).empty());  // no such clip
 }
 
+// The defaults must read on a character: ghosts several frames apart (at step 1 or 2 the
+// poses nearly coincide with the current one and merge with it) and clearly opaque.
+TEST(OnionSkin, DefaultsSpreadTheGhostsAndShowThem) {
+  const OnionSkinSettings s;
+  EXPECT_FALSE(s.enabled);
+  EXPECT_GE(s.step, 4);
+  EXPECT_GE(s.opacity, 0.4f);
+  EXPECT_TRUE(s.bodies);
+  EXPECT_GE(s.before, 1);
+  EXPECT_GE(s.after, 1);
+  // A 21-frame clip (0..20) at frame 10: the ghosts reach step * count frames each way, every
+  // one inside the clip, the farthest still at least a quarter of the nearest's opacity.
+  const std::vector<GhostFrame> g = ghostFrames(s, 10, 21);
+  ASSERT_EQ(g.size(), static_cast<size_t>(s.before + s.after));
+  EXPECT_EQ(g.front().frame, 10 - s.before * s.step);
+  EXPECT_EQ(g.back().frame, 10 + s.after * s.step);
+  for (const GhostFrame& x : g) {
+    EXPECT_NE(x.frame, 10);
+    EXPECT_GE(x.color.a, 0.25f * s.opacity);
+  }
+}
+
+TEST(OnionSkin, GhostsAreBodiesWhereTheSceneHasMeshesElseBones) {
+  Scene scene;
+  scene.skeleton.addJoint("root", -1, Transform{});
+  OnionSkinSettings s;
+  EXPECT_FALSE(ghostsShowBodies(s, scene)) << "no mesh: bones";
+  scene.meshes.emplace_back();
+  MeshInstance instance;
+  instance.mesh = 0;
+  scene.meshInstances.push_back(instance);
+  EXPECT_TRUE(ghostsShowBodies(s, scene));
+  s.bodies = false;
+  EXPECT_FALSE(ghostsShowBodies(s, scene)) << "switched to bones in the settings";
+}
+
 }  // namespace
 }  // namespace kinema

@@ -179,6 +179,48 @@ TEST(SolverComparison, SubStepIterationStepAndConvergenceFollowTheTrace) {
   }
 }
 
+// The step-by-step replay reveals the convergence only as far as the cursor: at every
+// cursor the revealed errors are the whole run's for the iterations finished before the
+// cursor's iteration, and the cursor's own error for that iteration; never a later one.
+TEST(SolverComparison, ConvergenceIsRevealedUpToTheCursor) {
+  SolverComparison cmp;
+  ASSERT_EQ(startComparison(preset("ccd-steps"), cmp, 1), "");
+  for (SolverRun& run : cmp.runs) {
+    const std::vector<float> all = run.convergence();
+    ASSERT_GE(all.size(), 3u) << toString(run.solver);
+    for (int k = 0; k < static_cast<int>(run.trace.entries.size()); ++k) {
+      run.cursor = k;
+      const std::vector<float> so = run.convergenceSoFar();
+      const int it = run.trace.entries[k].iteration;
+      ASSERT_EQ(static_cast<int>(so.size()), it + 1) << toString(run.solver) << " cursor " << k;
+      for (int i = 0; i < it; ++i) EXPECT_EQ(so[i], all[i]) << toString(run.solver) << " cursor " << k;
+      EXPECT_EQ(so.back(), run.trace.entries[k].error) << toString(run.solver) << " cursor " << k;
+    }
+    EXPECT_EQ(run.convergenceSoFar(), all) << "at the end the whole curve";
+    run.cursor = 0;
+    EXPECT_EQ(run.convergenceSoFar().size(), 1u) << "at the start the start point alone";
+  }
+}
+
+// Every preset starts with the target well away from the effector (a target on the
+// effector hides the target's circle and gives the solvers nothing to show).
+TEST(TeachingPresets, EveryTargetStartsAwayFromTheEffector) {
+  for (const TeachingCase& c : teachingPresets()) {
+    SolverComparison cmp;
+    ASSERT_EQ(startComparison(c, cmp, 1), "") << c.name;
+    const glm::vec3 effector = cmp.runs[0].trace.entries[0].positions.back();
+    // The effector by hand: the bones' directions are the running sums of the start angles.
+    glm::vec3 p = c.chain.base;
+    float angle = 0.0f;
+    for (size_t b = 0; b < c.chain.boneLengths.size(); ++b) {
+      angle += c.chain.startAngles[b];
+      p += c.chain.boneLengths[b] * glm::vec3(std::cos(angle), std::sin(angle), 0.0f);
+    }
+    EXPECT_VEC3_NEAR(effector, p, 1e-4f);
+    EXPECT_GE(glm::length(cmp.setup.target - p), 0.2f * c.chain.reach()) << c.name;
+  }
+}
+
 TEST(SolverComparison, InvalidCasesAreRefusedWithOneLine) {
   TeachingCase c = preset("ccd-steps");
   c.chain.boneLengths[1] = 0.0f;

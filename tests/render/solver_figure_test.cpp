@@ -98,5 +98,103 @@ TEST(SolverFigure, TwoBoneFiguresShadeTheNoSolutionRegions) {
   EXPECT_TRUE(isWhite(img, figureToPixel(f, 640, 480, {-mid, -mid})));
 }
 
+bool sameColor(const Rgba& a, const Rgba& b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
+
+// The plot drawn at a cursor holds only what the cursor has reached: one dot per revealed
+// iteration (none beyond the cursor's iteration), a ring at the cursor's point while the
+// run is under way; at the end the whole curve.
+TEST(SolverFigure, ConvergencePlotRevealsTheCurvesUpToTheCursor) {
+  SolverComparison cmp;
+  ASSERT_EQ(startComparison(*findTeachingPreset("ccd-steps"), cmp, 1), "");
+  FigureStyle style;
+  auto countOf = [](const Figure& f, Rgba col, float pixelRadius, bool filled) {
+    int n = 0;
+    for (const FigureCircle& c : f.circles) n += sameColor(c.color, col) && c.pixelRadius == pixelRadius && c.filled == filled;
+    return n;
+  };
+  auto rightmostDot = [](const Figure& f, Rgba col) {
+    float x = -1e9f;
+    for (const FigureCircle& c : f.circles)
+      if (sameColor(c.color, col) && c.filled) x = std::max(x, c.center.x);
+    return x;
+  };
+  float previousX = -1e9f;
+  for (int step = 0; step < 4; ++step) {
+    const Figure f = drawConvergencePlot(cmp, style);
+    for (const SolverRun& run : cmp.runs) {
+      const Rgba col = solverColor(run.solver);
+      const int iteration = run.current().iteration;
+      EXPECT_EQ(countOf(f, col, 3.0f, true), iteration + 1) << toString(run.solver) << " step " << step;
+      EXPECT_EQ(countOf(f, col, 7.0f, false), run.finished() ? 0 : 1) << "one ring at the cursor while under way";
+    }
+    const float x = rightmostDot(f, solverColor(cmp.runs[0].solver));
+    EXPECT_GE(x, previousX) << "the curve grows to the right";
+    previousX = x;
+    stepIteration(cmp);
+  }
+  // The axes do not move while the curves grow: the same grid lines at the start and the end.
+  resetCursors(cmp);
+  const Figure start = drawConvergencePlot(cmp, style);
+  runToEnd(cmp);
+  const Figure end = drawConvergencePlot(cmp, style);
+  for (const SolverRun& run : cmp.runs)
+    EXPECT_EQ(countOf(end, solverColor(run.solver), 3.0f, true), static_cast<int>(run.convergence().size()));
+  ASSERT_FALSE(start.lines.empty());
+  EXPECT_EQ(start.lines.front().a, end.lines.front().a);
+  EXPECT_EQ(start.lines.front().b, end.lines.front().b);
+  EXPECT_GT(end.lines.size(), start.lines.size());
+}
+
+// The 3D view's ground grid and axes: off by default (the board and the slides); on, the
+// axes are Blender's red X, green Y, blue Z through the base, along the projected axes.
+TEST(SolverFigure, GroundGridAndAxesFollowTheView) {
+  SolverComparison cmp;
+  ASSERT_EQ(startComparison(*findTeachingPreset("ccd-steps"), cmp, 1), "");
+  const Rgba red{255, 51, 82, 255}, green{139, 220, 0, 255}, blue{40, 144, 255, 255};
+  auto linesOf = [](const Figure& f, Rgba col) {
+    std::vector<FigureLine> out;
+    for (const FigureLine& l : f.lines)
+      if (sameColor(l.color, col)) out.push_back(l);
+    return out;
+  };
+  FigureStyle style;
+  EXPECT_TRUE(linesOf(drawSolverStep(cmp, 0, style), red).empty());
+  style.showGround = true;
+  style.viewDirection = glm::normalize(glm::vec3(0.4f, 0.6f, 1.0f));  // orbited: up and to the side
+  const Figure f = drawSolverStep(cmp, 0, style);
+  const glm::vec2 base = projectToFigure(cmp.setup.chain.base, style);
+  const glm::vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const Rgba colors[3] = {red, green, blue};
+  for (int k = 0; k < 3; ++k) {
+    const std::vector<FigureLine> l = linesOf(f, colors[k]);
+    ASSERT_EQ(l.size(), 1u) << "axis " << k;
+    // Both ends on the line through the projected base along the projected axis.
+    const glm::vec2 dir = glm::normalize(projectToFigure(axes[k], style) - projectToFigure(glm::vec3(0.0f), style));
+    for (glm::vec2 end : {l[0].a, l[0].b}) {
+      const glm::vec2 d = end - base;
+      EXPECT_NEAR(d.x * dir.y - d.y * dir.x, 0.0f, 1e-4f) << "axis " << k;
+    }
+    EXPECT_GT(glm::length(l[0].b - l[0].a), 0.5f * cmp.setup.chain.reach()) << "axis " << k;
+  }
+  // The grid: lines of one colour, drawn before the chain (under it), on the ground plane:
+  // a grid line's ends and the base are projections of points with y = base.y.
+  const Rgba grid = f.lines.front().color;
+  int gridLines = 0;
+  for (const FigureLine& l : f.lines) gridLines += sameColor(l.color, grid);
+  EXPECT_GE(gridLines, 8);
+  // Seen from straight above, the ground is not foreshortened: the grid is square.
+  FigureStyle top = style;
+  top.viewDirection = glm::vec3(0, -1, 0);
+  const Figure t = drawSolverStep(cmp, 0, top);
+  glm::vec2 lo(1e9f), hi(-1e9f);
+  for (const FigureLine& l : t.lines)
+    if (sameColor(l.color, grid)) {
+      lo = glm::min(lo, glm::min(l.a, l.b));
+      hi = glm::max(hi, glm::max(l.a, l.b));
+    }
+  EXPECT_NEAR(hi.x - lo.x, hi.y - lo.y, 1e-4f);
+  EXPECT_GT(hi.x - lo.x, cmp.setup.chain.reach());
+}
+
 }  // namespace
 }  // namespace kinema

@@ -316,6 +316,7 @@ nlohmann::json compareModeJson(const CompareMode& m) {
       s["ms_total"] = r.totalMilliseconds;
       s["ms_per_iteration"] = r.millisecondsPerIteration;
       s["finished"] = r.finished();
+      s["plot_points"] = static_cast<int>(r.convergenceSoFar().size());  // the plot reveals up to the cursor
       solvers.push_back(s);
     }
   }

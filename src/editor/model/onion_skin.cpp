@@ -29,6 +29,10 @@ std::vector<GhostFrame> ghostFrames(const OnionSkinSettings& s, long long curren
   return out;
 }
 
+bool ghostsShowBodies(const OnionSkinSettings& s, const Scene& scene) {
+  return s.bodies && !scene.meshInstances.empty();
+}
+
 std::vector<std::vector<glm::mat4>> ghostPoses(const Scene& scene, int clip, const std::vector<GhostFrame>& ghosts) {
   std::vector<std::vector<glm::mat4>> out;
   if (clip < 0 || clip >= static_cast<int>(scene.clips.size())) return out;

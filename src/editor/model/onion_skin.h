@@ -9,11 +9,15 @@ namespace kinema {
 // Onion skin (Blender's / Maya's ghosting): translucent poses of the edited clip a few frames
 // before and after the current one, one tint for the past and another for the future,
 // fading with the distance from the current frame.
+// The defaults are chosen to read at a glance on a character with a body: ghosts 5 frames
+// apart (at 24 fps a fifth of a second, far enough apart not to merge with the current pose)
+// at 0.6 opacity for the nearest.
 struct OnionSkinSettings {
   bool enabled = false;
   int before = 2, after = 2;  // ghosts on each side
-  int step = 2;               // frames between ghosts (and from the current frame to the nearest)
+  int step = 5;               // frames between ghosts (and from the current frame to the nearest)
   float opacity = 0.6f;       // alpha of the nearest ghosts; the farthest fade towards 0
+  bool bodies = true;         // ghosts of the skinned body where the scene has meshes (else bones)
   glm::vec3 beforeColor{0.20f, 0.85f, 0.30f};  // green: frames already played
   glm::vec3 afterColor{0.25f, 0.50f, 1.00f};   // blue: frames to come
 };
@@ -30,6 +34,10 @@ struct GhostFrame {
 // dropped (not clamped onto its ends, where they would pile up). Nearest alpha = opacity,
 // the k-th of n on a side has opacity * (n - k + 1) / n.
 std::vector<GhostFrame> ghostFrames(const OnionSkinSettings& settings, long long current, long long frameCount);
+
+// Whether the ghosts are drawn as the scene's meshes (translucent bodies) rather than as
+// bones: settings.bodies and the scene has a mesh instance to draw.
+bool ghostsShowBodies(const OnionSkinSettings& settings, const Scene& scene);
 
 // World transforms of every joint at each ghost's frame: the clip sampled over the rest
 // pose (what playback shows), then forward kinematics.

@@ -40,6 +40,8 @@ void drawOnionSkinWindow(EditorState& state) {
   colorEdit("Before colour", o.beforeColor);
   ImGui::SameLine();
   colorEdit("After colour", o.afterColor);
+  ImGui::Checkbox("Ghosts of the body (meshes)", &o.bodies);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Off, or without meshes: the ghosts are bones");
   ImGui::Separator();
   MotionPathSettings& p = state.motionPath;
   ImGui::Checkbox("Motion path of the active joint (Alt+P)", &p.enabled);

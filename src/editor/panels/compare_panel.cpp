@@ -26,6 +26,7 @@ FigureStyle editorStyle(const CompareMode& m) {
   FigureStyle s;
   s.slides = false;  // the editor's dark theme
   s.viewDirection = m.viewDirection();
+  s.showGround = m.view3d;  // an orbit needs the floor and the axes to read as 3D
   return s;
 }
 

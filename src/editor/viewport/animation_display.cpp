@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "editor/model/motion_control.h"
+#include "skin/scene_deformation.h"
 
 namespace kinema {
 
@@ -49,6 +50,9 @@ void addMotionControlTicks(const std::vector<glm::vec3>& points, OverlayDrawList
 void buildAnimationDisplay(const EditorState& state, const std::vector<char>& shownJoints, AnimationDisplay& display,
                            OverlayDrawList& overlay) {
   display.ghosts.clear();
+  display.ghostBodies = false;
+  display.ghostPoses.clear();
+  display.ghostMorphWeights.clear();
   display.ghostLists.clear();
   display.ticks.clear();
   if (!state.hasMotion()) {
@@ -61,8 +65,14 @@ void buildAnimationDisplay(const EditorState& state, const std::vector<char>& sh
   const long long current = clip.nearestFrame(state.time);
   if (state.onionSkin.enabled) {
     display.ghosts = ghostFrames(state.onionSkin, current, clip.nearestFrame(clip.duration()) + 1);
-    display.ghostLists =
-        buildGhostDrawLists(scene.skeleton.parents, shownJoints, display.ghosts, ghostPoses(scene, state.clip, display.ghosts));
+    display.ghostPoses = ghostPoses(scene, state.clip, display.ghosts);
+    display.ghostBodies = ghostsShowBodies(state.onionSkin, scene);
+    if (display.ghostBodies) {
+      for (const GhostFrame& g : display.ghosts)
+        display.ghostMorphWeights.push_back(sampleMorphWeights(scene, state.clip, clip.frameToTime(g.frame)));
+    } else {
+      display.ghostLists = buildGhostDrawLists(scene.skeleton.parents, shownJoints, display.ghosts, display.ghostPoses);
+    }
   }
   const int joint = state.doc.selection.active();
   if (state.motionPath.enabled && joint >= 0) {

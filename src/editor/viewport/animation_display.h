@@ -28,6 +28,11 @@ void addMotionControlTicks(const std::vector<glm::vec3>& points, OverlayDrawList
 // What the editor draws this frame for the three features, and what it reports in the dump.
 struct AnimationDisplay {
   std::vector<GhostFrame> ghosts;
+  // Drawn as bodies (ghostsShowBodies): each ghost's joints and morph weights, for the mesh
+  // renderer; else as bones: one draw list per ghost.
+  bool ghostBodies = false;
+  std::vector<std::vector<glm::mat4>> ghostPoses;
+  std::vector<std::vector<std::vector<float>>> ghostMorphWeights;
   std::vector<SkeletonDrawList> ghostLists;
   MotionPath path;
   std::vector<glm::vec3> ticks;  // world positions of the motion-control ticks

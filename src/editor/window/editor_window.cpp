@@ -449,6 +449,15 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         buildViewportOverlay(state, ViewportView::of(state.camera, glm::vec2(vw, vh), glm::vec2(vp.x * sx, vp.y * sy)),
                              tools, overlay);
         buildAnimationDisplay(state, skinJoints, animationDisplay, overlay);  // onion skin, motion path
+        // Body ghosts go to the mesh renderer; bones stand in where the meshes failed to upload.
+        std::vector<MeshGhost> meshGhosts;
+        if (animationDisplay.ghostBodies && meshes.empty())
+          animationDisplay.ghostLists = buildGhostDrawLists(state.doc.skeleton().parents, skinJoints, animationDisplay.ghosts,
+                                                            animationDisplay.ghostPoses);
+        else if (animationDisplay.ghostBodies)
+          for (size_t g = 0; g < animationDisplay.ghosts.size(); ++g)
+            meshGhosts.push_back({&animationDisplay.ghostPoses[g], &animationDisplay.ghostMorphWeights[g],
+                                  animationDisplay.ghosts[g].color});
         FrameDescription description;
         description.skeleton = &list;
         description.overlay = &overlay;
@@ -462,6 +471,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         description.lineScale = state.preferences.lineScale;  // thicker for a projector (Edit > Preferences)
         description.meshes = meshes.empty() ? nullptr : &meshDraw;
         description.ghosts = &animationDisplay.ghostLists;
+        description.meshGhosts = &meshGhosts;
         description.bones = !state.view.showBones ? BoneDisplay::None
                             : state.view.xrayBones ? BoneDisplay::XRay
                                                    : BoneDisplay::On;

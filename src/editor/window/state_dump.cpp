@@ -141,7 +141,8 @@ void addAnimationDisplayState(const EditorState& s, json& out) {
       ghosts.push_back({{"frame", g.frame}, {"offset", g.offset}, {"color", json::array({g.color.r, g.color.g, g.color.b, g.color.a})}});
   }
   out["onion_skin"] = {{"enabled", o.enabled}, {"before", o.before}, {"after", o.after}, {"step", o.step},
-                       {"opacity", o.opacity}, {"ghosts", ghosts}};
+                       {"opacity", o.opacity}, {"ghosts", ghosts},
+                       {"drawn_as", ghostsShowBodies(o, s.doc.scene()) ? "bodies" : "bones"}};
   out["motion_path"] = {{"enabled", s.motionPath.enabled}, {"whole_clip", s.motionPath.wholeClip}};
   const MotionControlSettings& m = s.motionControl;
   out["motion_control"] = {{"window_open", m.windowOpen}, {"profile", toString(m.profile)},
