@@ -282,7 +282,7 @@ TEST_F(AnimationDisplayE2e, OnionSkinShowsTheBodysGhostsOnTheDefaultCharacter) {
     // Along the ghost's forearm (lower arm to hand), where the arm's axis is.
     const glm::dvec3 elbow = glm::dvec3(world[sc.skeleton.find("LowerArm.L")][3]);
     const glm::dvec3 hand = glm::dvec3(world[sc.skeleton.find("Hand.L")][3]);
-    for (double t : {0.3, 0.5, 0.7}) {
+    for (double t : {0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8}) {
       const glm::dvec2 px = cam.pixel(elbow + t * (hand - elbow));
       if (distanceToCurrentArm(px) < 25.0) continue;  // too near the arm as it is now
       ++checked;

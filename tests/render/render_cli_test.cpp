@@ -222,8 +222,9 @@ TEST_F(RenderCli, EditorWindowOpensRendersAndExitsUnderXvfb) {
             0)
       << err_;
   const Image image = loadImageOrFail(shot);
-  EXPECT_EQ(image.width, 1280);
-  EXPECT_EQ(image.height, 720);
+  // No size remembered and no --size: nine tenths of the 1280x800 screen, centred.
+  EXPECT_EQ(image.width, 1280 * 9 / 10);
+  EXPECT_EQ(image.height, 800 * 9 / 10);
   EXPECT_GT(distinctColors(image), 50);
   EXPECT_GT(brightBox(image).height(), 150);
   // Without a display, `edit` fails with one line and exit 1, never a crash.
