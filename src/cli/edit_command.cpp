@@ -1,5 +1,6 @@
 #include "cli/edit_command.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -23,6 +24,7 @@ CLI::App* addEditCommand(CLI::App& app, EditOptions& o) {
                   "Replay input events from this file (JSON lines or array, see docs/cli.md) at 1/60 s per frame");
   cmd->add_option("--dump-state", o.dumpState, "On exit, write the editor's state as JSON to this file");
   cmd->add_option("--size", o.size, "Window size WxH in pixels (default 1280x720)");
+  cmd->add_option("--max-fps", o.maxFps, "Draw at most N frames per second (1 to 1000; for tests and slow machines)");
   cmd->add_flag("--report-frame-times", o.reportFrameTimes, "Print mean and median frame times (ms) on stderr at exit");
   cmd->add_flag("--empty-frame", o.emptyFrame, "Draw only an empty ImGui frame (baseline for --report-frame-times)");
   cmd->add_option("--compare", o.compare, "Open in Teach > Compare Solvers with this preset (kinema demo list)");
@@ -40,6 +42,7 @@ int runEdit(const EditOptions& o) {
     return kExitOk;
   }
   if (o.frameCount < 0) return badInput("--frame-count must not be negative");
+  if (o.maxFps != -1 && (o.maxFps < 1 || o.maxFps > 1000)) return badInput("--max-fps must be a whole number from 1 to 1000");
   EditorWindowOptions options;
   options.width = o.width;
   options.height = o.height;
@@ -81,6 +84,7 @@ int runEdit(const EditOptions& o) {
   options.screenshotPath = o.screenshot;
   options.dumpStatePath = o.dumpState;
   options.reportFrameTimes = o.reportFrameTimes;
+  options.maxFps = std::max(o.maxFps, 0);
   options.emptyFrame = o.emptyFrame;
   const EditorWindowResult result = runEditorWindow(state, options);
   if (!result.opened) return badInput("cannot open the editor window: " + result.error + " (kinema render works without one)");

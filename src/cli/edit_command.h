@@ -4,7 +4,7 @@
 namespace kinema::cli {
 
 // `kinema edit [FILE] [--frame-count N] [--screenshot PATH] [--script FILE] [--dump-state FILE]
-//  [--size WxH] [--report-frame-times] [--empty-frame] [--compare PRESET] [--list-commands]`
+//  [--size WxH] [--max-fps N] [--report-frame-times] [--empty-frame] [--compare PRESET] [--list-commands]`
 struct EditOptions {
   std::string file;
   long long frameCount = 0;
@@ -12,6 +12,7 @@ struct EditOptions {
   std::string script;
   std::string dumpState;
   std::string size;
+  int maxFps = -1;  // -1: not given (no cap beyond vsync)
   bool reportFrameTimes = false;
   bool emptyFrame = false;
   std::string compare;  // open straight into Teach > Compare Solvers with this preset

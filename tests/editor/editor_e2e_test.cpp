@@ -6,6 +6,7 @@
 // windows). Panel widgets are clicked by name (e2e_harness.h).
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -57,6 +58,29 @@ class EditorE2e : public FrontViewSuite<EditorE2e> {
   DumpCamera camera() const { return DumpCamera(front_); }
   glm::dvec2 pixelOf(const std::string& name) const { return camera().pixel(joint(front_, name)); }
   glm::dvec2 midpoint(const std::string& a, const std::string& b) const { return (pixelOf(a) + pixelOf(b)) * 0.5; }
+  // The rotate gizmo's ring radius on `name` in the front view (rotate_gizmo.h): 80 px, but at
+  // most 0.7 of the distance to the nearest joint the rotation does not carry (neither the
+  // joint, its parent nor a descendant), never under 24 px.
+  static double gizmoRingPixels(const json& d, const std::string& name) {
+    const DumpCamera cam(d);
+    auto pixelOf = [&](const std::string& n) { return cam.pixel(joint(d, n)); };
+    std::vector<std::string> names;
+    std::vector<int> parents;
+    for (const json& j : d["joints"]) {
+      names.push_back(j["name"]);
+      parents.push_back(j["parent"]);
+    }
+    const int self = int(std::find(names.begin(), names.end(), name) - names.begin());
+    double r = 80.0;
+    for (size_t k = 0; k < names.size(); ++k) {
+      bool carried = false;
+      for (int a = int(k); a >= 0; a = parents[a]) carried = carried || a == self;
+      if (carried || int(k) == parents[self]) continue;
+      const double d = glm::length(pixelOf(names[k]) - pixelOf(name));
+      if (d >= 1.0) r = std::min(r, 0.7 * d);
+    }
+    return std::max(r, 24.0);
+  }
 };
 
 void expectNear(glm::dvec3 a, glm::dvec3 b, double tol, const std::string& what) {
@@ -190,20 +214,21 @@ TEST_F(EditorE2e, RThenAxisKeysConstrainAndTypedDegreesAreExact) {
 }
 
 TEST_F(EditorE2e, GizmoRingDragRotatesAboutItsAxis) {
-  // In the front view the Z ring (radius 80 px, RotateGizmo's default) is a whole circle
+  // In the front view the Z ring (radius gizmoRingPixels, at most 80 px) is a whole circle
   // around the joint (its axis is the view axis); X and Y are edge-on lines. Press on the Z
   // ring at 240 degrees (lower left) and, in a second run, at 60 degrees (upper right, the
   // half that used to be culled), sweep 90 degrees counter-clockwise: +90 degrees about Z,
   // the forearm points up.
   const glm::dvec2 p = pixelOf("LowerArm.L");
+  const double ring = gizmoRingPixels(front_, "LowerArm.L");
   for (double startDegrees : {240.0, 60.0}) {
     Script s;
     s.click(midpoint("LowerArm.L", "Hand.L"));
     const double a0 = startDegrees * M_PI / 180;
-    s.move(p + 80.0 * glm::dvec2(std::cos(a0), -std::sin(a0))).down();
+    s.move(p + ring * glm::dvec2(std::cos(a0), -std::sin(a0))).down();
     for (int k = 1; k <= 8; ++k) {
       const double a = a0 + k * M_PI / 16;
-      s.move(p + 80.0 * glm::dvec2(std::cos(a), -std::sin(a)));
+      s.move(p + ring * glm::dvec2(std::cos(a), -std::sin(a)));
     }
     s.up();
     json d = run(s, "gizmo_ring_drag_" + std::to_string(int(startDegrees)));
@@ -246,12 +271,13 @@ TEST_F(EditorE2e, RotationsStopAtTheJointLimitAndTheLimitArcIsDrawn) {
 
   // The Z ring from 240 to 330 degrees (a quarter turn counter-clockwise): also 45.
   const glm::dvec2 p = cam.pixel(elbow);
+  const double radius = gizmoRingPixels(front, "LowerArm.L");
   Script ring;
   ring.click(forearm);
-  ring.move(p + 80.0 * glm::dvec2(std::cos(4 * M_PI / 3), -std::sin(4 * M_PI / 3))).down();
+  ring.move(p + radius * glm::dvec2(std::cos(4 * M_PI / 3), -std::sin(4 * M_PI / 3))).down();
   for (int k = 1; k <= 8; ++k) {
     const double a = 4 * M_PI / 3 + k * M_PI / 16;
-    ring.move(p + 80.0 * glm::dvec2(std::cos(a), -std::sin(a)));
+    ring.move(p + radius * glm::dvec2(std::cos(a), -std::sin(a)));
   }
   ring.up();
   d = runScript(dir_, ring, "limit_ring_drag", file);

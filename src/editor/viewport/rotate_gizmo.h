@@ -26,6 +26,18 @@ struct RotateGizmo {
   std::vector<glm::vec3> ringPoints(const ViewportView& view, int i, int segments = 64) const;
 };
 
+// The ring radius (pixels) for the gizmo on `joint`: Blender's fixed size (`maxPixels`, 80) at
+// most, so that at a whole-body zoom it does not cover the neighbouring limbs (both feet):
+// at most kGizmoClearance of the on-screen distance to the nearest joint the rotation does
+// not carry along (any but the joint, its parent and its descendants; joints within a pixel
+// of the pivot or behind the eye are skipped), and never under kMinGizmoRingPixels, so it
+// stays grabbable. `world`: joint world transforms; `parents`: -1 for roots.
+constexpr float kGizmoClearance = 0.7f;
+constexpr float kMinGizmoRingPixels = 24.0f;
+constexpr float kViewRingScale = 1.2f;  // the view ring's radius over the axis rings' (Blender's 96 / 80)
+float rotateGizmoRingPixels(const ViewportView& view, const std::vector<glm::mat4>& world, const std::vector<int>& parents,
+                            int joint, float maxPixels = 80.0f);
+
 // Whether the axis-ring segment a-b is on the half facing the viewer (Blender draws and grabs
 // only that half): judged against the view axis, so a ring whose axis is the view axis is a
 // whole circle also off-centre in perspective; nearly face-on rings (within ~1 degree) too.
