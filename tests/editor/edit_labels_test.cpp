@@ -4,6 +4,7 @@
 
 #include "editor/model/document_files.h"
 #include "editor/model/dope_sheet.h"
+#include "editor/model/editor_state.h"
 #include "editor/model/edit_labels.h"
 #include "editor/model/keying.h"
 #include "editor/model/pose_edits.h"

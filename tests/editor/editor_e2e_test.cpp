@@ -577,5 +577,40 @@ TEST_F(EditorE2e, XdotoolClickSelectsTheHandThroughTheXServer) {
   EXPECT_NEAR(double(d["camera"]["azimuth"]), 0.0, 1e-6);
 }
 
+TEST_F(EditorE2e, XdotoolTapsOf12MsAtFiveFramesASecondAreAllHandled) {
+  if (runCommand("command -v xdotool") != 0) GTEST_SKIP() << "SKIPPED: xdotool is not installed";
+  // Real X events, tapped for 12 ms each at --max-fps 5 (200 ms frames), so most presses
+  // and releases fall within one frame: A (select all), then 8 times I (insert keys) and
+  // Right (next frame), which makes 8 undo steps on frames start..start+7, then Ctrl+Z 8
+  // times. Every tap must count, and promptly: the 25 taps must not take 2 frames each
+  // (presses waiting for the frame after their release, the old lag behind fast typing).
+  const int steps = 8, taps = 1 + 3 * steps;
+  const glm::dvec2 view = viewportRect(front_).at(0.5, 0.4);
+  const std::string dump = dir_ + "/taps.json", sh = dir_ + "/taps.sh";
+  std::string keys = "a", undos;
+  for (int i = 0; i < steps; ++i) {
+    keys += " i Right";
+    undos += " ctrl+z";
+  }
+  char move[64];
+  std::snprintf(move, sizeof move, "%d %d", int(std::lround(view.x)), int(std::lround(view.y)));
+  std::ofstream(sh) << e2e::editorEnvironment(dir_) << KINEMA_BINARY << " edit --size " << e2e::windowSize()
+                    << " --max-fps 5 --frame-count 300 --dump-state " << dump << " & pid=$!\n"
+                    << "for i in $(seq 100); do w=$(xdotool search --name 'Kinema - ' | head -1) && [ -n \"$w\" ] && break; sleep 0.1; done\n"
+                    << "xdotool windowfocus --sync $w || true\n"
+                    << "xdotool mousemove --window $w " << move << "\nsleep 1\n"
+                    << "xdotool key --delay 12 " << keys << "\nxdotool key --delay 12" << undos << "\n"
+                    << "sleep 0.5\nxdotool key ctrl+q\nwait $pid\n";
+  std::string out, err;
+  ASSERT_EQ(runCommand(e2e::xvfb() + "sh " + sh, &out, &err), 0) << err;
+  const json d = readJson(dump);
+  ASSERT_TRUE(d.is_object());
+  EXPECT_EQ(int(d["timeline"]["frame"]), int(front_["timeline"]["frame"]) + steps) << "Right taps lost";
+  EXPECT_EQ(int(d["redo_depth"]), steps) << "I or Ctrl+Z taps lost";
+  EXPECT_EQ(int(d["undo_depth"]), 0) << "Ctrl+Z taps lost";
+  // Ctrl+Q quit right after the taps (the document is clean again), long before 2 frames a tap.
+  EXPECT_LT(int(d["frames"]), 2 * taps) << "the taps lagged behind";
+}
+
 }  // namespace
 }  // namespace kinema::test

@@ -208,12 +208,14 @@ TEST(GltfMalformed, GarbageAndBrokenJsonReadPlainly) {
   while (text.size() % 4) text += ' ';
   const std::string b = errorOf(glbOfJson(text), "broken.glb");
   expectPlain(b);
-  EXPECT_MENTIONS(b, "malformed", ("line 1, column " + std::to_string(comma + 2) + ":").c_str());
+  const std::string where = "line 1, column " + std::to_string(comma + 2) + ":";
+  EXPECT_MENTIONS(b, "malformed", where.c_str());
   // Text glTF cut short: the break is at the end, after the last byte.
   const std::string cut = R"({"asset":{"version":"2.0"},"nodes":[1,2)";
   const std::string c = errorOf(cut);
   expectPlain(c);
-  EXPECT_MENTIONS(c, "malformed", ("line 1, column " + std::to_string(cut.size() + 1)).c_str());
+  const std::string end = "line 1, column " + std::to_string(cut.size() + 1) + ":";
+  EXPECT_MENTIONS(c, "malformed", end.c_str());
   // A break on the third line is counted in lines.
   const std::string lines = errorOf("{\n  \"asset\": {\"version\": \"2.0\"},\n  \"nodes\": [}\n}");
   EXPECT_MENTIONS(lines, "line 3, column 13");
