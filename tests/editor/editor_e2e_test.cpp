@@ -58,9 +58,10 @@ class EditorE2e : public FrontViewSuite<EditorE2e> {
   DumpCamera camera() const { return DumpCamera(front_); }
   glm::dvec2 pixelOf(const std::string& name) const { return camera().pixel(joint(front_, name)); }
   glm::dvec2 midpoint(const std::string& a, const std::string& b) const { return (pixelOf(a) + pixelOf(b)) * 0.5; }
-  // The rotate gizmo's ring radius on `name` in the front view (rotate_gizmo.h): 80 px, but at
-  // most 0.7 of the distance to the nearest joint the rotation does not carry (neither the
-  // joint, its parent nor a descendant), never under 24 px.
+  // The rotate gizmo's ring radius on `name` in the front view (rotate_gizmo.h): 80 px, but
+  // the view ring (1.2 times wider) plus its 6 px grab tolerance within half the distance to
+  // the nearest joint the rotation does not carry (neither the joint, its parent nor a
+  // descendant); never under 12 px.
   static double gizmoRingPixels(const json& d, const std::string& name) {
     const DumpCamera cam(d);
     auto pixelOf = [&](const std::string& n) { return cam.pixel(joint(d, n)); };
@@ -77,9 +78,9 @@ class EditorE2e : public FrontViewSuite<EditorE2e> {
       for (int a = int(k); a >= 0; a = parents[a]) carried = carried || a == self;
       if (carried || int(k) == parents[self]) continue;
       const double d = glm::length(pixelOf(names[k]) - pixelOf(name));
-      if (d >= 1.0) r = std::min(r, 0.7 * d);
+      if (d >= 1.0) r = std::min(r, (0.5 * d - 6.0) / 1.2);
     }
-    return std::max(r, 24.0);
+    return std::max(r, 12.0);
   }
 };
 

@@ -57,7 +57,7 @@ std::vector<glm::vec3> RotateGizmo::ringPoints(const ViewportView& view, int i, 
 }
 
 float rotateGizmoRingPixels(const ViewportView& view, const std::vector<glm::mat4>& world, const std::vector<int>& parents,
-                            int joint, float maxPixels) {
+                            int joint, float maxPixels, float tolerancePixels) {
   const int n = static_cast<int>(std::min(world.size(), parents.size()));
   glm::vec2 centre;
   if (joint < 0 || joint >= n || !view.project(glm::vec3(world[joint][3]), centre)) return maxPixels;
@@ -72,7 +72,7 @@ float rotateGizmoRingPixels(const ViewportView& view, const std::vector<glm::mat
     glm::vec2 p;
     if (!view.project(glm::vec3(world[k][3]), p)) continue;
     const float d = glm::length(p - centre);
-    if (d >= 1.0f) radius = std::min(radius, kGizmoClearance * d);
+    if (d >= 1.0f) radius = std::min(radius, (0.5f * d - tolerancePixels) / kViewRingScale);
   }
   return std::max(radius, std::min(kMinGizmoRingPixels, maxPixels));
 }

@@ -58,7 +58,8 @@ bool ViewportTools::gizmo(const EditorState& state, const ViewportView& view, Ro
   if (!state.view.showGizmo || j < 0 || j >= static_cast<int>(state.world().size())) return false;
   out = RotateGizmo{};
   out.pivot = jointPosition(state, j);
-  out.ringRadiusPixels = rotateGizmoRingPixels(view, state.world(), state.doc.skeleton().parents, j, out.ringRadiusPixels);
+  out.ringRadiusPixels =
+      rotateGizmoRingPixels(view, state.world(), state.doc.skeleton().parents, j, out.ringRadiusPixels, out.tolerancePixels);
   out.viewRingRadiusPixels = out.ringRadiusPixels * kViewRingScale;
   out.axesRotation = RotateGizmo::axesFor(state.view.localGizmo ? GizmoOrientation::Local : GizmoOrientation::Global,
                                           jointWorldRotation(state.doc, j));
