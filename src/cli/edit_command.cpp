@@ -1,5 +1,6 @@
 #include "cli/edit_command.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -25,6 +26,7 @@ CLI::App* addEditCommand(CLI::App& app, EditOptions& o) {
   cmd->add_option("--size", o.size, "Window size WxH in pixels (default: the last size, at most the screen)");
   cmd->add_option("--ui-scale", o.uiScale,
                   "Text and widget scale from 0.75 to 3 for this run (default: Edit > Preferences, saved)");
+  cmd->add_option("--max-fps", o.maxFps, "Draw at most N frames per second (1 to 1000; for tests and slow machines)");
   cmd->add_flag("--report-frame-times", o.reportFrameTimes, "Print mean and median frame times (ms) on stderr at exit");
   cmd->add_flag("--empty-frame", o.emptyFrame, "Draw only an empty ImGui frame (baseline for --report-frame-times)");
   cmd->add_option("--compare", o.compare, "Open in Teach > Compare Solvers with this preset (kinema demo list)");
@@ -47,6 +49,7 @@ int runEdit(const EditOptions& o) {
     std::snprintf(given, sizeof given, "%g", o.uiScale);
     return badInput(std::string("--ui-scale ") + given + ": expected a scale from 0.75 to 3");
   }
+  if (o.maxFps != -1 && (o.maxFps < 1 || o.maxFps > 1000)) return badInput("--max-fps must be a whole number from 1 to 1000");
   EditorWindowOptions options;
   options.width = o.width;
   options.height = o.height;
@@ -89,6 +92,7 @@ int runEdit(const EditOptions& o) {
   options.screenshotPath = o.screenshot;
   options.dumpStatePath = o.dumpState;
   options.reportFrameTimes = o.reportFrameTimes;
+  options.maxFps = std::max(o.maxFps, 0);
   options.emptyFrame = o.emptyFrame;
   const EditorWindowResult result = runEditorWindow(state, options);
   if (!result.opened) return badInput("cannot open the editor window: " + result.error + " (kinema render works without one)");

@@ -6,7 +6,7 @@
 namespace kinema::cli {
 
 // `kinema edit [FILE] [--frame-count N] [--screenshot PATH] [--script FILE] [--dump-state FILE]
-//  [--size WxH] [--ui-scale S] [--report-frame-times] [--empty-frame] [--compare PRESET] [--list-commands]`
+//  [--size WxH] [--ui-scale S] [--max-fps N] [--report-frame-times] [--empty-frame] [--compare PRESET] [--list-commands]`
 struct EditOptions {
   std::string file;
   long long frameCount = 0;
@@ -14,6 +14,7 @@ struct EditOptions {
   std::string script;
   std::string dumpState;
   std::string size;
+  int maxFps = -1;  // -1: not given (no cap beyond vsync)
   bool reportFrameTimes = false;
   bool emptyFrame = false;
   std::string compare;  // open straight into Teach > Compare Solvers with this preset

@@ -12,6 +12,7 @@
 #include "io/gltf_import_parts.h"
 #include "io/gltf_limits.h"
 #include "io/json_depth.h"
+#include "io/json_syntax.h"
 #include "io/text_file.h"
 
 namespace kinema {
@@ -274,7 +275,17 @@ Result<Scene> parseGltf(const std::string& bytes, const std::string& path) {
       binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
                                            static_cast<unsigned>(bytes.size()), dir)
              : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), static_cast<unsigned>(bytes.size()), dir);
-  if (!ok) return R::failure(path + ": " + (err.empty() ? std::string("not a glTF 2.0 file") : oneLine(err)));
+  if (!ok) {
+    // tinygltf passes on its JSON library's exception text; say in plain words what is wrong.
+    const std::string syntax = jsonSyntaxError(bytes.data() + jsonOffset, jsonLength);
+    if (!syntax.empty()) {
+      const size_t first = bytes.find_first_not_of(" \t\r\n");
+      if (!binary && (first == std::string::npos || bytes[first] != '{'))
+        return R::failure(path + ": not a glTF file: neither binary glTF (which starts with \"glTF\") nor glTF JSON text");
+      return R::failure(path + ": the glTF JSON is malformed at " + syntax);
+    }
+    return R::failure(path + ": " + (err.empty() ? std::string("not a glTF 2.0 file") : oneLine(err)));
+  }
 
   GltfContext ctx{model, path, 0, {}};
   if (!warn.empty()) ctx.warn(oneLine(warn));

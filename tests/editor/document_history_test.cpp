@@ -172,7 +172,8 @@ TEST(DocumentHistory, ClearRotationAndResetToRest) {
   EXPECT_NE(doc.pose().local[b].rotation, doc.skeleton().rest[b].rotation);
   ASSERT_EQ(resetToRestPose(doc), "");
   for (int i = 0; i < doc.skeleton().size(); ++i) EXPECT_EQ(doc.pose().local[i], doc.skeleton().rest[i]);
-  EXPECT_EQ(doc.historyLabels().back(), "Reset to rest pose");
+  EXPECT_EQ(doc.historyLabels().back(), "Reset all joints to the rest pose");
+  EXPECT_EQ(doc.historyLabels()[doc.historyLabels().size() - 2], "Clear rotation of Hand.L");
 }
 
 TEST(DocumentHistory, GlobalAxesRotationBecomesTheJointsWorldRotation) {
@@ -343,7 +344,7 @@ TEST(DocumentSkinning, TheSkinningMethodIsAnUndoableEditOfTheMeshInstance) {
   ASSERT_EQ(doc.scene().meshInstances[0].skinning, SkinningMethod::LinearBlend);
   ASSERT_EQ(setMeshSkinning(doc, 0, SkinningMethod::DualQuaternion), "");
   EXPECT_EQ(doc.scene().meshInstances[0].skinning, SkinningMethod::DualQuaternion);
-  EXPECT_EQ(doc.historyLabels(), std::vector<std::string>{"Skinning dual quaternion"});
+  EXPECT_EQ(doc.historyLabels(), std::vector<std::string>{"Set skinning of mesh 0 to dual quaternion"});
   EXPECT_TRUE(doc.dirty());
   EXPECT_EQ(doc.sceneForSaving().meshInstances[0].skinning, SkinningMethod::DualQuaternion);
   ASSERT_TRUE(doc.undo());
@@ -395,7 +396,7 @@ TEST(DocumentSkinning, BindingAnUnskinnedMeshIsOneUndoStep) {
     for (int k = 0; k < kMaxInfluences; ++k) sum += bound.influenceWeights[v * kMaxInfluences + k];
     EXPECT_NEAR(sum, 1.0f, 1e-5f) << v;
   }
-  EXPECT_EQ(doc.historyLabels(), std::vector<std::string>{"Bind to skeleton"});
+  EXPECT_EQ(doc.historyLabels(), std::vector<std::string>{"Bind meshes to the skeleton"});
   EXPECT_GT(doc.meshRevision(), revision);
   EXPECT_NE(bindUnskinnedMeshes(doc), "");  // nothing left to bind: refused, no step
   EXPECT_EQ(doc.historyPosition(), 1);

@@ -6,6 +6,7 @@
 // windows). Panel widgets are clicked by name (e2e_harness.h).
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -57,6 +58,30 @@ class EditorE2e : public FrontViewSuite<EditorE2e> {
   DumpCamera camera() const { return DumpCamera(front_); }
   glm::dvec2 pixelOf(const std::string& name) const { return camera().pixel(joint(front_, name)); }
   glm::dvec2 midpoint(const std::string& a, const std::string& b) const { return (pixelOf(a) + pixelOf(b)) * 0.5; }
+  // The rotate gizmo's ring radius on `name` in the front view (rotate_gizmo.h): 80 px, but
+  // the view ring (1.2 times wider) plus its 6 px grab tolerance within half the distance to
+  // the nearest joint the rotation does not carry (neither the joint, its parent nor a
+  // descendant); never under 12 px.
+  static double gizmoRingPixels(const json& d, const std::string& name) {
+    const DumpCamera cam(d);
+    auto pixelOf = [&](const std::string& n) { return cam.pixel(joint(d, n)); };
+    std::vector<std::string> names;
+    std::vector<int> parents;
+    for (const json& j : d["joints"]) {
+      names.push_back(j["name"]);
+      parents.push_back(j["parent"]);
+    }
+    const int self = int(std::find(names.begin(), names.end(), name) - names.begin());
+    double r = 80.0;
+    for (size_t k = 0; k < names.size(); ++k) {
+      bool carried = false;
+      for (int a = int(k); a >= 0; a = parents[a]) carried = carried || a == self;
+      if (carried || int(k) == parents[self]) continue;
+      const double d = glm::length(pixelOf(names[k]) - pixelOf(name));
+      if (d >= 1.0) r = std::min(r, (0.5 * d - 6.0) / 1.2);
+    }
+    return std::max(r, 12.0);
+  }
 };
 
 void expectNear(glm::dvec3 a, glm::dvec3 b, double tol, const std::string& what) {
@@ -190,20 +215,21 @@ TEST_F(EditorE2e, RThenAxisKeysConstrainAndTypedDegreesAreExact) {
 }
 
 TEST_F(EditorE2e, GizmoRingDragRotatesAboutItsAxis) {
-  // In the front view the Z ring (radius 80 px, RotateGizmo's default) is a whole circle
+  // In the front view the Z ring (radius gizmoRingPixels, at most 80 px) is a whole circle
   // around the joint (its axis is the view axis); X and Y are edge-on lines. Press on the Z
   // ring at 240 degrees (lower left) and, in a second run, at 60 degrees (upper right, the
   // half that used to be culled), sweep 90 degrees counter-clockwise: +90 degrees about Z,
   // the forearm points up.
   const glm::dvec2 p = pixelOf("LowerArm.L");
+  const double ring = gizmoRingPixels(front_, "LowerArm.L");
   for (double startDegrees : {240.0, 60.0}) {
     Script s;
     s.click(midpoint("LowerArm.L", "Hand.L"));
     const double a0 = startDegrees * M_PI / 180;
-    s.move(p + 80.0 * glm::dvec2(std::cos(a0), -std::sin(a0))).down();
+    s.move(p + ring * glm::dvec2(std::cos(a0), -std::sin(a0))).down();
     for (int k = 1; k <= 8; ++k) {
       const double a = a0 + k * M_PI / 16;
-      s.move(p + 80.0 * glm::dvec2(std::cos(a), -std::sin(a)));
+      s.move(p + ring * glm::dvec2(std::cos(a), -std::sin(a)));
     }
     s.up();
     json d = run(s, "gizmo_ring_drag_" + std::to_string(int(startDegrees)));
@@ -246,12 +272,13 @@ TEST_F(EditorE2e, RotationsStopAtTheJointLimitAndTheLimitArcIsDrawn) {
 
   // The Z ring from 240 to 330 degrees (a quarter turn counter-clockwise): also 45.
   const glm::dvec2 p = cam.pixel(elbow);
+  const double radius = gizmoRingPixels(front, "LowerArm.L");
   Script ring;
   ring.click(forearm);
-  ring.move(p + 80.0 * glm::dvec2(std::cos(4 * M_PI / 3), -std::sin(4 * M_PI / 3))).down();
+  ring.move(p + radius * glm::dvec2(std::cos(4 * M_PI / 3), -std::sin(4 * M_PI / 3))).down();
   for (int k = 1; k <= 8; ++k) {
     const double a = 4 * M_PI / 3 + k * M_PI / 16;
-    ring.move(p + 80.0 * glm::dvec2(std::cos(a), -std::sin(a)));
+    ring.move(p + radius * glm::dvec2(std::cos(a), -std::sin(a)));
   }
   ring.up();
   d = runScript(dir_, ring, "limit_ring_drag", file);
@@ -549,6 +576,41 @@ TEST_F(EditorE2e, XdotoolClickSelectsTheHandThroughTheXServer) {
   json d = readJson(dump);
   EXPECT_EQ(selection(d), std::vector<std::string>{"Hand.L"});
   EXPECT_NEAR(double(d["camera"]["azimuth"]), 0.0, 1e-6);
+}
+
+TEST_F(EditorE2e, XdotoolTapsOf12MsAtFiveFramesASecondAreAllHandled) {
+  if (runCommand("command -v xdotool") != 0) GTEST_SKIP() << "SKIPPED: xdotool is not installed";
+  // Real X events, tapped for 12 ms each at --max-fps 5 (200 ms frames), so most presses
+  // and releases fall within one frame: A (select all), then 8 times I (insert keys) and
+  // Right (next frame), which makes 8 undo steps on frames start..start+7, then Ctrl+Z 8
+  // times. Every tap must count, and promptly: the 25 taps must not take 2 frames each
+  // (presses waiting for the frame after their release, the old lag behind fast typing).
+  const int steps = 8, taps = 1 + 3 * steps;
+  const glm::dvec2 view = viewportRect(front_).at(0.5, 0.4);
+  const std::string dump = dir_ + "/taps.json", sh = dir_ + "/taps.sh";
+  std::string keys = "a", undos;
+  for (int i = 0; i < steps; ++i) {
+    keys += " i Right";
+    undos += " ctrl+z";
+  }
+  char move[64];
+  std::snprintf(move, sizeof move, "%d %d", int(std::lround(view.x)), int(std::lround(view.y)));
+  std::ofstream(sh) << e2e::editorEnvironment(dir_) << KINEMA_BINARY << " edit --size " << e2e::windowSize()
+                    << " --max-fps 5 --frame-count 300 --dump-state " << dump << " & pid=$!\n"
+                    << "for i in $(seq 100); do w=$(xdotool search --name 'Kinema - ' | head -1) && [ -n \"$w\" ] && break; sleep 0.1; done\n"
+                    << "xdotool windowfocus --sync $w || true\n"
+                    << "xdotool mousemove --window $w " << move << "\nsleep 1\n"
+                    << "xdotool key --delay 12 " << keys << "\nxdotool key --delay 12" << undos << "\n"
+                    << "sleep 0.5\nxdotool key ctrl+q\nwait $pid\n";
+  std::string out, err;
+  ASSERT_EQ(runCommand(e2e::xvfb() + "sh " + sh, &out, &err), 0) << err;
+  const json d = readJson(dump);
+  ASSERT_TRUE(d.is_object());
+  EXPECT_EQ(int(d["timeline"]["frame"]), int(front_["timeline"]["frame"]) + steps) << "Right taps lost";
+  EXPECT_EQ(int(d["redo_depth"]), steps) << "I or Ctrl+Z taps lost";
+  EXPECT_EQ(int(d["undo_depth"]), 0) << "Ctrl+Z taps lost";
+  // Ctrl+Q quit right after the taps (the document is clean again), long before 2 frames a tap.
+  EXPECT_LT(int(d["frames"]), 2 * taps) << "the taps lagged behind";
 }
 
 }  // namespace

@@ -111,7 +111,7 @@ TEST(Keying, FirstKeyCreatesActionAndUndoRedoRestoreClipsExactly) {
   EXPECT_EQ(loc->settings(0).interpolation, Interpolation::Bezier);
   EXPECT_EQ(loc->settings(0).rightHandleType, HandleType::AutoClamped);
   EXPECT_EQ(glm::vec3(loc->values[0]), doc.pose().local[arm].translation);
-  EXPECT_EQ(doc.historyLabels().back(), "Insert keyframes");
+  EXPECT_EQ(doc.historyLabels().back(), "Insert keys on UpperArm.L at frame 1");  // t1 = 1/24 s at 24 fps
 
   const std::string keyed = clipBytes(doc.scene().clips);
   const std::vector<Transform> pose = doc.pose().local;

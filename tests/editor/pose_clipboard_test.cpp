@@ -53,7 +53,7 @@ TEST(PoseClipboard, PasteFlippedMirrorsTheLeftArmOntoTheRight) {
   const PoseClipboard clip = copyPose(doc, left);
   ASSERT_EQ(clip.entries.size(), 5u);
   ASSERT_EQ(pastePose(doc, clip, true), "");
-  EXPECT_EQ(doc.historyLabels().back(), "Paste flipped pose");
+  EXPECT_EQ(doc.historyLabels().back(), "Paste flipped pose onto 5 joints");
   const std::vector<glm::vec3> p = worldPositions(doc);
   for (const char* a : arm) {
     const glm::vec3 l = p[doc.skeleton().find(std::string(a) + ".L")];

@@ -1,7 +1,11 @@
 // The rotate gizmo and R-mode on the hand camera (viewport_test_views.h): eye on +Z looking
 // down -Z, so screen right = +X, screen up = +Y and the Z axis points at the viewer. With the
 // orthographic view a ring of 80 px has world radius 8 (0.1 units per pixel).
+#include "core/default_character.h"
+#include "core/forward_kinematics.h"
 #include "editor/viewport/rotate_gizmo.h"
+#include "render/camera.h"
+#include "render/skeleton_view.h"
 #include "editor/viewport_test_views.h"
 #include "test_support.h"
 
@@ -225,6 +229,64 @@ TEST(RotateGizmo, WorldTurnBecomesTheLocalRotationUnderTheParent) {
   // A root (identity parent) with a start rotation: the turn is applied on the world side.
   const glm::quat start = glm::angleAxis(0.3f, glm::vec3(0, 1, 0));
   EXPECT_SAME_ROTATION(localRotationAfterWorldTurn(glm::quat(1, 0, 0, 0), start, delta), delta * start, 1e-6f);
+}
+
+}  // namespace
+}  // namespace kinema::test
+
+namespace kinema::test {
+namespace {
+
+// The default character as the editor first frames it (render/skeleton_view.h), in the
+// 3D view of the editor's 1600 x 1000 window (1040 x 917 pixels).
+struct DefaultCharacterView {
+  Skeleton skeleton = makeDefaultCharacter();
+  std::vector<glm::mat4> world = computeWorld(skeleton, Pose::rest(skeleton));
+  ViewportView view = ViewportView::of(defaultCamera(jointBounds(world), 1040.0f / 917.0f), {1040, 917});
+  glm::vec2 pixel(int joint) const {
+    glm::vec2 p(0.0f);
+    EXPECT_TRUE(view.project(glm::vec3(world[joint][3]), p));
+    return p;
+  }
+};
+
+TEST(RotateGizmoSize, OnAFootAtTheDefaultZoomItCoversNeitherTheOtherFootNorAnyUnrelatedJoint) {
+  const DefaultCharacterView c;
+  const int foot = c.skeleton.find("Foot.L"), otherFoot = c.skeleton.find("Foot.R");
+  ASSERT_GE(foot, 0);
+  ASSERT_GE(otherFoot, 0);
+  const float ring = rotateGizmoRingPixels(c.view, c.world, c.skeleton.parents, foot);
+  // The feet are 0.18 m apart (x = +-0.09): the view ring (1.2 times wider) and its 6 px
+  // grab band end before half-way to the other foot; far under Blender's 80 px.
+  const float feetApart = glm::length(c.pixel(otherFoot) - c.pixel(foot));
+  EXPECT_LE(kViewRingScale * ring + 6.0f, 0.5f * feetApart + 1e-3f);
+  EXPECT_LT(ring, 80.0f);
+  EXPECT_GE(ring, kMinGizmoRingPixels);
+  // Neither ring nor its grab band reaches half-way to a joint the foot does not carry.
+  const int lowerLeg = c.skeleton.find("LowerLeg.L");
+  for (int k = 0; k < c.skeleton.size(); ++k) {
+    bool carried = false;
+    for (int a = k; a >= 0; a = c.skeleton.parents[a]) carried = carried || a == foot;
+    if (carried || k == lowerLeg) continue;
+    EXPECT_GE(0.5f * glm::length(c.pixel(k) - c.pixel(foot)) + 1e-3f, kViewRingScale * ring + 6.0f) << c.skeleton.names[k];
+  }
+}
+
+TEST(RotateGizmoSize, BlendersSizeWhenNothingUnrelatedIsNearAndAFloorWhenEverythingIs) {
+  const DefaultCharacterView c;
+  // The root carries every joint: nothing limits it.
+  EXPECT_FLOAT_EQ(rotateGizmoRingPixels(c.view, c.world, c.skeleton.parents, c.skeleton.find("Hips")), 80.0f);
+  // Two roots 10 px apart in the hand view (0.1 units per pixel, orthographic): the floor
+  // (by the rule (5 - 6) / 1.2 px).
+  const ViewportView v = handView(true);
+  const std::vector<glm::mat4> two{glm::mat4(1.0f), glm::translate(glm::mat4(1.0f), glm::vec3(1.0f, 0.0f, 0.0f))};
+  EXPECT_FLOAT_EQ(rotateGizmoRingPixels(v, two, {-1, -1}, 0), kMinGizmoRingPixels);
+  // 300 px apart: (150 - 6) / 1.2 = 120, so Blender's 80.
+  const std::vector<glm::mat4> far{glm::mat4(1.0f), glm::translate(glm::mat4(1.0f), glm::vec3(30.0f, 0.0f, 0.0f))};
+  EXPECT_FLOAT_EQ(rotateGizmoRingPixels(v, far, {-1, -1}, 0), 80.0f);
+  // 100 px apart: (50 - 6) / 1.2 = 36.67 px.
+  const std::vector<glm::mat4> mid{glm::mat4(1.0f), glm::translate(glm::mat4(1.0f), glm::vec3(10.0f, 0.0f, 0.0f))};
+  EXPECT_NEAR(rotateGizmoRingPixels(v, mid, {-1, -1}, 0), 44.0f / 1.2f, 1e-3f);
 }
 
 }  // namespace

@@ -24,6 +24,19 @@ std::string errorOf(const std::string& bytes, const std::string& name = "bad.glt
   return r.error();
 }
 
+// A GLB of one JSON chunk (`json` already padded to 4 bytes).
+std::string glbOfJson(const std::string& json) {
+  auto u32 = [](std::string& out, uint32_t v) {
+    for (int i = 0; i < 4; ++i) out += static_cast<char>((v >> (8 * i)) & 0xFF);
+  };
+  std::string out = "glTF";
+  u32(out, 2);
+  u32(out, static_cast<uint32_t>(20 + json.size()));
+  u32(out, static_cast<uint32_t>(json.size()));
+  u32(out, 0x4E4F534A);
+  return out + json;
+}
+
 #define EXPECT_MENTIONS(error, ...)                                                            \
   do {                                                                                         \
     const std::string e_ = (error);                                                            \
@@ -169,6 +182,43 @@ TEST(GltfMalformed, NotGltf) {
   Result<Scene> missing = loadGltf("/no/such/file.glb");
   ASSERT_FALSE(missing.ok());
   EXPECT_NE(missing.error().find("/no/such/file.glb"), std::string::npos);
+}
+
+// Garbage and broken JSON: one readable line naming the file and where the JSON breaks,
+// never the JSON library's exception text or the file's raw bytes.
+TEST(GltfMalformed, GarbageAndBrokenJsonReadPlainly) {
+  auto expectPlain = [](const std::string& e) {
+    EXPECT_EQ(e.find("json.exception"), std::string::npos) << e;
+    EXPECT_EQ(e.find("parse_error"), std::string::npos) << e;
+    for (char c : e) EXPECT_TRUE(c >= 0x20 && c < 0x7f) << "byte " << int(static_cast<unsigned char>(c)) << " in " << e;
+  };
+  std::string garbage;
+  for (int i = 0; i < 3000; ++i) garbage += static_cast<char>((i * 7919 + 13) % 251 + 1);  // no "glTF" header
+  const std::string g = errorOf(garbage, "garbage.glb");
+  expectPlain(g);
+  EXPECT_MENTIONS(g, "not a glTF file");
+  const std::string t = errorOf("hello world {not json", "text.glb");
+  expectPlain(t);
+  EXPECT_MENTIONS(t, "not a glTF file");
+
+  // A GLB whose JSON chunk has ",," after its first member: the second comma is at 1-based
+  // column index + 2 of the first comma.
+  std::string text = R"({"asset":{"version":"2.0"},,"nodes":[{"name":"a"}]})";
+  const size_t comma = text.find(",,");
+  while (text.size() % 4) text += ' ';
+  const std::string b = errorOf(glbOfJson(text), "broken.glb");
+  expectPlain(b);
+  const std::string where = "line 1, column " + std::to_string(comma + 2) + ":";
+  EXPECT_MENTIONS(b, "malformed", where.c_str());
+  // Text glTF cut short: the break is at the end, after the last byte.
+  const std::string cut = R"({"asset":{"version":"2.0"},"nodes":[1,2)";
+  const std::string c = errorOf(cut);
+  expectPlain(c);
+  const std::string end = "line 1, column " + std::to_string(cut.size() + 1) + ":";
+  EXPECT_MENTIONS(c, "malformed", end.c_str());
+  // A break on the third line is counted in lines.
+  const std::string lines = errorOf("{\n  \"asset\": {\"version\": \"2.0\"},\n  \"nodes\": [}\n}");
+  EXPECT_MENTIONS(lines, "line 3, column 13");
 }
 
 TEST(GltfMalformed, TooManyNodes) {

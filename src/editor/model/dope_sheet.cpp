@@ -6,6 +6,7 @@
 #include <set>
 
 #include "editor/model/document.h"
+#include "editor/model/edit_labels.h"
 
 namespace kinema {
 
@@ -319,10 +320,13 @@ std::string pasteKeys(Clip& clip, const Skeleton& skeleton, const KeyClipboard& 
 // ---- document edits ----
 
 namespace {
-std::string clipEdit(Document& doc, const char* label, int clipIndex,
+// "3 keys": the selected cells (one joint's keys at one frame each, as the dope sheet shows them).
+std::string keysPhrase(const KeyColumnSelection& selection) { return countPhrase(selection.columns().size(), "key"); }
+
+std::string clipEdit(Document& doc, const std::string& label, int clipIndex,
                      const std::function<std::string(Clip&, const Skeleton&)>& change) {
   return doc.edit(label, [&](DocumentEdit& e) -> std::string {
-    if (clipIndex < 0 || clipIndex >= static_cast<int>(e.clips.size())) return std::string(label) + ": no clip to edit";
+    if (clipIndex < 0 || clipIndex >= static_cast<int>(e.clips.size())) return label + ": no clip to edit";
     return change(e.clips[clipIndex], e.skeleton);
   });
 }
@@ -331,7 +335,7 @@ std::string clipEdit(Document& doc, const char* label, int clipIndex,
 std::string moveKeysEdit(Document& doc, int clipIndex, KeyColumnSelection& selection, double frameOffset) {
   if (selection.empty()) return "Move keys: select keys first";
   std::vector<KeyColumn> moved;
-  const std::string error = clipEdit(doc, "Move Keys", clipIndex, [&](Clip& clip, const Skeleton&) {
+  const std::string error = clipEdit(doc, "Move " + keysPhrase(selection), clipIndex, [&](Clip& clip, const Skeleton&) {
     moveKeyColumns(clip, selection.columns(), frameOffset, &moved);
     return std::string();
   });
@@ -341,7 +345,7 @@ std::string moveKeysEdit(Document& doc, int clipIndex, KeyColumnSelection& selec
 
 std::string deleteKeysEdit(Document& doc, int clipIndex, KeyColumnSelection& selection) {
   if (selection.empty()) return "Delete keys: select keys first";
-  const std::string error = clipEdit(doc, "Delete Keys", clipIndex, [&](Clip& clip, const Skeleton&) {
+  const std::string error = clipEdit(doc, "Delete " + keysPhrase(selection), clipIndex, [&](Clip& clip, const Skeleton&) {
     deleteKeyColumns(clip, selection.columns());
     return std::string();
   });
@@ -352,7 +356,7 @@ std::string deleteKeysEdit(Document& doc, int clipIndex, KeyColumnSelection& sel
 std::string pasteKeysEdit(Document& doc, int clipIndex, KeyColumnSelection& selection, const KeyClipboard& clipboard,
                           long long frame, const std::vector<int>& ontoJoints) {
   std::vector<KeyColumn> pasted;
-  const std::string error = clipEdit(doc, "Paste Keys", clipIndex, [&](Clip& clip, const Skeleton& skeleton) {
+  const std::string error = clipEdit(doc, "Paste " + countPhrase(clipboard.keys.size(), "key") + " at frame " + std::to_string(frame), clipIndex, [&](Clip& clip, const Skeleton& skeleton) {
     return pasteKeys(clip, skeleton, clipboard, frame, ontoJoints, &pasted);
   });
   if (error.empty()) selection.set(pasted);
@@ -362,7 +366,7 @@ std::string pasteKeysEdit(Document& doc, int clipIndex, KeyColumnSelection& sele
 std::string KeyMoveDrag::begin(Document& doc, int clipIndex, const KeyColumnSelection& selection) {
   if (selection.empty()) return "Move keys: select keys first";
   if (clipIndex < 0 || clipIndex >= static_cast<int>(doc.scene().clips.size())) return "Move keys: no clip to edit";
-  const std::string error = doc.beginDrag("Move Keys");
+  const std::string error = doc.beginDrag("Move " + keysPhrase(selection));
   if (!error.empty()) return error;
   active_ = true;
   clip_ = clipIndex;

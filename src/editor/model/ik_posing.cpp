@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "core/forward_kinematics.h"
+#include "editor/model/edit_labels.h"
 
 namespace kinema {
 
@@ -130,7 +131,7 @@ glm::vec3 effectorPosition(const Document& doc, int joint) {
 std::string beginIkTargetDrag(Document& doc, int target) {
   if (target < 0 || target >= static_cast<int>(doc.ikTargets().size()))
     return "no IK target " + std::to_string(target);
-  const std::string error = doc.beginDrag("Move IK target");
+  const std::string error = doc.beginDrag("Move IK target of " + jointsPhrase(doc.skeleton(), {doc.ikTargets()[target].target.effector}));
   if (error.empty()) doc.setDrivenIkTarget(target);
   return error;
 }
@@ -161,7 +162,7 @@ std::string beginAutoIkDrag(Document& doc, int joint, int chainLength, IkSolver 
   t.solver = solver;
   // Two-bone needs exactly two bones; otherwise use DLS, which handles any length.
   if (solver == IkSolver::TwoBone && t.chainLength != 2) t.solver = IkSolver::JacobianDls;
-  const std::string error = doc.beginDrag("Auto IK " + s.names[joint]);
+  const std::string error = doc.beginDrag("Move " + s.names[joint] + " by auto IK");
   if (!error.empty()) return error;
   doc.setTemporaryIkTarget(t);
   return {};

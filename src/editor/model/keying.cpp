@@ -6,6 +6,7 @@
 
 #include "anim/insert_keyframe.h"
 #include "editor/model/document.h"
+#include "editor/model/edit_labels.h"
 
 namespace kinema {
 
@@ -105,6 +106,14 @@ std::vector<float> jointKeyTimes(const Clip& clip, const std::vector<int>& joint
   return times;
 }
 
+namespace {
+// "frame 12" on the clip's frame grid (a first key makes a new action: its grid).
+std::string keyTimePhrase(const Document& doc, int clip, float time) {
+  const bool exists = clip >= 0 && clip < static_cast<int>(doc.scene().clips.size());
+  return "frame " + std::to_string(std::llround((exists ? doc.scene().clips[clip] : newActionClip()).timeToFrame(time)));
+}
+}  // namespace
+
 std::string insertKeys(Document& doc, int& clip, float time, const std::vector<int>& joints,
                        const KeyPreferences& preferences) {
   if (joints.empty()) return "select the joints to key first";
@@ -112,7 +121,9 @@ std::string insertKeys(Document& doc, int& clip, float time, const std::vector<i
   for (int j : joints)
     if (j < 0 || j >= doc.skeleton().size()) return "joint " + std::to_string(j) + " does not exist";
   int target = clip;
-  const std::string error = doc.edit("Insert keyframes", [&](DocumentEdit& e) {
+  const std::string error = doc.edit("Insert keys on " + jointsPhrase(doc.skeleton(), joints) + " at " +
+                                         keyTimePhrase(doc, clip, time),
+                                     [&](DocumentEdit& e) {
     const int clipsBefore = static_cast<int>(e.clips.size());
     keyJoints(e.clips, target, e.skeleton, e.pose, joints, time, preferences);
     if (static_cast<int>(e.clips.size()) > clipsBefore) e.activeClip = target;  // the new "Action" plays
@@ -134,7 +145,8 @@ std::string deleteKeys(Document& doc, int clip, float time, const std::vector<in
   Clip trial = doc.scene().clips[clip];
   if (deleteJointKeys(trial, joints, time) == 0)
     return "no keys of the selected joints on this frame";
-  return doc.edit("Delete keyframes", [&](DocumentEdit& e) {
+  return doc.edit("Delete keys of " + jointsPhrase(doc.skeleton(), joints) + " at " + keyTimePhrase(doc, clip, time),
+                  [&](DocumentEdit& e) {
     deleteJointKeys(e.clips[clip], joints, time);
     return std::string();
   });

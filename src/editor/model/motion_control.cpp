@@ -4,6 +4,7 @@
 
 #include "anim/arc_length.h"
 #include "editor/model/document.h"
+#include "editor/model/edit_labels.h"
 #include "editor/model/onion_skin.h"
 
 namespace kinema {
@@ -98,7 +99,8 @@ std::string applyMotionControl(Document& doc, int clip, int joint, MotionControl
   if (!error.empty()) return "Motion control: " + error;
   Channel baked;
   job.bake(baked);
-  return doc.edit("Motion Control", [&](DocumentEdit& e) -> std::string {
+  return doc.edit("Apply " + std::string(toString(profile)) + " motion control to " + jointsPhrase(doc.skeleton(), {joint}),
+                  [&](DocumentEdit& e) -> std::string {
     e.clips[clip].channels[index] = std::move(baked);
     return {};
   });

@@ -1,5 +1,6 @@
 #include "editor/model/pose_clipboard.h"
 
+#include "editor/model/edit_labels.h"
 #include "editor/model/mirror_names.h"
 
 namespace kinema {
@@ -37,7 +38,10 @@ std::string pastePose(Document& doc, const PoseClipboard& clipboard, bool flippe
   if (matches.empty())
     return "none of the copied joints (" + clipboard.entries.front().joint + (clipboard.entries.size() > 1 ? ", ..." : "") +
            ") is in this skeleton";
-  return doc.edit(flipped ? "Paste flipped pose" : "Paste pose", [&](DocumentEdit& e) {
+  std::vector<int> onto;
+  for (const auto& m : matches) onto.push_back(m.first);
+  return doc.edit(std::string(flipped ? "Paste flipped pose onto " : "Paste pose onto ") + jointsPhrase(doc.skeleton(), onto),
+                  [&](DocumentEdit& e) {
     for (const auto& [j, entry] : matches) {
       e.pose.local[j].rotation = flipped ? mirrorRotationX(entry->rotation) : entry->rotation;
       if (entry->hasTranslation)

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "anim/clip.h"
+#include "editor/model/edit_labels.h"
 #include "editor/model/ik_posing.h"
 #include "editor/model/mirror_names.h"
 #include "editor/model/pose_clipboard.h"
@@ -110,7 +111,7 @@ std::string clearRotations(Document& doc, const std::vector<int>& joints) {
     const std::string error = jointError(doc, j);
     if (!error.empty()) return error;
   }
-  return doc.edit("Clear rotation", [&](DocumentEdit& e) {
+  return doc.edit("Clear rotation of " + jointsPhrase(doc.skeleton(), joints), [&](DocumentEdit& e) {
     for (int j : joints) e.pose.local[j].rotation = e.skeleton.rest[j].rotation;
     return std::string();
   });
@@ -121,14 +122,14 @@ std::string clearTranslations(Document& doc, const std::vector<int>& joints) {
     const std::string error = jointError(doc, j);
     if (!error.empty()) return error;
   }
-  return doc.edit("Clear location", [&](DocumentEdit& e) {
+  return doc.edit("Clear location of " + jointsPhrase(doc.skeleton(), joints), [&](DocumentEdit& e) {
     for (int j : joints) e.pose.local[j].translation = e.skeleton.rest[j].translation;
     return std::string();
   });
 }
 
 std::string resetToRestPose(Document& doc) {
-  return doc.edit("Reset to rest pose", [](DocumentEdit& e) {
+  return doc.edit("Reset all joints to the rest pose", [](DocumentEdit& e) {
     e.pose = Pose::rest(e.skeleton);
     return std::string();
   });
@@ -153,7 +154,7 @@ std::string setMeshSkinning(Document& doc, int instance, SkinningMethod method) 
   if (instance < 0 || instance >= static_cast<int>(doc.scene().meshInstances.size()))
     return "no mesh instance " + std::to_string(instance);
   const char* name = method == SkinningMethod::DualQuaternion ? "dual quaternion" : "linear blend";
-  return doc.edit(std::string("Skinning ") + name, [&](DocumentEdit& e) {
+  return doc.edit("Set skinning of mesh " + std::to_string(instance) + " to " + name, [&](DocumentEdit& e) {
     e.skinning[instance] = method;
     return std::string();
   });
@@ -163,7 +164,7 @@ std::string bindUnskinnedMeshes(Document& doc, AutomaticWeightsMethod method) {
   bool any = false;
   for (const MeshInstance& m : doc.scene().meshInstances) any = any || m.skin < 0;
   if (!any) return "no unskinned mesh to bind (every mesh already follows a skin)";
-  return doc.editMeshes("Bind to skeleton", [&](Scene& scene) {
+  return doc.editMeshes("Bind meshes to the skeleton", [&](Scene& scene) {
     for (size_t i = 0; i < scene.meshInstances.size(); ++i) {
       if (scene.meshInstances[i].skin >= 0) continue;
       std::string error;
@@ -177,7 +178,7 @@ std::string setJointLimit(Document& doc, int joint, const JointLimit& limit) {
   std::string error = jointError(doc, joint);
   if (error.empty() && limit.active()) error = limit.validate();
   if (!error.empty()) return error;
-  return doc.edit("Joint limit " + nameOf(doc, joint), [&](DocumentEdit& e) {
+  return doc.edit("Set joint limit of " + nameOf(doc, joint), [&](DocumentEdit& e) {
     if (e.limits.empty()) e.limits.resize(e.skeleton.size());
     e.limits[joint] = limit;
     return std::string();
@@ -211,7 +212,7 @@ std::string addIkTargetAtEffector(Document& doc, int effector, int chainLength, 
 std::string removeIkTarget(Document& doc, int target) {
   const std::string error = targetError(doc, target);
   if (!error.empty()) return error;
-  return doc.edit("Remove IK target", [&](DocumentEdit& e) {
+  return doc.edit("Remove IK target of " + jointsPhrase(doc.skeleton(), {doc.ikTargets()[target].target.effector}), [&](DocumentEdit& e) {
     e.targets.erase(e.targets.begin() + target);
     return std::string();
   });
@@ -222,7 +223,7 @@ std::string setIkTarget(Document& doc, int target, const PoseIkTarget& settings)
   if (error.empty()) error = settings.validate(doc.skeleton());
   if (error.empty() && !finite(settings.target.position)) error = "the target position is not finite";
   if (!error.empty()) return error;
-  return drivenEdit(doc, target, "Edit IK target", [&](DocumentEdit& e) {
+  return drivenEdit(doc, target, "Edit IK target of " + jointsPhrase(doc.skeleton(), {doc.ikTargets()[target].target.effector}), [&](DocumentEdit& e) {
     e.targets[target] = settings;
     return std::string();
   });

@@ -1,6 +1,7 @@
 #include "editor/model/timeline.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 
 #include "editor/model/editor_state.h"
@@ -110,7 +111,7 @@ std::string setFrameRange(EditorState& s, long long start, long long end) {
   const Clip& grid = timelineGrid(s);
   const float startTime = grid.frameToTime(start), endTime = grid.frameToTime(end);
   int clip = s.clip;
-  const std::string error = s.doc.edit("Set frame range", [&](DocumentEdit& e) {
+  const std::string error = s.doc.edit("Set frame range to " + std::to_string(start) + "-" + std::to_string(end), [&](DocumentEdit& e) {
     if (clip < 0 || clip >= static_cast<int>(e.clips.size())) {
       e.clips.push_back(newActionClip());
       clip = e.activeClip = static_cast<int>(e.clips.size()) - 1;
@@ -132,7 +133,9 @@ std::string setFrameRate(EditorState& s, double fps) {
   // without "time stretching".
   const long long start = rangeStartFrame(s), end = rangeEndFrame(s), frame = currentFrame(s);
   int clip = s.clip;
-  const std::string error = s.doc.edit("Set frame rate", [&](DocumentEdit& e) {
+  char rate[32];
+  std::snprintf(rate, sizeof rate, "%g", fps);
+  const std::string error = s.doc.edit(std::string("Set frame rate to ") + rate + " fps", [&](DocumentEdit& e) {
     if (clip < 0 || clip >= static_cast<int>(e.clips.size())) {
       e.clips.push_back(newActionClip());
       clip = e.activeClip = static_cast<int>(e.clips.size()) - 1;

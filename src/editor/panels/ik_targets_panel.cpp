@@ -140,7 +140,7 @@ void targetSettings(EditorState& state, int t) {
       const bool changed = ImGui::DragFloat3("Pole", pole, 0.01f, 0.0f, 0.0f, "%.3f");
       recordFields("IK Targets/Pole", 3);
       dragAsOneStep(
-          state, changed, [&] { return doc.beginDrag("IK pole " + std::string(jointName(s, current.target.effector))); },
+          state, changed, [&] { return doc.beginDrag("Set IK pole of " + std::string(jointName(s, current.target.effector))); },
           [&] {
             return doc.updateDrag([&](DocumentEdit& e) {
               e.targets[t].target.pole = glm::vec3(pole[0], pole[1], pole[2]);

@@ -150,7 +150,7 @@ void limitSection(EditorState& state, int joint) {
   };
   const auto step = [&] {
     dragAsOneStep(
-        state, changed, [&] { return doc.beginDrag("Joint limit " + doc.skeleton().names[joint]); },
+        state, changed, [&] { return doc.beginDrag("Set joint limit of " + doc.skeleton().names[joint]); },
         [&]() -> std::string {
           if (std::string why = edited.validate(); !why.empty()) return why;
           return doc.updateDrag([&](DocumentEdit& e) {

@@ -56,6 +56,27 @@ std::vector<glm::vec3> RotateGizmo::ringPoints(const ViewportView& view, int i, 
   return points;
 }
 
+float rotateGizmoRingPixels(const ViewportView& view, const std::vector<glm::mat4>& world, const std::vector<int>& parents,
+                            int joint, float maxPixels, float tolerancePixels) {
+  const int n = static_cast<int>(std::min(world.size(), parents.size()));
+  glm::vec2 centre;
+  if (joint < 0 || joint >= n || !view.project(glm::vec3(world[joint][3]), centre)) return maxPixels;
+  auto carried = [&](int k) {  // k is the joint or one of its descendants
+    for (int a = k; a >= 0 && a < n; a = parents[a])
+      if (a == joint) return true;
+    return false;
+  };
+  float radius = maxPixels;
+  for (int k = 0; k < n; ++k) {
+    if (k == parents[joint] || carried(k)) continue;
+    glm::vec2 p;
+    if (!view.project(glm::vec3(world[k][3]), p)) continue;
+    const float d = glm::length(p - centre);
+    if (d >= 1.0f) radius = std::min(radius, (0.5f * d - tolerancePixels) / kViewRingScale);
+  }
+  return std::max(radius, std::min(kMinGizmoRingPixels, maxPixels));
+}
+
 bool ringSegmentFacesViewer(const RotateGizmo& gizmo, const ViewportView& view, const glm::vec3& a,
                             const glm::vec3& b) {
   // Blender clips its dials by the plane through the centre normal to the VIEW AXIS, not to

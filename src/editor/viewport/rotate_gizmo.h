@@ -26,6 +26,19 @@ struct RotateGizmo {
   std::vector<glm::vec3> ringPoints(const ViewportView& view, int i, int segments = 64) const;
 };
 
+// The axis rings' radius (pixels) for the gizmo on `joint`: Blender's fixed size (`maxPixels`,
+// 80) at most, but at a whole-body zoom small enough that no ring covers a neighbouring limb
+// (a click on the other foot must select it, not grab a ring): the view ring (kViewRingScale
+// wider) and its grab tolerance stay within half the on-screen distance to the nearest joint
+// the rotation does not carry along (any but the joint, its parent and its descendants;
+// joints within a pixel of the pivot or behind the eye are skipped). Never under
+// kMinGizmoRingPixels, so it stays grabbable. `world`: joint world transforms; `parents`: -1
+// for roots.
+constexpr float kMinGizmoRingPixels = 12.0f;
+constexpr float kViewRingScale = 1.2f;  // the view ring's radius over the axis rings' (Blender's 96 / 80)
+float rotateGizmoRingPixels(const ViewportView& view, const std::vector<glm::mat4>& world, const std::vector<int>& parents,
+                            int joint, float maxPixels = 80.0f, float tolerancePixels = 6.0f);
+
 // Whether the axis-ring segment a-b is on the half facing the viewer (Blender draws and grabs
 // only that half): judged against the view axis, so a ring whose axis is the view axis is a
 // whole circle also off-centre in perspective; nearly face-on rings (within ~1 degree) too.

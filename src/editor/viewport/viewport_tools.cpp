@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "editor/viewport/box_select.h"
+#include "editor/model/edit_labels.h"
 #include "editor/model/ik_posing.h"
 #include "editor/viewport/mesh_picking.h"
 #include "editor/viewport/picking.h"
@@ -58,6 +59,9 @@ bool ViewportTools::gizmo(const EditorState& state, const ViewportView& view, Ro
   if (!state.view.showGizmo || j < 0 || j >= static_cast<int>(state.world().size())) return false;
   out = RotateGizmo{};
   out.pivot = jointPosition(state, j);
+  out.ringRadiusPixels =
+      rotateGizmoRingPixels(view, state.world(), state.doc.skeleton().parents, j, out.ringRadiusPixels, out.tolerancePixels);
+  out.viewRingRadiusPixels = out.ringRadiusPixels * kViewRingScale;
   out.axesRotation = RotateGizmo::axesFor(state.view.localGizmo ? GizmoOrientation::Local : GizmoOrientation::Global,
                                           jointWorldRotation(state.doc, j));
   glm::vec2 p;
@@ -282,8 +286,11 @@ void ViewportTools::mouseMove(EditorState& state, const ViewportView& view, cons
 
 bool ViewportTools::startRotate(EditorState& state, const ViewportView& view) {
   Document& doc = state.doc;
-  if (state.tool.mode != ModalTool::None || doc.selection.empty() || !beginModal(state, ModalTool::Rotate, "Rotate"))
-    return false;
+  if (state.tool.mode != ModalTool::None || doc.selection.empty()) return false;
+  std::vector<int> turned;  // the selected joints without a selected ancestor: those R turns
+  for (int j : doc.selection.joints())
+    if (!hasSelectedAncestor(doc, j)) turned.push_back(j);
+  if (!beginModal(state, ModalTool::Rotate, ("Rotate " + jointsPhrase(doc.skeleton(), turned)).c_str())) return false;
   joints_.clear();
   startLocal_.clear();
   parentWorld_.clear();

@@ -12,12 +12,14 @@
 #include <deque>
 #include <iostream>
 #include <numeric>
+#include <thread>
 
 #include "editor/commands/editor_input.h"
 #include "editor/commands/keymap.h"
 #include "editor/model/key_codes.h"
 #include "editor/panels/editor_panels.h"
 #include "editor/window/imgui_backends.h"
+#include "editor/window/imgui_input_feed.h"
 #include "editor/panels/panel_layout.h"
 #include "editor/window/state_dump.h"
 #include "editor/window/ui_style.h"
@@ -136,60 +138,6 @@ void onChar(GLFWwindow* w, unsigned int c) {
 
 const char* getClipboard(void* user) { return glfwGetClipboardString(static_cast<GLFWwindow*>(user)); }
 void setClipboard(void* user, const char* text) { glfwSetClipboardString(static_cast<GLFWwindow*>(user), text); }
-
-// ImGui 1.86 reads keys through io.KeyMap into io.KeysDown, indexed by GLFW key codes.
-void mapImGuiKeys(ImGuiIO& io) {
-  const std::pair<ImGuiKey, int> keys[] = {
-      {ImGuiKey_Tab, GLFW_KEY_TAB},       {ImGuiKey_LeftArrow, GLFW_KEY_LEFT},  {ImGuiKey_RightArrow, GLFW_KEY_RIGHT},
-      {ImGuiKey_UpArrow, GLFW_KEY_UP},    {ImGuiKey_DownArrow, GLFW_KEY_DOWN},  {ImGuiKey_PageUp, GLFW_KEY_PAGE_UP},
-      {ImGuiKey_PageDown, GLFW_KEY_PAGE_DOWN}, {ImGuiKey_Home, GLFW_KEY_HOME}, {ImGuiKey_End, GLFW_KEY_END},
-      {ImGuiKey_Insert, GLFW_KEY_INSERT}, {ImGuiKey_Delete, GLFW_KEY_DELETE},  {ImGuiKey_Backspace, GLFW_KEY_BACKSPACE},
-      {ImGuiKey_Space, GLFW_KEY_SPACE},   {ImGuiKey_Enter, GLFW_KEY_ENTER},    {ImGuiKey_Escape, GLFW_KEY_ESCAPE},
-      {ImGuiKey_KeyPadEnter, GLFW_KEY_KP_ENTER}, {ImGuiKey_A, GLFW_KEY_A}, {ImGuiKey_C, GLFW_KEY_C},
-      {ImGuiKey_V, GLFW_KEY_V}, {ImGuiKey_X, GLFW_KEY_X}, {ImGuiKey_Y, GLFW_KEY_Y}, {ImGuiKey_Z, GLFW_KEY_Z},
-  };
-  for (const auto& [imguiKey, glfwKey] : keys) io.KeyMap[imguiKey] = glfwKey;
-}
-
-// Feeds one event to ImGui's IO. Returns false (and changes nothing) when the event would
-// undo a change made earlier in this frame (a press and release of the same button): ImGui
-// 1.86 samples state once per frame, so such events wait for the next frame.
-struct FrameInputChanges {
-  bool button[5] = {};
-  std::vector<int> keys;
-};
-bool feedImGui(ImGuiIO& io, const InputEvent& e, FrameInputChanges& changed) {
-  switch (e.type) {
-    case InputEventType::MouseMove: io.MousePos = ImVec2(e.x, e.y); break;
-    case InputEventType::ButtonDown:
-    case InputEventType::ButtonUp:
-      if (e.button >= 0 && e.button < 5) {
-        if (changed.button[e.button]) return false;
-        changed.button[e.button] = true;
-        io.MouseDown[e.button] = e.type == InputEventType::ButtonDown;
-      }
-      break;
-    case InputEventType::Scroll:
-      io.MouseWheelH += e.x;
-      io.MouseWheel += e.y;
-      break;
-    case InputEventType::KeyDown:
-    case InputEventType::KeyUp:
-      if (e.key >= 0 && e.key < IM_ARRAYSIZE(io.KeysDown)) {
-        if (std::find(changed.keys.begin(), changed.keys.end(), e.key) != changed.keys.end()) return false;
-        changed.keys.push_back(e.key);
-        io.KeysDown[e.key] = e.type == InputEventType::KeyDown;
-      }
-      io.KeyCtrl = io.KeysDown[GLFW_KEY_LEFT_CONTROL] || io.KeysDown[GLFW_KEY_RIGHT_CONTROL] || (e.mods & kModCtrl);
-      io.KeyShift = io.KeysDown[GLFW_KEY_LEFT_SHIFT] || io.KeysDown[GLFW_KEY_RIGHT_SHIFT] || (e.mods & kModShift);
-      io.KeyAlt = io.KeysDown[GLFW_KEY_LEFT_ALT] || io.KeysDown[GLFW_KEY_RIGHT_ALT] || (e.mods & kModAlt);
-      io.KeySuper = io.KeysDown[GLFW_KEY_LEFT_SUPER] || io.KeysDown[GLFW_KEY_RIGHT_SUPER] || (e.mods & kModSuper);
-      break;
-    case InputEventType::Text: io.AddInputCharactersUTF8(e.text.c_str()); break;
-    case InputEventType::Command: break;  // a script's command: not ImGui's
-  }
-  return true;
-}
 
 }  // namespace
 
@@ -372,33 +320,36 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       commands.mouse = input.held().mouse;
       // Input: ImGui gets every event; the tools, the compare mode and the keymap's commands
       // get those ImGui does not want (as of the previous frame, which is what the user saw).
-      FrameInputChanges changed;
       const bool mouseCaptured = io.WantCaptureMouse, keyboardCaptured = io.WantCaptureKeyboard;
-      while (!live.queue.empty()) {
-        if (!live.queue.front().item.empty()) {
-          // A scripted event naming a widget: at the widget as it was last drawn.
-          InputEvent& e = live.queue.front();
-          const ItemRect* r = state.items.find(e.item);
-          if (!r) {
-            result.error = "script: frame " + std::to_string(e.frame) + ": no widget named '" + e.item +
-                           "' has been drawn (the state dump's \"items\" lists the names)";
-            live.queue.clear();
-            break;
-          }
-          const glm::vec2 p = r->min + (r->max - r->min) * e.at;
-          e.x = p.x;
-          e.y = p.y;
-          e.item.clear();
-          if (e.type != InputEventType::MouseMove) {  // presses happen where the pointer is
-            InputEvent move = e;
-            move.type = InputEventType::MouseMove;
-            live.queue.push_front(move);
-          }
+      // ImGui needs each tap of a key it reads in a frame of its own only while it has the
+      // keyboard or a popup open (imgui_input_feed.h); otherwise every event goes at once.
+      const bool imguiReadsKeys =
+          keyboardCaptured || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
+      auto widgetByName = [&](std::deque<InputEvent>& queue) {
+        if (queue.front().item.empty()) return true;
+        // A scripted event naming a widget: at the widget as it was last drawn.
+        InputEvent& e = queue.front();
+        const ItemRect* r = state.items.find(e.item);
+        if (!r) {
+          result.error = "script: frame " + std::to_string(e.frame) + ": no widget named '" + e.item +
+                         "' has been drawn (the state dump's \"items\" lists the names)";
+          queue.clear();
+          return false;
         }
-        if (!feedImGui(io, live.queue.front(), changed)) break;
-        input.handle(commands, live.queue.front(), list, mouseCaptured, keyboardCaptured);
-        live.queue.pop_front();
-      }
+        const glm::vec2 p = r->min + (r->max - r->min) * e.at;
+        e.x = p.x;
+        e.y = p.y;
+        e.item.clear();
+        if (e.type != InputEventType::MouseMove) {  // presses happen where the pointer is
+          InputEvent move = e;
+          move.type = InputEventType::MouseMove;
+          queue.push_front(move);
+        }
+        return true;
+      };
+      feedFrameInput(
+          live.queue, io, imguiReadsKeys,
+          [&](const InputEvent& e) { input.handle(commands, e, list, mouseCaptured, keyboardCaptured); }, widgetByName);
       advancePlayback(state, dt);
       evaluateEditorPose(state);
       const Bounds bounds = viewBounds();
@@ -498,6 +449,8 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         result.error = savePng(o.screenshotPath, shot);
       }
       glfwSwapBuffers(window);
+      // --max-fps: the rest of the frame's time is slept (events keep queueing meanwhile).
+      if (o.maxFps > 0) std::this_thread::sleep_until(frameStart + std::chrono::microseconds(1000000 / o.maxFps));
       if (o.reportFrameTimes) {
         glFinish();
         frameMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count());

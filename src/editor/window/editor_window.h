@@ -22,6 +22,7 @@ struct EditorWindowOptions {
   std::string dumpStatePath;  // written on exit (editorStateJson)
   bool reportFrameTimes = false;  // mean / median frame time on stderr at exit
   bool emptyFrame = false;        // draw only an empty ImGui frame (the baseline for frame times)
+  int maxFps = 0;                 // > 0: each frame lasts at least 1/maxFps s (kinema edit --max-fps)
 };
 
 struct EditorWindowResult {
