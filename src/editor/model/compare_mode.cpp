@@ -5,14 +5,14 @@
 
 namespace kinema {
 
-CompareLayout compareLayout(const CompareRect& area, int solverCount) {
+CompareLayout compareLayout(const CompareRect& area, int solverCount, float toolbarHeight, float sideWidth) {
   CompareLayout l;
   const int n = std::max(solverCount, 1);
-  const float sideW = std::min(kCompareSideWidth, area.w * 0.4f);
+  const float sideW = std::min(sideWidth, area.w * 0.4f);
   l.side = {area.x, area.y, sideW, area.h};
   const float mx = area.x + sideW, mw = std::max(area.w - sideW, 1.0f);
-  l.toolbar = {mx, area.y, mw, kCompareToolbarHeight};
-  const float top = area.y + kCompareToolbarHeight, rest = std::max(area.h - kCompareToolbarHeight, 2.0f);
+  l.toolbar = {mx, area.y, mw, toolbarHeight};
+  const float top = area.y + toolbarHeight, rest = std::max(area.h - toolbarHeight, 2.0f);
   const float viewH = std::floor(rest * 0.62f), viewW = std::floor(mw / n);
   for (int i = 0; i < n; ++i) l.views.push_back({mx + i * viewW, top, viewW, viewH});
   const float bottom = top + viewH, bottomH = std::max(rest - viewH, 1.0f);

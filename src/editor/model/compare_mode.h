@@ -31,7 +31,10 @@ struct CompareLayout {
 };
 constexpr float kCompareSideWidth = 250.0f;
 constexpr float kCompareToolbarHeight = 58.0f;
-CompareLayout compareLayout(const CompareRect& area, int solverCount);
+// toolbarHeight / sideWidth: pixels at the UI scale in force (the panel derives them from the
+// font, so two rows of widgets fit at any scale); the defaults are the sizes at 1x.
+CompareLayout compareLayout(const CompareRect& area, int solverCount, float toolbarHeight = kCompareToolbarHeight,
+                            float sideWidth = kCompareSideWidth);
 
 // Figure units <-> view pixels: [min, max] fitted into the rect (less a margin), aspect kept,
 // centred, Y up in figure units and down in pixels.

@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include <cfloat>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -82,11 +83,17 @@ void drawFigure(ImDrawList* dl, const Figure& f, const FigureViewMap& map, const
     for (float t = 0; t < len; t += 2 * dash)
       dl->AddLine(im(a + (b - a) * (t / len)), im(a + (b - a) * (std::min(t + dash, len) / len)), color(l.color), l.width);
   }
-  // Wrapped at the view's right edge, so a long caption or plot title is never cut.
+  // Wrapped at the view's right edge, so a long caption or plot title is never cut; a text
+  // that a wrapped one above would overlap (a caption's subtitle at 2x) moves below it.
+  std::vector<ImVec4> wrapped;  // x0, y0, x1, y1 of the texts that took several lines
   for (const FigureText& t : f.texts) {
-    const glm::vec2 at = map.toPixel(t.at);
-    dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), im(at), color(t.color), t.text.c_str(), nullptr,
-                std::max(r.x + r.w - at.x - 4.0f, ImGui::GetFontSize() * 4.0f));
+    glm::vec2 at = map.toPixel(t.at);
+    const float wrap = std::max(r.x + r.w - at.x - 4.0f, ImGui::GetFontSize() * 4.0f);
+    const ImVec2 size = ImGui::GetFont()->CalcTextSizeA(ImGui::GetFontSize(), FLT_MAX, wrap, t.text.c_str());
+    for (const ImVec4& w : wrapped)
+      if (at.x < w.z && at.x + size.x > w.x && at.y < w.w && at.y + size.y > w.y) at.y = w.w;
+    dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), im(at), color(t.color), t.text.c_str(), nullptr, wrap);
+    if (size.y > ImGui::GetFontSize() * 1.5f) wrapped.push_back(ImVec4(at.x, at.y, at.x + size.x, at.y + size.y));
   }
   dl->PopClipRect();
 }
@@ -250,7 +257,12 @@ void drawComparePanel(CommandContext& ctx) {
   advanceComparePlay(m, io.DeltaTime);
   const PanelRect& panels = ctx.state.layout.panelArea;
   const CompareRect area{panels.x, panels.y, panels.w, panels.h};
-  m.layout = compareLayout(area, m.ready() ? static_cast<int>(m.comparison.runs.size()) : 2);
+  // The toolbar holds two rows of widgets and the side column grows with the text (UI scale).
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float toolbarHeight = std::max(kCompareToolbarHeight, ImGui::GetFrameHeightWithSpacing() + ImGui::GetFrameHeight() +
+                                                                  2.0f * style.WindowPadding.y);
+  const float sideWidth = kCompareSideWidth * std::max(1.0f, ImGui::GetFontSize() / 14.0f);
+  m.layout = compareLayout(area, m.ready() ? static_cast<int>(m.comparison.runs.size()) : 2, toolbarHeight, sideWidth);
 
   ImDrawList* dl = ImGui::GetBackgroundDrawList();
   dl->AddRectFilled(ImVec2(area.x, area.y), ImVec2(area.x + area.w, area.y + area.h), IM_COL32(40, 40, 44, 255));

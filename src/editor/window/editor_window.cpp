@@ -321,10 +321,14 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       // Input: ImGui gets every event; the tools, the compare mode and the keymap's commands
       // get those ImGui does not want (as of the previous frame, which is what the user saw).
       const bool mouseCaptured = io.WantCaptureMouse, keyboardCaptured = io.WantCaptureKeyboard;
-      // ImGui needs each tap of a key it reads in a frame of its own only while it has the
-      // keyboard or a popup open (imgui_input_feed.h); otherwise every event goes at once.
-      const bool imguiReadsKeys =
-          keyboardCaptured || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
+      // ImGui needs each tap of a key it reads in a frame of its own while it has the keyboard
+      // or a popup open, and while a panel's own gesture polls Esc / Enter through it (the dope
+      // sheet's and curve editor's drags, G and B: imgui_input_feed.h); else every event goes at once.
+      const bool panelGesture = state.doc.dragging() || state.curveEditor.boxArmed ||
+                                state.curveEditor.drag != CurveEditorState::Drag::None ||
+                                state.dopeSheet.gesture != DopeSheetState::Gesture::None;
+      const bool imguiReadsKeys = keyboardCaptured || panelGesture ||
+                                  ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
       auto widgetByName = [&](std::deque<InputEvent>& queue) {
         if (queue.front().item.empty()) return true;
         // A scripted event naming a widget: at the widget as it was last drawn.

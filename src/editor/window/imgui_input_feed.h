@@ -28,7 +28,8 @@ void feedImGuiEvent(ImGuiIO& io, const InputEvent& e);
 // One frame's share of the queued events, fed to ImGui and then to `dispatch` one by one in
 // queue order. The frame stops before an event that would undo a change ImGui has to see
 // (the release of a button pressed this frame; of a key it reads, while `imguiReadsKeys`:
-// it has the keyboard or a popup open); that event and the rest wait for the next frame. A
+// it has the keyboard or a popup open, or a panel gesture polls Esc / Enter through it);
+// that event and the rest wait for the next frame. A
 // tap of a key ImGui does not read is handled at once, so keymap commands keep pace with the
 // fastest typing at any frame rate. `prepare` (optional) runs on the front event before it
 // is judged (a script's widget name becomes a position; it may push a move in front) and
