@@ -51,6 +51,19 @@ std::vector<glm::vec3> displayNormals(const MeshPrimitive& p) {
   return n;
 }
 
+// What a mesh pass leaves bound (vertex array, the joint, morph and texture units, the
+// program), unbound so the next renderer starts clean.
+void unbindMeshDrawState() {
+  glBindVertexArray(0);
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_BUFFER, 0);
+  glActiveTexture(GL_TEXTURE2);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_BUFFER, 0);
+  glUseProgram(0);
+}
+
 }  // namespace
 
 void packJointTexels(const glm::mat4& m, float* out) {
@@ -409,14 +422,7 @@ void MeshRenderer::draw(const MeshFrame& frame, const glm::mat4& viewProjection,
   glEnable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);  // double-sided: the fragment shader lights back faces too
   drawInstances(frame, true);
-  glBindVertexArray(0);
-  glActiveTexture(GL_TEXTURE1);
-  glBindTexture(GL_TEXTURE_BUFFER, 0);
-  glActiveTexture(GL_TEXTURE2);
-  glBindTexture(GL_TEXTURE_2D, 0);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_BUFFER, 0);
-  glUseProgram(0);
+  unbindMeshDrawState();
 }
 
 void MeshRenderer::drawInstances(const MeshFrame& frame, bool weightsView) {
@@ -492,14 +498,7 @@ void MeshRenderer::drawGhosts(const std::vector<MeshGhost>& ghosts, const glm::m
   glDisable(GL_BLEND);
   glDepthMask(GL_TRUE);
   glDepthFunc(GL_LESS);
-  glBindVertexArray(0);
-  glActiveTexture(GL_TEXTURE1);
-  glBindTexture(GL_TEXTURE_BUFFER, 0);
-  glActiveTexture(GL_TEXTURE2);
-  glBindTexture(GL_TEXTURE_2D, 0);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_BUFFER, 0);
-  glUseProgram(0);
+  unbindMeshDrawState();
 }
 
 std::string MeshRenderer::deform(const MeshFrame& frame, bool skinnedOnly, std::vector<DeformedPrimitive>& out) {
