@@ -87,7 +87,7 @@ struct TimelineRuler {
 };
 constexpr float kTimelineRulerHeight = 19.0f;  // under the row of buttons (the strip is 40 px)
 constexpr float kTimelineRulerMargin = 12.0f;  // left and right, so the end frames' diamonds fit
-// `x, y, w, h`: the timeline strip (panel_layout.h timelineRect), window pixels.
+// `x, y, w, h`: the timeline strip (EditorState::layout.timeline, model/editor_layout.h), window pixels.
 TimelineRuler timelineRuler(const EditorState& state, float x, float y, float w, float h);
 // Frames holding a key of a selected joint (one diamond each), in the edited clip.
 std::vector<long long> selectedKeyFrames(const EditorState& state);

@@ -1,6 +1,6 @@
 // The dope sheet (Blender's): the edited clip's keys as diamonds, one row per keyed joint
 // under a summary row, frames across. Drawn in the animation editor area under the 3D view
-// (panel_layout.h animationEditorRect); the model and the edits are in dope_sheet.h.
+// (EditorState::layout.animationEditor, model/editor_layout.h); the model and the edits are in dope_sheet.h.
 #include <imgui.h>
 
 #include <algorithm>

@@ -3,7 +3,7 @@
 
 namespace kinema {
 
-// The dope sheet in the animation editor area (panel_layout.h animationEditorRect) while
+// The dope sheet in the animation editor area (EditorState::layout.animationEditor, model/editor_layout.h) while
 // state.animationEditor is DopeSheet: joint names, the frame ruler, the keys as diamonds and
 // the current frame. Mouse and keys act on it while the mouse is over it (README controls).
 void drawDopeSheetPanel(EditorState& state);
