@@ -11,21 +11,9 @@ namespace {
 
 using namespace e2e;
 
-class ClipListE2e : public ::testing::Test {
- protected:
-  void SetUp() override {
-    if (runCommand("command -v xvfb-run") != 0) GTEST_SKIP() << "SKIPPED: xvfb-run is not installed";
-    dir_ = makeTempDir();
-  }
-  void TearDown() override {
-    if (!dir_.empty()) runCommand("rm -rf '" + dir_ + "'");
-  }
-  static std::string shotDir() {
-    const std::string dir = std::string(KINEMA_BUILD_DIR) + "/clip_list_e2e";
-    runCommand("mkdir -p '" + dir + "'");
-    return dir;
-  }
-  std::string dir_;
+class ClipListE2e : public TempDirSuite<ClipListE2e> {
+ public:
+  static constexpr const char* kShotFolder = "clip_list_e2e";
 };
 
 TEST_F(ClipListE2e, FoxsRunChosenInTheClipListPlaysAndListEditsUndo) {

@@ -273,6 +273,26 @@ inline json runEditor(const std::string& dir, const std::string& shotDir, const 
   return rc == 0 ? readJson(dump) : json();
 }
 
+// A suite whose tests each launch the editor themselves: a fresh temporary folder (dir_) per
+// test, skipped without xvfb-run; screenshots go to the build dir's Suite::kShotFolder.
+template <typename Suite>
+class TempDirSuite : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (runCommand("command -v xvfb-run") != 0) GTEST_SKIP() << "SKIPPED: xvfb-run is not installed";
+    dir_ = makeTempDir();
+  }
+  void TearDown() override {
+    if (!dir_.empty()) runCommand("rm -rf '" + dir_ + "'");
+  }
+  static std::string shotDir() {
+    const std::string dir = std::string(KINEMA_BUILD_DIR) + "/" + Suite::kShotFolder;
+    runCommand("mkdir -p '" + dir + "'");
+    return dir;
+  }
+  std::string dir_;
+};
+
 // A suite whose tests start from the editor's front view on the default character: the
 // editor runs once for the suite (front_: its dump, the camera for pixel maths), each test
 // gets a fresh temporary folder (dir_), and screenshots go to the build dir's

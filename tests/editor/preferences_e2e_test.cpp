@@ -70,16 +70,9 @@ TEST(PreferencesCli, UiScaleOutsideItsRangeIsOneLineAndExitOne) {
   }
 }
 
-class PreferencesE2e : public ::testing::Test {
- protected:
-  void SetUp() override {
-    if (runCommand("command -v xvfb-run") != 0) GTEST_SKIP() << "SKIPPED: xvfb-run is not installed";
-    dir_ = makeTempDir();
-  }
-  void TearDown() override {
-    if (!dir_.empty()) runCommand("rm -rf '" + dir_ + "'");
-  }
-  std::string dir_;
+class PreferencesE2e : public e2e::TempDirSuite<PreferencesE2e> {
+ public:
+  static constexpr const char* kShotFolder = "preferences_e2e";
 };
 
 TEST_F(PreferencesE2e, UiScaleTwoMakesTheTextTwiceAsTallAndABadFileIsReportedNotFatal) {
