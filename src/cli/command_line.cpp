@@ -1,5 +1,6 @@
 #include "cli/command_line.h"
 
+#include <CLI/CLI.hpp>
 #include <iostream>
 
 #include "skin/default_character_scene.h"
@@ -12,9 +13,20 @@ int badInput(const std::string& message) {
   return kExitBadInput;
 }
 
-Result<Scene> loadSceneOrDefault(const std::string& path) {
-  if (!path.empty()) return loadScene(path);
+Result<Scene> loadSceneOrDefault(const std::string& path, const InputLimits& limits) {
+  if (!path.empty()) return loadScene(path, limits);
   return makeDefaultCharacterScene();
+}
+
+void addAllowOutsidePathsFlag(CLI::App* cmd, bool& allowOutsidePaths) {
+  cmd->add_flag("--allow-outside-paths", allowOutsidePaths,
+                "Let a .gltf's buffer and image uris name files outside its folder (devices, FIFOs and /proc stay refused)");
+}
+
+InputLimits inputLimits(bool allowOutsidePaths) {
+  InputLimits limits;
+  limits.allowOutsidePaths = allowOutsidePaths;
+  return limits;
 }
 
 double frameTimeOf(const Scene& scene, int clip) {

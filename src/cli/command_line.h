@@ -7,6 +7,10 @@
 #include "core/result.h"
 #include "io/scene.h"
 
+namespace CLI {
+class App;
+}
+
 namespace kinema::cli {
 
 // Exit codes of the command-line contract (docs/cli.md).
@@ -18,7 +22,13 @@ constexpr int kExitUsage = 2;     // unknown flag or subcommand, malformed argum
 int badInput(const std::string& message);
 
 // A file, or the default character when `path` is empty.
-Result<Scene> loadSceneOrDefault(const std::string& path);
+Result<Scene> loadSceneOrDefault(const std::string& path, const InputLimits& limits = {});
+
+// --allow-outside-paths, on every command that reads glTF: buffer and image uris may name
+// files outside the glTF file's folder (never devices, FIFOs, sockets or /proc).
+void addAllowOutsidePathsFlag(CLI::App* cmd, bool& allowOutsidePaths);
+// The default input limits with the flag applied.
+InputLimits inputLimits(bool allowOutsidePaths);
 
 // The time to evaluate: --time as given, or --frame N converted with the clip's frame
 // time (1/30 s for clips without a frame grid).

@@ -39,6 +39,7 @@ std::vector<std::string> bvhLosses(const Scene& scene) {
 CLI::App* addConvertCommand(CLI::App& app, ConvertOptions& o) {
   CLI::App* cmd = app.add_subcommand("convert", "Convert between .bvh, .gltf, .glb and .kinema (by extension)");
   cmd->add_option("input", o.input, "The file to read")->required();
+  addAllowOutsidePathsFlag(cmd, o.allowOutsidePaths);
   cmd->add_option("output", o.output, "The file to write (replaced only when the conversion succeeds)")->required();
   cmd->add_option("--rate", o.rate,
                   "Frames per second: BVH frame rate, and the rate glTF resamples curves it cannot hold "
@@ -60,7 +61,7 @@ int runConvert(const ConvertOptions& o) {
   }
   if (!std::isfinite(o.rate) || o.rate < 0.0) return badInput("--rate must be a positive number of frames per second");
 
-  Result<Scene> loaded = loadScene(o.input);
+  Result<Scene> loaded = loadScene(o.input, inputLimits(o.allowOutsidePaths));
   if (!loaded) return badInput(loaded.error());
   const Scene& scene = loaded.value();
   for (const std::string& line : scene.warnings) std::cerr << "kinema convert: warning: " << o.input << ": " << line << "\n";

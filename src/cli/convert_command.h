@@ -6,6 +6,7 @@ namespace kinema::cli {
 
 struct ConvertOptions {
   std::string input, output;
+  bool allowOutsidePaths = false;  // --allow-outside-paths: glTF uris may leave the file's folder
   double rate = 0.0;  // frames per second for BVH output and glTF resampling; 0: the clip's
   std::string rotationOrder = "ZXY";
 };

@@ -18,6 +18,7 @@ namespace kinema::cli {
 CLI::App* addEditCommand(CLI::App& app, EditOptions& o) {
   CLI::App* cmd = app.add_subcommand("edit", "Open the editor window on a file (default: the default character)");
   cmd->add_option("file", o.file, "A .bvh, .kinema, .gltf or .glb file");
+  addAllowOutsidePathsFlag(cmd, o.allowOutsidePaths);
   cmd->add_option("--frame-count", o.frameCount, "Draw N frames, then quit (for tests)");
   cmd->add_option("--screenshot", o.screenshot, "Write the last frame to this PNG (with --frame-count or --script)");
   cmd->add_option("--script", o.script,
@@ -76,9 +77,10 @@ int runEdit(const EditOptions& o) {
     options.script = std::move(script.value());
     options.replay = true;
   }
-  Result<Scene> loaded = loadSceneOrDefault(o.file);
+  Result<Scene> loaded = loadSceneOrDefault(o.file, inputLimits(o.allowOutsidePaths));
   if (!loaded) return badInput(loaded.error());
   EditorState state;
+  state.inputLimits = inputLimits(o.allowOutsidePaths);  // File > Open reads with the same limits
   openDocumentInEditor(state, Document(std::move(loaded.value()), o.file));  // as File > Open does
   if (!o.compare.empty()) {
     if (!findTeachingPreset(o.compare)) {

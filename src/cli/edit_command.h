@@ -9,6 +9,7 @@ namespace kinema::cli {
 //  [--size WxH] [--ui-scale S] [--max-fps N] [--report-frame-times] [--empty-frame] [--compare PRESET] [--list-commands]`
 struct EditOptions {
   std::string file;
+  bool allowOutsidePaths = false;  // --allow-outside-paths: glTF uris may leave the file's folder
   long long frameCount = 0;
   std::string screenshot;
   std::string script;

@@ -52,6 +52,7 @@ int usage(const std::string& message) {
 CLI::App* addIkCommand(CLI::App& app, IkOptions& o) {
   CLI::App* cmd = app.add_subcommand("ik", "Move joints so effectors reach targets (inverse kinematics)");
   cmd->add_option("file", o.file, "A .bvh or .kinema file")->required();
+  addAllowOutsidePathsFlag(cmd, o.allowOutsidePaths);
   cmd->add_option("--effector", o.effectors, "Effector joint name (repeat for several targets)");
   cmd->add_option("--target", o.targets, "Target position X,Y,Z (one per --effector)");
   cmd->add_option("--root", o.roots,
@@ -101,7 +102,7 @@ int runIk(const IkOptions& o) {
   if (o.maxIterations == 0 || o.maxIterations < -1) return badInput("--max-iterations must be at least 1");
   if (o.fabrikFinishAfter < 0) return badInput("--fabrik-finish-after must be >= 0");
 
-  Result<Scene> loaded = loadSceneOrDefault(o.file);
+  Result<Scene> loaded = loadSceneOrDefault(o.file, inputLimits(o.allowOutsidePaths));
   if (!loaded) return badInput(loaded.error());
   const Scene& scene = loaded.value();
   const Skeleton& skeleton = scene.skeleton;

@@ -6,6 +6,7 @@ namespace kinema::cli {
 // `kinema ik FILE --effector NAME --target X,Y,Z [--root NAME] ... [--solver S] [--json]`
 struct IkOptions {
   std::string file;
+  bool allowOutsidePaths = false;  // --allow-outside-paths: glTF uris may leave the file's folder
   std::vector<std::string> effectors, targets, roots;
   std::string rig;
   std::string solver = "fabrik";

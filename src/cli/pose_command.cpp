@@ -13,6 +13,7 @@ namespace kinema::cli {
 CLI::App* addPoseCommand(CLI::App& app, PoseOptions& o) {
   CLI::App* cmd = app.add_subcommand("pose", "Evaluate a file at a time or frame into world joint transforms");
   cmd->add_option("file", o.file, "A .bvh, .kinema, .gltf or .glb file")->required();
+  addAllowOutsidePathsFlag(cmd, o.allowOutsidePaths);
   cmd->add_option("--clip", o.clip, "Clip index (default 0)");
   o.timeOption = cmd->add_option("--time", o.time, "Time in seconds (clamped to the clip)");
   o.frameOption = cmd->add_option("--frame", o.frame, "Frame number (time = N x frame time)");
@@ -27,7 +28,7 @@ int runPose(const PoseOptions& o) {
     return kExitUsage;
   }
   if (!std::isfinite(o.time)) return badInput("--time must be a finite number");
-  Result<Scene> loaded = loadSceneOrDefault(o.file);
+  Result<Scene> loaded = loadSceneOrDefault(o.file, inputLimits(o.allowOutsidePaths));
   if (!loaded) return badInput(loaded.error());
   const Scene& scene = loaded.value();
   if (const std::string bad = clipIndexError(scene, o.clip); !bad.empty()) return badInput(bad);

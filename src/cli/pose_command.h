@@ -6,6 +6,7 @@ namespace kinema::cli {
 // `kinema pose FILE [--clip I] (--time T | --frame N) [--json]`
 struct PoseOptions {
   std::string file;
+  bool allowOutsidePaths = false;  // --allow-outside-paths: glTF uris may leave the file's folder
   int clip = 0;
   double time = 0.0;
   long long frame = 0;

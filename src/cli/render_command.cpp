@@ -90,6 +90,7 @@ std::string expandFramePattern(const std::string& pattern, long long frame) {
 CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
   CLI::App* cmd = app.add_subcommand("render", "Render a skeleton file (or the default character) to PNG, no display needed");
   cmd->add_option("file", o.file, "A .bvh or .kinema file (default: the default character)");
+  addAllowOutsidePathsFlag(cmd, o.allowOutsidePaths);
   cmd->add_option("--clip", o.clip, "Clip index (default 0)");
   o.timeOption = cmd->add_option("--time", o.time, "Time in seconds (clamped to the clip)");
   o.frameOption = cmd->add_option("--frame", o.frame, "Frame number (time = N x frame time)");
@@ -149,7 +150,7 @@ int runRender(const RenderOptions& o) {
   if (sequence && expandFramePattern(o.out, first).empty())
     return badInput("--out " + o.out + ": a sequence needs one frame number in the name, e.g. dir/frame_%04d.png");
 
-  Result<Scene> loaded = loadSceneOrDefault(o.file);
+  Result<Scene> loaded = loadSceneOrDefault(o.file, inputLimits(o.allowOutsidePaths));
   if (!loaded) return badInput(loaded.error());
   const Scene& scene = loaded.value();
   if (const std::string bad = clipIndexError(scene, o.clip); !bad.empty()) return badInput(bad);

@@ -8,6 +8,7 @@ namespace kinema::cli {
 //  [--weights JOINT] [--mesh on|off] --out PATH`
 struct RenderOptions {
   std::string file;
+  bool allowOutsidePaths = false;  // --allow-outside-paths: glTF uris may leave the file's folder
   int clip = 0;
   double time = 0.0;
   long long frame = 0;

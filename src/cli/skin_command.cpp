@@ -14,6 +14,7 @@ namespace kinema::cli {
 CLI::App* addSkinCommand(CLI::App& app, SkinOptions& o) {
   CLI::App* cmd = app.add_subcommand("skin", "Deform a file's skinned meshes at a time into world-space vertices");
   cmd->add_option("file", o.file, "A .gltf, .glb or .kinema file (others have no meshes)")->required();
+  addAllowOutsidePathsFlag(cmd, o.allowOutsidePaths);
   cmd->add_option("--clip", o.clip, "Clip index (default 0)");
   CLI::Option* timeOption = cmd->add_option("--time", o.time, "Time in seconds (default 0, clamped to the clip)");
   o.frameOption = cmd->add_option("--frame", o.frame, "Frame number (time = N x frame time)");
@@ -27,7 +28,7 @@ CLI::App* addSkinCommand(CLI::App& app, SkinOptions& o) {
 
 int runSkin(const SkinOptions& o) {
   if (!std::isfinite(o.time)) return badInput("--time must be a finite number");
-  Result<Scene> loaded = loadScene(o.file);
+  Result<Scene> loaded = loadScene(o.file, inputLimits(o.allowOutsidePaths));
   if (!loaded) return badInput(loaded.error());
   Scene& scene = loaded.value();
   for (const std::string& line : scene.warnings) std::cerr << "kinema skin: warning: " << o.file << ": " << line << "\n";

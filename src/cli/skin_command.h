@@ -7,6 +7,7 @@ namespace kinema::cli {
 // `kinema skin FILE [--clip I] [--time T | --frame N] [--method linear|dq] [--json]`
 struct SkinOptions {
   std::string file;
+  bool allowOutsidePaths = false;  // --allow-outside-paths: glTF uris may leave the file's folder
   int clip = 0;
   double time = 0.0;
   long long frame = 0;

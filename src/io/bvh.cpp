@@ -10,6 +10,7 @@
 #include <sstream>
 #include <unordered_set>
 
+#include "io/message_text.h"
 #include "io/text_file.h"
 
 namespace kinema {
@@ -85,6 +86,8 @@ class BvhParser {
   BvhParser(const std::string& text, const std::string& source, const InputLimits& limits)
       : source_(source), limits_(limits) {
     splitLines(text, lines_);
+    // A UTF-8 byte-order mark (Windows editors write one) is not part of the text.
+    if (!lines_.empty() && lines_[0].compare(0, 3, "\xEF\xBB\xBF") == 0) lines_[0].erase(0, 3);
     endsWithNewline_ = !text.empty() && (text.back() == '\n' || text.back() == '\r');
   }
 
@@ -96,9 +99,12 @@ class BvhParser {
 
  private:
   bool fail(int line, const std::string& message) {
-    error_ = source_ + ":" + std::to_string(line) + ": " + message;
+    error_ = oneLineMessage(source_ + ":" + std::to_string(line) + ": " + message);
     return false;
   }
+
+  // Text from the file quoted in a message: a 50 MB token is not echoed whole.
+  static std::string cut(const std::string& text) { return cutForMessage(text); }
 
   // Hierarchy tokens up to (not including) the MOTION line.
   void tokenizeHierarchy() {
@@ -128,21 +134,21 @@ class BvhParser {
   bool expectWord(const char* word, const char* context) {
     const Token* t = next();
     if (!t) return fail(endLine(), std::string("unexpected end of hierarchy, expected '") + word + "' " + context);
-    if (t->text != word) return fail(t->line, std::string("expected '") + word + "' " + context + ", found '" + t->text + "'");
+    if (t->text != word) return fail(t->line, std::string("expected '") + word + "' " + context + ", found '" + cut(t->text) + "'");
     return true;
   }
 
   int endLine() const { return motionLine_ >= 0 ? motionLine_ + 1 : eofLine(); }
 
   bool readOffset(glm::vec3& offset, const std::string& joint) {
-    if (!expectWord("OFFSET", ("in joint '" + joint + "'").c_str())) return false;
+    if (!expectWord("OFFSET", ("in joint '" + cut(joint) + "'").c_str())) return false;
     const int keywordLine = tokens_[pos_ - 1].line;
     for (int a = 0; a < 3; ++a) {
       const Token* t = next();
-      if (!t) return fail(endLine(), "unexpected end of hierarchy in the OFFSET of '" + joint + "'");
+      if (!t) return fail(endLine(), "unexpected end of hierarchy in the OFFSET of '" + cut(joint) + "'");
       // Reported on the OFFSET line: a short OFFSET runs into the next line's keyword.
       if (!parseFloat(t->text.data(), t->text.data() + t->text.size(), offset[a]))
-        return fail(keywordLine, "OFFSET of '" + joint + "': '" + t->text + "' is not a finite number in float range");
+        return fail(keywordLine, "OFFSET of '" + cut(joint) + "': '" + cut(t->text) + "' is not a finite number in float range");
     }
     return true;
   }
@@ -199,11 +205,11 @@ class BvhParser {
       const bool isEnd = iequals(t.text, "End");
       if (isRoot && !open.empty()) return fail(t.line, "ROOT inside another joint (missing '}'?)");
       if ((isJoint || isEnd) && open.empty())
-        return fail(t.line, "'" + t.text + "' outside any ROOT (extra '}'?)");
+        return fail(t.line, "'" + cut(t.text) + "' outside any ROOT (extra '}'?)");
       if (!isRoot && !isJoint && !isEnd) {
         if (t.text == "CHANNELS" || t.text == "OFFSET")
           return fail(t.line, t.text + " in the wrong place (missing '{' or '}'?)");
-        return fail(t.line, "expected ROOT, JOINT, End Site or '}', found '" + t.text + "'");
+        return fail(t.line, "expected ROOT, JOINT, End Site or '}', found '" + cut(t.text) + "'");
       }
       if (!open.empty() && data_.joints[open.back()].endSite)
         return fail(t.line, "an End Site cannot have children (missing '}'?)");
@@ -220,10 +226,10 @@ class BvhParser {
       } else {
         std::string name;
         if (!readName(t.line, name)) return false;
-        if (names_.count(name)) return fail(t.line, "joint name '" + name + "' is used twice");
+        if (names_.count(name)) return fail(t.line, "joint name '" + cut(name) + "' is used twice");
         names_.insert(name);
         j.name = name;
-        if (!expectWord("{", ("after " + t.text + " " + name).c_str())) return false;
+        if (!expectWord("{", ("after " + cut(t.text) + " " + cut(name)).c_str())) return false;
         if (!readOffset(j.offset, j.name)) return false;
         if (!readChannels(j)) return false;
       }
@@ -235,7 +241,7 @@ class BvhParser {
       open.push_back(static_cast<int>(data_.joints.size()) - 1);
     }
     if (!open.empty())
-      return fail(endLine(), "'" + data_.joints[open.back()].name + "' is not closed (missing '}')");
+      return fail(endLine(), "'" + cut(data_.joints[open.back()].name) + "' is not closed (missing '}')");
     if (motionLine_ < 0) return fail(eofLine(), "no MOTION section");
     if (data_.joints.empty()) return fail(motionLine_ + 1, "no ROOT joint before MOTION");
     return true;
@@ -243,20 +249,20 @@ class BvhParser {
 
   bool readChannels(BvhJoint& j) {
     const Token* t = next();
-    if (!t) return fail(endLine(), "unexpected end of hierarchy, expected CHANNELS in '" + j.name + "'");
-    if (t->text != "CHANNELS") return fail(t->line, "expected CHANNELS in '" + j.name + "', found '" + t->text + "'");
+    if (!t) return fail(endLine(), "unexpected end of hierarchy, expected CHANNELS in '" + cut(j.name) + "'");
+    if (t->text != "CHANNELS") return fail(t->line, "expected CHANNELS in '" + cut(j.name) + "', found '" + cut(t->text) + "'");
     const Token* n = next();
     double count;
     if (!n || !parseNumber(n->text, count) || count < 0 || count > 64 || count != std::floor(count))
-      return fail(t->line, "CHANNELS of '" + j.name + "' needs a channel count");
+      return fail(t->line, "CHANNELS of '" + cut(j.name) + "' needs a channel count");
     for (int c = 0; c < static_cast<int>(count); ++c) {
       const Token* ct = next();
       BvhChannel ch;
       // Reported on the CHANNELS line: a short list runs into the next line's keyword.
       if (!ct || !parseChannel(ct->text, ch))
         return fail(ct ? t->line : endLine(),
-                    "CHANNELS of '" + j.name + "' says " + n->text + " channels but lists " + std::to_string(c) +
-                        (ct ? " (found '" + ct->text + "')" : ""));
+                    "CHANNELS of '" + cut(j.name) + "' says " + cut(n->text) + " channels but lists " + std::to_string(c) +
+                        (ct ? " (found '" + cut(ct->text) + "')" : ""));
       j.channels.push_back(ch);
     }
     j.firstChannel = data_.channelCount;
@@ -272,10 +278,10 @@ class BvhParser {
     const size_t start = s.find_first_not_of(" \t");
     const size_t n = std::strlen(label);
     if (s.compare(start, n, label) != 0)
-      return fail(static_cast<int>(l) + 1, std::string("expected '") + label + "', found '" + trim(s) + "'");
+      return fail(static_cast<int>(l) + 1, std::string("expected '") + label + "', found '" + cut(trim(s)) + "'");
     const std::string rest = trim(s.substr(start + n));
     if (!parseNumber(rest, value))
-      return fail(static_cast<int>(l) + 1, std::string("'") + label + "' needs a number, found '" + rest + "'");
+      return fail(static_cast<int>(l) + 1, std::string("'") + label + "' needs a number, found '" + cut(rest) + "'");
     ++l;
     return true;
   }
@@ -314,7 +320,7 @@ class BvhParser {
         while (q < end && *q != ' ' && *q != '\t') ++q;
         float v;
         if (!parseFloat(p, q, v))
-          return fail(static_cast<int>(l) + 1, "'" + std::string(p, q) + "' is not a finite number in float range (frame " +
+          return fail(static_cast<int>(l) + 1, "'" + cut(std::string(p, q)) + "' is not a finite number in float range (frame " +
                                                    std::to_string(frame) + ", value " + std::to_string(got + 1) + ")");
         if (got < cols) data_.motion.push_back(v);
         ++got;

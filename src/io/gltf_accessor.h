@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "io/message_text.h"
+
 namespace tinygltf {
 class Model;
 }
@@ -17,9 +19,13 @@ struct GltfContext {
   std::string file;
   size_t decodedValues = 0;
   std::vector<std::string> warnings;
+  // Bytes of decoded images still allowed (InputLimits::imageBytesOverFileSize: the file's
+  // size, external files included, + that many bytes).
+  size_t imageBytesLeft = 0;
+  size_t imageBytesOverFileSize = 0;
 
   // "FILE: WHAT": the one-line error every check returns.
-  std::string error(const std::string& what) const { return file + ": " + what; }
+  std::string error(const std::string& what) const { return oneLineMessage(file + ": " + what); }
   // Adds a warning once (the same drop reported by several primitives is said once).
   void warn(const std::string& what);
 };

@@ -28,7 +28,7 @@ std::string decodeImage(GltfContext& ctx, int index, size_t& pixelBudget, Textur
     length = in.image.size();
   }
   if (!data || length == 0 || length > static_cast<size_t>(INT32_MAX)) {
-    ctx.warn(where + " (" + in.uri + ") could not be read: shown without its texture");
+    ctx.warn(where + " (" + cutForMessage(in.uri) + ") could not be read: shown without its texture");
     return {};
   }
   int w = 0, h = 0, channels = 0;
@@ -41,12 +41,19 @@ std::string decodeImage(GltfContext& ctx, int index, size_t& pixelBudget, Textur
     return ctx.error(where + ": " + std::to_string(w) + "x" + std::to_string(h) + " pixels exceed the limit of " +
                      std::to_string(GltfLimits::kMaxImageSide) + " a side or " +
                      std::to_string(GltfLimits::kMaxImagePixels) + " pixels in all");
+  // Memory follows the input: the header's size is checked before decoding.
+  const size_t decodedBytes = static_cast<size_t>(w) * static_cast<size_t>(h) * 4;
+  if (decodedBytes > ctx.imageBytesLeft)
+    return ctx.error(where + ": " + std::to_string(w) + "x" + std::to_string(h) + " pixels would take the file's decoded "
+                     "images past the limit of its size + " + std::to_string(ctx.imageBytesOverFileSize >> 20) +
+                     " MB (InputLimits::imageBytesOverFileSize)");
   unsigned char* pixels = stbi_load_from_memory(data, static_cast<int>(length), &w, &h, &channels, 4);
   if (!pixels) {
     ctx.warn(where + " could not be decoded (" + stbi_failure_reason() + "): shown without its texture");
     return {};
   }
   pixelBudget -= static_cast<size_t>(w) * h;
+  ctx.imageBytesLeft -= decodedBytes;
   out.width = w;
   out.height = h;
   out.rgba.assign(pixels, pixels + static_cast<size_t>(w) * h * 4);

@@ -9,22 +9,18 @@
 #include <fstream>
 #include <unordered_set>
 
+#include "io/gltf_error_text.h"
+#include "io/gltf_external_files.h"
 #include "io/gltf_import_parts.h"
 #include "io/gltf_limits.h"
 #include "io/json_depth.h"
 #include "io/json_syntax.h"
+#include "io/message_text.h"
 #include "io/text_file.h"
 
 namespace kinema {
 
 namespace {
-
-std::string oneLine(std::string s) {
-  for (char& c : s)
-    if (c == '\n' || c == '\r') c = ' ';
-  while (!s.empty() && s.back() == ' ') s.pop_back();
-  return s;
-}
 
 uint32_t readU32(const std::string& b, size_t at) {
   uint32_t v = 0;
@@ -41,27 +37,6 @@ bool keepEncodedImage(tinygltf::Image* image, const int, std::string*, std::stri
   if (bytes && size > 0) image->image.assign(bytes, bytes + size);
   image->width = image->height = -1;
   image->as_is = true;
-  return true;
-}
-
-// External buffers and images: regular files only, no larger than the file cap (a .gltf
-// could otherwise name /dev/zero or a huge file).
-bool readExternalFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
-  struct stat st;
-  if (::stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) {
-    if (err) *err += "cannot read " + path + " (not a regular file)\n";
-    return false;
-  }
-  if (static_cast<uint64_t>(st.st_size) > GltfLimits::kMaxFileBytes) {
-    if (err) *err += path + " is larger than the limit of " + std::to_string(GltfLimits::kMaxFileBytes) + " bytes\n";
-    return false;
-  }
-  std::ifstream f(path, std::ios::binary);
-  out->resize(static_cast<size_t>(st.st_size));
-  if (!f || !f.read(reinterpret_cast<char*>(out->data()), st.st_size)) {
-    if (err) *err += "cannot read " + path + "\n";
-    return false;
-  }
   return true;
 }
 
@@ -252,7 +227,7 @@ std::string importSkins(GltfContext& ctx, const std::vector<int>& jointOfNode, S
 
 }  // namespace
 
-Result<Scene> parseGltf(const std::string& bytes, const std::string& path) {
+Result<Scene> parseGltf(const std::string& bytes, const std::string& path, const InputLimits& limits) {
   using R = Result<Scene>;
   if (bytes.size() > GltfLimits::kMaxFileBytes)
     return R::failure(path + ": " + std::to_string(bytes.size()) + " bytes exceed the limit of " +
@@ -268,13 +243,22 @@ Result<Scene> parseGltf(const std::string& bytes, const std::string& path) {
   tinygltf::Model model;
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(keepEncodedImage, nullptr);
-  loader.SetFsCallbacks({tinygltf::FileExists, tinygltf::ExpandFilePath, readExternalFile, tinygltf::WriteWholeFile, nullptr});
   std::string err, warn;
   const std::string dir = directoryOf(path);
+  GltfExternalFiles files;
+  files.folder = dir;
+  files.allowOutside = limits.allowOutsidePaths;
+  files.maxBytes = std::min(GltfLimits::kMaxFileBytes, limits.maxFileBytes);
+  files.install(loader);
   const bool ok =
       binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
                                            static_cast<unsigned>(bytes.size()), dir)
              : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), static_cast<unsigned>(bytes.size()), dir);
+  GltfErrorText errorText;
+  errorText.json = bytes.data() + jsonOffset;
+  errorText.jsonLength = jsonLength;
+  errorText.treeBudget = jsonTreeBudgetBytes(jsonLength, limits);
+  errorText.files = &files;
   if (!ok) {
     // tinygltf passes on its JSON library's exception text; say in plain words what is wrong.
     const std::string syntax = jsonSyntaxError(bytes.data() + jsonOffset, jsonLength);
@@ -284,11 +268,14 @@ Result<Scene> parseGltf(const std::string& bytes, const std::string& path) {
         return R::failure(path + ": not a glTF file: neither binary glTF (which starts with \"glTF\") nor glTF JSON text");
       return R::failure(path + ": the glTF JSON is malformed at " + syntax);
     }
-    return R::failure(path + ": " + (err.empty() ? std::string("not a glTF 2.0 file") : oneLine(err)));
+    if (err.empty()) return R::failure(path + ": not a glTF 2.0 file");
+    return R::failure(oneLineMessage(path + ": " + errorText.error(err)));
   }
 
   GltfContext ctx{model, path, 0, {}};
-  if (!warn.empty()) ctx.warn(oneLine(warn));
+  ctx.imageBytesLeft = imageBudgetBytes(bytes.size() + files.bytesRead, limits);
+  ctx.imageBytesOverFileSize = limits.imageBytesOverFileSize;
+  for (const std::string& w : errorText.warnings(warn)) ctx.warn(oneLineMessage(w));
   for (const std::string& ext : model.extensionsRequired) {
     if (ext == "KHR_draco_mesh_compression" || ext == "EXT_meshopt_compression")
       return R::failure(ctx.error("requires " + ext + " (compressed geometry), which Kinema does not read"));
@@ -315,10 +302,11 @@ Result<Scene> parseGltf(const std::string& bytes, const std::string& path) {
   return scene;
 }
 
-Result<Scene> loadGltf(const std::string& path) {
+Result<Scene> loadGltf(const std::string& path, const InputLimits& limits) {
   std::string bytes;  // readTextFile reads bytes as they are and stops at the cap
-  if (std::string e = readTextFile(path, bytes, GltfLimits::kMaxFileBytes); !e.empty()) return Result<Scene>::failure(e);
-  return parseGltf(bytes, path);
+  if (std::string e = readTextFile(path, bytes, std::min(GltfLimits::kMaxFileBytes, limits.maxFileBytes)); !e.empty())
+    return Result<Scene>::failure(e);
+  return parseGltf(bytes, path, limits);
 }
 
 }  // namespace kinema

@@ -66,3 +66,15 @@ bool decodePng(const std::string& bytes, int& width, int& height, std::vector<st
 }
 
 }  // namespace kinema
+
+namespace kinema {
+
+bool pngSize(const std::string& bytes, int& width, int& height) {
+  int channels = 0;
+  if (bytes.empty() || bytes.size() > static_cast<size_t>(INT32_MAX)) return false;
+  return stbi_info_from_memory(reinterpret_cast<const unsigned char*>(bytes.data()), static_cast<int>(bytes.size()),
+                               &width, &height, &channels) != 0 &&
+         width > 0 && height > 0;
+}
+
+}  // namespace kinema

@@ -28,5 +28,8 @@ Result<Image> loadPng(const std::string& path);
 // arrays are width * height * 4 RGBA bytes, first row at the top.
 std::string encodePng(int width, int height, const std::uint8_t* rgba);  // "" on failure
 bool decodePng(const std::string& bytes, int& width, int& height, std::vector<std::uint8_t>& rgba);
+// The size a PNG's header states, read without decoding (for memory budgets); false when
+// the bytes are not an image stb reads.
+bool pngSize(const std::string& bytes, int& width, int& height);
 
 }  // namespace kinema

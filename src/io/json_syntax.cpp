@@ -39,6 +39,10 @@ std::string plainReason(const std::string& what) {
   if (dash != std::string::npos) reason = reason.substr(dash + 3);
   const size_t lastRead = reason.find("; last read");
   if (lastRead != std::string::npos) reason = reason.substr(0, lastRead);
+  // "[json.exception.out_of_range.406] number overflow parsing '1e400'": the library's tag off.
+  if (reason.rfind("[json.exception.", 0) == 0 && reason.find("] ") != std::string::npos)
+    reason = reason.substr(reason.find("] ") + 2);
+  if (reason.size() > 160) reason = reason.substr(0, 157) + "...";  // the token it quotes may be huge
   for (char& c : reason)
     if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
   if (reason.rfind("invalid literal", 0) == 0) return "not JSON text here";

@@ -11,7 +11,9 @@
 #include "io/atomic_write.h"
 #include "io/json_depth.h"
 #include "io/image.h"
+#include "io/json_document.h"
 #include "io/json_number.h"
+#include "io/message_text.h"
 #include "io/text_file.h"
 
 namespace kinema {
@@ -95,13 +97,14 @@ std::string oneLine(const std::string& s) {
 // Reads with the JSON path of every value at hand, so errors can point at it.
 class Reader {
  public:
-  explicit Reader(std::string source, const InputLimits& limits = {})
-      : limits(limits), source_(std::move(source)) {}
+  explicit Reader(std::string source, const InputLimits& limits = {}, size_t inputBytes = 0)
+      : limits(limits), imageBytesLeft(imageBudgetBytes(inputBytes, limits)), source_(std::move(source)) {}
   const std::string& error() const { return error_; }
   const InputLimits limits;
+  size_t imageBytesLeft;  // decoded images still allowed (InputLimits::imageBytesOverFileSize)
 
   bool fail(const std::string& path, const std::string& what) {
-    error_ = oneLine(source_ + ": " + (path.empty() ? "" : path + ": ") + what);
+    error_ = oneLineMessage(source_ + ": " + (path.empty() ? "" : path + ": ") + what);
     return false;
   }
 
@@ -195,7 +198,7 @@ bool readSkeleton(Reader& r, const Json& root, Skeleton& s) {
       t.rotation = normalizeIfNeeded(glm::quat(q[3], q[0], q[1], q[2]));
     }
     if ((v = r.member(j, p, "scale", false)) && !r.floats(*v, p + ".scale", 3, &t.scale.x)) return false;
-    if (s.find(name) >= 0) return r.fail(p + ".name", "joint name '" + name + "' is used twice");
+    if (s.find(name) >= 0) return r.fail(p + ".name", "joint name '" + cutForMessage(name) + "' is used twice");
     s.addJoint(name, static_cast<int>(parent), t);
   }
   return true;
@@ -221,7 +224,7 @@ bool readJointName(Reader& r, const Json& obj, const std::string& p, const char*
   std::string name;
   if (!r.string(*v, p + "." + key, name)) return false;
   out = s.find(name);
-  if (out < 0) return r.fail(p + "." + key, "no joint named '" + name + "'");
+  if (out < 0) return r.fail(p + "." + key, "no joint named '" + cutForMessage(name) + "'");
   return true;
 }
 
@@ -250,14 +253,14 @@ bool readLimit(Reader& r, const Json& j, const std::string& p, Scene& scene) {
     std::string order = "XYZ";
     if ((v = r.member(j, p, "order", false)) && !r.string(*v, p + ".order", order)) return false;
     const std::optional<EulerOrder> o = eulerOrderFromString(order);
-    if (!o) return r.fail(p + ".order", "'" + order + "' is not an Euler order (XYZ, ZXY, ...)");
+    if (!o) return r.fail(p + ".order", "'" + cutForMessage(order) + "' is not an Euler order (XYZ, ZXY, ...)");
     l.order = *o;
     if (!(v = r.member(j, p, "min_deg", true)) || !r.floats(*v, p + ".min_deg", 3, &l.eulerMin.x)) return false;
     if (!(v = r.member(j, p, "max_deg", true)) || !r.floats(*v, p + ".max_deg", 3, &l.eulerMax.x)) return false;
     l.eulerMin *= kDeg;
     l.eulerMax *= kDeg;
   } else {
-    return r.fail(p + ".type", "'" + type + "' is not one of hinge, cone, euler");
+    return r.fail(p + ".type", "'" + cutForMessage(type) + "' is not one of hinge, cone, euler");
   }
   const std::string bad = l.validate();
   if (!bad.empty()) return r.fail(p, bad);
@@ -360,7 +363,7 @@ bool readPose(Reader& r, const Json& root, Scene& scene) {
     if (!j.is_object()) return r.fail(p, "expected an object");
     int joint = -1;
     if (!readJointName(r, j, p, "joint", s, true, joint)) return false;
-    if (seen[joint]) return r.fail(p + ".joint", "joint '" + s.names[joint] + "' is listed twice");
+    if (seen[joint]) return r.fail(p + ".joint", "joint '" + cutForMessage(s.names[joint]) + "' is listed twice");
     seen[joint] = true;
     Transform& t = pose.local[joint];
     const Json* v;
@@ -480,7 +483,7 @@ template <typename E>
 bool readEnum(Reader& r, const Json& j, const std::string& path, E& out, const char* accepted) {
   std::string text;
   if (!r.string(j, path, text)) return false;
-  if (!fromString(text, out)) return r.fail(path, "'" + text + "' is not one of " + accepted);
+  if (!fromString(text, out)) return r.fail(path, "'" + cutForMessage(text) + "' is not one of " + accepted);
   return true;
 }
 
@@ -558,7 +561,7 @@ bool readChannel(Reader& r, const Json& j, const std::string& p, const Skeleton&
   if ((v = r.member(j, p, "joint", !scalar))) {
     if (!r.string(*v, p + ".joint", text)) return false;
     ch.joint = s.find(text);
-    if (ch.joint < 0) return r.fail(p + ".joint", "no joint named '" + text + "'");
+    if (ch.joint < 0) return r.fail(p + ".joint", "no joint named '" + cutForMessage(text) + "'");
   } else if (!scalar) {
     return false;
   }
@@ -566,7 +569,7 @@ bool readChannel(Reader& r, const Json& j, const std::string& p, const Skeleton&
   if ((v = r.member(j, p, "euler_order", false))) {
     if (!r.string(*v, p + ".euler_order", text)) return false;
     const std::optional<EulerOrder> order = eulerOrderFromString(text);
-    if (!order) return r.fail(p + ".euler_order", "'" + text + "' is not one of XYZ, XZY, YXZ, YZX, ZXY, ZYX");
+    if (!order) return r.fail(p + ".euler_order", "'" + cutForMessage(text) + "' is not one of XYZ, XZY, YXZ, YZX, ZXY, ZYX");
     ch.eulerOrder = *order;
   }
   if ((v = r.member(j, p, "interpolation", false))) {
@@ -872,7 +875,7 @@ bool readNamedJoint(Reader& r, const Json& j, const std::string& p, const Skelet
   std::string name;
   if (!r.string(j, p, name)) return false;
   out = s.find(name);
-  if (out < 0) return r.fail(p, "no joint named '" + name + "'");
+  if (out < 0) return r.fail(p, "no joint named '" + cutForMessage(name) + "'");
   return true;
 }
 
@@ -911,7 +914,17 @@ bool readSceneAssets(Reader& r, const Json& root, Scene& scene) {
              if ((v = r.member(j, p, "name", false)) && !r.string(*v, p + ".name", im.name)) return false;
              if (!(v = r.member(j, p, "png", true)) || !r.string(*v, p + ".png", text)) return false;
              if (!fromBase64(text, png)) return r.fail(p + ".png", "not base64 text");
+             // The header's size is checked against the file's image budget before decoding.
+             int w = 0, h = 0;
+             if (!pngSize(png, w, h)) return r.fail(p + ".png", "not a PNG image");
+             const size_t bytes = static_cast<size_t>(w) * static_cast<size_t>(h) * 4;
+             if (bytes > r.imageBytesLeft)
+               return r.fail(p + ".png", std::to_string(w) + " x " + std::to_string(h) + " pixels would take the file's "
+                             "decoded images past the limit of its size + " +
+                             std::to_string(r.limits.imageBytesOverFileSize >> 20) +
+                             " MB (InputLimits::imageBytesOverFileSize)");
              if (!decodePng(png, im.width, im.height, im.rgba)) return r.fail(p + ".png", "not a PNG image");
+             r.imageBytesLeft -= bytes;
              scene.images.push_back(std::move(im));
              return true;
            }) &&
@@ -1247,34 +1260,39 @@ std::string toKinemaJson(const Scene& scene) {
   return collapseNumberArrays(root.dump(1, '\t')) + "\n";
 }
 
+namespace {
+
+// The scene in a parsed .kinema tree; `inputBytes` (the file's size) sets its image budget.
+Result<Scene> readKinemaTree(const Json& root, const std::string& source, const InputLimits& limits, size_t inputBytes);
+
+}  // namespace
+
 Result<Scene> parseKinemaJson(const std::string& text, const std::string& source, const InputLimits& limits) {
-  const int depth = jsonNestingDepth(text.data(), text.size());
-  if (depth > limits.maxJsonDepth)
-    return Result<Scene>::failure(
-        source + ": JSON nested " + limitExceeded(depth, limits.maxJsonDepth, "levels deep", "maxJsonDepth"));
   Json root;
-  try {
-    root = Json::parse(text);
-  } catch (const Json::exception& e) {
-    return Result<Scene>::failure(oneLine(source + ": not valid JSON: " + e.what()));
-  }
-  Reader r(source, limits);
+  if (std::string e = parseJsonDocument(text, source, limits, root); !e.empty()) return Result<Scene>::failure(e);
+  return readKinemaTree(root, source, limits, text.size());
+}
+
+namespace {
+
+Result<Scene> readKinemaTree(const Json& root, const std::string& source, const InputLimits& limits, size_t inputBytes) {
+  Reader r(source, limits, inputBytes);
   if (!root.is_object()) return Result<Scene>::failure(source + ": expected a JSON object at the top");
   std::string format;
   const Json* v;
   if (!(v = r.member(root, "", "format", true)) || !r.string(*v, "format", format))
     return Result<Scene>::failure(r.error());
   if (format != "kinema")
-    return Result<Scene>::failure(oneLine(source + ": format: expected \"kinema\", found \"" + format + "\""));
+    return Result<Scene>::failure(oneLineMessage(source + ": format: expected \"kinema\", found \"" + cutForMessage(format) + "\""));
   long long version = 0;
   if (!(v = r.member(root, "", "version", true)) || !r.integer(*v, "version", version))
     return Result<Scene>::failure(r.error());
   if (version > kKinemaFormatVersion)
-    return Result<Scene>::failure(oneLine(source + ": version: the file is version " + std::to_string(version) +
+    return Result<Scene>::failure(oneLineMessage(source + ": version: the file is version " + std::to_string(version) +
                                           ", newer than this Kinema reads (up to version " +
                                           std::to_string(kKinemaFormatVersion) + "); update Kinema to open it"));
   if (version < 1)
-    return Result<Scene>::failure(oneLine(source + ": version: " + std::to_string(version) +
+    return Result<Scene>::failure(oneLineMessage(source + ": version: " + std::to_string(version) +
                                           " is not a Kinema format version (they start at 1)"));
   Scene scene;
   scene.source = source;
@@ -1285,22 +1303,16 @@ Result<Scene> parseKinemaJson(const std::string& text, const std::string& source
   if (!readPlayhead(r, root, scene)) return Result<Scene>::failure(r.error());
   if (!readSceneAssets(r, root, scene)) return Result<Scene>::failure(r.error());
   const std::string bad = scene.skeleton.validate();
-  if (!bad.empty()) return Result<Scene>::failure(oneLine(source + ": skeleton: " + bad));
+  if (!bad.empty()) return Result<Scene>::failure(oneLineMessage(source + ": skeleton: " + bad));
   return scene;
 }
 
+}  // namespace
+
 Result<IkRig> parseIkRigJson(const std::string& text, const std::string& source, const Skeleton& skeleton) {
   const InputLimits limits;
-  const int depth = jsonNestingDepth(text.data(), text.size());
-  if (depth > limits.maxJsonDepth)
-    return Result<IkRig>::failure(
-        source + ": JSON nested " + limitExceeded(depth, limits.maxJsonDepth, "levels deep", "maxJsonDepth"));
   Json root;
-  try {
-    root = Json::parse(text);
-  } catch (const Json::exception& e) {
-    return Result<IkRig>::failure(oneLine(source + ": not valid JSON: " + e.what()));
-  }
+  if (std::string e = parseJsonDocument(text, source, limits, root); !e.empty()) return Result<IkRig>::failure(e);
   Reader r(source);
   Scene scene;
   scene.skeleton = skeleton;
@@ -1312,7 +1324,11 @@ Result<Scene> loadKinemaFile(const std::string& path, const InputLimits& limits)
   std::string text;
   const std::string error = readTextFile(path, text, limits.maxFileBytes);
   if (!error.empty()) return Result<Scene>::failure(error);
-  return parseKinemaJson(text, path, limits);
+  Json root;
+  if (std::string e = parseJsonDocument(text, path, limits, root); !e.empty()) return Result<Scene>::failure(e);
+  const size_t inputBytes = text.size();
+  std::string().swap(text);  // the tree holds it all now: the text's memory goes before the scene is built
+  return readKinemaTree(root, path, limits, inputBytes);
 }
 
 std::string saveKinemaFile(const std::string& path, const Scene& scene) {

@@ -30,7 +30,7 @@ Result<Scene> loadScene(const std::string& path, const InputLimits& limits) {
     return scene;
   }
   if (ext == ".kinema") return loadKinemaFile(path, limits);
-  if (ext == ".gltf" || ext == ".glb") return loadGltf(path);  // its caps: io/gltf_limits.h
+  if (ext == ".gltf" || ext == ".glb") return loadGltf(path, limits);  // its own caps too: io/gltf_limits.h
   return Result<Scene>::failure(path + ": unsupported file type '" + ext +
                                 "' (Kinema reads .bvh, .kinema, .gltf and .glb)");
 }

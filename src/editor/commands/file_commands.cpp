@@ -23,7 +23,7 @@ void rememberRecent(EditorState& state, const std::string& path) {
 }
 
 void openNow(EditorState& state, const std::string& path) {
-  Result<Document> opened = openDocument(path);
+  Result<Document> opened = openDocument(path, state.inputLimits);
   if (!opened) {
     showEditorError(state, opened.error());
     std::error_code ec;

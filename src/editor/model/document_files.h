@@ -14,7 +14,7 @@ namespace kinema {
 Document newDocument();
 // .kinema, .gltf, .glb or .bvh (io/scene.h loadScene); the pose saved in a .kinema file
 // becomes the working pose.
-Result<Document> openDocument(const std::string& path);
+Result<Document> openDocument(const std::string& path, const InputLimits& limits = {});
 // Ctrl+S: to the document's own path; needs Save As when it has none or is not .kinema.
 bool canSaveInPlace(const Document& doc);
 std::string saveDocument(Document& doc);

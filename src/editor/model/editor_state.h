@@ -97,6 +97,7 @@ struct EditorState {
   CurveEditorState curveEditor;  // the curve editor's view, channel toggles and key selection
   DopeSheetState dopeSheet;  // the dope sheet's selection, view, clipboard and mouse gesture
   std::string statusMessage;  // one line for the status bar (errors included)
+  InputLimits inputLimits;    // what File > Open lets a file ask for (kinema edit --allow-outside-paths)
   ItemRects items;  // where the named widgets were drawn (scripts click them by name; item_rects.h)
   // Onion skin, motion path, motion control (View menu; onion_skin.h, motion_path.h, motion_control.h).
   OnionSkinSettings onionSkin;
