@@ -120,6 +120,10 @@ std::string GltfErrorText::error(const std::string& err) const {
   const auto uriProblem = [&](const std::string& decoded, const std::string& fallback) {
     std::string why = files ? files->whyRefused(decoded) : std::string();
     if (why.empty()) why = fallback;
+    // tinygltf takes a data URI it cannot decode for a file name.
+    if (startsWith(decoded, "data:"))
+      why = "is not a base64 data URI of a type glTF reads (data:application/octet-stream;base64,..., "
+            "data:image/png;base64,...)";
     std::string place;
     if (json && jsonTreeBytes(json, jsonLength) <= treeBudget) {
       const Json root = Json::parse(json, json + jsonLength, nullptr, false);

@@ -43,10 +43,12 @@ std::string decodeImage(GltfContext& ctx, int index, size_t& pixelBudget, Textur
                      std::to_string(GltfLimits::kMaxImagePixels) + " pixels in all");
   // Memory follows the input: the header's size is checked before decoding.
   const size_t decodedBytes = static_cast<size_t>(w) * static_cast<size_t>(h) * 4;
-  if (decodedBytes > ctx.imageBytesLeft)
-    return ctx.error(where + ": " + std::to_string(w) + "x" + std::to_string(h) + " pixels would take the file's decoded "
-                     "images past the limit of its size + " + std::to_string(ctx.imageBytesOverFileSize >> 20) +
-                     " MB (InputLimits::imageBytesOverFileSize)");
+  if (decodedBytes > ctx.imageBytesLeft) {
+    ctx.warn(where + ": " + std::to_string(w) + "x" + std::to_string(h) + " pixels would take the file's decoded images "
+             "past the limit of its size + " + std::to_string(ctx.imageBytesOverFileSize >> 20) +
+             " MB (InputLimits::imageBytesOverFileSize): shown without its texture");
+    return {};
+  }
   unsigned char* pixels = stbi_load_from_memory(data, static_cast<int>(length), &w, &h, &channels, 4);
   if (!pixels) {
     ctx.warn(where + " could not be decoded (" + stbi_failure_reason() + "): shown without its texture");

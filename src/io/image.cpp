@@ -8,6 +8,9 @@
 #include <cstdlib>
 
 #include "io/atomic_write.h"
+#include "io/input_limits.h"
+#include "io/message_text.h"
+#include "io/text_file.h"
 
 namespace kinema {
 
@@ -30,12 +33,19 @@ std::string savePng(const std::string& path, const Image& image) {
 }
 
 Result<Image> loadPng(const std::string& path) {
-  int w = 0, h = 0, channels = 0;
-  unsigned char* data = stbi_load(path.c_str(), &w, &h, &channels, 4);
-  if (!data) return Result<Image>::failure(path + ": cannot read PNG: " + stbi_failure_reason());
-  Image image(w, h);
-  std::copy(data, data + static_cast<size_t>(w) * h * 4, image.rgba.begin());
-  stbi_image_free(data);
+  // Through the readers' checks (regular files only, the size cap) and the image budget.
+  std::string bytes;
+  const InputLimits limits;
+  if (std::string e = readTextFile(path, bytes, limits.maxFileBytes); !e.empty()) return Result<Image>::failure(e);
+  Image image;
+  if (!pngSize(bytes, image.width, image.height)) return Result<Image>::failure(path + ": not a PNG image");
+  if (static_cast<size_t>(image.width) * static_cast<size_t>(image.height) * 4 > imageBudgetBytes(bytes.size(), limits))
+    return Result<Image>::failure(path + ": " + std::to_string(image.width) + " x " + std::to_string(image.height) +
+                                  " pixels would take more than the file's size + " +
+                                  std::to_string(limits.imageBytesOverFileSize >> 20) +
+                                  " MB (InputLimits::imageBytesOverFileSize)");
+  if (!decodePng(bytes, image.width, image.height, image.rgba))
+    return Result<Image>::failure(path + ": cannot read PNG: " + cutForMessage(stbi_failure_reason() ? stbi_failure_reason() : "not a PNG image"));
   return image;
 }
 

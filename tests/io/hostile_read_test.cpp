@@ -233,13 +233,17 @@ TEST_F(HostileRead, TinygltfMessagesGetTheirObjectIndex) {
   expectRefused(runKinema({"pose", dir + "/count.gltf", "--frame=0"}),
                 {dir + "/count.gltf: accessor 0: 'count' property is not a positive integer"});
   std::string stride = gltfWithBufferUri("inside.bin");
-  stride.replace(stride.find("\"byteLength\": 36}]"), 18, "\"byteLength\": 36, \"byteStride\": 13}]");
+  const std::string view = R"("bufferViews": [{"buffer": 0, "byteLength": 36})";
+  stride.replace(stride.find(view), view.size(), R"("bufferViews": [{"buffer": 0, "byteLength": 36, "byteStride": 13})");
   writeFile(dir + "/stride.gltf", stride);
   expectRefused(runKinema({"pose", dir + "/stride.gltf", "--frame=0"}), {"stride.gltf: bufferView 0: ", "byteStride"});
   std::string missing = gltfWithBufferUri("missing.bin");
   writeFile(dir + "/missing.gltf", missing);
   expectRefused(runKinema({"pose", dir + "/missing.gltf", "--frame=0"}),
                 {"missing.gltf: buffer 0: uri 'missing.bin' is not there"});
+  writeFile(dir + "/data.gltf", gltfWithBufferUri("data:application/zip;base64,AAAA"));
+  expectRefused(runKinema({"pose", dir + "/data.gltf", "--frame=0"}),
+                {"data.gltf: buffer 0: uri 'data:application/zip;base64,AAAA' is not a base64 data URI"});
   // A number past double's range: the line it is on.
   writeFile(dir + "/overflow.gltf", "{\"asset\": {\"version\": \"2.0\"},\n\"nodes\": [{\"translation\": [1e400, 0, 0]}]}");
   expectRefused(runKinema({"pose", dir + "/overflow.gltf", "--frame=0"}),
@@ -326,6 +330,28 @@ TEST_F(HostileRead, ImagesAreCountedAgainstTheFilesBudgetBeforeDecoding) {
   EXPECT_EQ(r.error().rfind("four.kinema: images[3].png: ", 0), 0u) << r.error();
 }
 
+TEST_F(HostileRead, AGltfImageOverTheBudgetIsDroppedWithAWarningNotDecoded) {
+  // A base-colour image whose header claims 8192 x 8192 (256 MiB decoded) in a tiny .gltf:
+  // the file loads, the image is not decoded and a warning names the limit.
+  const std::string gltf = R"({"asset": {"version": "2.0"}, "nodes": [{"name": "n"}], "images": [{"uri": )"
+                           R"("data:image/png;base64,)" + base64(pngClaiming(4, 4, 8192, 8192)) +
+                           R"("}], "textures": [{"source": 0}], "materials": [{"pbrMetallicRoughness": )"
+                           R"({"baseColorTexture": {"index": 0}}}]})";
+  writeFile(dir + "/claim.gltf", gltf);
+  const Result<Scene> scene = loadScene(dir + "/claim.gltf");
+  ASSERT_TRUE(scene) << scene.error();
+  ASSERT_EQ(scene->images.size(), 1u);
+  EXPECT_TRUE(scene->images[0].rgba.empty());
+  bool warned = false;
+  for (const std::string& w : scene->warnings)
+    warned = warned || (w.rfind("image 0: 8192x8192 pixels would take", 0) == 0 &&
+                        w.find("(InputLimits::imageBytesOverFileSize): shown without its texture") != std::string::npos);
+  EXPECT_TRUE(warned) << ::testing::PrintToString(scene->warnings);
+  const ChildRun run = runKinema({"pose", dir + "/claim.gltf", "--frame=0"});
+  EXPECT_EQ(run.exitCode, 0) << run.err;
+  expectBoundedMemory(run, static_cast<long long>(gltf.size()));
+}
+
 TEST_F(HostileRead, AKinemaFileOfZerosIsRefusedBeforeItsTreeIsBuilt) {
   // A large array of zeros: 2 bytes of text, 16 bytes as a JSON value.
   const size_t megabytes = hostileMegabytes(200);
@@ -359,7 +385,7 @@ TEST(MessageText, CutsLongTextAtACharacterBoundaryAndKeepsOneLine) {
   EXPECT_EQ(cutForMessage("short"), "short");
   EXPECT_EQ(cutForMessage(std::string(100, 'a'), 10), "aaaaaaa\xe2\x80\xa6");
   // "é" is two bytes: a cut never splits it.
-  const std::string cut = cutForMessage(std::string(6, 'a') + "\xc3\xa9\xc3\xa9", 10);
+  const std::string cut = cutForMessage(std::string(6, 'a') + "\xc3\xa9\xc3\xa9\xc3\xa9", 10);
   EXPECT_EQ(cut, "aaaaaa\xe2\x80\xa6");
   EXPECT_EQ(cutForMessage("a\nb"), "a\\x0ab");
   const std::string line = oneLineMessage("file: " + std::string(1000, 'x') + "\nmore");
