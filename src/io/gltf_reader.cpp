@@ -266,7 +266,7 @@ Result<Scene> parseGltf(const std::string& bytes, const std::string& path, const
       const size_t first = bytes.find_first_not_of(" \t\r\n");
       if (!binary && (first == std::string::npos || bytes[first] != '{'))
         return R::failure(path + ": not a glTF file: neither binary glTF (which starts with \"glTF\") nor glTF JSON text");
-      return R::failure(path + ": the glTF JSON is malformed at " + syntax);
+      return R::failure(oneLineMessage(path + ": the glTF JSON is malformed at " + syntax));
     }
     if (err.empty()) return R::failure(path + ": not a glTF 2.0 file");
     return R::failure(oneLineMessage(path + ": " + errorText.error(err)));
