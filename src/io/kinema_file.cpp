@@ -1122,6 +1122,7 @@ std::string sceneAssetsError(const Scene& scene) {
   }
   for (size_t i = 0; i < scene.images.size(); ++i) {
     const TextureImage& im = scene.images[i];
+    if (isUndecodedImage(im)) continue;  // not saved (withoutUndecodedImages)
     if (im.width <= 0 || im.height <= 0 || im.rgba.size() != static_cast<size_t>(im.width) * im.height * 4)
       return "image " + std::to_string(i) + " is empty or its size is inconsistent";
   }
@@ -1345,7 +1346,8 @@ std::string saveKinemaFile(const std::string& path, const Scene& scene) {
   if (!bad.empty()) return oneLine(path + ": not saved: " + bad);
   std::string text;
   try {
-    text = toKinemaJson(scene);
+    // An image that failed to decode on loading (with a warning) is left out, not refused.
+    text = hasUndecodedImages(scene) ? toKinemaJson(withoutUndecodedImages(scene)) : toKinemaJson(scene);
   } catch (const Json::exception& e) {
     return oneLine(path + ": not saved: " + e.what());
   }
