@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <unordered_map>
 #include <nlohmann/json.hpp>
 
 #include "core/rotation.h"
@@ -99,6 +100,14 @@ class Reader {
       : limits(limits), source_(std::move(source)) {}
   const std::string& error() const { return error_; }
   const InputLimits limits;
+  // Joint name -> index, filled as the skeleton is read: lookups by name stay constant time
+  // (Skeleton::find is a linear scan, quadratic over a 200,000-joint file).
+  std::unordered_map<std::string, int> jointIndex;
+  int joint(const Skeleton& s, const std::string& name) const {
+    if (jointIndex.size() != static_cast<size_t>(s.size())) return s.find(name);  // another skeleton
+    const auto it = jointIndex.find(name);
+    return it == jointIndex.end() ? -1 : it->second;
+  }
 
   bool fail(const std::string& path, const std::string& what) {
     error_ = oneLine(source_ + ": " + (path.empty() ? "" : path + ": ") + what);
@@ -195,7 +204,8 @@ bool readSkeleton(Reader& r, const Json& root, Skeleton& s) {
       t.rotation = normalizeIfNeeded(glm::quat(q[3], q[0], q[1], q[2]));
     }
     if ((v = r.member(j, p, "scale", false)) && !r.floats(*v, p + ".scale", 3, &t.scale.x)) return false;
-    if (s.find(name) >= 0) return r.fail(p + ".name", "joint name '" + name + "' is used twice");
+    if (!r.jointIndex.emplace(name, s.size()).second)
+      return r.fail(p + ".name", "joint name '" + name + "' is used twice");
     s.addJoint(name, static_cast<int>(parent), t);
   }
   return true;
@@ -220,7 +230,7 @@ bool readJointName(Reader& r, const Json& obj, const std::string& p, const char*
   if (!v) return !required;
   std::string name;
   if (!r.string(*v, p + "." + key, name)) return false;
-  out = s.find(name);
+  out = r.joint(s, name);
   if (out < 0) return r.fail(p + "." + key, "no joint named '" + name + "'");
   return true;
 }
@@ -557,7 +567,7 @@ bool readChannel(Reader& r, const Json& j, const std::string& p, const Skeleton&
   const bool scalar = ch.target == ChannelTarget::Scalar;
   if ((v = r.member(j, p, "joint", !scalar))) {
     if (!r.string(*v, p + ".joint", text)) return false;
-    ch.joint = s.find(text);
+    ch.joint = r.joint(s, text);
     if (ch.joint < 0) return r.fail(p + ".joint", "no joint named '" + text + "'");
   } else if (!scalar) {
     return false;
@@ -871,7 +881,7 @@ bool readPrimitive(Reader& r, const Json& j, const std::string& p, Scene& scene,
 bool readNamedJoint(Reader& r, const Json& j, const std::string& p, const Skeleton& s, int& out) {
   std::string name;
   if (!r.string(j, p, name)) return false;
-  out = s.find(name);
+  out = r.joint(s, name);
   if (out < 0) return r.fail(p, "no joint named '" + name + "'");
   return true;
 }
