@@ -376,21 +376,34 @@ double rateFor(const Clip& clip, const GltfWriteOptions& options) {
   return 30.0;
 }
 
-// Resampling allocates duration x rate keys per curve, and a file controls both (key times
-// near 3e38, a denormal frame time): a rate that is not a finite number (1 / a denormal)
-// becomes 30 fps, and the rate is lowered until a curve needs at most kMaxResampledKeys
-// samples; all in double, so nothing overflows.
-double cappedRate(double duration, double rate) {
-  if (!std::isfinite(rate) || !(rate > 0.0)) rate = 30.0;
-  if (duration > 0.0 && !(duration * rate <= kMaxResampledKeys)) rate = kMaxResampledKeys / duration;
-  return rate;
-}
-
 std::string numberText(double v) {
   std::ostringstream o;
   o.precision(4);
   o << v;
   return o.str();
+}
+
+// A rate that is not a finite number (1 / a denormal frame time) resamples at 30 fps.
+double usableRate(double rate) { return std::isfinite(rate) && rate > 0.0 ? rate : 30.0; }
+
+// Resampling allocates duration x rate keys per curve and a file controls both (key times
+// near 3e38): a clip that would need more than kMaxResampledKeys is refused, but only when
+// one of its curves must be resampled (converted at rate 0: keys only, no allocation);
+// exact STEP / LINEAR / CUBICSPLINE curves of any length export. Counts are doubles, so
+// the message cannot overflow. Morph weights may share a resampled grid: refused too.
+std::string resamplingError(const Clip& clip, size_t index, double rate) {
+  const double duration = double(clip.duration());
+  const double samples = duration * rate;
+  if (samples <= kMaxResampledKeys) return {};
+  for (const Channel& ch : clip.channels) {
+    if (ch.times.size() < 2) continue;
+    if (ch.target != ChannelTarget::Scalar && !toGltfSampler(ch, 0.0).resampled) continue;
+    if (ch.target == ChannelTarget::Scalar && ch.property.rfind("weights/", 0) != 0) continue;  // dropped anyway
+    return "cannot export: clip " + std::to_string(index) + " would need " + numberText(samples) +
+           " samples per resampled curve (" + numberText(duration) + " s at " + numberText(rate) + " fps; at most " +
+           numberText(kMaxResampledKeys) + ")";
+  }
+  return {};
 }
 
 // The file's name without folder and extension ("walk" for "data/walk.bvh"), or "Armature".
@@ -402,7 +415,7 @@ std::string armatureName(const std::string& source) {
   return stem.empty() ? "Armature" : stem;
 }
 
-// A scene without skins (BVH, a .kinema of a bare skeleton) still gets one skin per joint
+// A scene without skins or meshes (BVH, a .kinema of a bare skeleton) gets one skin per joint
 // tree, joints = the tree's joints, inverse bind matrices = inverses of the rest pose's world
 // matrices, as Blender's exporter writes an armature without a mesh: importers (Blender's
 // among them) then build an armature instead of a hierarchy of empties. glTF asks a skin's
@@ -458,6 +471,9 @@ Result<std::string> gltfBytes(const Scene& scene, const GltfWriteOptions& option
   if (!bad.empty()) return Result<std::string>::failure(bad);
   if (!(options.resampleRate >= 0.0) || !std::isfinite(options.resampleRate))
     return Result<std::string>::failure("cannot export: the resample rate must be a positive number of frames per second");
+  for (size_t c = 0; c < scene.clips.size(); ++c)
+    if (std::string e = resamplingError(scene.clips[c], c, usableRate(rateFor(scene.clips[c], options))); !e.empty())
+      return Result<std::string>::failure(e);
   auto note = [&](const std::string& line) {
     if (report) report->push_back(line);
   };
@@ -510,7 +526,10 @@ Result<std::string> gltfBytes(const Scene& scene, const GltfWriteOptions& option
   }
 
   std::vector<std::string> skinNotes;
-  const std::vector<Skin> armature = scene.skins.empty() ? armatureSkins(scene, skinNotes) : std::vector<Skin>{};
+  // Only a bare skeleton becomes an armature: a file with meshes but no skins (a prop, a
+  // morphing cube) keeps its plain nodes, as Blender would export it.
+  const std::vector<Skin> armature =
+      scene.skins.empty() && scene.meshes.empty() ? armatureSkins(scene, skinNotes) : std::vector<Skin>{};
   for (const std::string& line : skinNotes) note(line);
   for (const Skin& skin : scene.skins.empty() ? armature : scene.skins) {
     tinygltf::Skin s;
@@ -559,7 +578,7 @@ Result<std::string> gltfBytes(const Scene& scene, const GltfWriteOptions& option
   for (size_t c = 0; c < scene.clips.size(); ++c) {
     const Clip& clip = scene.clips[c];
     const double wanted = rateFor(clip, options);
-    const double rate = cappedRate(double(clip.duration()), wanted);
+    const double rate = usableRate(wanted);
     const size_t before = report ? report->size() : 0;
     animations.add(clip, c, rate);
     // Said only when a curve was resampled at the lowered rate (its own line follows).
@@ -569,10 +588,7 @@ Result<std::string> gltfBytes(const Scene& scene, const GltfWriteOptions& option
       report->insert(report->begin() + static_cast<long>(before),
                      "clip '" + (clip.name.empty() ? std::to_string(c) : clip.name) + "': resampled at " +
                          numberText(rate) + " fps instead of " + numberText(wanted) + " fps (" +
-                         (std::isfinite(wanted) ? numberText(double(clip.duration())) + " s would be more than " +
-                                                      numberText(kMaxResampledKeys) + " samples per curve"
-                                                : std::string("its frame time is too small to resample at")) +
-                         ")");
+                         "its frame time is too small to resample at)");
   }
   if (!scene.ik.empty()) note("IK limits and targets dropped (glTF has no place for them; .kinema keeps them)");
 

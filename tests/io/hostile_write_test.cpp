@@ -199,7 +199,7 @@ Scene oneChannelScene(float t0, float t1, Interpolation mode, ChannelTarget targ
 
 bool oneLineUnder300(const std::string& s) { return s.find('\n') == std::string::npos && s.size() <= 300; }
 
-TEST(HostileWrite, SampleCountsNearTheFloatLimitNeitherOverflowNorRefuseWhatGltfCanHold) {
+TEST(HostileWrite, SampleCountsNearTheFloatLimitDoNotOverflowAndOnlyResamplingIsRefused) {
   // Keys at 0 and 3e38 s: a BVH would need 9e39 frames. The refusal says so in double
   // (the old message printed -9223372036854775808).
   const Scene huge = oneChannelScene(0.0f, 3e38f, Interpolation::Linear, ChannelTarget::Translation, 1.0 / 30);
@@ -215,6 +215,13 @@ TEST(HostileWrite, SampleCountsNearTheFloatLimitNeitherOverflowNorRefuseWhatGltf
   const Result<std::string> linear = gltfBytes(huge, {}, &report);
   ASSERT_TRUE(linear.ok()) << linear.error();
   EXPECT_TRUE(report.empty()) << report[0];
+  // An Euler curve must be resampled: 9e39 samples is refused, the count said in double.
+  const Scene euler = oneChannelScene(0.0f, 3e38f, Interpolation::Linear, ChannelTarget::Euler, 1.0 / 30);
+  const Result<std::string> sampled = gltfBytes(euler, {});
+  ASSERT_FALSE(sampled.ok());
+  EXPECT_TRUE(oneLineUnder300(sampled.error())) << sampled.error();
+  EXPECT_EQ(sampled.error(),
+            "cannot export: clip 0 would need 9e+39 samples per resampled curve (3e+38 s at 30 fps; at most 1e+07)");
 }
 
 TEST(HostileWrite, DenormalFrameTimeClipResamplesAt30Fps) {
