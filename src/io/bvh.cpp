@@ -414,10 +414,18 @@ Pose BvhData::framePose(int frame) const {
   return pose;
 }
 
+double BvhData::keyFrameTime() const {
+  Clip timing;
+  timing.frameTime = frameTime;
+  for (int f = 1; f < frameCount; ++f)
+    if (!(timing.frameToTime(f) > timing.frameToTime(f - 1))) return 1.0 / 30.0;
+  return frameTime;
+}
+
 Clip BvhData::clip() const {
   Clip clip;
   clip.name = "motion";
-  clip.frameTime = frameTime;
+  clip.frameTime = keyFrameTime();
   if (frameCount == 0) return clip;
   std::vector<float> times(static_cast<size_t>(frameCount));
   for (int f = 0; f < frameCount; ++f) times[f] = clip.frameToTime(f);

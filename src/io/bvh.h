@@ -34,7 +34,10 @@ struct BvhData {
 
   // Skeleton in file order: rest translation = OFFSET, rest rotation = identity.
   Skeleton skeleton() const;
-  // One clip, key k at time k * frameTime. Each joint's rotation is the product of its
+  // The frame time key times use: frameTime, or 1/30 s when frameTime is so small (a
+  // denormal) that consecutive frames would get the same float key time.
+  double keyFrameTime() const;
+  // One clip, key k at time k * keyFrameTime(). Each joint's rotation is the product of its
   // rotation channels in file order (degrees); its translation is the OFFSET with each
   // position channel replacing its component (as Blender does).
   Clip clip() const;

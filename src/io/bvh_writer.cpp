@@ -14,6 +14,9 @@ namespace {
 
 constexpr double kRadToDeg = 57.29577951308232;
 constexpr double kMaxFrames = 1e7;
+// Indentation stops growing at this depth: BVH is whitespace separated, and a file may
+// nest 200,000 joints, whose full indentation would be quadratic in size.
+constexpr int kMaxIndentDepth = 24;
 
 void appendNumber(std::string& out, double v) {
   char buf[48];
@@ -91,7 +94,7 @@ Result<std::string> bvhText(const Skeleton& sk, const Clip* clip, const BvhWrite
   for (int j = 0; j < n; ++j)
     if (sk.parents[j] >= 0) children[sk.parents[j]].push_back(j);
   std::vector<bool> translated(n, false), rotated(n, false);
-  std::vector<int> scaledJoints, zeroEndSites, renamed;
+  std::vector<int> scaledJoints, zeroEndSites, addedEndSites, renamed;
   if (clip)
     for (const Channel& ch : clip->channels) {
       if (ch.joint < 0 || ch.times.empty()) continue;
@@ -125,7 +128,7 @@ Result<std::string> bvhText(const Skeleton& sk, const Clip* clip, const BvhWrite
   for (int j = n - 1; j >= 0; --j)
     if (sk.parents[j] < 0) stack.push_back({j, 0});
   int openDepth = 0;  // number of open braces
-  auto indent = [&](int d) { out.append(static_cast<size_t>(d) * 2, ' '); };
+  auto indent = [&](int d) { out.append(static_cast<size_t>(std::min(d, kMaxIndentDepth)) * 2, ' '); };
   auto close = [&](int toDepth) {
     while (openDepth > toDepth) {
       --openDepth;
@@ -164,23 +167,36 @@ Result<std::string> bvhText(const Skeleton& sk, const Clip* clip, const BvhWrite
     out += '\n';
     columnsOf.push_back(j);
     if (children[j].empty()) {
-      // BVH joints end in an End Site; a zero-length one adds no bone.
+      // BVH joints end in an End Site. It continues the bone from the parent with the
+      // bone's own length (in the joint's frame, rest rotation included), so Blender
+      // gets a real tail instead of inventing one for a zero-length bone.
+      const glm::vec3 tail = sk.parents[j] >= 0 ? glm::inverse(glm::normalize(sk.rest[j].rotation)) * offset
+                                                : glm::vec3(0.0f);
       indent(depth + 1);
       out += "End Site\n";
       indent(depth + 1);
       out += "{\n";
       indent(depth + 2);
-      out += "OFFSET 0.000000 0.000000 0.000000\n";
+      out += "OFFSET ";
+      appendNumber(out, tail.x);
+      out += ' ';
+      appendNumber(out, tail.y);
+      out += ' ';
+      appendNumber(out, tail.z);
+      out += '\n';
       indent(depth + 1);
       out += "}\n";
-      zeroEndSites.push_back(j);
+      (glm::length(tail) > 0.0f ? addedEndSites : zeroEndSites).push_back(j);
     }
     for (auto c = children[j].rbegin(); c != children[j].rend(); ++c) stack.push_back({*c, depth + 1});
   }
   close(0);
+  if (!addedEndSites.empty())
+    note("leaves given an End Site as long as their bone (read back, each adds a '<name>_End' joint): " +
+         jointList(sk, addedEndSites));
   if (!zeroEndSites.empty())
-    note("leaves given a zero-length End Site (read back, each adds a '<name>_End' joint): " +
-         jointList(sk, zeroEndSites));
+    note("leaves without a bone length (roots, zero offsets) given a zero-length End Site (read back, each adds "
+         "a '<name>_End' joint): " + jointList(sk, zeroEndSites));
 
   // MOTION: one line per frame, each joint's local pose sampled at the frame's time.
   bool uniform = true;
@@ -191,9 +207,13 @@ Result<std::string> bvhText(const Skeleton& sk, const Clip* clip, const BvhWrite
   const double duration = clip ? clip->duration() : 0.0;
   const double frameCount = std::floor(duration / frameTime + 1e-4) + 1;
   // A file controls the duration: refuse what would be gigabytes of text.
-  if (!(frameCount <= kMaxFrames))
-    return Result<std::string>::failure("cannot write BVH: " + std::to_string(static_cast<long long>(frameCount)) +
-                                        " frames is more than " + std::to_string(static_cast<long long>(kMaxFrames)));
+  if (!(frameCount <= kMaxFrames)) {
+    // In double: the count may be far beyond any integer (key times near 3e38).
+    char text[160];
+    std::snprintf(text, sizeof text, "cannot write BVH: a clip of %.4g s at %.4g s per frame needs %.4g frames, more than %.0f",
+                  duration, frameTime, frameCount, kMaxFrames);
+    return Result<std::string>::failure(text);
+  }
   const long long frames = static_cast<long long>(frameCount);
   if (clip && std::abs(double(timing.frameToTime(frames - 1)) - duration) > 1e-4 * frameTime + 1e-6)
     note("the clip's end (" + std::to_string(duration) + " s) is not on a frame: the last frame is at " +

@@ -10,6 +10,7 @@
 #include <numeric>
 #include <sstream>
 
+#include "core/forward_kinematics.h"
 #include "io/atomic_write.h"
 #include "io/gltf_curves.h"
 #include "io/image.h"
@@ -375,21 +376,104 @@ double rateFor(const Clip& clip, const GltfWriteOptions& options) {
   return 30.0;
 }
 
+std::string numberText(double v) {
+  std::ostringstream o;
+  o.precision(4);
+  o << v;
+  return o.str();
+}
+
+// A rate that is not a finite number (1 / a denormal frame time) resamples at 30 fps.
+double usableRate(double rate) { return std::isfinite(rate) && rate > 0.0 ? rate : 30.0; }
+
+// Resampling allocates duration x rate keys per curve and a file controls both (key times
+// near 3e38): a clip that would need more than kMaxResampledKeys is refused, but only when
+// one of its curves must be resampled (converted at rate 0: keys only, no allocation);
+// exact STEP / LINEAR / CUBICSPLINE curves of any length export. Counts are doubles, so
+// the message cannot overflow. Morph weights may share a resampled grid: refused too.
+std::string resamplingError(const Clip& clip, size_t index, double rate) {
+  const double duration = double(clip.duration());
+  const double samples = duration * rate;
+  if (samples <= kMaxResampledKeys) return {};
+  for (const Channel& ch : clip.channels) {
+    if (ch.times.size() < 2) continue;
+    if (ch.target != ChannelTarget::Scalar && !toGltfSampler(ch, 0.0).resampled) continue;
+    if (ch.target == ChannelTarget::Scalar && ch.property.rfind("weights/", 0) != 0) continue;  // dropped anyway
+    return "cannot export: clip " + std::to_string(index) + " would need " + numberText(samples) +
+           " samples per resampled curve (" + numberText(duration) + " s at " + numberText(rate) + " fps; at most " +
+           numberText(kMaxResampledKeys) + ")";
+  }
+  return {};
+}
+
+// The file's name without folder and extension ("walk" for "data/walk.bvh"), or "Armature".
+std::string armatureName(const std::string& source) {
+  const size_t slash = source.find_last_of('/');
+  std::string stem = slash == std::string::npos ? source : source.substr(slash + 1);
+  const size_t dot = stem.find_last_of('.');
+  if (dot != std::string::npos && dot > 0) stem.resize(dot);
+  return stem.empty() ? "Armature" : stem;
+}
+
+// A scene without skins or meshes (BVH, a .kinema of a bare skeleton) gets one skin per joint
+// tree, joints = the tree's joints, inverse bind matrices = inverses of the rest pose's world
+// matrices, as Blender's exporter writes an armature without a mesh: importers (Blender's
+// among them) then build an armature instead of a hierarchy of empties. glTF asks a skin's
+// joints to share a root, hence one skin per tree.
+std::vector<Skin> armatureSkins(const Scene& scene, std::vector<std::string>& notes) {
+  const Skeleton& sk = scene.skeleton;
+  std::vector<Skin> skins;
+  if (sk.empty()) return skins;
+  const std::vector<glm::mat4> world = computeWorld(sk, Pose::rest(sk));
+  std::vector<int> treeOf(sk.size(), -1);
+  int roots = 0;
+  for (int j = 0; j < sk.size(); ++j) roots += sk.parents[j] < 0;
+  const std::string base = armatureName(scene.source);
+  for (int j = 0; j < sk.size(); ++j) {  // parents come first: each joint joins its root's skin
+    if (sk.parents[j] < 0) {
+      treeOf[j] = static_cast<int>(skins.size());
+      Skin skin;
+      skin.name = roots > 1 ? base + "_" + sk.names[j] : base;
+      skins.push_back(std::move(skin));
+    } else {
+      treeOf[j] = treeOf[sk.parents[j]];
+    }
+    Skin& skin = skins[treeOf[j]];
+    const glm::mat4 inverse = glm::inverse(world[j]);
+    bool finite = std::abs(glm::determinant(world[j])) > 1e-30f;
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r) finite = finite && std::isfinite(inverse[c][r]);
+    if (!finite) {
+      notes.push_back("no skin (armature) written: joint '" + sk.names[j] +
+                      "' has a rest transform that cannot be inverted (zero scale)");
+      return {};
+    }
+    skin.joints.push_back(j);
+    skin.inverseBind.push_back(inverse);
+  }
+  return skins;
+}
+
 }  // namespace
 
 Result<std::string> gltfBytes(const Scene& scene, const GltfWriteOptions& options, std::vector<std::string>* report) {
+  if (hasUndecodedImages(scene)) {
+    // What loaded with a warning converts: the images without pixels are left out.
+    std::vector<int> dropped;
+    const Scene kept = withoutUndecodedImages(scene, &dropped);
+    if (report)
+      for (int i : dropped)
+        report->push_back("image " + std::to_string(i) + (scene.images[i].name.empty() ? "" : " '" + scene.images[i].name + "'") +
+                          " could not be decoded when loading: not written (its materials keep their base colour)");
+    return gltfBytes(kept, options, report);
+  }
   const std::string bad = checkScene(scene);
   if (!bad.empty()) return Result<std::string>::failure(bad);
-  // Resampling allocates duration x rate keys per channel: refuse absurd requests (a file
-  // controls the duration) instead of exhausting memory.
-  for (size_t c = 0; c < scene.clips.size(); ++c) {
-    const double samples = double(scene.clips[c].duration()) * rateFor(scene.clips[c], options);
-    if (!(options.resampleRate >= 0.0) || samples > kMaxResampledKeys)
-      return Result<std::string>::failure("cannot export: clip " + std::to_string(c) + " would need " +
-                                          std::to_string(static_cast<long long>(samples)) +
-                                          " samples per resampled curve (at most " +
-                                          std::to_string(static_cast<long long>(kMaxResampledKeys)) + ")");
-  }
+  if (!(options.resampleRate >= 0.0) || !std::isfinite(options.resampleRate))
+    return Result<std::string>::failure("cannot export: the resample rate must be a positive number of frames per second");
+  for (size_t c = 0; c < scene.clips.size(); ++c)
+    if (std::string e = resamplingError(scene.clips[c], c, usableRate(rateFor(scene.clips[c], options))); !e.empty())
+      return Result<std::string>::failure(e);
   auto note = [&](const std::string& line) {
     if (report) report->push_back(line);
   };
@@ -441,7 +525,13 @@ Result<std::string> gltfBytes(const Scene& scene, const GltfWriteOptions& option
     model.nodes[target].weights.assign(mi.morphWeights.begin(), mi.morphWeights.end());
   }
 
-  for (const Skin& skin : scene.skins) {
+  std::vector<std::string> skinNotes;
+  // Only a bare skeleton becomes an armature: a file with meshes but no skins (a prop, a
+  // morphing cube) keeps its plain nodes, as Blender would export it.
+  const std::vector<Skin> armature =
+      scene.skins.empty() && scene.meshes.empty() ? armatureSkins(scene, skinNotes) : std::vector<Skin>{};
+  for (const std::string& line : skinNotes) note(line);
+  for (const Skin& skin : scene.skins.empty() ? armature : scene.skins) {
     tinygltf::Skin s;
     s.name = skin.name;
     for (int j : skin.joints) s.joints.push_back(node[j]);
@@ -485,7 +575,21 @@ Result<std::string> gltfBytes(const Scene& scene, const GltfWriteOptions& option
   }
 
   AnimationWriter animations(scene, node, b, model, report);
-  for (size_t c = 0; c < scene.clips.size(); ++c) animations.add(scene.clips[c], c, rateFor(scene.clips[c], options));
+  for (size_t c = 0; c < scene.clips.size(); ++c) {
+    const Clip& clip = scene.clips[c];
+    const double wanted = rateFor(clip, options);
+    const double rate = usableRate(wanted);
+    const size_t before = report ? report->size() : 0;
+    animations.add(clip, c, rate);
+    // Said only when a curve was resampled at the lowered rate (its own line follows).
+    if (rate != wanted && report &&
+        std::any_of(report->begin() + static_cast<long>(before), report->end(),
+                    [](const std::string& line) { return line.find(" resampled at ") != std::string::npos; }))
+      report->insert(report->begin() + static_cast<long>(before),
+                     "clip '" + (clip.name.empty() ? std::to_string(c) : clip.name) + "': resampled at " +
+                         numberText(rate) + " fps instead of " + numberText(wanted) + " fps (" +
+                         "its frame time is too small to resample at)");
+  }
   if (!scene.ik.empty()) note("IK limits and targets dropped (glTF has no place for them; .kinema keeps them)");
 
   // tinygltf writes a node without any property as null, which is not glTF: an unnamed

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <unordered_map>
 #include <nlohmann/json.hpp>
 
 #include "core/rotation.h"
@@ -102,6 +103,14 @@ class Reader {
   const std::string& error() const { return error_; }
   const InputLimits limits;
   size_t imageBytesLeft;  // decoded images still allowed (InputLimits::imageBytesOverFileSize)
+  // Joint name -> index, filled as the skeleton is read: lookups by name stay constant time
+  // (Skeleton::find is a linear scan, quadratic over a 200,000-joint file).
+  std::unordered_map<std::string, int> jointIndex;
+  int joint(const Skeleton& s, const std::string& name) const {
+    if (jointIndex.size() != static_cast<size_t>(s.size())) return s.find(name);  // another skeleton
+    const auto it = jointIndex.find(name);
+    return it == jointIndex.end() ? -1 : it->second;
+  }
 
   bool fail(const std::string& path, const std::string& what) {
     error_ = oneLineMessage(source_ + ": " + (path.empty() ? "" : path + ": ") + what);
@@ -198,7 +207,8 @@ bool readSkeleton(Reader& r, const Json& root, Skeleton& s) {
       t.rotation = normalizeIfNeeded(glm::quat(q[3], q[0], q[1], q[2]));
     }
     if ((v = r.member(j, p, "scale", false)) && !r.floats(*v, p + ".scale", 3, &t.scale.x)) return false;
-    if (s.find(name) >= 0) return r.fail(p + ".name", "joint name '" + cutForMessage(name) + "' is used twice");
+    if (!r.jointIndex.emplace(name, s.size()).second)
+      return r.fail(p + ".name", "joint name '" + cutForMessage(name) + "' is used twice");
     s.addJoint(name, static_cast<int>(parent), t);
   }
   return true;
@@ -223,7 +233,7 @@ bool readJointName(Reader& r, const Json& obj, const std::string& p, const char*
   if (!v) return !required;
   std::string name;
   if (!r.string(*v, p + "." + key, name)) return false;
-  out = s.find(name);
+  out = r.joint(s, name);
   if (out < 0) return r.fail(p + "." + key, "no joint named '" + cutForMessage(name) + "'");
   return true;
 }
@@ -560,7 +570,7 @@ bool readChannel(Reader& r, const Json& j, const std::string& p, const Skeleton&
   const bool scalar = ch.target == ChannelTarget::Scalar;
   if ((v = r.member(j, p, "joint", !scalar))) {
     if (!r.string(*v, p + ".joint", text)) return false;
-    ch.joint = s.find(text);
+    ch.joint = r.joint(s, text);
     if (ch.joint < 0) return r.fail(p + ".joint", "no joint named '" + cutForMessage(text) + "'");
   } else if (!scalar) {
     return false;
@@ -874,7 +884,7 @@ bool readPrimitive(Reader& r, const Json& j, const std::string& p, Scene& scene,
 bool readNamedJoint(Reader& r, const Json& j, const std::string& p, const Skeleton& s, int& out) {
   std::string name;
   if (!r.string(j, p, name)) return false;
-  out = s.find(name);
+  out = r.joint(s, name);
   if (out < 0) return r.fail(p, "no joint named '" + cutForMessage(name) + "'");
   return true;
 }
@@ -1135,6 +1145,7 @@ std::string sceneAssetsError(const Scene& scene) {
   }
   for (size_t i = 0; i < scene.images.size(); ++i) {
     const TextureImage& im = scene.images[i];
+    if (isUndecodedImage(im)) continue;  // not saved (withoutUndecodedImages)
     if (im.width <= 0 || im.height <= 0 || im.rgba.size() != static_cast<size_t>(im.width) * im.height * 4)
       return "image " + std::to_string(i) + " is empty or its size is inconsistent";
   }
@@ -1361,7 +1372,8 @@ std::string saveKinemaFile(const std::string& path, const Scene& scene) {
   if (!bad.empty()) return oneLine(path + ": not saved: " + bad);
   std::string text;
   try {
-    text = toKinemaJson(scene);
+    // An image that failed to decode on loading (with a warning) is left out, not refused.
+    text = hasUndecodedImages(scene) ? toKinemaJson(withoutUndecodedImages(scene)) : toKinemaJson(scene);
   } catch (const Json::exception& e) {
     return oneLine(path + ": not saved: " + e.what());
   }

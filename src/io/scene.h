@@ -56,6 +56,16 @@ struct Scene {
   int fileIndexOf(int joint) const { return nodeOfJoint.empty() ? joint : nodeOfJoint[joint]; }
 };
 
+// An image that failed to decode on loading (the reader warned): no pixels at all.
+inline bool isUndecodedImage(const TextureImage& image) {
+  return image.width == 0 && image.height == 0 && image.rgba.empty();
+}
+// The scene without its undecoded images; materials that showed one keep their base colour
+// without a texture and the other images' indices close up. Writers save this, so a file
+// that loads with such a warning also converts. `dropped` gets the removed image indices.
+Scene withoutUndecodedImages(const Scene& scene, std::vector<int>* dropped = nullptr);
+bool hasUndecodedImages(const Scene& scene);
+
 // A path's extension with its dot, lower-cased (".glb"), or "" when it has none.
 std::string lowerExtension(const std::string& path);
 

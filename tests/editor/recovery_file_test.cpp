@@ -78,6 +78,32 @@ TEST(RecoveryFile, OnlyFilesOfDeadProcessesAreOffered) {
   fs::remove_all(dir);
 }
 
+// Issue 19: a recovery file that does not load is reported once, then moved aside (kept for
+// the user as .corrupt) so the next start does not offer it again.
+TEST(RecoveryFile, ACorruptRecoveryFileIsReportedOnceThenMovedAside) {
+  const std::string dir = test::makeTempDir();
+  test::writeFile(dir + "/recovery-999999998.kinema", "{\"format\": \"kinema\", \"version\": 1, \"skel");
+  test::writeFile(dir + "/recovery-999999998.json", "{\"original\": \"/tmp/walk.kinema\", \"pid\": 999999998, \"time\": 5}");
+  std::optional<RecoverableSession> s = findRecoverableSession(dir);
+  ASSERT_TRUE(s.has_value());
+  Autosaver saver(dir);
+  Result<Document> doc = recover(*s, saver);
+  ASSERT_FALSE(doc.ok());
+  const std::string aside = dir + "/recovery-999999998.kinema.corrupt";
+  EXPECT_NE(doc.error().find("recovery-999999998.kinema"), std::string::npos) << doc.error();
+  EXPECT_NE(doc.error().find("moved aside to " + aside + ", not offered again"), std::string::npos) << doc.error();
+  EXPECT_EQ(doc.error().find('\n'), std::string::npos);
+  EXPECT_TRUE(fs::exists(aside));  // the bytes are kept for the user
+  EXPECT_EQ(test::readFile(aside), "{\"format\": \"kinema\", \"version\": 1, \"skel");
+  EXPECT_FALSE(fs::exists(dir + "/recovery-999999998.kinema"));
+  EXPECT_FALSE(fs::exists(dir + "/recovery-999999998.json"));
+  std::string message;
+  EXPECT_FALSE(findRecoverableSession(dir, &message).has_value());  // not offered (or reported) again
+  EXPECT_EQ(message, "");
+  EXPECT_FALSE(fs::exists(saver.recoveryPath()));  // nothing of ours was written for it
+  fs::remove_all(dir);
+}
+
 TEST(RecoveryFile, AKilledSessionIsRecoveredWithItsEdit) {
   const std::string dir = test::makeTempDir();
   const std::string original = dir + "/work.kinema";

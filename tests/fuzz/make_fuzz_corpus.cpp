@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   const std::string out = argv[1];
-  for (const char* sub : {"", "/bvh", "/kinema", "/sampling", "/ik", "/gltf", "/script"}) ::mkdir((out + sub).c_str(), 0755);
+  for (const char* sub : {"", "/bvh", "/kinema", "/sampling", "/ik", "/gltf", "/script", "/ik_args"}) ::mkdir((out + sub).c_str(), 0755);
 
   const char* orders[] = {"XYZ", "XZY", "YXZ", "YZX", "ZXY", "ZYX"};
   int n = 0;
@@ -159,6 +159,21 @@ int main(int argc, char** argv) {
       write(out + "/ik/solver" + std::to_string(solver) + (flags ? "_branch" : "_chain"), bytes);
     }
   }
+  // `kinema ik` arguments after the file (fuzz_ik_args), NUL-separated, on the default character.
+  auto ikArgs = [&](const std::string& name, const std::vector<std::string>& args) {
+    std::string bytes;
+    for (size_t i = 0; i < args.size(); ++i) bytes += (i ? std::string(1, '\0') : "") + args[i];
+    write(out + "/ik_args/" + name, bytes);
+  };
+  ikArgs("fabrik_json", {"--effector", "Hand.L", "--target", "0.5,1.2,0.3", "--json"});
+  ikArgs("two_bone_pole", {"--effector", "Hand.L", "--target", "0.5,1.2,0.3", "--solver", "two-bone", "--pole",
+                           "0,1.4,-1", "--soften", "0.01", "--json"});
+  ikArgs("two_targets_dls", {"--effector", "Hand.L", "--target", "0.5,1.2,0.3", "--effector", "Foot.R", "--target",
+                             "-0.1,0.1,0.2", "--root", "Hips", "--root", "Hips", "--solver", "jacobian-dls", "--lambda",
+                             "0.2", "--max-iterations", "50", "--tolerance", "1e-4", "--json"});
+  ikArgs("ccd_trace_frame", {"--effector", "Toe.L", "--target", "0.2,0,0.3", "--solver", "ccd", "--frame", "3",
+                             "--trace", "--json"});
+  ikArgs("summary", {"--effector", "HeadTop", "--target", "0,1.9,0.2", "--solver", "jacobian-sdls", "--time", "0.5"});
   std::printf("wrote the fuzz corpus under %s\n", out.c_str());
   return 0;
 }

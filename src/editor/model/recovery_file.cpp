@@ -144,13 +144,29 @@ std::optional<RecoverableSession> findRecoverableSession(const std::string& dir,
 
 Result<Document> recover(const RecoverableSession& session, Autosaver& autosaver) {
   Result<Scene> scene = loadKinemaFile(session.recoveryPath);
-  if (!scene) return Result<Document>::failure(scene.error());
+  if (!scene) return Result<Document>::failure(scene.error() + " (" + moveCorruptRecoveryAside(session) + ")");
   Document doc(std::move(scene).value(), session.originalPath);
   doc.markModified();  // not what the original file holds
   // Our own recovery files first, then the old ones go: a crash in between loses nothing.
   const std::string error = autosaver.writeNow(doc);
   if (error.empty()) discardRecovery(session);
   return doc;
+}
+
+std::string moveCorruptRecoveryAside(const RecoverableSession& session) {
+  const std::string aside = session.recoveryPath + ".corrupt";
+  std::error_code ec;
+  fs::rename(session.recoveryPath, aside, ec);
+  if (ec) {
+    // Not movable (a read-only folder): try to remove it, else the user must.
+    std::error_code rec;
+    if (!fs::remove(session.recoveryPath, rec) || rec)
+      return "it could not be moved aside or removed (" + ec.message() + "): delete it by hand";
+    fs::remove(session.sidecarPath, rec);
+    return "it was removed";
+  }
+  fs::remove(session.sidecarPath, ec);
+  return "moved aside to " + aside + ", not offered again";
 }
 
 std::string discardRecovery(const RecoverableSession& session) {

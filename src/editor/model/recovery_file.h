@@ -61,8 +61,13 @@ bool processAlive(long pid);
 std::optional<RecoverableSession> findRecoverableSession(const std::string& dir = defaultRecoveryDir(),
                                                          std::string* message = nullptr);
 // Loads the recovered document (dirty, with the original path) and hands its files over
-// to `autosaver` (renamed to its pid), so a second crash loses nothing.
+// to `autosaver` (renamed to its pid), so a second crash loses nothing. A file that does
+// not load is moved aside (moveCorruptRecoveryAside) and the error says where.
 Result<Document> recover(const RecoverableSession& session, Autosaver& autosaver);
+// A recovery file that does not load: renamed to PATH.corrupt (kept for the user, no longer
+// matching recovery-PID.kinema, so it is reported once) and its sidecar removed. Returns
+// what happened, for the error message. recover() calls it on a failed load.
+std::string moveCorruptRecoveryAside(const RecoverableSession& session);
 // The user declined: deletes the session's files. "" or the error.
 std::string discardRecovery(const RecoverableSession& session);
 
