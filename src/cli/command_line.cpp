@@ -12,10 +12,19 @@ int badInput(const std::string& message) {
   return kExitBadInput;
 }
 
-Result<Scene> loadSceneOrDefault(const std::string& path) {
-  if (!path.empty()) return loadScene(path);
+Result<Scene> loadSceneOrDefault(const std::string& path, UpAxis bvhUp) {
+  if (!path.empty()) return loadScene(path, InputLimits{}, bvhUp);
   return makeDefaultCharacterScene();
 }
+
+CLI::Option* addUpOption(CLI::App* cmd, std::string& up) {
+  return cmd
+      ->add_option("--up", up,
+                   "Up axis of BVH files: y (default, the BVH convention) or z (Blender's BVH export); other formats are Y-up")
+      ->check(CLI::IsMember({"y", "z"}));
+}
+
+UpAxis upAxisOf(const std::string& up) { return upAxisFromString(up).value_or(UpAxis::Y); }
 
 double frameTimeOf(const Scene& scene, int clip) {
   if (clip >= 0 && clip < static_cast<int>(scene.clips.size()) && scene.clips[clip].frameTime > 0)

@@ -8,6 +8,7 @@ struct ConvertOptions {
   std::string input, output;
   double rate = 0.0;  // frames per second for BVH output and glTF resampling; 0: the clip's
   std::string rotationOrder = "ZXY";
+  std::string up = "y";  // --up: BVH files' up axis
 };
 
 CLI::App* addConvertCommand(CLI::App& app, ConvertOptions& options);
