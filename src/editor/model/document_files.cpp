@@ -20,8 +20,8 @@ Document newDocument() {
   return Document(makeDefaultCharacterScene());
 }
 
-Result<Document> openDocument(const std::string& path) {
-  Result<Scene> scene = loadScene(path);
+Result<Document> openDocument(const std::string& path, UpAxis bvhUp) {
+  Result<Scene> scene = loadScene(path, InputLimits{}, bvhUp);
   if (!scene) return Result<Document>::failure(scene.error());
   return Document(std::move(scene).value(), path);
 }
