@@ -13,10 +13,19 @@ int badInput(const std::string& message) {
   return kExitBadInput;
 }
 
-Result<Scene> loadSceneOrDefault(const std::string& path, const InputLimits& limits) {
-  if (!path.empty()) return loadScene(path, limits);
+Result<Scene> loadSceneOrDefault(const std::string& path, const InputLimits& limits, UpAxis bvhUp) {
+  if (!path.empty()) return loadScene(path, limits, bvhUp);
   return makeDefaultCharacterScene();
 }
+
+CLI::Option* addUpOption(CLI::App* cmd, std::string& up) {
+  return cmd
+      ->add_option("--up", up,
+                   "Up axis of BVH files: y (default, the BVH convention) or z (Blender's BVH export); other formats are Y-up")
+      ->check(CLI::IsMember({"y", "z"}));
+}
+
+UpAxis upAxisOf(const std::string& up) { return upAxisFromString(up).value_or(UpAxis::Y); }
 
 void addAllowOutsidePathsFlag(CLI::App* cmd, bool& allowOutsidePaths) {
   cmd->add_flag("--allow-outside-paths", allowOutsidePaths,

@@ -2,6 +2,7 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include "core/result.h"
@@ -21,8 +22,14 @@ constexpr int kExitUsage = 2;     // unknown flag or subcommand, malformed argum
 // Prints "kinema: MESSAGE" on stderr as one line and returns kExitBadInput.
 int badInput(const std::string& message);
 
-// A file, or the default character when `path` is empty.
-Result<Scene> loadSceneOrDefault(const std::string& path, const InputLimits& limits = {});
+// A file, or the default character when `path` is empty; .bvh files read as `bvhUp`-up.
+Result<Scene> loadSceneOrDefault(const std::string& path, const InputLimits& limits = {},
+                                 UpAxis bvhUp = UpAxis::Y);
+
+// `--up y|z` on a command that reads files: which axis is up in a BVH file (default y, the
+// BVH convention; z for Blender's exports). Other formats are Y-up and ignore it.
+CLI::Option* addUpOption(CLI::App* cmd, std::string& up);
+UpAxis upAxisOf(const std::string& up);  // "y" or "z" (the option checks it)
 
 // --allow-outside-paths, on every command that reads glTF: buffer and image uris may name
 // files outside the glTF file's folder (never devices, FIFOs, sockets or /proc).

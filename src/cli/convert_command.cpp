@@ -45,6 +45,7 @@ CLI::App* addConvertCommand(CLI::App& app, ConvertOptions& o) {
                   "Frames per second: BVH frame rate, and the rate glTF resamples curves it cannot hold "
                   "(default: the clip's own)");
   cmd->add_option("--rotation-order", o.rotationOrder, "Euler order of BVH rotation channels (default ZXY)");
+  addUpOption(cmd, o.up);  // the input's; BVH output is always Y-up
   return cmd;
 }
 
@@ -61,7 +62,7 @@ int runConvert(const ConvertOptions& o) {
   }
   if (!std::isfinite(o.rate) || o.rate < 0.0) return badInput("--rate must be a positive number of frames per second");
 
-  Result<Scene> loaded = loadScene(o.input, inputLimits(o.allowOutsidePaths));
+  Result<Scene> loaded = loadScene(o.input, inputLimits(o.allowOutsidePaths), upAxisOf(o.up));
   if (!loaded) return badInput(loaded.error());
   const Scene& scene = loaded.value();
   for (const std::string& line : scene.warnings) std::cerr << "kinema convert: warning: " << o.input << ": " << line << "\n";

@@ -9,6 +9,7 @@ struct ConvertOptions {
   bool allowOutsidePaths = false;  // --allow-outside-paths: glTF uris may leave the file's folder
   double rate = 0.0;  // frames per second for BVH output and glTF resampling; 0: the clip's
   std::string rotationOrder = "ZXY";
+  std::string up = "y";  // --up: BVH files' up axis
 };
 
 CLI::App* addConvertCommand(CLI::App& app, ConvertOptions& options);

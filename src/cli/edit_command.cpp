@@ -30,6 +30,7 @@ CLI::App* addEditCommand(CLI::App& app, EditOptions& o) {
   cmd->add_option("--max-fps", o.maxFps, "Draw at most N frames per second (1 to 1000; for tests and slow machines)");
   cmd->add_flag("--report-frame-times", o.reportFrameTimes, "Print mean and median frame times (ms) on stderr at exit");
   cmd->add_flag("--empty-frame", o.emptyFrame, "Draw only an empty ImGui frame (baseline for --report-frame-times)");
+  addUpOption(cmd, o.up);
   cmd->add_option("--compare", o.compare, "Open in Teach > Compare Solvers with this preset (kinema demo list)");
   cmd->add_flag("--list-commands", o.listCommands,
                 "Print every editor command with its keys (the keymap file applied) as markdown, and exit");
@@ -77,7 +78,7 @@ int runEdit(const EditOptions& o) {
     options.script = std::move(script.value());
     options.replay = true;
   }
-  Result<Scene> loaded = loadSceneOrDefault(o.file, inputLimits(o.allowOutsidePaths));
+  Result<Scene> loaded = loadSceneOrDefault(o.file, inputLimits(o.allowOutsidePaths), upAxisOf(o.up));
   if (!loaded) return badInput(loaded.error());
   EditorState state;
   state.inputLimits = inputLimits(o.allowOutsidePaths);  // File > Open reads with the same limits

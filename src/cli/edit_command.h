@@ -20,6 +20,7 @@ struct EditOptions {
   bool emptyFrame = false;
   std::string compare;  // open straight into Teach > Compare Solvers with this preset
   bool listCommands = false;  // print every command and its keys as markdown, open no window
+  std::string up = "y";  // --up: BVH files' up axis
   float uiScale = std::numeric_limits<float>::quiet_NaN();  // --ui-scale; NaN: not given (the preferences')
   int width = 0, height = 0;  // 0: remembered, else most of the screen
 };

@@ -2,12 +2,15 @@
 
 #include "cli/ik_trace_json.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
 
 #include "cli/command_line.h"
+#include "cli/finite_results.h"
 #include "core/forward_kinematics.h"
 #include "ik/ik_solver.h"
 #include "io/json_number.h"
@@ -18,28 +21,50 @@ namespace kinema::cli {
 
 namespace {
 
-enum class Parsed { Ok, Malformed, NotFinite };
+enum class Parsed { Ok, Malformed, NotFinite, TooFar };
 
-// "X,Y,Z": three numbers separated by commas.
+// IK runs in float; a coordinate beyond this is refused as bad input (exit 1) so that
+// squared distances and the reported error stay finite (1.85e19 squared overflows float).
+constexpr double kMaxTargetCoordinate = 1e18;
+
+// "X,Y,Z": three numbers separated by commas. Denormals (1e-310) are numbers like any other;
+// a number that overflows double (1e400) is not finite.
 Parsed parseVec3(const std::string& text, glm::vec3& out) {
   std::stringstream ss(text);
   std::string part;
   int n = 0;
-  bool finite = true;
+  bool finite = true, near = true;
   while (std::getline(ss, part, ',')) {
     if (n == 3) return Parsed::Malformed;
-    try {
-      size_t used = 0;
-      const double v = std::stod(part, &used);
-      if (used != part.size() && part.find_first_not_of(" \t", used) != std::string::npos) return Parsed::Malformed;
-      if (!std::isfinite(v) || std::abs(v) > 3.0e38) finite = false;
-      out[n++] = static_cast<float>(v);
-    } catch (const std::exception&) {
-      return Parsed::Malformed;
-    }
+    const size_t start = part.find_first_not_of(" \t");
+    if (start == std::string::npos) return Parsed::Malformed;
+    const char* begin = part.c_str() + start;
+    char* end = nullptr;
+    const double v = std::strtod(begin, &end);  // unlike std::stod, no throw on underflow
+    if (end == begin || std::string(end).find_first_not_of(" \t") != std::string::npos) return Parsed::Malformed;
+    if (!std::isfinite(v) || std::abs(v) > 3.0e38) finite = false;
+    else if (std::abs(v) > kMaxTargetCoordinate) near = false;
+    out[n++] = static_cast<float>(v);
   }
   if (n != 3 || (!text.empty() && text.back() == ',')) return Parsed::Malformed;
-  return finite ? Parsed::Ok : Parsed::NotFinite;
+  return !finite ? Parsed::NotFinite : !near ? Parsed::TooFar : Parsed::Ok;
+}
+
+bool withinReach(const glm::vec3& p) {
+  for (int k = 0; k < 3; ++k)
+    if (!(std::abs(static_cast<double>(p[k])) <= kMaxTargetCoordinate)) return false;
+  return true;
+}
+
+// The largest effector distance to its target, in double: float positions far from the
+// origin still give a finite, exact-enough distance.
+double worstDistance(const std::vector<IkTarget>& targets, const std::vector<glm::mat4>& world) {
+  double worst = 0.0;
+  for (const IkTarget& t : targets) {
+    const glm::dvec3 d = glm::dvec3(glm::vec3(world[t.effector][3])) - glm::dvec3(t.position);
+    worst = std::max(worst, std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z));
+  }
+  return worst;
 }
 
 int usage(const std::string& message) {
@@ -72,6 +97,7 @@ CLI::App* addIkCommand(CLI::App& app, IkOptions& o) {
   o.timeOption->excludes(o.frameOption);
   cmd->add_flag("--trace", o.trace, "Include every solver step (joint positions and error) in the JSON");
   cmd->add_flag("--json", o.json, "Print JSON (the stable contract) instead of a summary");
+  addUpOption(cmd, o.up);
   return cmd;
 }
 
@@ -88,12 +114,14 @@ int runIk(const IkOptions& o) {
     const Parsed p = parseVec3(o.targets[i], positions[i]);
     if (p == Parsed::Malformed) return usage("--target '" + o.targets[i] + "' is not X,Y,Z");
     if (p == Parsed::NotFinite) return badInput("--target '" + o.targets[i] + "' is not a finite position");
+    if (p == Parsed::TooFar) return badInput("--target '" + o.targets[i] + "' is too far: coordinates must be within 1e18");
   }
   glm::vec3 pole(0.0f);
   if (!o.pole.empty()) {
     const Parsed p = parseVec3(o.pole, pole);
     if (p == Parsed::Malformed) return usage("--pole '" + o.pole + "' is not X,Y,Z");
     if (p == Parsed::NotFinite) return badInput("--pole '" + o.pole + "' is not a finite position");
+    if (p == Parsed::TooFar) return badInput("--pole '" + o.pole + "' is too far: coordinates must be within 1e18");
   }
   if (!std::isfinite(o.time)) return badInput("--time must be a finite number");
   if (!std::isfinite(o.tolerance) || o.tolerance < 0) return badInput("--tolerance must be a finite number >= 0");
@@ -102,13 +130,15 @@ int runIk(const IkOptions& o) {
   if (o.maxIterations == 0 || o.maxIterations < -1) return badInput("--max-iterations must be at least 1");
   if (o.fabrikFinishAfter < 0) return badInput("--fabrik-finish-after must be >= 0");
 
-  Result<Scene> loaded = loadSceneOrDefault(o.file, inputLimits(o.allowOutsidePaths));
+  Result<Scene> loaded = loadSceneOrDefault(o.file, inputLimits(o.allowOutsidePaths), upAxisOf(o.up));
   if (!loaded) return badInput(loaded.error());
   const Scene& scene = loaded.value();
   const Skeleton& skeleton = scene.skeleton;
   if (const std::string bad = clipIndexError(scene, o.clip); !bad.empty()) return badInput(bad);
   const double time = o.frameOption->count() ? static_cast<double>(o.frame) * frameTimeOf(scene, o.clip) : o.time;
   Pose pose = sampledPose(scene, o.clip, time);
+  if (const std::string bad = nonFiniteWorldError(scene, computeWorld(skeleton, pose), time); !bad.empty())
+    return badInput(bad);
 
   IkRig rig = scene.ik;
   std::vector<IkTarget> targets;
@@ -137,6 +167,10 @@ int runIk(const IkOptions& o) {
   }
   if (targets.empty()) targets = scene.ik.targets;  // the file's saved targets
   if (targets.empty()) return usage("give --effector NAME --target X,Y,Z (or --rig FILE)");
+  for (const IkTarget& t : targets)  // the file's and the rig's targets as well as --target
+    if (!withinReach(t.position) || (t.hasPole && !withinReach(t.pole)))
+      return badInput(scene.source + ": the target of " + jointLabel(scene, t.effector) +
+                      " is too far: coordinates must be within 1e18");
 
   IkProblem problem;
   problem.skeleton = &skeleton;
@@ -154,13 +188,17 @@ int runIk(const IkOptions& o) {
   const IkResult r = solveIk(*solver, problem, settings);
   if (!r.message.empty()) return badInput(scene.source + ": " + r.message);
   const std::vector<glm::mat4> world = computeWorld(skeleton, pose);
+  if (const std::string bad = nonFiniteWorldError(scene, world, time); !bad.empty())
+    return badInput(bad + " after " + toString(*solver));
+  const double error = worstDistance(targets, world);
+  if (!std::isfinite(error)) return badInput(scene.source + ": the IK error after " + toString(*solver) + " is not finite");
 
   if (o.json) {
     nlohmann::ordered_json out;
     out["solver"] = toString(*solver);
     out["converged"] = r.converged;
     out["iterations"] = r.iterations;
-    out["error"] = jsonFloat(r.error);
+    out["error"] = error;
     if (o.trace) {
       nlohmann::ordered_json names = nlohmann::ordered_json::array();
       for (int j : trace.joints) names.push_back(scene.fileIndexOf(j));  // glTF: node indices
@@ -172,7 +210,7 @@ int runIk(const IkOptions& o) {
     return kExitOk;
   }
   std::printf("%s: %s %s after %d iteration%s, error %g\n", scene.source.c_str(), toString(*solver),
-              r.converged ? "converged" : "did not converge", r.iterations, r.iterations == 1 ? "" : "s", r.error);
+              r.converged ? "converged" : "did not converge", r.iterations, r.iterations == 1 ? "" : "s", error);
   for (const IkTarget& t : targets) {
     const glm::vec3 p(world[t.effector][3]);
     std::printf("  %-20s at %12.6g %12.6g %12.6g  (target %g %g %g)\n", skeleton.names[t.effector].c_str(), p.x, p.y,

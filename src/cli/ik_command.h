@@ -21,6 +21,7 @@ struct IkOptions {
   long long frame = 0;
   bool trace = false;
   bool json = false;
+  std::string up = "y";  // --up: BVH files' up axis
   CLI::Option* timeOption = nullptr;
   CLI::Option* frameOption = nullptr;
 };

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "cli/command_line.h"
+#include "cli/finite_results.h"
 #include "core/forward_kinematics.h"
 #include "io/json_number.h"
 
@@ -19,6 +20,7 @@ CLI::App* addPoseCommand(CLI::App& app, PoseOptions& o) {
   o.frameOption = cmd->add_option("--frame", o.frame, "Frame number (time = N x frame time)");
   o.timeOption->excludes(o.frameOption);
   cmd->add_flag("--json", o.json, "Print JSON (the stable contract) instead of a table");
+  addUpOption(cmd, o.up);
   return cmd;
 }
 
@@ -28,13 +30,14 @@ int runPose(const PoseOptions& o) {
     return kExitUsage;
   }
   if (!std::isfinite(o.time)) return badInput("--time must be a finite number");
-  Result<Scene> loaded = loadSceneOrDefault(o.file, inputLimits(o.allowOutsidePaths));
+  Result<Scene> loaded = loadSceneOrDefault(o.file, inputLimits(o.allowOutsidePaths), upAxisOf(o.up));
   if (!loaded) return badInput(loaded.error());
   const Scene& scene = loaded.value();
   if (const std::string bad = clipIndexError(scene, o.clip); !bad.empty()) return badInput(bad);
   const double time = o.frameOption->count() ? static_cast<double>(o.frame) * frameTimeOf(scene, o.clip) : o.time;
   const Pose pose = sampledPose(scene, o.clip, time);
   const std::vector<glm::mat4> world = computeWorld(scene.skeleton, pose);
+  if (const std::string bad = nonFiniteWorldError(scene, world, time); !bad.empty()) return badInput(bad);
 
   if (o.json) {
     nlohmann::ordered_json out;

@@ -11,6 +11,7 @@ struct PoseOptions {
   double time = 0.0;
   long long frame = 0;
   bool json = false;
+  std::string up = "y";  // --up: BVH files' up axis
   CLI::Option* timeOption = nullptr;
   CLI::Option* frameOption = nullptr;
 };

@@ -1,5 +1,6 @@
 #include "cli/render_command.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -8,8 +9,10 @@
 #include <sstream>
 
 #include "cli/command_line.h"
+#include "cli/finite_results.h"
 #include "core/forward_kinematics.h"
 #include "render/headless_renderer.h"
+#include "render/loose_joints.h"
 #include "render/skeleton_view.h"
 #include "skin/scene_deformation.h"
 
@@ -37,6 +40,18 @@ bool parseNumbers(const std::string& text, char separator, std::vector<double>& 
   return !text.empty() && text.back() != separator;
 }
 
+// Sizes beyond this are refused before any OpenGL is opened; the real limit is smaller.
+constexpr double kMaxSizeToAsk = 1 << 20;
+
+// The last frame of the clip a sequence can show: the frame at its last key (sampling
+// holds the last pose after it). A file without clips shows its one pose, frame 0.
+long long lastFrameOf(const Scene& scene, int clip, double frameTime) {
+  if (clip < 0 || clip >= static_cast<int>(scene.clips.size())) return 0;
+  const double frames = static_cast<double>(scene.clips[clip].duration()) / frameTime;
+  if (!std::isfinite(frames) || frames > 1e15) return static_cast<long long>(1e15);
+  return std::max(0LL, static_cast<long long>(std::llround(frames)));
+}
+
 struct Sample {
   long long frame = 0;  // frame number for sequences
   double time = 0.0;
@@ -44,6 +59,24 @@ struct Sample {
 
 std::vector<glm::mat4> posedWorld(const Scene& scene, int clip, double time) {
   return computeWorld(scene.skeleton, sampledPose(scene, clip, time));
+}
+
+// The CPU deformation, run only to name the mesh and joint when the GPU's vertices are
+// not finite.
+std::string deformedVerticesError(const Scene& scene, const std::vector<glm::mat4>& world,
+                                  const std::vector<std::vector<float>>& morphWeights, double time) {
+  std::vector<DeformedPrimitive> deformed;
+  SceneDeformationJob job;
+  job.scene = &scene;
+  job.world = &world;
+  job.morphWeights = &morphWeights;
+  job.out = &deformed;
+  if (!job.run()) return {};
+  return nonFiniteVerticesError(scene, deformed, time);
+}
+
+const Clip* clipOf(const Scene& scene, int clip) {
+  return clip >= 0 && clip < static_cast<int>(scene.clips.size()) ? &scene.clips[clip] : nullptr;
 }
 
 bool ensureParentFolder(const std::string& path, std::string& error) {
@@ -109,6 +142,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
   cmd->add_option("--weights", o.weights, "Show this joint's skin weights as heat colours (blue 0 -> red 1)");
   cmd->add_option("--mesh", o.mesh, "on (default) or off: draw the file's meshes, or its skeleton alone")
       ->check(CLI::IsMember({"on", "off"}));
+  addUpOption(cmd, o.up);
   cmd->add_option("--out", o.out, "PNG path; with --frames a pattern such as dir/frame_%04d.png")->required();
   return cmd;
 }
@@ -138,9 +172,11 @@ int runRender(const RenderOptions& o) {
     }
   }
 
+  // The upper bound is what the OpenGL implementation reports (checked once it is open);
+  // this one only keeps the numbers in an int.
   const double w = size[0], h = size[1];
-  if (!(w >= 1 && h >= 1 && w <= 16384 && h <= 16384) || w != std::floor(w) || h != std::floor(h))
-    return badInput("--size " + o.size + ": width and height must be whole numbers from 1 to 16384");
+  if (!(w >= 1 && h >= 1 && w <= kMaxSizeToAsk && h <= kMaxSizeToAsk) || w != std::floor(w) || h != std::floor(h))
+    return badInput("--size " + o.size + ": width and height must be whole numbers of at least 1");
   for (double v : cam)
     if (!std::isfinite(v)) return badInput("--camera " + o.camera + ": numbers must be finite");
   if (cam.size() == 3 && !(cam[2] > 0)) return badInput("--camera " + o.camera + ": the distance must be positive");
@@ -150,7 +186,7 @@ int runRender(const RenderOptions& o) {
   if (sequence && expandFramePattern(o.out, first).empty())
     return badInput("--out " + o.out + ": a sequence needs one frame number in the name, e.g. dir/frame_%04d.png");
 
-  Result<Scene> loaded = loadSceneOrDefault(o.file, inputLimits(o.allowOutsidePaths));
+  Result<Scene> loaded = loadSceneOrDefault(o.file, inputLimits(o.allowOutsidePaths), upAxisOf(o.up));
   if (!loaded) return badInput(loaded.error());
   const Scene& scene = loaded.value();
   if (const std::string bad = clipIndexError(scene, o.clip); !bad.empty()) return badInput(bad);
@@ -169,14 +205,33 @@ int runRender(const RenderOptions& o) {
   std::vector<Sample> samples;
   const double frameTime = frameTimeOf(scene, o.clip);
   if (sequence) {
+    const long long end = lastFrameOf(scene, o.clip, frameTime);
+    if (first > end)
+      return badInput(scene.source + ": --frames " + o.frames + " starts after the clip's last frame, " + std::to_string(end));
+    if (last > end) {
+      std::fprintf(stderr, "kinema render: warning: %s: --frames %s runs past the clip's end; stopping at its last frame, %lld\n",
+                   scene.source.c_str(), o.frames.c_str(), end);
+      last = end;
+    }
     for (long long f = first; f <= last; ++f) samples.push_back({f, static_cast<double>(f) * frameTime});
   } else {
     samples.push_back({o.frame, o.frameOption->count() ? static_cast<double>(o.frame) * frameTime : o.time});
   }
 
   const HeadlessBackend backend = o.backend == "osmesa" ? HeadlessBackend::OsMesa : HeadlessBackend::Egl;
+  // Poses first (a non-finite one is the file's fault, whatever the GL), then the GL.
+  std::vector<std::vector<glm::mat4>> worlds;
+  for (const Sample& s : samples) {
+    worlds.push_back(posedWorld(scene, o.clip, s.time));
+    if (const std::string bad = nonFiniteWorldError(scene, worlds.back(), s.time); !bad.empty()) return badInput(bad);
+  }
+  RenderSizeLimit largest;
   Result<std::unique_ptr<HeadlessRenderer>> opened =
-      HeadlessRenderer::open(backend, static_cast<int>(w), static_cast<int>(h));
+      HeadlessRenderer::open(backend, static_cast<int>(w), static_cast<int>(h), &largest);
+  if (!opened && largest.known() && (w > largest.width || h > largest.height))
+    return badInput("--size " + o.size + ": the largest image this OpenGL (" + o.backend + ", " + largest.renderer +
+                    ") makes is " + std::to_string(largest.width) + "x" + std::to_string(largest.height) + " (" +
+                    largest.limitedBy + ")");
   if (!opened) return badInput("cannot render: " + opened.error());
   HeadlessRenderer& renderer = *opened.value();
   const bool meshes = !scene.meshInstances.empty() && o.mesh == "on";
@@ -187,18 +242,20 @@ int runRender(const RenderOptions& o) {
 
   // One camera for the whole sequence, framing every pose in it (joints and deformed
   // vertices, read back from the GPU), so the view does not jump.
-  std::vector<std::vector<glm::mat4>> worlds;
   std::vector<std::vector<std::vector<float>>> morphWeights;  // per sample, per mesh instance
   Bounds bounds;
-  for (const Sample& s : samples) {
-    worlds.push_back(posedWorld(scene, o.clip, s.time));
-    for (const glm::mat4& m : worlds.back()) bounds.add(glm::vec3(m[3]));
+  for (size_t k = 0; k < samples.size(); ++k) {
+    for (const glm::mat4& m : worlds[k]) bounds.add(glm::vec3(m[3]));
     if (!meshes) continue;
-    morphWeights.push_back(sampleMorphWeights(scene, scene.clips.empty() ? -1 : o.clip, s.time));
+    morphWeights.push_back(sampleMorphWeights(scene, scene.clips.empty() ? -1 : o.clip, samples[k].time));
     MeshFrame meshFrame;
-    meshFrame.world = &worlds.back();
+    meshFrame.world = &worlds[k];
     meshFrame.morphWeights = &morphWeights.back();
     const Bounds body = renderer.meshes().deformedBounds(meshFrame);
+    if (!body.empty && !(isFinite(body.min) && isFinite(body.max))) {
+      const std::string bad = deformedVerticesError(scene, worlds[k], morphWeights.back(), samples[k].time);
+      return badInput(bad.empty() ? scene.source + ": the deformed meshes are not finite" : bad);
+    }
     if (!body.empty) {
       bounds.add(body.min);
       bounds.add(body.max);
@@ -222,7 +279,9 @@ int runRender(const RenderOptions& o) {
     job.world = &worlds[k];
     job.selectedJoint = selected;
     job.shownJoints = &skinJoints;
-    if (o.bones == "xray" && meshes) job.style = SkeletonStyle::xRay();
+    const std::vector<char> loose = looseJoints(scene.skeleton, clipOf(scene, o.clip), sampledPose(scene, o.clip, samples[k].time));
+    job.looseJoints = &loose;
+    if (o.bones == "xray") job.style = SkeletonStyle::xRay();  // see-through over meshes and grid alike
     job.run(list);
     MeshDraw meshDraw;
     meshDraw.renderer = &renderer.meshes();

@@ -21,6 +21,7 @@ struct RenderOptions {
   std::string weights;
   std::string mesh = "on";
   std::string out;
+  std::string up = "y";  // --up: BVH files' up axis
   CLI::Option* timeOption = nullptr;
   CLI::Option* frameOption = nullptr;
   CLI::Option* framesOption = nullptr;

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "cli/command_line.h"
+#include "cli/finite_results.h"
 #include "core/forward_kinematics.h"
 #include "io/json_number.h"
 #include "skin/scene_deformation.h"
@@ -23,12 +24,13 @@ CLI::App* addSkinCommand(CLI::App& app, SkinOptions& o) {
                   "Skinning for every mesh: linear (linear blend) or dq (dual quaternions); default: each mesh's own")
       ->check(CLI::IsMember({"linear", "dq"}));
   cmd->add_flag("--json", o.json, "Print JSON (the stable contract) instead of a summary");
+  addUpOption(cmd, o.up);
   return cmd;
 }
 
 int runSkin(const SkinOptions& o) {
   if (!std::isfinite(o.time)) return badInput("--time must be a finite number");
-  Result<Scene> loaded = loadScene(o.file, inputLimits(o.allowOutsidePaths));
+  Result<Scene> loaded = loadScene(o.file, inputLimits(o.allowOutsidePaths), upAxisOf(o.up));
   if (!loaded) return badInput(loaded.error());
   Scene& scene = loaded.value();
   for (const std::string& line : scene.warnings) std::cerr << "kinema skin: warning: " << o.file << ": " << line << "\n";
@@ -38,6 +40,7 @@ int runSkin(const SkinOptions& o) {
       inst.skinning = o.method == "dq" ? SkinningMethod::DualQuaternion : SkinningMethod::LinearBlend;
   const double time = o.frameOption->count() ? static_cast<double>(o.frame) * frameTimeOf(scene, o.clip) : o.time;
   const std::vector<glm::mat4> world = computeWorld(scene.skeleton, sampledPose(scene, o.clip, time));
+  if (const std::string bad = nonFiniteWorldError(scene, world, time); !bad.empty()) return badInput(bad);
   const std::vector<std::vector<float>> weights = sampleMorphWeights(scene, o.clip, time);
   std::vector<DeformedPrimitive> deformed;
   SceneDeformationJob job;
@@ -48,6 +51,7 @@ int runSkin(const SkinOptions& o) {
   job.out = &deformed;
   if (const std::string bad = job.validate(); !bad.empty()) return badInput(scene.source + ": " + bad);
   if (!job.run()) return badInput(scene.source + ": the meshes could not be deformed");
+  if (const std::string bad = nonFiniteVerticesError(scene, deformed, time); !bad.empty()) return badInput(bad);
 
   if (o.json) {
     nlohmann::ordered_json meshes = nlohmann::ordered_json::array();

@@ -13,6 +13,7 @@ struct SkinOptions {
   long long frame = 0;
   std::string method;  // "", "linear" or "dq": "" keeps each instance's own setting
   bool json = false;
+  std::string up = "y";  // --up: BVH files' up axis
   CLI::Option* frameOption = nullptr;
 };
 

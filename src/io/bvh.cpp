@@ -363,6 +363,30 @@ Result<BvhData> loadBvh(const std::string& path, const InputLimits& limits) {
   return parseBvh(text, path, limits);
 }
 
+void convertZUpToYUp(BvhData& data) {
+  std::vector<char> negate(static_cast<size_t>(data.channelCount), 0);
+  for (BvhJoint& j : data.joints) {
+    j.offset = glm::vec3(j.offset.x, j.offset.z, -j.offset.y);
+    for (size_t c = 0; c < j.channels.size(); ++c) {
+      BvhChannel& ch = j.channels[c];
+      const size_t column = static_cast<size_t>(j.firstChannel) + c;
+      switch (ch) {
+        case BvhChannel::Yposition: ch = BvhChannel::Zposition; break;
+        case BvhChannel::Zposition: ch = BvhChannel::Yposition; break;
+        case BvhChannel::Yrotation: ch = BvhChannel::Zrotation; break;
+        case BvhChannel::Zrotation: ch = BvhChannel::Yrotation; break;
+        default: continue;
+      }
+      // The old Y becomes -Z (positions and rotation angles alike).
+      if ((ch == BvhChannel::Zposition || ch == BvhChannel::Zrotation) && column < negate.size()) negate[column] = 1;
+    }
+  }
+  if (data.channelCount <= 0) return;
+  const size_t columns = static_cast<size_t>(data.channelCount);
+  for (size_t i = 0; i < data.motion.size(); ++i)
+    if (negate[i % columns]) data.motion[i] = -data.motion[i];
+}
+
 Skeleton BvhData::skeleton() const {
   Skeleton s;
   for (const BvhJoint& j : joints) s.addJoint(j.name, j.parent, Transform::fromTranslation(j.offset));

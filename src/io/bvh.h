@@ -7,6 +7,7 @@
 #include "core/rotation.h"
 #include "core/skeleton.h"
 #include "io/input_limits.h"
+#include "io/up_axis.h"
 
 namespace kinema {
 
@@ -51,5 +52,12 @@ struct BvhData {
 // `limits` caps the joint count and frames x channels before anything is allocated.
 Result<BvhData> parseBvh(const std::string& text, const std::string& source, const InputLimits& limits = {});
 Result<BvhData> loadBvh(const std::string& path, const InputLimits& limits = {});
+
+// Turns a Z-up file into Kinema's Y-up one in place: the change of basis C (-90 degrees
+// about X: x, y, z -> x, z, -y) applied to every joint, so rest rotations stay identity and
+// the motion is exact. OFFSETs become C * offset; a Yposition channel becomes a negated
+// Zposition, Zposition becomes Yposition; C Ry(a) C^-1 = Rz(-a) and C Rz(a) C^-1 = Ry(a),
+// so rotation channels are relabelled (negated for Y) in their file order.
+void convertZUpToYUp(BvhData& data);
 
 }  // namespace kinema

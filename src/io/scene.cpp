@@ -19,11 +19,14 @@ std::string lowerExtension(const std::string& path) {
   return ext;
 }
 
-Result<Scene> loadScene(const std::string& path, const InputLimits& limits) {
+Result<Scene> loadScene(const std::string& path, const InputLimits& limits) { return loadScene(path, limits, UpAxis::Y); }
+
+Result<Scene> loadScene(const std::string& path, const InputLimits& limits, UpAxis bvhUp) {
   const std::string ext = lowerExtension(path);
   if (ext == ".bvh") {
     Result<BvhData> bvh = loadBvh(path, limits);
     if (!bvh) return Result<Scene>::failure(bvh.error());
+    if (bvhUp == UpAxis::Z) convertZUpToYUp(bvh.value());
     Scene scene;
     scene.source = path;
     scene.skeleton = bvh->skeleton();

@@ -10,6 +10,7 @@
 #include "core/skeleton.h"
 #include "ik/ik_rig.h"
 #include "io/input_limits.h"
+#include "io/up_axis.h"
 
 namespace kinema {
 
@@ -71,5 +72,8 @@ std::string lowerExtension(const std::string& path);
 
 // Loads .bvh, .kinema, .gltf or .glb, chosen by the file's extension.
 Result<Scene> loadScene(const std::string& path, const InputLimits& limits = {});
+// The same, reading a .bvh file as `bvhUp`-up (other formats are Y-up by definition: glTF
+// says so, .kinema files are Kinema's own).
+Result<Scene> loadScene(const std::string& path, const InputLimits& limits, UpAxis bvhUp);
 
 }  // namespace kinema

@@ -36,6 +36,8 @@ std::string SkeletonDrawJob::validate() const {
   }
   if (shownJoints && !shownJoints->empty() && shownJoints->size() != parents->size())
     return "skeleton drawing: the shown-joint flags and the joints differ in count";
+  if (looseJoints && !looseJoints->empty() && looseJoints->size() != parents->size())
+    return "skeleton drawing: the loose-joint flags and the joints differ in count";
   return {};
 }
 
@@ -60,9 +62,14 @@ bool SkeletonDrawJob::run(SkeletonDrawList& out) const {
   auto shown = [&](int i) { return !filtered || (*shownJoints)[i] != 0; };
   // Each joint's nearest shown ancestor, in one forward pass (parents come first).
   std::vector<int> drawnParent(n, -1);
+  // Loose: the link from the nearest shown ancestor is not a bone, because the joint or a
+  // hidden joint between them moves on its own.
+  const bool anyLoose = looseJoints && !looseJoints->empty();
+  std::vector<char> looseLink(n, 0);
   for (int i = 0; i < n; ++i) {
     const int p = par[i];
     drawnParent[i] = p < 0 ? -1 : shown(p) ? p : drawnParent[p];
+    if (anyLoose && p >= 0) looseLink[i] = (*looseJoints)[i] != 0 || (!shown(p) && looseLink[p] != 0);
   }
 
   // Joint radius: a tenth of the shortest bone touching the joint (Blender's proportion),
@@ -77,6 +84,10 @@ bool SkeletonDrawJob::run(SkeletonDrawList& out) const {
     if (p < 0 || !shown(i)) continue;
     const float len = glm::length(pos(i) - pos(p));
     if (len <= size * 1e-4f) continue;
+    if (looseLink[i]) {
+      out.relationships.push_back({pos(p), pos(i), style.relationship, p, i});
+      continue;
+    }
     for (int j : {i, p}) shortest[j] = shortest[j] == 0.0f ? len : std::min(shortest[j], len);
     out.boneMatrices.push_back(boneMatrix(pos(p), pos(i), glm::vec3(w[p][0])));
     out.boneColors.push_back(p == selectedJoint ? style.selectedBone : style.bone);
@@ -107,6 +118,8 @@ SkeletonDrawList keepJoints(const SkeletonDrawList& list, const std::vector<char
     out.boneParents.push_back(list.boneParents[b]);
     out.boneChildren.push_back(b < list.boneChildren.size() ? list.boneChildren[b] : -1);
   }
+  for (const SkeletonDrawList::Relationship& r : list.relationships)
+    if (kept(r.parent)) out.relationships.push_back(r);
   for (size_t i = 0; i < list.jointMatrices.size(); ++i) {
     if (i >= list.joints.size() || !kept(list.joints[i])) continue;
     out.jointMatrices.push_back(list.jointMatrices[i]);

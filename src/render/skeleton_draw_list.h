@@ -13,12 +13,15 @@ struct SkeletonStyle {
   glm::vec4 joint{0.32f, 0.34f, 0.40f, 1.0f};
   glm::vec4 selectedBone{1.0f, 0.62f, 0.20f, 1.0f};
   glm::vec4 selectedJoint{1.0f, 0.55f, 0.10f, 1.0f};
+  // Dashed relationship lines to joints not connected to their parent (loose_joints.h).
+  glm::vec4 relationship{0.78f, 0.78f, 0.80f, 1.0f};
   // Bones drawn x-ray over a (usually light) body: a blue that stands out from skin tones,
   // 60% opaque so the body shows through; the selection stays opaque so it stands out.
   static SkeletonStyle xRay() {
     SkeletonStyle s;
     s.bone = glm::vec4(0.30f, 0.52f, 0.95f, 0.6f);
     s.joint = glm::vec4(0.12f, 0.20f, 0.45f, 0.6f);
+    s.relationship = glm::vec4(0.55f, 0.70f, 1.0f, 0.9f);
     return s;
   }
 };
@@ -34,6 +37,14 @@ struct SkeletonDrawList {
   std::vector<glm::mat4> jointMatrices;  // translate(position) * scale(radius)
   std::vector<glm::vec4> jointColors;
   std::vector<int> joints;  // per sphere: its joint (spheres of joints not shown are left out)
+  // Relationship lines, drawn thin and dashed in place of a bone to a joint that is not
+  // connected to its parent: from the parent's position to the joint's (world space).
+  struct Relationship {
+    glm::vec3 from{0.0f}, to{0.0f};
+    glm::vec4 color{1.0f};
+    int parent = -1, child = -1;
+  };
+  std::vector<Relationship> relationships;
 };
 
 // The part of a drawing that shows the joints `keep` flags (one flag per skeleton joint):
@@ -52,6 +63,9 @@ struct SkeletonDrawJob {
   // nearest drawn ancestor (skinJointMask: a glTF character's skin joints, not its mesh
   // and helper nodes). Null or empty: every joint.
   const std::vector<char>* shownJoints = nullptr;
+  // Optional, one flag per joint (looseJoints): 1 where the joint is not connected to its
+  // parent, so a dashed relationship line stands for the bone to it. Null or empty: none.
+  const std::vector<char>* looseJoints = nullptr;
   // Empty when usable; otherwise what is wrong (missing arrays, sizes differ, bad parent).
   std::string validate() const;
   // Fills `out`; returns false (and leaves `out` empty) when validate() fails.

@@ -1,5 +1,7 @@
 #include "render/skeleton_renderer.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 
 #include "render/mesh_renderer.h"
@@ -7,6 +9,23 @@
 #include "render/shape_meshes.h"
 
 namespace kinema {
+
+namespace {
+
+// Dashes of about kDashPixels with equal gaps, counted on the line's length on screen (so
+// they look alike at any zoom); 8 when an end is behind the camera.
+int dashCount(const glm::vec3& a, const glm::vec3& b, const glm::mat4& viewProjection, int width, int height) {
+  constexpr float kDashPixels = 5.0f;
+  const glm::vec4 ca = viewProjection * glm::vec4(a, 1.0f), cb = viewProjection * glm::vec4(b, 1.0f);
+  if (!(ca.w > 1e-6f && cb.w > 1e-6f)) return 8;
+  const glm::vec2 size(static_cast<float>(width), static_cast<float>(height));
+  const glm::vec2 pa = glm::vec2(ca) / ca.w * 0.5f * size, pb = glm::vec2(cb) / cb.w * 0.5f * size;
+  const float pixels = glm::length(pb - pa);
+  if (!std::isfinite(pixels)) return 8;
+  return static_cast<int>(std::clamp((pixels / kDashPixels + 1.0f) * 0.5f, 2.0f, 2000.0f));
+}
+
+}  // namespace
 
 SkeletonRenderer::~SkeletonRenderer() {
   for (ShapeBuffers* s : {&bone_, &sphere_, &ghostBone_, &ghostSphere_}) {
@@ -180,9 +199,9 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
     glUseProgram(shaded_.id());
     glUniformMatrix4fv(shaded_.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
     glUniformMatrix4fv(shaded_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
-    const bool xray = frame.bones == BoneDisplay::XRay && frame.meshes;
+    const bool xray = frame.bones == BoneDisplay::XRay;
     if (xray) {
-      // On top of the meshes: fresh depth, a depth-only pass, then the nearest bone surfaces
+      // On top of the meshes (or, without any, of the grid): fresh depth, a depth-only pass, then the nearest bone surfaces
       // blended by their colours' alpha (SkeletonStyle::xRay()) so the body still shows through.
       glEnable(GL_SCISSOR_TEST);
       glClear(GL_DEPTH_BUFFER_BIT);
@@ -200,6 +219,16 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
     if (xray) {
       glDisable(GL_BLEND);
       glDepthFunc(GL_LESS);
+    }
+    // Thin dashed relationship lines where a joint is not connected to its parent: hidden
+    // by bodies like the bones, on top of everything with them in x-ray.
+    if (!frame.skeleton->relationships.empty()) {
+      OverlayDrawList dashed;
+      for (const SkeletonDrawList::Relationship& r : frame.skeleton->relationships)
+        dashed.addDashedLine(r.from, r.to, dashCount(r.from, r.to, viewProjection, frame.width, frame.height), r.color,
+                             frame.lineScale, xray ? OverlayDrawList::Layer::OnTop : OverlayDrawList::Layer::Scene);
+      overlay_.draw(dashed, viewProjection, frame.width, frame.height);
+      glUseProgram(shaded_.id());
     }
   }
   if (frame.ghosts && !frame.ghosts->empty()) drawGhosts(*frame.ghosts, viewProjection, view);

@@ -22,8 +22,8 @@ void rememberRecent(EditorState& state, const std::string& path) {
   state.panels.recent.save();
 }
 
-void openNow(EditorState& state, const std::string& path) {
-  Result<Document> opened = openDocument(path, state.inputLimits);
+void openNow(EditorState& state, const std::string& path, UpAxis bvhUp = UpAxis::Y) {
+  Result<Document> opened = openDocument(path, state.inputLimits, bvhUp);
   if (!opened) {
     showEditorError(state, opened.error());
     std::error_code ec;
@@ -143,7 +143,7 @@ void requestExport(EditorState& state, FileDialogPurpose format) {
 void finishFileDialog(EditorState& state, const std::string& path) {
   const FileDialogPurpose purpose = state.panels.fileDialog.purpose;
   if (purpose == FileDialogPurpose::Open) {
-    openNow(state, path);  // the discard question was asked before the dialog opened
+    openNow(state, path, state.panels.fileDialog.bvhUp);  // the discard question was asked before the dialog opened
     return;
   }
   if (purpose == FileDialogPurpose::SaveAs) {

@@ -20,8 +20,8 @@ Document newDocument() {
   return Document(makeDefaultCharacterScene());
 }
 
-Result<Document> openDocument(const std::string& path, const InputLimits& limits) {
-  Result<Scene> scene = loadScene(path, limits);
+Result<Document> openDocument(const std::string& path, const InputLimits& limits, UpAxis bvhUp) {
+  Result<Scene> scene = loadScene(path, limits, bvhUp);
   if (!scene) return Result<Document>::failure(scene.error());
   return Document(std::move(scene).value(), path);
 }

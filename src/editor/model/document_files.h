@@ -14,7 +14,9 @@ namespace kinema {
 Document newDocument();
 // .kinema, .gltf, .glb or .bvh (io/scene.h loadScene); the pose saved in a .kinema file
 // becomes the working pose.
-Result<Document> openDocument(const std::string& path, const InputLimits& limits = {});
+// A .bvh file is read as `bvhUp`-up (the open dialog's choice; io/up_axis.h).
+Result<Document> openDocument(const std::string& path, const InputLimits& limits = {},
+                              UpAxis bvhUp = UpAxis::Y);
 // Ctrl+S: to the document's own path; needs Save As when it has none or is not .kinema.
 bool canSaveInPlace(const Document& doc);
 std::string saveDocument(Document& doc);

@@ -18,6 +18,10 @@ void setFileDialogField(FileDialogState& d, const std::string& text) {
 
 bool isSaveDialog(FileDialogPurpose p) { return p != FileDialogPurpose::Open; }
 
+bool showsBvhUpAxis(const FileDialogState& d) {
+  return d.purpose == FileDialogPurpose::Open && lowerExtension(d.path) == ".bvh";
+}
+
 void relistFileDialog(FileDialogState& d, const std::string& folder) {
   Result<FolderListing> listing = listFolder(folder, fileDialogExtensions(d.purpose));
   if (!listing) {

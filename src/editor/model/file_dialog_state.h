@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "editor/model/folder_listing.h"
+#include "io/up_axis.h"
 
 namespace kinema {
 
@@ -19,6 +20,9 @@ struct FileDialogState {
   FolderListing listing;
   std::string listingError;
   std::string confirmOverwrite;  // a save target that exists: asked about before it is chosen
+  // Open: the up axis a .bvh file is read with (shown when the field names one; Y is the
+  // BVH convention, Z what Blender's BVH exporter writes). Kept between openings.
+  UpAxis bvhUp = UpAxis::Y;
 };
 
 const char* fileDialogTitle(FileDialogPurpose purpose);
@@ -33,6 +37,9 @@ bool isSaveDialog(FileDialogPurpose purpose);
 void relistFileDialog(FileDialogState& dialog, const std::string& folder);
 // Puts `text` into the path field (cut to the field's size).
 void setFileDialogField(FileDialogState& dialog, const std::string& text);
+
+// Whether the dialog offers the BVH up-axis choice: Open, with a .bvh name in the field.
+bool showsBvhUpAxis(const FileDialogState& dialog);
 
 // The path the field names: absolute as typed, else relative to the listed folder, with the
 // purpose's extension appended for saves when it has none.

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "editor/panels/item_names.h"
 #include "io/scene.h"
 
 namespace kinema {
@@ -68,7 +69,17 @@ bool drawFileDialog(FileDialogState& d, const std::vector<std::string>& recentFi
       ImGui::EndListBox();
     }
   }
+  if (showsBvhUpAxis(d)) {  // Blender's BVH exporter writes Z-up files
+    ImGui::TextUnformatted("BVH up axis:");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("Y (BVH convention)", d.bvhUp == UpAxis::Y)) d.bvhUp = UpAxis::Y;
+    recordItem(std::string(title) + "/Up Y");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("Z (Blender export)", d.bvhUp == UpAxis::Z)) d.bvhUp = UpAxis::Z;
+    recordItem(std::string(title) + "/Up Z");
+  }
   if (ImGui::Button(isSaveDialog(d.purpose) ? "Save" : "Open", ImVec2(ImGui::GetFontSize() * 8.5f, 0))) accept = true;
+  recordItem(std::string(title) + "/Accept");
   ImGui::SameLine();
   const bool escape = d.confirmOverwrite.empty() && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false);
   if (ImGui::Button("Cancel", ImVec2(ImGui::GetFontSize() * 8.5f, 0)) || escape) {

@@ -29,6 +29,7 @@
 #include "editor/viewport/viewport_tools.h"
 #include "io/atomic_write.h"
 #include "io/image.h"
+#include "render/loose_joints.h"
 #include "render/mesh_renderer.h"
 #include "render/skeleton_renderer.h"
 #include "render/skeleton_view.h"
@@ -383,6 +384,11 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         job.parents = &state.doc.skeleton().parents;
         job.world = &state.world();
         job.shownJoints = &skinJoints;
+        // Dashed relationship lines to joints that move on their own (Blender's unconnected bones).
+        const std::vector<char> loose = looseJoints(state.doc.skeleton(),
+                                                    state.hasMotion() ? &state.doc.scene().clips[state.clip] : nullptr,
+                                                    state.doc.pose());
+        job.looseJoints = &loose;
         job.run(list);
         MeshDraw meshDraw;
         meshDraw.renderer = &meshes;
