@@ -3,6 +3,9 @@
 // median; anchor_timing.h). Prints a Markdown table, ratio = Kinema / ozz (lower is faster).
 //   ./build/bench/anchors/ozz_anchor_bench            (every row)
 //   ./build/bench/anchors/ozz_anchor_bench sampling   (rows whose name contains "sampling")
+// Instructions per 64-joint playback sample, both sides:
+//   valgrind --tool=callgrind --toggle-collect='*PlaybackLoop*'
+//     ./build/bench/anchors/ozz_anchor_bench callgrind-playback   (one command line)
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -199,7 +202,8 @@ struct TwinClip {
   Skeleton skeleton;
 };
 
-// iframeInterval: seconds between ozz's seek points (0: the builder's default).
+// iframeInterval: seconds between ozz's seek points (0: the builder's default; < 0: no ozz
+// animation, Kinema's clip only).
 TwinClip makeClip(int joints, int keys, float iframeInterval) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> u(-1.0f, 1.0f);
@@ -207,7 +211,8 @@ TwinClip makeClip(int joints, int keys, float iframeInterval) {
   TwinClip c;
   oz::offline::RawAnimation raw;
   raw.duration = (keys - 1) * kKeyStep;
-  raw.tracks.resize(joints);
+  const bool withOzz = iframeInterval >= 0.0f;
+  raw.tracks.resize(withOzz ? joints : 0);
   for (int j = 0; j < joints; ++j) {
     Channel t(j, ChannelTarget::Translation, Interpolation::Linear, {}, {});
     Channel r(j, ChannelTarget::Rotation, Interpolation::Linear, {}, {});
@@ -221,6 +226,7 @@ TwinClip makeClip(int joints, int keys, float iframeInterval) {
       r.times.push_back(time);
       t.values.emplace_back(p, 0.0f);
       r.values.emplace_back(q.x, q.y, q.z, q.w);
+      if (!withOzz) continue;
       raw.tracks[j].translations.push_back({time, ozz::math::Float3(p.x, p.y, p.z)});
       raw.tracks[j].rotations.push_back({time, ozz::math::Quaternion(q.x, q.y, q.z, q.w)});
     }
@@ -228,6 +234,7 @@ TwinClip makeClip(int joints, int keys, float iframeInterval) {
     c.kinema.channels.push_back(std::move(r));
     c.skeleton.addJoint("j" + std::to_string(j), j - 1, Transform());
   }
+  if (!withOzz) return c;
   oz::offline::AnimationBuilder builder;
   if (iframeInterval > 0.0f) builder.iframe_interval = iframeInterval;
   c.ozz = builder(raw);
@@ -260,9 +267,14 @@ void checkSamples(const TwinClip& c, const std::vector<float>& times, int joints
                                       std::to_string(dr) + " rad");
 }
 
+double randomAt64 = 0.0;  // Kinema's random-access figure at 64 joints (ns/joint)
+
+// ozz builds at most 1,024 joints (Skeleton::kMaxJoints): beyond that Kinema runs alone and
+// the row shows its growth from 64 joints.
 void sampling(int joints, bool playback) {
   constexpr int kKeys = 1000;
-  const TwinClip c = makeClip(joints, kKeys, playback ? 0.0f : 1.0f);
+  const bool withOzz = joints <= 1024;
+  const TwinClip c = makeClip(joints, kKeys, !withOzz ? -1.0f : playback ? 0.0f : 1.0f);
   const float duration = c.kinema.duration();
   std::vector<float> times;
   if (playback) {
@@ -275,11 +287,11 @@ void sampling(int joints, bool playback) {
   const std::string row = playback ? "clip sampling, playback (" + std::to_string(joints) +
                                          " joints x 1,000 keys, 1/60 s steps)"
                                    : "clip sampling, random times, " + std::to_string(joints) + " joints x 1,000 keys";
-  checkSamples(c, times, joints, row);
+  if (withOzz) checkSamples(c, times, joints, row);
   Pose pose = Pose::rest(c.skeleton);
   SamplingCache cache;
   std::vector<ozz::math::SoaTransform> soa((joints + 3) / 4);
-  oz::SamplingJob::Context context(joints);
+  oz::SamplingJob::Context context(withOzz ? joints : 4);
   size_t ik = 0, io = 0;
   auto kin = [&] {
     if (playback)
@@ -297,8 +309,41 @@ void sampling(int joints, bool playback) {
     job.Run();
     if (++io == times.size()) io = 0;
   };
-  printRow(row, alternate(kin, ozzSide, joints), "ns/joint",
-           playback ? "ozz `SamplingJob`" : "ozz `SamplingJob`, 1 s iframes,");
+  if (!withOzz) {
+    const anchor::SideBySide r = alternate(kin, kin, joints);
+    std::printf("| %s | %.3g ns/joint | (ozz: at most 1,024 joints) | %.2fx Kinema at 64 joints |\n", row.c_str(),
+                r.kinema, r.kinema / randomAt64);
+    return;
+  }
+  const anchor::SideBySide r = alternate(kin, ozzSide, joints);
+  if (!playback && joints == 64) randomAt64 = r.kinema;
+  printRow(row, r, "ns/joint", playback ? "ozz `SamplingJob`" : "ozz `SamplingJob`, 1 s iframes,");
+}
+
+// For callgrind (--toggle-collect='*PlaybackLoop*'): `count` playback samples of each side.
+__attribute__((noinline)) void kinemaPlaybackLoop(const Clip& clip, Pose& pose, SamplingCache& cache, int count) {
+  for (int i = 0; i < count; ++i) sampleClip(clip, i / 60.0f, pose, cache);
+}
+__attribute__((noinline)) void ozzPlaybackLoop(const oz::Animation& animation, oz::SamplingJob::Context& context,
+                                               std::vector<ozz::math::SoaTransform>& soa, int count) {
+  for (int i = 0; i < count; ++i) {
+    oz::SamplingJob job;
+    job.animation = &animation;
+    job.context = &context;
+    job.ratio = i / 60.0f / animation.duration();
+    job.output = ozz::make_span(soa);
+    job.Run();
+  }
+}
+void callgrindPlayback() {
+  const TwinClip c = makeClip(64, 1000, 0.0f);
+  Pose pose = Pose::rest(c.skeleton);
+  SamplingCache cache;
+  std::vector<ozz::math::SoaTransform> soa(16);
+  oz::SamplingJob::Context context(64);
+  kinemaPlaybackLoop(c.kinema, pose, cache, 1000);
+  ozzPlaybackLoop(*c.ozz, context, soa, 1000);
+  std::printf("ran 1,000 playback samples (64 joints) on each side: instructions / 1,000 = per sample\n");
 }
 
 // ---------------------------------------------------------------- skinning
@@ -499,6 +544,10 @@ void twoBone() {
 
 int main(int argc, char** argv) {
   const std::string only = argc > 1 ? argv[1] : "";
+  if (only == "callgrind-playback") {
+    callgrindPlayback();
+    return 0;
+  }
   auto want = [&](const char* name) { return only.empty() || std::string(name).find(only) != std::string::npos; };
   anchor::printHeader("Kinema beside ozz-animation 0.16.0 (CPU time per item, median of 11 alternating rounds)");
   if (want("fk")) fk();

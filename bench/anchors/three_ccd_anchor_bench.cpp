@@ -72,6 +72,29 @@ Solves solveAll(IkSolver solver, const Skeleton& chain, const std::vector<glm::v
   return out;
 }
 
+// For callgrind (--toggle-collect='*ccdSolveLoop*'): CCD on the given targets, untimed.
+__attribute__((noinline)) int ccdSolveLoop(const Skeleton& chain, const std::vector<glm::vec3>& targets) {
+  IkSettings settings;
+  settings.tolerance = kTolerance;
+  settings.maxIterations = kMaxSweeps;
+  settings.stallFraction = 0.0f;
+  IkProblem problem;
+  problem.skeleton = &chain;
+  problem.targets.resize(1);
+  problem.targets[0].effector = kBones;
+  problem.targets[0].root = 0;
+  const Pose rest = Pose::rest(chain);
+  Pose pose = rest;
+  problem.pose = &pose;
+  int sweeps = 0;
+  for (const glm::vec3& t : targets) {
+    pose = rest;
+    problem.targets[0].position = t;
+    sweeps += solveIk(IkSolver::Ccd, problem, settings).iterations;
+  }
+  return sweeps;
+}
+
 double mean(const std::vector<double>& v) {
   double s = 0.0;
   for (double x : v) s += x;
@@ -85,15 +108,19 @@ double meanInt(const std::vector<int>& v) {
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
   const std::string dir = KINEMA_THREE_CCD_DIR;
+  // Instructions per CCD solve (reachable targets of an earlier run, no node):
+  //   valgrind --tool=callgrind --toggle-collect='*ccdSolveLoop*'
+  //     ./build/bench/anchors/three_ccd_anchor_bench callgrind-ccd   (one command line)
+  const bool callgrind = argc > 1 && std::string(argv[1]) == "callgrind-ccd";
   const std::string targetsPath = dir + "/targets.json", resultsPath = dir + "/results.json",
                     summaryPath = dir + "/summary.json";
   const std::string command = "cd '" + dir + "' && '" + KINEMA_NODE +
                               "' perf_three_ccd.mjs --targets-out targets.json --results-out results.json > summary.json";
-  std::printf("running three.js: %s\n", command.c_str());
+  if (!callgrind) std::printf("running three.js: %s\n", command.c_str());
   std::fflush(stdout);
-  if (std::system(command.c_str()) != 0) {
+  if (!callgrind && std::system(command.c_str()) != 0) {
     std::fprintf(stderr, "error: the three.js script failed (is three installed in %s?)\n", dir.c_str());
     return 1;
   }
@@ -118,6 +145,12 @@ int main() {
     chain.addJoint("j" + std::to_string(i), i - 1,
                    Transform::fromTranslation(glm::vec3(0.0f, i == 0 ? 0.0f : 1.0f, 0.0f)));
 
+  if (callgrind) {
+    const std::vector<glm::vec3> reachableTargets(targets.begin(), targets.begin() + reachable);
+    std::printf("%zu CCD solves, %d sweeps: instructions / %zu = per solve\n", reachable,
+                ccdSolveLoop(chain, reachableTargets), reachable);
+    return 0;
+  }
   // Same answers first: CCD's sweep count on every reachable target equals three's.
   const Solves ccd = solveAll(IkSolver::Ccd, chain, targets, 0, reachable, true);
   int sameSweeps = 0, bothConverged = 0;
