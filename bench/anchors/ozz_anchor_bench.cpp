@@ -335,6 +335,32 @@ __attribute__((noinline)) void ozzPlaybackLoop(const oz::Animation& animation, o
     job.Run();
   }
 }
+// For callgrind (--toggle-collect='*twoBoneLoop*'): the whole two-bone solveIk path.
+__attribute__((noinline)) void twoBoneLoop(IkProblem& problem, Pose& pose, const std::vector<Pose>& starts,
+                                           const std::vector<glm::vec3>& targets) {
+  IkSettings settings;
+  for (size_t k = 0; k < starts.size(); ++k) {
+    pose = starts[k];
+    problem.pose = &pose;
+    problem.targets[0].position = targets[k];
+    solveIk(IkSolver::TwoBone, problem, settings);
+  }
+}
+void callgrindTwoBone() {
+  Skeleton s;
+  for (int i = 0; i < 3; ++i)
+    s.addJoint("j" + std::to_string(i), i - 1, Transform::fromTranslation(glm::vec3(0.0f, i == 0 ? 0.0f : 1.0f, 0.0f)));
+  std::vector<Pose> starts(1000, Pose::rest(s));
+  std::vector<glm::vec3> targets(1000, glm::vec3(0.5f, 1.2f, 0.3f));
+  IkProblem problem;
+  problem.skeleton = &s;
+  problem.targets.resize(1);
+  problem.targets[0].effector = 2;
+  Pose pose;
+  twoBoneLoop(problem, pose, starts, targets);
+  std::printf("ran 1,000 two-bone solveIk calls: instructions / 1,000 = per solve\n");
+}
+
 void callgrindPlayback() {
   const TwinClip c = makeClip(64, 1000, 0.0f);
   Pose pose = Pose::rest(c.skeleton);
@@ -546,6 +572,10 @@ int main(int argc, char** argv) {
   const std::string only = argc > 1 ? argv[1] : "";
   if (only == "callgrind-playback") {
     callgrindPlayback();
+    return 0;
+  }
+  if (only == "callgrind-two-bone") {
+    callgrindTwoBone();
     return 0;
   }
   auto want = [&](const char* name) { return only.empty() || std::string(name).find(only) != std::string::npos; };

@@ -171,6 +171,10 @@ glm::vec4 sampleAt(const Channel& ch, float time, int hi) {
   return rotation ? rotationSegment(ch, s, lo, time, u) : vectorSegment(ch, s, lo, time, u);
 }
 
+// How many channels ahead random access prefetches keys: enough to cover a memory access
+// while the channels in between are sampled.
+constexpr size_t kPrefetchAhead = 4;
+
 void sampleInto(const Clip& clip, float time, Pose& pose, int* cursors) {
   const unsigned joints = static_cast<unsigned>(pose.size());
   Transform* out = pose.local.data();
@@ -192,12 +196,13 @@ void sampleInto(const Clip& clip, float time, Pose& pose, int* cursors) {
       inside = hi > 0 && hi < n && times[hi - 1] != time;
     }
     guess = hi;
-    if (!cursors && c + 2 < count) {
-      // Random access runs on cache misses: fetch the keys two channels ahead now.
-      const Channel& ahead = channels[c + 2];
+    if (!cursors && c + kPrefetchAhead < count) {
+      // Random access runs on cache misses: fetch the keys a few channels ahead now.
+      const Channel& ahead = channels[c + kPrefetchAhead];
       if (hi > 0 && hi < ahead.keyCount()) {
         __builtin_prefetch(ahead.times.data() + hi - 1);
         __builtin_prefetch(ahead.values.data() + hi - 1);
+        __builtin_prefetch(ahead.values.data() + hi);
       }
     }
     Transform& t = out[ch.joint];

@@ -111,10 +111,6 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
   return {};
 }
 
-glm::quat IkChain::parentRotation(int s) const {
-  return parentSlot[s] >= 0 ? rotation[parentSlot[s]] : fixedRotation[s];
-}
-
 void IkChain::forwardSlot(int s) {
   const Transform& t = pose->local[joints[s]];
   const glm::mat4& parent = parentSlot[s] >= 0 ? world[parentSlot[s]] : fixedParent[s];

@@ -80,7 +80,7 @@ struct IkChain {
   // Recomputes slot s only (its parent must be up to date).
   void forwardSlot(int s);
   glm::vec3 position(int s) const { return glm::vec3(world[s][3]); }
-  glm::quat parentRotation(int s) const;
+  glm::quat parentRotation(int s) const { return parentSlot[s] >= 0 ? rotation[parentSlot[s]] : fixedRotation[s]; }
   // Turns slot s by `delta` (a world rotation about its own position), clamps the result
   // to the joint's limit, and carries its sub-tree along rigidly. Returns the rotation
   // actually applied.
