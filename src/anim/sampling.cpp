@@ -96,25 +96,21 @@ inline float slerpWeight(float u, float xm1) {
 
 inline bool isUnit(const glm::vec4& v) { return std::abs(glm::dot(v, v) - 1.0f) < 1e-6f; }
 
-// slerpShortest of two unit quaternions (x, y, z, w), normalised: the reference's formula
-// (linear blend above cos 0.9995, sines below) with the sines replaced by slerpWeight where
-// it is exact to float precision.
+// slerpShortest of two unit quaternions (x, y, z, w), normalised, with the sines replaced by
+// slerpWeight wherever it is exact to float precision. slerpShortest blends linearly above
+// cos 0.9995 (within 5e-7 of the slerp there); the series stays on the slerp, and without
+// that branch, which on motion capture goes either way from key to key.
 inline glm::vec4 slerpUnitKeys(const glm::vec4& a, glm::vec4 b, float u) {
   float d = glm::dot(a, b);
   if (d < 0.0f) {
     b = -b;
     d = -d;
   }
-  glm::vec4 r;
-  if (d > 0.9995f) {
-    r = a + u * (b - a);
-  } else if (d >= 0.8f) {
-    const float xm1 = d - 1.0f;
-    r = slerpWeight(1.0f - u, xm1) * a + slerpWeight(u, xm1) * b;
-  } else {
+  if (!(d >= 0.8f))
     return toVec(unit(slerpShortest(glm::quat(a.w, a.x, a.y, a.z), glm::quat(b.w, b.x, b.y, b.z), u)));
-  }
-  // |r| is within 1e-4 of 1: one Newton step for 1 / |r| is exact to float precision.
+  const float xm1 = std::min(d, 1.0f) - 1.0f;
+  const glm::vec4 r = slerpWeight(1.0f - u, xm1) * a + slerpWeight(u, xm1) * b;
+  // |r| is within 1e-7 of 1: one Newton step for 1 / |r| is exact to float precision.
   return r * (1.5f - 0.5f * glm::dot(r, r));
 }
 
@@ -187,13 +183,14 @@ void sampleInto(const Clip& clip, float time, Pose& pose, int* cursors) {
     const int n = ch.keyCount();
     if (ch.target == ChannelTarget::Scalar || static_cast<unsigned>(ch.joint) >= joints || n == 0) continue;
     int* cursor = cursors ? cursors + c : nullptr;
-    // Strictly inside the segment before key hi: playback's cursor, or at random times the
-    // previous channel's answer, usually is.
+    // Within the segment before key hi (its first key included: there u is 0 and the
+    // segment gives that key): playback's cursor, or at random times the previous
+    // channel's answer, usually is.
     int hi = cursor ? *cursor : guess;
-    bool inside = hi > 0 && hi < n && times[hi - 1] < time && time < times[hi];
+    bool inside = hi > 0 && hi < n && times[hi - 1] <= time && time < times[hi];
     if (!inside) {
       hi = upperKeyWithGuess(ch, time, cursor, guess);
-      inside = hi > 0 && hi < n && times[hi - 1] != time;
+      inside = hi > 0 && hi < n;
     }
     guess = hi;
     if (!cursors && c + kPrefetchAhead < count) {
