@@ -183,14 +183,13 @@ void sampleInto(const Clip& clip, float time, Pose& pose, int* cursors) {
     const int n = ch.keyCount();
     if (ch.target == ChannelTarget::Scalar || static_cast<unsigned>(ch.joint) >= joints || n == 0) continue;
     int* cursor = cursors ? cursors + c : nullptr;
-    // Within the segment before key hi (its first key included: there u is 0 and the
-    // segment gives that key): playback's cursor, or at random times the previous
-    // channel's answer, usually is.
+    // Strictly inside the segment before key hi: playback's cursor, or at random times the
+    // previous channel's answer, usually is. (On a key, sampleAt returns the key itself.)
     int hi = cursor ? *cursor : guess;
-    bool inside = hi > 0 && hi < n && times[hi - 1] <= time && time < times[hi];
+    bool inside = hi > 0 && hi < n && times[hi - 1] < time && time < times[hi];
     if (!inside) {
       hi = upperKeyWithGuess(ch, time, cursor, guess);
-      inside = hi > 0 && hi < n;
+      inside = hi > 0 && hi < n && times[hi - 1] != time;
     }
     guess = hi;
     if (!cursors && c + kPrefetchAhead < count) {
