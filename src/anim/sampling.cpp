@@ -79,11 +79,146 @@ void apply(const Channel& ch, const glm::vec4& v, Transform& t) {
   }
 }
 
+// The weights sin((1 - u) theta) / sin(theta) and sin(u theta) / sin(theta) of a slerp with
+// cos(theta) = x, as the series in (x - 1) of Eberly's "A fast and accurate algorithm for
+// computing SLERP" (2011), cut after six terms: for x >= 0.8 (keys up to 74 degrees apart)
+// it is within 2e-8 of the sines, with no acos, sin or division.
+inline float slerpWeight(float u, float xm1) {
+  const float u2 = u * u;
+  float acc = 1.0f + (u2 / 78.0f - 6.0f / 13.0f) * xm1;
+  acc = 1.0f + (u2 / 55.0f - 5.0f / 11.0f) * xm1 * acc;
+  acc = 1.0f + (u2 / 36.0f - 4.0f / 9.0f) * xm1 * acc;
+  acc = 1.0f + (u2 / 21.0f - 3.0f / 7.0f) * xm1 * acc;
+  acc = 1.0f + (u2 / 10.0f - 2.0f / 5.0f) * xm1 * acc;
+  acc = 1.0f + (u2 / 3.0f - 1.0f / 3.0f) * xm1 * acc;
+  return u * acc;
+}
+
+inline bool isUnit(const glm::vec4& v) { return std::abs(glm::dot(v, v) - 1.0f) < 1e-6f; }
+
+// slerpShortest of two unit quaternions (x, y, z, w), normalised, with the sines replaced by
+// slerpWeight wherever it is exact to float precision. slerpShortest blends linearly above
+// cos 0.9995 (within 5e-7 of the slerp there); the series stays on the slerp, and without
+// that branch, which on motion capture goes either way from key to key.
+inline glm::vec4 slerpUnitKeys(const glm::vec4& a, glm::vec4 b, float u) {
+  float d = glm::dot(a, b);
+  if (d < 0.0f) {
+    b = -b;
+    d = -d;
+  }
+  if (!(d >= 0.8f))
+    return toVec(unit(slerpShortest(glm::quat(a.w, a.x, a.y, a.z), glm::quat(b.w, b.x, b.y, b.z), u)));
+  const float xm1 = std::min(d, 1.0f) - 1.0f;
+  const glm::vec4 r = slerpWeight(1.0f - u, xm1) * a + slerpWeight(u, xm1) * b;
+  // |r| is within 1e-7 of 1: one Newton step for 1 / |r| is exact to float precision.
+  return r * (1.5f - 0.5f * glm::dot(r, r));
+}
+
+// A Linear segment from key lo to lo + 1 at fraction u: a straight line, or for rotations
+// the shortest-arc slerp of the (normalised) keys.
+inline glm::vec4 linearSegment(const Channel& ch, bool rotation, int lo, float u) {
+  const glm::vec4 &a = ch.values[lo], &b = ch.values[lo + 1];
+  if (!rotation) return glm::mix(a, b, u);
+  if (isUnit(a) && isUnit(b)) return slerpUnitKeys(a, b, u);
+  return toVec(unit(slerpShortest(toQuat(a), toQuat(b), u)));
+}
+
+inline Interpolation segmentInterpolation(const Channel& ch, int lo) {
+  return ch.keys.empty() ? ch.interpolation : ch.keys[lo].interpolation;
+}
+
+// True when hi is upperKey's answer for `time` (the first key after it).
+inline bool isUpperKey(const Channel& ch, int hi, float time) {
+  const int n = ch.keyCount();
+  return hi >= 0 && hi <= n && (hi == 0 || ch.times[hi - 1] <= time) && (hi == n || time < ch.times[hi]);
+}
+
+// upperKey, trying `guess` (another channel's answer: clips mostly share one key grid)
+// before a binary search.
+int upperKeyWithGuess(const Channel& ch, float time, int* cursor, int guess) {
+  if (cursor) {
+    // Same segment as last time, or the next one (sequential playback).
+    if (isUpperKey(ch, *cursor, time)) return *cursor;
+    if (isUpperKey(ch, *cursor + 1, time)) return ++*cursor;
+  }
+  if (isUpperKey(ch, guess, time)) {
+    if (cursor) *cursor = guess;
+    return guess;
+  }
+  return upperKey(ch, time, cursor);
+}
+
+// The channel's value at `time`, given hi = upperKey(ch, time).
+glm::vec4 sampleAt(const Channel& ch, float time, int hi) {
+  const int n = ch.keyCount();
+  if (n == 0) return ch.target == ChannelTarget::Rotation ? glm::vec4(0, 0, 0, 1) : glm::vec4(0.0f);
+  const bool rotation = ch.target == ChannelTarget::Rotation;
+  auto key = [&](int k) { return rotation ? toVec(toQuat(ch.values[k])) : ch.values[k]; };
+  if (hi == 0) return key(0);
+  if (hi == n) return key(n - 1);
+  const int lo = hi - 1;
+  if (ch.times[lo] == time) return key(lo);
+  const Interpolation interpolation = segmentInterpolation(ch, lo);
+  if (interpolation == Interpolation::Step) return key(lo);
+  const float u = (time - ch.times[lo]) / (ch.times[hi] - ch.times[lo]);
+  // Imported motion and plain keys take this path without copying settings.
+  if (interpolation == Interpolation::Linear) return linearSegment(ch, rotation, lo, u);
+  const KeySettings s = ch.settings(lo);
+  return rotation ? rotationSegment(ch, s, lo, time, u) : vectorSegment(ch, s, lo, time, u);
+}
+
+// How many channels ahead random access prefetches keys: enough to cover a memory access
+// while the channels in between are sampled.
+constexpr size_t kPrefetchAhead = 4;
+
 void sampleInto(const Clip& clip, float time, Pose& pose, int* cursors) {
-  for (size_t c = 0; c < clip.channels.size(); ++c) {
-    const Channel& ch = clip.channels[c];
-    if (ch.target == ChannelTarget::Scalar || ch.joint < 0 || ch.joint >= pose.size() || ch.times.empty()) continue;
-    apply(ch, sampleChannel(ch, time, cursors ? &cursors[c] : nullptr), pose.local[ch.joint]);
+  const unsigned joints = static_cast<unsigned>(pose.size());
+  Transform* out = pose.local.data();
+  const Channel* channels = clip.channels.data();
+  const size_t count = clip.channels.size();
+  int guess = -1;  // the previous channel's upper key
+  for (size_t c = 0; c < count; ++c) {
+    const Channel& ch = channels[c];
+    const float* times = ch.times.data();
+    const int n = ch.keyCount();
+    if (ch.target == ChannelTarget::Scalar || static_cast<unsigned>(ch.joint) >= joints || n == 0) continue;
+    int* cursor = cursors ? cursors + c : nullptr;
+    // Strictly inside the segment before key hi: playback's cursor, or at random times the
+    // previous channel's answer, usually is. (On a key, sampleAt returns the key itself.)
+    int hi = cursor ? *cursor : guess;
+    bool inside = hi > 0 && hi < n && times[hi - 1] < time && time < times[hi];
+    if (!inside) {
+      hi = upperKeyWithGuess(ch, time, cursor, guess);
+      inside = hi > 0 && hi < n && times[hi - 1] != time;
+    }
+    guess = hi;
+    if (!cursors && c + kPrefetchAhead < count) {
+      // Random access runs on cache misses: fetch the keys a few channels ahead now.
+      const Channel& ahead = channels[c + kPrefetchAhead];
+      if (hi > 0 && hi < ahead.keyCount()) {
+        __builtin_prefetch(ahead.times.data() + hi - 1);
+        __builtin_prefetch(ahead.values.data() + hi - 1);
+        __builtin_prefetch(ahead.values.data() + hi);
+      }
+    }
+    Transform& t = out[ch.joint];
+    if (inside && segmentInterpolation(ch, hi - 1) == Interpolation::Linear) {
+      // The common case (imported motion, plain keys): straight to the pose.
+      const int lo = hi - 1;
+      const float u = (time - times[lo]) / (times[hi] - times[lo]);
+      const glm::vec4 &a = ch.values[lo], &b = ch.values[hi];
+      switch (ch.target) {
+        case ChannelTarget::Translation: t.translation = glm::mix(glm::vec3(a), glm::vec3(b), u); continue;
+        case ChannelTarget::Scale: t.scale = glm::mix(glm::vec3(a), glm::vec3(b), u); continue;
+        case ChannelTarget::Rotation: {
+          const glm::vec4 q = isUnit(a) && isUnit(b) ? slerpUnitKeys(a, b, u) : linearSegment(ch, true, lo, u);
+          t.rotation = glm::quat(q.w, q.x, q.y, q.z);
+          continue;
+        }
+        default: break;
+      }
+    }
+    apply(ch, sampleAt(ch, time, hi), t);
   }
 }
 
@@ -109,22 +244,22 @@ int upperKey(const Channel& ch, float time, int* cursor) {
 }
 
 glm::vec4 sampleChannel(const Channel& ch, float time, int* cursor) {
+  return sampleAt(ch, time, ch.times.empty() ? 0 : upperKey(ch, time, cursor));
+}
+
+glm::vec4 sampleChannelReference(const Channel& ch, float time) {
   const int n = ch.keyCount();
   if (n == 0) return ch.target == ChannelTarget::Rotation ? glm::vec4(0, 0, 0, 1) : glm::vec4(0.0f);
-  const int hi = upperKey(ch, time, cursor);
+  const int hi = static_cast<int>(std::upper_bound(ch.times.begin(), ch.times.end(), time) - ch.times.begin());
   const bool rotation = ch.target == ChannelTarget::Rotation;
   auto key = [&](int k) { return rotation ? toVec(toQuat(ch.values[k])) : ch.values[k]; };
   if (hi == 0) return key(0);
   if (hi == n) return key(n - 1);
   const int lo = hi - 1;
   if (ch.times[lo] == time) return key(lo);
-  const Interpolation interpolation = ch.keys.empty() ? ch.interpolation : ch.keys[lo].interpolation;
+  const Interpolation interpolation = segmentInterpolation(ch, lo);
   if (interpolation == Interpolation::Step) return key(lo);
   const float u = (time - ch.times[lo]) / (ch.times[hi] - ch.times[lo]);
-  // Imported motion (no per-key settings) takes this path without copying settings.
-  if (ch.keys.empty() && interpolation == Interpolation::Linear)
-    return rotation ? toVec(unit(slerpShortest(toQuat(ch.values[lo]), toQuat(ch.values[hi]), u)))
-                    : glm::mix(ch.values[lo], ch.values[hi], u);
   const KeySettings s = ch.settings(lo);
   return rotation ? rotationSegment(ch, s, lo, time, u) : vectorSegment(ch, s, lo, time, u);
 }

@@ -21,6 +21,10 @@ int upperKey(const Channel& channel, float time, int* cursor = nullptr);
 // and Euler angles, a unit quaternion (x, y, z, w) for rotation, (s, -, -, -) for scalars.
 glm::vec4 sampleChannel(const Channel& channel, float time, int* cursor = nullptr);
 
+// The plain evaluation the fast paths above are held to (tests): binary search, every
+// rotation key normalised, slerp by acos and sin. Same values to 1e-6, several times slower.
+glm::vec4 sampleChannelReference(const Channel& channel, float time);
+
 // sampleClip (clip.h) with cursors kept in `cache` (resized to the clip as needed).
 void sampleClip(const Clip& clip, float time, Pose& pose, SamplingCache& cache);
 

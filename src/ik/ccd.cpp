@@ -67,7 +67,7 @@ void sweep(IkChain& c, const Goal& g, const IkSettings& settings, int it) {
 }  // namespace
 
 IkResult solveCcd(const IkProblem& problem, const IkSettings& settings) {
-  IkChain c;
+  IkChain& c = ik_detail::workspace();
   if (IkResult bad; !(bad.message = c.begin(problem, settings)).empty()) return bad;
   IkTrace* trace = settings.trace;
   int it = 0;

@@ -145,10 +145,19 @@ glm::quat twistForHingeChild(const IkChain& c, int s, const glm::quat& parentRot
   return safeNormalize(glm::conjugate(parentRot) * glm::angleAxis(phi, b) * world);
 }
 
+// solveFabrik's per-slot arrays, kept per thread so that repeated solves allocate nothing.
+struct FabrikScratch {
+  std::vector<float> boneLength, count, fitWeight;
+  std::vector<int> goalOf, proposals, children;
+  std::vector<glm::vec3> reached, sum, from, to;
+  std::vector<glm::quat> backRot, limitedParent;
+  std::vector<char> twisted, hasLimitedParent;
+};
+
 }  // namespace
 
 IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
-  IkChain c;
+  IkChain& c = ik_detail::workspace();
   if (IkResult bad; !(bad.message = c.begin(problem, settings)).empty()) return bad;
   IkTrace* trace = settings.trace;
   const int m = static_cast<int>(c.joints.size());
@@ -157,21 +166,33 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
     c.record(trace, 1, IkStep::Straighten);
     return c.result(1, settings);
   }
-  std::vector<float> boneLength(m, 0.0f);
+  thread_local FabrikScratch scratch;  // per-slot arrays, reused from call to call
+  std::vector<float>& boneLength = scratch.boneLength;
+  boneLength.assign(m, 0.0f);
   for (int s = 0; s < m; ++s)
     if (c.parentSlot[s] >= 0) boneLength[s] = glm::length(c.position(s) - c.position(c.parentSlot[s]));
-  std::vector<int> goalOf(m, -1);
+  std::vector<int>& goalOf = scratch.goalOf;
+  goalOf.assign(m, -1);
   for (int g = 0; g < static_cast<int>(c.goals.size()); ++g) goalOf[c.goals[g].slot] = g;
-  std::vector<glm::vec3> reached(m), sum(m);
-  std::vector<float> count(m);
-  std::vector<glm::quat> backRot(m);  // world rotations the backward pass gives the joints
-  std::vector<int> proposals(m);     // how many children (or targets) set backRot
-  std::vector<char> twisted(m);      // backRot was turned to meet a child's limit
-  std::vector<glm::quat> limitedParent(m);  // the parent frame a slot's limit asked for
-  std::vector<char> hasLimitedParent(m);
-  std::vector<glm::vec3> from, to;
-  std::vector<float> fitWeight;
-  std::vector<int> children(m, 0);
+  std::vector<glm::vec3>&reached = scratch.reached, &sum = scratch.sum;
+  reached.assign(m, glm::vec3(0.0f));
+  sum.assign(m, glm::vec3(0.0f));
+  std::vector<float>& count = scratch.count;
+  count.assign(m, 0.0f);
+  std::vector<glm::quat>& backRot = scratch.backRot;  // world rotations the backward pass gives the joints
+  backRot.assign(m, glm::quat(1.0f, 0.0f, 0.0f, 0.0f));
+  std::vector<int>& proposals = scratch.proposals;  // how many children (or targets) set backRot
+  proposals.assign(m, 0);
+  std::vector<char>& twisted = scratch.twisted;  // backRot was turned to meet a child's limit
+  twisted.assign(m, 0);
+  std::vector<glm::quat>& limitedParent = scratch.limitedParent;  // the parent frame a slot's limit asked for
+  limitedParent.assign(m, glm::quat(1.0f, 0.0f, 0.0f, 0.0f));
+  std::vector<char>& hasLimitedParent = scratch.hasLimitedParent;
+  hasLimitedParent.assign(m, 0);
+  std::vector<glm::vec3>&from = scratch.from, &to = scratch.to;
+  std::vector<float>& fitWeight = scratch.fitWeight;
+  std::vector<int>& children = scratch.children;
+  children.assign(m, 0);
   for (int s = 0; s < m; ++s)
     if (c.parentSlot[s] >= 0) ++children[c.parentSlot[s]];
   const bool finishWithDls = settings.fabrikFinishAfter > 0 && (c.hasLimits() || c.goals.size() > 1);

@@ -27,8 +27,10 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
   const Skeleton& s = *skeleton;
   const int n = s.size();
   // Mark the union of root..effector paths.
-  std::vector<int> slotOf(n, -1);
-  std::vector<char> in(n, 0);
+  std::vector<int>& slotOf = slotOfScratch;
+  std::vector<char>& in = inScratch;
+  slotOf.assign(n, -1);
+  in.assign(n, 0);
   for (const IkTarget& t : problem.targets) {
     const int root = ikRootOf(s, t, twoBone);
     for (int j = t.effector; j >= 0; j = s.parents[j]) {
@@ -38,8 +40,10 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
   }
   // Depth-first preorder over the marked joints (parents come before children in the
   // skeleton, so an ascending scan finds children in order).
-  std::vector<int> order;
-  std::vector<int> stack;
+  std::vector<int>& order = orderScratch;
+  std::vector<int>& stack = stackScratch;
+  order.clear();
+  stack.clear();
   for (int j = n - 1; j >= 0; --j)
     if (in[j] && (s.parents[j] < 0 || !in[s.parents[j]])) stack.push_back(j);
   while (!stack.empty()) {
@@ -105,10 +109,6 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
   history.clear();
   forwardKinematics();
   return {};
-}
-
-glm::quat IkChain::parentRotation(int s) const {
-  return parentSlot[s] >= 0 ? rotation[parentSlot[s]] : fixedRotation[s];
 }
 
 void IkChain::forwardSlot(int s) {
@@ -238,6 +238,11 @@ void IkChain::recordPositions(IkTrace* trace, int iteration, IkStep step, const 
   e.error = error;
   e.positions = positions;
   trace->entries.push_back(std::move(e));
+}
+
+IkChain& workspace() {
+  thread_local IkChain chain;
+  return chain;
 }
 
 IkResult IkChain::result(int iterations, const IkSettings& settings) const {

@@ -63,6 +63,9 @@ struct IkChain {
   std::vector<const JointLimit*> limit;
   std::vector<Goal> goals;
   std::vector<float> history;       // error after each iteration, for stall detection
+  // build()'s scratch, kept so that a reused chain (see workspace()) allocates nothing.
+  std::vector<int> slotOfScratch, orderScratch, stackScratch;
+  std::vector<char> inScratch;
   // No scale anywhere (slots and fixed parents): FK then needs only quaternion products,
   // and a world matrix is its rotation plus its position.
   bool rigid = false;
@@ -77,7 +80,7 @@ struct IkChain {
   // Recomputes slot s only (its parent must be up to date).
   void forwardSlot(int s);
   glm::vec3 position(int s) const { return glm::vec3(world[s][3]); }
-  glm::quat parentRotation(int s) const;
+  glm::quat parentRotation(int s) const { return parentSlot[s] >= 0 ? rotation[parentSlot[s]] : fixedRotation[s]; }
   // Turns slot s by `delta` (a world rotation about its own position), clamps the result
   // to the joint's limit, and carries its sub-tree along rigidly. Returns the rotation
   // actually applied.
@@ -101,5 +104,10 @@ struct IkChain {
                        float error) const;
   IkResult result(int iterations, const IkSettings& settings) const;
 };
+
+// This thread's chain for one solver call: its vectors keep their capacity from call to
+// call, so an interactive drag (a solve per frame) stops allocating after the first.
+// Solvers never nest, so one per thread is enough.
+IkChain& workspace();
 
 }  // namespace kinema::ik_detail

@@ -13,7 +13,7 @@ using ik_detail::JacobianStepper;
 namespace {
 
 IkResult solveJacobian(JacobianMethod method, const IkProblem& problem, const IkSettings& settings) {
-  IkChain c;
+  IkChain& c = ik_detail::workspace();
   if (IkResult bad; !(bad.message = c.begin(problem, settings)).empty()) return bad;
   IkTrace* trace = settings.trace;
   JacobianStepper stepper(c, method);
