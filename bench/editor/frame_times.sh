@@ -1,16 +1,31 @@
 #!/usr/bin/env bash
-# Editor frame time on llvmpipe at 1280x800: the default character during a 600-frame IK
-# drag, against an empty ImGui frame of the same size and frame count.
-# Usage: bench/editor/frame_times.sh [build/src/kinema]
+# Editor frame time on llvmpipe: the default character during a 600-frame IK drag, against an
+# empty ImGui frame of the same size and frame count, at 1280x800 and 1600x1000 (or the one
+# size given). The drag scripts come from make_ik_drag_script.py; each run's --dump-state is
+# checked for the IK target it adds, so a script that misses the hand fails here instead of
+# timing a box select. Preferences, recovery files and caches go to a temporary folder.
+# Usage: bench/editor/frame_times.sh [build/src/kinema] [WIDTHxHEIGHT]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 kinema=${1:-$root/build/src/kinema}
+sizes=${2:-"1280x800 1600x1000"}
 tmp=$(mktemp -d)
-run() {
-  XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp LIBGL_ALWAYS_SOFTWARE=1 MESA_GL_VERSION_OVERRIDE=3.3 \
-    xvfb-run -a -s "-screen 0 1280x800x24" "$kinema" edit --size 1280x800 \
-    --script "$root/bench/editor/ik_drag_1280x800.jsonl" --report-frame-times "$@" 2>&1
+trap 'rm -rf "$tmp"' EXIT
+run() {  # size script [options...]
+  local size=$1 script=$2
+  shift 2
+  XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp XDG_CACHE_HOME=$tmp XDG_DATA_HOME=$tmp \
+    LIBGL_ALWAYS_SOFTWARE=1 MESA_GL_VERSION_OVERRIDE=3.3 \
+    xvfb-run -a -s "-screen 0 ${size}x24" "$kinema" edit --size "$size" --script "$script" --report-frame-times "$@" 2>&1
 }
-echo "IK drag:"; run
-echo "empty ImGui frame:"; run --empty-frame
-rm -rf "$tmp"
+for size in $sizes; do
+  script=$root/bench/editor/ik_drag_$size.jsonl
+  echo "$size IK drag:"
+  run "$size" "$script" --dump-state "$tmp/state.json"
+  if ! python3 -c 'import json,sys; sys.exit(0 if len(json.load(open(sys.argv[1]))["ik_targets"]) == 1 else 1)' "$tmp/state.json"; then
+    echo "frame_times.sh: $script added no IK target (it missed the hand: regenerate it with make_ik_drag_script.py)" >&2
+    exit 1
+  fi
+  echo "$size empty ImGui frame:"
+  run "$size" "$script" --empty-frame
+done

@@ -16,6 +16,7 @@
 #include "editor/model/editor_layout.h"
 #include "editor/model/message_log.h"
 #include "editor/model/user_preferences.h"
+#include "editor/model/viewport_quality.h"
 #include "editor/model/panel_state.h"
 #include "io/scene.h"
 #include "render/camera.h"
@@ -88,6 +89,7 @@ struct EditorState {
   // --- Viewport ---
   OrbitCamera camera;      // camera.orthographic: numpad 5
   glm::vec4 viewportRect{0.0f};  // the 3D view in window pixels (x, y, width, height), set each frame
+  ViewportRenderInfo viewportRender;  // how the window drew the last frame's 3D view (viewport_quality.h)
   ViewOptions view;
   ToolState tool;
   int hoveredJoint = -1;   // under the mouse (drawn highlighted)

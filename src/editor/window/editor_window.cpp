@@ -12,6 +12,7 @@
 #include <deque>
 #include <iostream>
 #include <numeric>
+#include <optional>
 #include <thread>
 
 #include "editor/commands/editor_input.h"
@@ -32,6 +33,8 @@
 #include "render/loose_joints.h"
 #include "render/mesh_renderer.h"
 #include "render/skeleton_renderer.h"
+#include "render/frame_signature.h"
+#include "render/viewport_target.h"
 #include "render/skeleton_view.h"
 #include "skin/scene_deformation.h"
 
@@ -175,8 +178,9 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     place = initialWindowPlacement(state.preferences.window, primaryWorkArea());
   }
   std::string title = editorWindowTitle(state);
-  GLFWwindow* window = createWindow(place, title, 4);
-  if (!window) window = createWindow(place, title, 0);  // no multisampled visual: draw without MSAA
+  // One sample per pixel: ImGui antialiases its own shapes, and the 3D view draws its still
+  // picture multisampled into a framebuffer of its own (render/viewport_target.h).
+  GLFWwindow* window = createWindow(place, title, 0);
   if (!window) {
     result.error = "cannot open an OpenGL 3.3 core window: " + lastGlfwError();
     glfwTerminate();
@@ -279,6 +283,9 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     SkeletonDrawList list;  // last frame's drawing: picking casts rays against it
     SkeletonDrawList selectionAlone;  // with the bones hidden: the selected bones (hiddenBonesSelection)
     OverlayDrawList overlay;
+    ViewportTarget viewportTarget;  // the still 3D view, multisampled, kept while nothing changes
+    std::optional<uint64_t> drawnSignature;  // frameSignature of the 3D view drawn last frame
+    bool viewportTargetFailed = false;
     AnimationDisplay animationDisplay;  // onion-skin ghosts, motion path (kept: the path is cached)
     evaluateEditorPose(state);
     int fbw = 0, fbh = 0, ww = 0, wh = 0;
@@ -369,6 +376,9 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       ImGui::Render();
       evaluateEditorPose(state);  // the panels may have edited the document
 
+      const bool scriptDone = o.replay && o.frameCount <= 0 && nextScripted >= o.script.size() && live.queue.empty() &&
+                              frame >= lastScriptFrame + 2;
+      const bool last = (o.frameCount > 0 && frame >= o.frameCount) || scriptDone || state.panels.quitApproved;
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       if (o.emptyFrame) {
         glViewport(0, 0, fbw, fbh);
@@ -441,13 +451,41 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
           description.skeleton = &selectionAlone;
           description.bones = BoneDisplay::XRay;
         }
-        if (!state.compare.active) renderer.draw(description);  // the compare mode draws with ImGui
+        // The compare mode draws with ImGui; else the 3D view, antialiased when it holds still
+        // (viewport_quality.h) and then kept, to be shown again while nothing in it changes.
+        if (state.compare.active) {
+          state.viewportRender = {};
+        } else {
+          const uint64_t signature = frameSignature(description) ^ (uint64_t(uploadedMeshRevision) * 0x9E3779B97F4A7C15ull);
+          const bool changed = !drawnSignature || *drawnSignature != signature;
+          drawnSignature = signature;
+          const ViewportQuality quality = viewportQuality(state, changed, last && !o.screenshotPath.empty());
+          std::string failed;
+          if (quality == ViewportQuality::Still && !changed && viewportTarget.holds(vw, vh)) {
+            viewportTarget.present(vx, vy);
+            state.viewportRender = {viewportTarget.samples(), true};
+          } else if (quality == ViewportQuality::Still && !viewportTargetFailed &&
+                     (failed = viewportTarget.begin(vw, vh, viewportSamples(quality))).empty()) {
+            description.x = description.y = 0;  // the target is the view's own size
+            renderer.draw(description);
+            viewportTarget.resolve();
+            viewportTarget.present(vx, vy);
+            state.viewportRender = {viewportTarget.samples(), false};
+          } else {  // moving (or no framebuffer of its own): one sample, straight into the window
+            if (!failed.empty() && !viewportTargetFailed) {
+              viewportTargetFailed = true;
+              std::cerr << "kinema edit: " << failed << "; the 3D view is drawn without antialiasing\n";
+            }
+            viewportTarget.forget();
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            renderer.draw(description);
+            state.viewportRender = {kMovingViewportSamples, false};
+          }
+          glViewport(0, 0, fbw, fbh);
+        }
       }
       imguiBackendsRenderDrawData(ImGui::GetDrawData());
 
-      const bool scriptDone = o.replay && o.frameCount <= 0 && nextScripted >= o.script.size() && live.queue.empty() &&
-                              frame >= lastScriptFrame + 2;
-      const bool last = (o.frameCount > 0 && frame >= o.frameCount) || scriptDone || state.panels.quitApproved;
       if (last && !o.screenshotPath.empty()) {
         // Read the back buffer before swapping: its contents are undefined afterwards.
         Image shot(fbw, fbh);

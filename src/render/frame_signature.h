@@ -1,0 +1,15 @@
+#pragma once
+#include <cstdint>
+
+namespace kinema {
+
+struct FrameDescription;
+
+// A 64-bit digest (FNV-1a) of everything a FrameDescription makes SkeletonRenderer::draw
+// show: camera, viewport, switches, the skeleton's and ghosts' instances, the overlay, and
+// the meshes' poses, morph weights and ghost tints (not the uploaded meshes themselves: mix
+// in the upload's revision). Equal digests on two frames: the same picture (barring a 2^-64
+// collision), so the editor can show the kept one instead of drawing it again.
+uint64_t frameSignature(const FrameDescription& frame);
+
+}  // namespace kinema
