@@ -599,6 +599,7 @@ Result<std::string> gltfBytes(const Scene& scene, const GltfWriteOptions& option
         n.rotation.empty() && n.scale.empty() && n.weights.empty())
       n.rotation = {0.0, 0.0, 0.0, 1.0};
   if (model.buffers[0].data.empty()) model.buffers.clear();
+  if (root.nodes.empty()) root.name = "Scene";  // tinygltf writes an empty scene as null, which is not glTF
   model.scenes.push_back(root);
   model.defaultScene = 0;
 

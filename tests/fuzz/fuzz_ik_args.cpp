@@ -82,11 +82,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, size_t size) {
   std::streambuf* oldOut = std::cout.rdbuf(out.rdbuf());
   std::streambuf* oldErr = std::cerr.rdbuf(err.rdbuf());
   int rc = 0;
+  bool solved = false;
   try {
     app.parse(static_cast<int>(argv.size()), argv.data());
     rc = kinema::cli::runIk(options);
+    solved = true;
   } catch (const CLI::CallForHelp&) {
-    rc = kinema::cli::kExitOk;
+    rc = kinema::cli::kExitOk;  // help printed, nothing solved
   } catch (const CLI::CallForAllHelp&) {
     rc = kinema::cli::kExitOk;
   } catch (const CLI::ParseError&) {
@@ -98,7 +100,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, size_t size) {
     std::fprintf(stderr, "fuzz_ik_args: exit code %d\n", rc);
     std::abort();
   }
-  if (rc == kinema::cli::kExitOk && options.json) {
+  if (solved && rc == kinema::cli::kExitOk && options.json) {
     const nlohmann::json j = nlohmann::json::parse(out.str(), nullptr, false);
     if (j.is_discarded() || !allNumbersFinite(j)) {
       std::fprintf(stderr, "fuzz_ik_args: exit 0 with non-finite JSON: %.300s\n", out.str().c_str());
