@@ -18,4 +18,11 @@ inline bool isFinite(const glm::quat& q) {
   return std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z) && std::isfinite(q.w);
 }
 
+// |a - b| computed in double, so far points (past about 1.8e19, where float's squares
+// overflow) still give their distance; infinite only beyond float's range.
+inline float distanceInDouble(const glm::vec3& a, const glm::vec3& b) {
+  const glm::dvec3 d = glm::dvec3(a) - glm::dvec3(b);
+  return static_cast<float>(std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z));
+}
+
 }  // namespace kinema

@@ -87,7 +87,7 @@ struct IkChain {
   glm::quat rotateJoint(int s, const glm::quat& delta);
   // Sets slot s's local rotation (limited), then refreshes its sub-tree by FK.
   void setLocalRotation(int s, const glm::quat& local);
-  float goalError(const Goal& g) const { return glm::length(position(g.slot) - g.position); }
+  float goalError(const Goal& g) const { return distanceInDouble(position(g.slot), g.position); }
   float maxError() const;
   float orientationError() const;  // largest angle (radians) to an orientation target
   bool converged(const IkSettings& settings) const;

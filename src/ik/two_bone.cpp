@@ -114,7 +114,7 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
       if (t.joints.empty()) t.joints.assign(path.joints, path.joints + path.count);
       IkTraceEntry e;
       e.step = IkStep::Start;
-      e.error = glm::length(pc - target.position);
+      e.error = distanceInDouble(pc, target.position);
       for (int i = 0; i < path.count; ++i) e.positions.push_back(path.position[i]);
       t.entries.push_back(std::move(e));
     }
@@ -168,7 +168,7 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
       path.compute(s, pose, problem.rootTransform, a, c);
       finalC = path.position[ic];
     }
-    const float err = glm::length(finalC - target.position);
+    const float err = distanceInDouble(finalC, target.position);
     out.error = std::max(out.error, err);
     if (!(err <= settings.tolerance)) out.converged = false;
     if (settings.trace) {
