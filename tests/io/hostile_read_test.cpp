@@ -44,6 +44,7 @@ using namespace test::hostile;
 size_t hostileMegabytes(size_t localDefault) {
   if (const char* v = std::getenv("KINEMA_HOSTILE_MB")) return std::max<size_t>(1, std::strtoull(v, nullptr, 10));
 #ifdef KINEMA_UNDER_SANITIZER
+  (void)localDefault;  // ASan's shadow memory: small cases only
   return 4;
 #else
   return std::getenv("CI") ? 8 : localDefault;
