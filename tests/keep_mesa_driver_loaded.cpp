@@ -4,7 +4,7 @@
 // allocations as leaks from an "<unknown module>" that no suppression can name. With the
 // driver resident (RTLD_NODELETE), those allocations stay reachable and nothing is reported
 // (checked: the same tests then show only libOSMesa's suppressed allocations).
-#if defined(__SANITIZE_ADDRESS__)  // GCC's ASan builds (the sanitizer suite)
+#if defined(KINEMA_UNDER_SANITIZER)  // the sanitizer suite's builds
 #include <dlfcn.h>
 
 namespace {

@@ -16,7 +16,7 @@ run() {  # size script [options...]
   shift 2
   XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp XDG_CACHE_HOME=$tmp XDG_DATA_HOME=$tmp \
     LIBGL_ALWAYS_SOFTWARE=1 MESA_GL_VERSION_OVERRIDE=3.3 \
-    xvfb-run -a -s "-screen 0 ${size}x24" "$kinema" edit --size "$size" --script "$script" --report-frame-times "$@" 2>&1
+    sh "$root/tests/tools/xvfb_run.sh" "${size}x24" "$kinema" edit --size "$size" --script "$script" --report-frame-times "$@" 2>&1
 }
 for size in $sizes; do
   script=$root/bench/editor/ik_drag_$size.jsonl

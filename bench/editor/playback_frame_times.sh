@@ -19,7 +19,7 @@ run() {  # size [options...]
   shift
   XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp XDG_CACHE_HOME=$tmp XDG_DATA_HOME=$tmp \
     LIBGL_ALWAYS_SOFTWARE=1 MESA_GL_VERSION_OVERRIDE=3.3 \
-    xvfb-run -a -s "-screen 0 ${size}x24" "$kinema" edit "$file" --size "$size" --report-frame-times "$@" 2>&1
+    sh "$root/tests/tools/xvfb_run.sh" "${size}x24" "$kinema" edit "$file" --size "$size" --report-frame-times "$@" 2>&1
 }
 for size in $sizes; do
   echo "$size playback, onion skin off:"; run "$size" --script "$root/bench/editor/playback.jsonl"

@@ -28,6 +28,24 @@ bool isInside(const std::string& file, const std::string& folder) {
 
 std::string prefixOf(const std::string& folder) { return folder.empty() || folder.back() == '/' ? folder : folder + "/"; }
 
+// Whether a relative path climbs above its start ("a/../../b" does), judged on its text alone,
+// so that refusing it says nothing about what exists outside the folder.
+bool climbsOut(const std::string& uri) {
+  int depth = 0;
+  for (size_t begin = 0; begin <= uri.size();) {
+    size_t end = uri.find('/', begin);
+    if (end == std::string::npos) end = uri.size();
+    const std::string part = uri.substr(begin, end - begin);
+    if (part == "..") {
+      if (--depth < 0) return true;
+    } else if (!part.empty() && part != ".") {
+      ++depth;
+    }
+    begin = end + 1;
+  }
+  return false;
+}
+
 bool fileExists(const std::string& path, void* self) { return static_cast<GltfExternalFiles*>(self)->exists(path); }
 
 std::string expandNothing(const std::string& path, void*) { return path; }  // no shell expansion of ~ or $VAR
@@ -65,9 +83,13 @@ bool GltfExternalFiles::exists(const std::string& joined) {
     refused[uri] = why;
     return false;
   };
+  // tinygltf would look for an absolute path inside the folder: say what it is instead.
+  if (!uri.empty() && uri[0] == '/') return refuse("is an absolute path; Kinema reads uris relative to the glTF file");
+  if (!allowOutside && climbsOut(uri))
+    return refuse("is outside the glTF file's folder (--allow-outside-paths reads it)");
   const std::string real = realPath(joined);
   if (real.empty()) return refuse("is not there (no such file beside the glTF file)");
-  if (!allowOutside) {
+  if (!allowOutside) {  // a link inside the folder may still lead out of it
     const std::string realFolder = realPath(folder.empty() ? "." : folder);
     if (!isInside(real, realFolder))
       return refuse("is outside the glTF file's folder (--allow-outside-paths reads it)");

@@ -14,8 +14,6 @@
 namespace kinema {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 glm::vec3 position(const glm::mat4& m) { return glm::vec3(m[3]); }
 
 glm::quat normalized(float w, float x, float y, float z) {

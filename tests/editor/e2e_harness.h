@@ -51,10 +51,11 @@ inline std::string windowSize() {
   return std::to_string(s.x) + "x" + std::to_string(s.y);
 }
 
-// xvfb-run with a screen at least 1920x1200 and never smaller than the window.
+// An Xvfb of the command's own (tests/tools/xvfb_run.sh: the server picks a free display, so
+// parallel tests never race for one) with a screen at least 1920x1200, never smaller than the window.
 inline std::string xvfb() {
   const glm::ivec2 s = glm::max(windowPixels(), glm::ivec2(1920, 1200));
-  return "xvfb-run -a -s '-screen 0 " + std::to_string(s.x) + "x" + std::to_string(s.y) + "x24' ";
+  return "sh '" KINEMA_SOURCE_DIR "/tests/tools/xvfb_run.sh' " + std::to_string(s.x) + "x" + std::to_string(s.y) + "x24 ";
 }
 
 // `env` with software GL and the user's config and state folders (recent files, recovery

@@ -18,7 +18,6 @@ using namespace e2e;
 class PlayheadE2e : public FrontViewSuite<PlayheadE2e> {
  public:
   static constexpr const char* kShotFolder = "playhead_e2e";
-  static constexpr const char* kWindowSize = "1280x720";
 };
 
 // The default character with UpperArm.L keyed (linear) at frames 1 and 20, saved with the

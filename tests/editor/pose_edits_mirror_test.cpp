@@ -42,7 +42,7 @@ TEST(PoseEditsMirror, SeveralJointRotateDragMirrorsOntoPartnersInOneStep) {
   // Off, only the listed joints turn; a mismatched list is refused.
   doc.xMirror = false;
   ASSERT_EQ(doc.beginDrag("Rotate"), "");
-  ASSERT_EQ(updateRotateDrag(doc, {l}, {rotZ(-20)}), "");
+  ASSERT_EQ(updateRotateDrag(doc, std::vector<int>{l}, std::vector<glm::quat>{rotZ(-20)}), "");
   doc.commitDrag();
   EXPECT_LT(rotationGap(doc.pose().local[r].rotation, rotZ(5)), 1e-6f);
   ASSERT_EQ(doc.beginDrag("Rotate"), "");

@@ -70,10 +70,7 @@ TEST(PreferencesCli, UiScaleOutsideItsRangeIsOneLineAndExitOne) {
   }
 }
 
-class PreferencesE2e : public e2e::TempDirSuite<PreferencesE2e> {
- public:
-  static constexpr const char* kShotFolder = "preferences_e2e";
-};
+class PreferencesE2e : public e2e::TempDirSuite<PreferencesE2e> {};  // no screenshots: no kShotFolder
 
 TEST_F(PreferencesE2e, UiScaleTwoMakesTheTextTwiceAsTallAndABadFileIsReportedNotFatal) {
   const std::string one = dir_ + "/one", two = dir_ + "/two";

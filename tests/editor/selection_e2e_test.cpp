@@ -39,7 +39,6 @@ int orangeAround(const Image& shot, glm::dvec2 p, int radius = 3) {
 class SelectionE2e : public FrontViewSuite<SelectionE2e> {
  public:
   static constexpr const char* kShotFolder = "selection_e2e";
-  static constexpr const char* kWindowSize = "1280x720";
 
  protected:
   glm::dvec2 pixelOf(const std::string& name) const { return DumpCamera(front_).pixel(jointIn(front_, name)); }

@@ -27,15 +27,6 @@
 #include "io/gltf_test_files.h"
 #include "test_support.h"
 
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define KINEMA_HOSTILE_WRITE_ASAN 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__)
-#define KINEMA_HOSTILE_WRITE_ASAN 1
-#endif
-
 namespace kinema {
 namespace {
 
@@ -90,7 +81,7 @@ KinemaRun runKinema(const std::vector<std::string>& args, const std::string& dir
 // Memory bound for a conversion: the 256 MB + 4x the bytes it handles (input and
 // output), or 256 MB + `extraBytes` where a writer's document model needs more.
 void expectBoundedMemory(const KinemaRun& run, long extraBytes, const char* what) {
-#if defined(KINEMA_HOSTILE_WRITE_ASAN)
+#if defined(KINEMA_UNDER_SANITIZER)
   (void)run, (void)extraBytes, (void)what;  // ASan's own overhead
 #else
   const long boundKb = 256 * 1024 + extraBytes / 1024;

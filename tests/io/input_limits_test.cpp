@@ -89,7 +89,7 @@ TEST(InputLimits, BvhHugeFrameClaimIsRefusedWithoutAllocating) {
   const pid_t child = ::fork();
   ASSERT_GE(child, 0);
   if (child == 0) {
-#if !defined(__SANITIZE_ADDRESS__)  // ASan reserves terabytes of shadow address space
+#if !defined(KINEMA_UNDER_SANITIZER)  // ASan reserves terabytes of shadow address space
     struct rlimit cap {};
     cap.rlim_cur = cap.rlim_max = rlim_t(256) << 20;
     if (::setrlimit(RLIMIT_AS, &cap) != 0) ::_exit(4);

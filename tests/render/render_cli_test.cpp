@@ -215,7 +215,7 @@ TEST_F(RenderCli, EditorWindowOpensRendersAndExitsUnderXvfb) {
   KINEMA_REQUIRE_SHARED_DATA();
   const std::string shot = dir_ + "/editor.png";
   // Its own config and state folders: nothing remembered from the user's sessions.
-  ASSERT_EQ(runCommand("xvfb-run -a -s '-screen 0 1280x800x24' env XDG_CONFIG_HOME='" + dir_ + "' XDG_STATE_HOME='" +
+  ASSERT_EQ(runCommand("sh '" KINEMA_SOURCE_DIR "/tests/tools/xvfb_run.sh' 1280x800x24 env XDG_CONFIG_HOME='" + dir_ + "' XDG_STATE_HOME='" +
                            dir_ + "' " + kSoftware + KINEMA_BINARY + " edit '" +
                            sharedDataDir() + "/bvh/cmu_01_01_first720.bvh' --frame-count 5 --screenshot " + shot,
                        &out_, &err_),
