@@ -9,7 +9,8 @@ std::vector<LineVertex> makeGridLines(float cellSize, float reach) {
   std::vector<LineVertex> v;
   if (!(cellSize > 0.0f) || !std::isfinite(reach)) return v;
   // At most 100 cells each way: enough for any framing, and bounded for absurd inputs.
-  const int half = std::clamp(static_cast<int>(std::ceil(reach / cellSize)), 1, 100);
+  // Clamped as a float first: a huge reach / cellSize does not fit an int (undefined behaviour).
+  const int half = static_cast<int>(std::clamp(std::ceil(reach / cellSize), 1.0f, 100.0f));
   const float extent = static_cast<float>(half) * cellSize;
   const glm::vec4 minor(0.33f, 0.33f, 0.33f, 1.0f), major(0.40f, 0.40f, 0.40f, 1.0f);
   const glm::vec4 red(0.86f, 0.26f, 0.30f, 1.0f), blue(0.25f, 0.45f, 0.90f, 1.0f), green(0.45f, 0.75f, 0.20f, 1.0f);
