@@ -363,13 +363,14 @@ HumanoidMap byTopology(const Skeleton& s) {
   }
   forward = glm::length(forward) > 1e-6f * h ? glm::normalize(forward) : glm::vec3(0.0f, 0.0f, 1.0f);
   const glm::vec3 left = glm::cross(glm::vec3(0.0f, 1.0f, 0.0f), forward);
-  // Arms: the first joint above the hips with two branches reaching far sideways.
+  // Arms: the first joint above the hips with two branches of three joints or more that
+  // reach out sideways (hanging arms reach out less than T-posed ones, but some).
   int hub = upper;
   std::vector<int> arms;
   while (hub >= 0) {
     std::vector<int> side;
     for (int c : shape.children[hub])
-      if (shape.sideReach(c, shape.pos[hub]) > 0.25f * h) side.push_back(c);
+      if (shape.subtree(c).size() >= 3 && shape.sideReach(c, shape.pos[hub]) > 0.05f * h) side.push_back(c);
     if (side.size() >= 2) {
       std::sort(side.begin(), side.end(), [&](int a, int b) {
         return shape.sideReach(a, shape.pos[hub]) > shape.sideReach(b, shape.pos[hub]);
@@ -411,6 +412,10 @@ HumanoidMap byTopology(const Skeleton& s) {
       m[limbBone(side, static_cast<Limb>(kShoulder + k))] = a.bones[k];
     }
   }
+  // Legs below arms: a humanoid's hands hang above its knees (a quadruped's front paws do not).
+  for (const LimbChain& a : arm)
+    for (const LimbChain& l : leg)
+      if (!(shape.pos[a.bones[3]].y > shape.pos[l.bones[1]].y)) return HumanoidMap{};
   m[HumanoidBone::Hips] = hips;
   if (!assignSpine(s, m, hub)) return HumanoidMap{};
   // The head: the highest branch left at the arms' joint.

@@ -238,7 +238,7 @@ TEST_F(RetargetMapFile, ErrorsNameTheFileAndKey) {
   }
   const Result<BoneMap> syntax = parse("{\"Hips\": ");
   ASSERT_FALSE(syntax.ok());
-  EXPECT_EQ(syntax.error().rfind("map.json: line 1", 0), 0u) << syntax.error();
+  EXPECT_EQ(syntax.error().rfind("map.json: not valid JSON: line 1", 0), 0u) << syntax.error();
 }
 
 }  // namespace

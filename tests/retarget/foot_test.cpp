@@ -84,15 +84,18 @@ TEST(RetargetFootContacts, LiftedFootEndsAndRestartsItsContact) {
 
 TEST(RetargetFootLocking, LockedAnkleStaysAndNothingElseMoves) {
   const Character c;
-  // The hips walk 20 cm forward and sink 15 cm while the legs keep their rest rotations:
-  // without locking both feet slide 20 cm.
+  // Crouched on the left leg (thigh 30 degrees forward, knee bent 60: the ankle right below
+  // the hip, 0.73 of the 0.84 reach), the hips glide 20 cm forward while the leg keeps its
+  // pose: without locking the left foot slides 20 cm; with it the leg can still reach.
   const int frames = 31;
-  const Clip clip = holdRest(frames, [&](int f) {
-    const float u = f / float(frames - 1);
-    return c.s.rest[0].translation + glm::vec3(0.0f, -0.15f * u, 0.2f * u);
-  });
+  Clip clip = holdRest(frames, [&](int f) { return c.s.rest[0].translation + glm::vec3(0.0f, 0.0f, 0.2f * f / (frames - 1)); });
+  for (const auto& [joint, angle] : {std::pair<int, float>{c.legs[0].upperLeg, -0.5236f}, {c.legs[0].lowerLeg, 1.0472f}}) {
+    const glm::quat q = axisAngle(glm::vec3(1, 0, 0), angle);
+    clip.channels.emplace_back(joint, ChannelTarget::Rotation, Interpolation::Linear, std::vector<float>{0.0f},
+                               std::vector<glm::vec4>{glm::vec4(q.x, q.y, q.z, q.w)});
+  }
   std::vector<ContactInterval> contacts[2] = {{{0, frames - 1}}, {}};
-  const Clip out = lockFeet(c, clip, contacts, 0.0f);
+  const Clip out = lockFeet(c, clip, contacts, -1.0f);  // a floor far below: only the lock acts
   const glm::vec3 start = positionOf(worldAtFrame(c.s, clip, 0)[c.legs[0].foot]);
   float drift = 0.0f;
   for (int f = 0; f < frames; ++f) {

@@ -99,7 +99,7 @@ TEST_F(RetargetCli, BadInputExitsOneWithOneLineAndWritesNothing) {
   writeFile(dir_ + "/map.json", R"({"Hips": "Hips", "Spine": "NoSuchJoint"})");
   expectBad("'" + take_ + "' --map '" + dir_ + "/map.json'", "map.json: \"Spine\"");
   writeFile(dir_ + "/bad.json", "{\"Hips\": ");
-  expectBad("'" + take_ + "' --map '" + dir_ + "/bad.json'", "bad.json: line 1");
+  expectBad("'" + take_ + "' --map '" + dir_ + "/bad.json'", "bad.json: not valid JSON: line 1");
   // A source without motion, and a skeleton that is no humanoid (one chain).
   Scene still;
   still.skeleton = makeDefaultCharacter();
