@@ -168,9 +168,10 @@ bool RetargetJob::run() const {
         local.rotation = safeNormalize(glm::conjugate(parentRot) * world);
       }
       if (j == targetRoot) {
-        glm::vec3 d = glm::vec3(worldS[sourceRoot][3]) - ps[sourceRoot];
-        if (inPlace) d.x = d.z = 0.0f;
-        const glm::vec3 world = pt[j] + rootScale * d;
+        // Scaled about the world origin, the floor under both characters: a BVH's rest root
+        // offset is often 0 while its motion stands the hips at their height.
+        glm::vec3 world = rootScale * glm::vec3(worldS[sourceRoot][3]);
+        if (inPlace) world.x = pt[j].x, world.z = pt[j].z;
         const glm::mat4 parentWorld = parent >= 0 ? worldT[parent] : glm::mat4(1.0f);
         local.translation = glm::vec3(glm::inverse(parentWorld) * glm::vec4(world, 1.0f));
       }

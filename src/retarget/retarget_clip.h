@@ -17,9 +17,10 @@ namespace kinema {
 // to the next mapped joint; two such directions at a branching joint), so a T-pose take
 // drives an A-pose character with the same world bone directions. World rotations become
 // local ones down the target hierarchy; unmapped target joints keep their rest local
-// rotation. The root-motion joint's world position is its rest position plus rootScale
-// times the source root's displacement from its rest position (file units); inPlace drops
-// the horizontal (X, Z) part of that displacement.
+// rotation. The root-motion joint's world position is rootScale times the source root's
+// world position (file units): both worlds' origins are taken to lie on the floor, as in BVH
+// takes (rest root offset often 0, the motion holding the hips at their height) and glTF
+// characters. inPlace keeps the root at its rest X and Z instead.
 struct RetargetJob {
   const Skeleton* source = nullptr;
   const Clip* sourceClip = nullptr;  // sampled at its frames 0 .. nearestFrame(duration)
