@@ -10,6 +10,7 @@
 #include "cli/plot_curves_command.h"
 #include "cli/pose_command.h"
 #include "cli/render_command.h"
+#include "cli/retarget_command.h"
 #include "cli/skin_command.h"
 
 int main(int argc, char** argv) {
@@ -34,6 +35,8 @@ int main(int argc, char** argv) {
   CLI::App* skinCmd = kinema::cli::addSkinCommand(app, skin);
   kinema::cli::DemoOptions demo;
   CLI::App* demoCmd = kinema::cli::addDemoCommand(app, demo);
+  kinema::cli::RetargetOptions retarget;
+  CLI::App* retargetCmd = kinema::cli::addRetargetCommand(app, retarget);
 
   try {
     app.parse(argc, argv);
@@ -56,5 +59,6 @@ int main(int argc, char** argv) {
   if (convertCmd->parsed()) return kinema::cli::runConvert(convert);
   if (skinCmd->parsed()) return kinema::cli::runSkin(skin);
   if (demoCmd->parsed()) return kinema::cli::runDemo(demo);
+  if (retargetCmd->parsed()) return kinema::cli::runRetarget(retarget);
   return kinema::cli::runDefault();
 }

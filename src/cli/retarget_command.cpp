@@ -1,0 +1,292 @@
+#include "cli/retarget_command.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+
+#include "cli/command_line.h"
+#include "core/forward_kinematics.h"
+#include "io/bone_map_file.h"
+#include "io/bvh_writer.h"
+#include "io/gltf_writer.h"
+#include "io/json_number.h"
+#include "io/kinema_file.h"
+#include "retarget/foot_contacts.h"
+#include "retarget/foot_locking.h"
+#include "retarget/key_reduction.h"
+#include "retarget/retarget_clip.h"
+
+namespace kinema::cli {
+
+namespace {
+
+constexpr float kDegree = 0.01745329251994329577f;
+constexpr float kDefaultReduceDegrees = 1.0f;
+
+bool writable(const std::string& ext) { return ext == ".bvh" || ext == ".gltf" || ext == ".glb" || ext == ".kinema"; }
+
+// "POS" or "POS,DEG" as numbers (any value; ranges are checked as bad input).
+bool parseReduce(const std::string& text, double& pos, double& deg) {
+  const size_t comma = text.find(',');
+  auto number = [](const std::string& s, double& out) {
+    if (s.empty()) return false;
+    char* end = nullptr;
+    out = std::strtod(s.c_str(), &end);
+    return end == s.c_str() + s.size();
+  };
+  if (comma == std::string::npos) {
+    deg = kDefaultReduceDegrees;
+    return number(text, pos);
+  }
+  return number(text.substr(0, comma), pos) && number(text.substr(comma + 1), deg);
+}
+
+// The clip --clip names: an index, or a clip's name.
+int chooseClip(const Scene& scene, const std::string& wanted, std::string& error) {
+  const int n = static_cast<int>(scene.clips.size());
+  if (n == 0) {
+    error = scene.source + ": has no clip to retarget (no motion)";
+    return -1;
+  }
+  if (wanted.empty()) return 0;
+  for (int i = 0; i < n; ++i)
+    if (scene.clips[i].name == wanted) return i;
+  char* end = nullptr;
+  const long index = std::strtol(wanted.c_str(), &end, 10);
+  if (end == wanted.c_str() + wanted.size() && index >= 0 && index < n) return static_cast<int>(index);
+  error = scene.source + ": --clip " + wanted + " names no clip (the file has " + std::to_string(n) + " clip" +
+          (n == 1 ? "" : "s") + ": give an index 0.." + std::to_string(n - 1) + " or a name)";
+  return -1;
+}
+
+nlohmann::ordered_json intervalsJson(const std::vector<ContactInterval>& contacts) {
+  nlohmann::ordered_json a = nlohmann::ordered_json::array();
+  for (const ContactInterval& c : contacts) a.push_back({c.first, c.last});
+  return a;
+}
+
+nlohmann::ordered_json unmappedJson(const Skeleton& s, const BoneMap& map, bool sourceSide) {
+  nlohmann::ordered_json a = nlohmann::ordered_json::array();
+  for (int j = 0; j < s.size(); ++j)
+    if ((sourceSide ? map.targetOf(j) : map.sourceOf(j)) < 0) a.push_back(s.names[j]);
+  return a;
+}
+
+float lowestFootHeight(const Skeleton& s, const LegJoints legs[2]) {
+  const std::vector<glm::mat4> w = computeWorld(s, Pose::rest(s));
+  float lo = w[legs[0].foot][3].y;
+  for (int side = 0; side < 2; ++side)
+    for (int j : {legs[side].foot, legs[side].toes})
+      if (j >= 0) lo = std::min(lo, w[j][3].y);
+  return lo;
+}
+
+}  // namespace
+
+CLI::App* addRetargetCommand(CLI::App& app, RetargetOptions& o) {
+  CLI::App* cmd = app.add_subcommand(
+      "retarget", "Put a motion (BVH, glTF or .kinema clip) onto another character's skeleton");
+  cmd->add_option("source", o.source, "The file whose clip is played")->required();
+  cmd->add_option("target", o.target, "The character that plays it (default: Kinema's default character)");
+  cmd->add_option("--out", o.out, "The file to write: .kinema, .gltf, .glb or .bvh (replaced only on success)")->required();
+  cmd->add_option("--clip", o.clip, "The source clip, by index or name (default 0)");
+  cmd->add_option("--map", o.map, "A bone map file (JSON object: source joint -> target joint; canonical names allowed)");
+  cmd->add_flag("--in-place", o.inPlace, "Drop the horizontal root motion");
+  cmd->add_flag("--fix-feet", o.fixFeet, "Lock feet in contact with two-bone IK (no foot below the floor)");
+  cmd->add_option("--reduce", o.reduce,
+                  "POS[,DEG]: thin the keys, keeping every joint within POS file units and every rotation within DEG "
+                  "degrees (default 1) at every frame");
+  cmd->add_flag("--json", o.json, "Print the report as JSON (map, unmapped joints, foot skate, key counts)");
+  addAllowOutsidePathsFlag(cmd, o.allowOutsidePaths);
+  addUpOption(cmd, o.up);  // the source's and target's, when BVH
+  return cmd;
+}
+
+int runRetarget(const RetargetOptions& o) {
+  const std::string ext = lowerExtension(o.out);
+  if (!writable(ext)) {
+    std::cerr << "kinema retarget: cannot write '" << ext << "' files (use .kinema, .gltf, .glb or .bvh); see --help\n";
+    return kExitUsage;
+  }
+  double reducePos = 0.0, reduceDeg = 0.0;
+  const bool reduce = !o.reduce.empty();
+  if (reduce && !parseReduce(o.reduce, reducePos, reduceDeg)) {
+    std::cerr << "kinema retarget: --reduce takes POS or POS,DEG (numbers), not '" << o.reduce << "'; see --help\n";
+    return kExitUsage;
+  }
+  if (reduce && (!std::isfinite(reducePos) || !std::isfinite(reduceDeg) || reducePos <= 0.0 || reduceDeg <= 0.0))
+    return badInput("--reduce " + o.reduce + ": both tolerances must be positive finite numbers");
+
+  const InputLimits limits = inputLimits(o.allowOutsidePaths);
+  Result<Scene> sourceLoaded = loadScene(o.source, limits, upAxisOf(o.up));
+  if (!sourceLoaded) return badInput(sourceLoaded.error());
+  const Scene& source = sourceLoaded.value();
+  std::string error;
+  const int clipIndex = chooseClip(source, o.clip, error);
+  if (clipIndex < 0) return badInput(error);
+  Result<Scene> targetLoaded = loadSceneOrDefault(o.target, limits, upAxisOf(o.up));
+  if (!targetLoaded) return badInput(targetLoaded.error());
+  Scene target = std::move(targetLoaded.value());
+  const std::string targetLabel = o.target.empty() ? std::string("the default character") : o.target;
+
+  const Result<HumanoidReading> sourceHuman = findHumanoid(source.skeleton);
+  const Result<HumanoidReading> targetHuman = findHumanoid(target.skeleton);
+  BoneMap map;
+  std::string mapBy;
+  if (o.map.empty()) {
+    if (!sourceHuman) return badInput(o.source + ": " + sourceHuman.error());
+    if (!targetHuman) return badInput(targetLabel + ": " + targetHuman.error());
+    map = mapThroughHumanoid(sourceHuman->bones, targetHuman->bones);
+    mapBy = sourceHuman->source == HumanoidSource::Names && targetHuman->source == HumanoidSource::Names
+                ? "names"
+                : (sourceHuman->source == HumanoidSource::Topology && targetHuman->source == HumanoidSource::Topology
+                       ? "topology"
+                       : "names and topology");
+  } else {
+    const BoneMapSide from{&source.skeleton, sourceHuman ? &sourceHuman->bones : nullptr, "the source (" + o.source + ")"};
+    const BoneMapSide to{&target.skeleton, targetHuman ? &targetHuman->bones : nullptr, "the target (" + targetLabel + ")"};
+    Result<BoneMap> loaded = loadBoneMapFile(o.map, from, to, limits);
+    if (!loaded) return badInput(loaded.error());
+    map = std::move(loaded.value());
+    mapBy = "file";
+  }
+  if (const std::string bad = map.validate(source.skeleton, target.skeleton); !bad.empty())
+    return badInput((o.map.empty() ? o.source + " onto " + targetLabel : o.map) + ": " + bad);
+
+  // Root motion between the hips, scaled by the hip heights; without humanoid readings (a
+  // hand-written map) between the topmost mapped joints, unscaled.
+  RetargetJob job;
+  job.source = &source.skeleton;
+  job.sourceClip = &source.clips[clipIndex];
+  job.target = &target.skeleton;
+  job.map = &map;
+  job.inPlace = o.inPlace;
+  const bool humans = sourceHuman.ok() && targetHuman.ok();
+  if (humans && map.sourceOf(targetHuman->bones[HumanoidBone::Hips]) == sourceHuman->bones[HumanoidBone::Hips] &&
+      targetHuman->bones.has(HumanoidBone::Hips)) {
+    const Result<float> hs = restHipHeight(source.skeleton, sourceHuman->bones);
+    if (!hs) return badInput(o.source + ": " + hs.error());
+    const Result<float> ht = restHipHeight(target.skeleton, targetHuman->bones);
+    if (!ht) return badInput(targetLabel + ": " + ht.error());
+    job.sourceRoot = sourceHuman->bones[HumanoidBone::Hips];
+    job.targetRoot = targetHuman->bones[HumanoidBone::Hips];
+    job.rootScale = ht.value() / hs.value();
+  } else {
+    job.sourceRoot = map.pairs.front().source;
+    job.targetRoot = map.pairs.front().target;  // pairs are in target order: the topmost
+  }
+  Clip clip;
+  job.output = &clip;
+  if (const std::string bad = job.validate(); !bad.empty()) return badInput(o.source + ": " + bad);
+  job.run();
+  const int frames = clipFrameCount(clip);
+
+  // Foot contacts and skate on the target (needs its legs).
+  LegJoints legs[2];
+  std::vector<ContactInterval> contacts[2];
+  bool haveLegs = false;
+  if (targetHuman) {
+    legsOf(targetHuman->bones, legs);
+    haveLegs = legs[0].valid(target.skeleton.size()) && legs[1].valid(target.skeleton.size());
+  }
+  if (haveLegs && !(restLegLength(target.skeleton, legs[0]) > 0.0f && restLegLength(target.skeleton, legs[1]) > 0.0f))
+    return badInput(targetLabel + ": zero-length legs (hip, knee and ankle of a leg coincide in the rest pose)");
+  if (o.fixFeet && !haveLegs)
+    return badInput(targetLabel + ": --fix-feet needs the target's legs (" +
+                    (targetHuman ? std::string("its humanoid reading has none") : targetHuman.error()) + ")");
+  float skateBefore = 0.0f, skateAfter = 0.0f;
+  if (haveLegs) {
+    FootContactJob contactJob;
+    contactJob.skeleton = &target.skeleton;
+    contactJob.clip = &clip;
+    contactJob.legs[0] = legs[0];
+    contactJob.legs[1] = legs[1];
+    contactJob.output[0] = &contacts[0];
+    contactJob.output[1] = &contacts[1];
+    if (!contactJob.run()) return badInput(targetLabel + ": " + contactJob.validate());
+    skateBefore = footSkate(target.skeleton, clip, legs, contacts);
+    skateAfter = skateBefore;
+  }
+  if (o.fixFeet) {
+    Clip locked;
+    FootLockJob lock;
+    lock.skeleton = &target.skeleton;
+    lock.clip = &clip;
+    lock.legs[0] = legs[0];
+    lock.legs[1] = legs[1];
+    lock.contacts[0] = &contacts[0];
+    lock.contacts[1] = &contacts[1];
+    lock.floorHeight = lowestFootHeight(target.skeleton, legs);
+    lock.output = &locked;
+    if (!lock.run()) return badInput(targetLabel + ": " + lock.validate());
+    clip = std::move(locked);
+    skateAfter = footSkate(target.skeleton, clip, legs, contacts);
+  }
+  KeyReductionReport reduction;
+  reduction.keysBefore = reduction.keysAfter = 0;
+  for (const Channel& c : clip.channels) reduction.keysBefore += c.keyCount();
+  reduction.keysAfter = reduction.keysBefore;
+  if (reduce) {
+    Clip reduced;
+    KeyReductionJob r;
+    r.skeleton = &target.skeleton;
+    r.clip = &clip;
+    r.settings.positionTolerance = static_cast<float>(reducePos);
+    r.settings.angleTolerance = static_cast<float>(reduceDeg) * kDegree;
+    r.output = &reduced;
+    r.report = &reduction;
+    if (!r.run()) return badInput(o.source + ": " + r.validate());
+    clip = std::move(reduced);
+  }
+
+  // The target's file with its meshes and skins, playing the one new clip.
+  Scene out = std::move(target);
+  out.clips = {clip};
+  out.pose = Pose{};
+  out.playhead.reset();
+  std::vector<std::string> report;
+  if (ext == ".bvh") {
+    if (!out.meshes.empty()) report.push_back("meshes and skins dropped (BVH holds a skeleton and one motion)");
+    error = saveBvh(o.out, out.skeleton, &out.clips[0], BvhWriteOptions{}, &report);
+  } else if (ext == ".gltf" || ext == ".glb") {
+    GltfWriteOptions options;
+    options.binary = ext == ".glb";
+    error = saveGltf(o.out, out, options, &report);
+  } else {
+    error = saveKinemaFile(o.out, out);
+  }
+  for (const std::string& line : report) std::cerr << "kinema retarget: warning: " << line << "\n";
+  if (!error.empty()) return badInput(error);
+
+  const Skeleton& ts = out.skeleton;
+  if (o.json) {
+    nlohmann::ordered_json j;
+    j["source"] = o.source;
+    j["target"] = o.target.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(o.target);
+    j["out"] = o.out;
+    j["clip"] = clip.name;
+    j["frames"] = frames;
+    j["mapBy"] = mapBy;
+    j["map"] = boneMapJson(map, source.skeleton, ts);
+    nlohmann::ordered_json bones = nlohmann::ordered_json::object();
+    if (humans)
+      for (int i = 0; i < kHumanoidBoneCount; ++i) {
+        const int t = targetHuman->bones.joint[i];
+        const int s = sourceHuman->bones.joint[i];
+        if (s >= 0 && t >= 0 && map.targetOf(s) == t)
+          bones[toString(humanoidBone(i))] = {{"source", source.skeleton.names[s]}, {"target", ts.names[t]}};
+      }
+    j["humanoidBones"] = bones;
+    j["unmapped"] = {{"source", unmappedJson(source.skeleton, map, true)}, {"target", unmappedJson(ts, map, false)}};
+    j["rootScale"] = jsonFloat(job.rootScale);
+    j["contacts"] = {{"left", intervalsJson(contacts[0])}, {"right", intervalsJson(contacts[1])}};
+    j["footSkate"] = {{"before", jsonFloat(skateBefore)}, {"after", jsonFloat(skateAfter)}};
+    j["keys"] = {{"before", reduction.keysBefore}, {"after", reduction.keysAfter}};
+    j["reductionError"] = {{"position", jsonFloat(reduction.maxPositionError)},
+                           {"degrees", jsonFloat(reduction.maxAngleError / kDegree)}};
+    std::cout << j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
+  }
+  return kExitOk;
+}
+
+}  // namespace kinema::cli
