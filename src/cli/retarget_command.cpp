@@ -171,6 +171,13 @@ int runRetarget(const RetargetOptions& o) {
     job.sourceRoot = sourceHuman->bones[HumanoidBone::Hips];
     job.targetRoot = targetHuman->bones[HumanoidBone::Hips];
     job.rootScale = ht.value() / hs.value();
+    const Result<FootFloors> floors = footFloors(source.skeleton, source.clips[clipIndex], sourceHuman->bones,
+                                                 target.skeleton, targetHuman->bones);
+    if (!floors) return badInput(o.source + " onto " + targetLabel + ": " + floors.error());
+    job.sourceFloor = floors->source;
+    job.targetFloor = floors->target;
+    for (HumanoidBone b : {HumanoidBone::LeftFoot, HumanoidBone::RightFoot, HumanoidBone::LeftToes, HumanoidBone::RightToes})
+      if (targetHuman->bones.has(b)) job.targetFeet.push_back(targetHuman->bones[b]);
   } else {
     job.sourceRoot = map.pairs.front().source;
     job.targetRoot = map.pairs.front().target;  // pairs are in target order: the topmost
@@ -279,6 +286,8 @@ int runRetarget(const RetargetOptions& o) {
     j["humanoidBones"] = bones;
     j["unmapped"] = {{"source", unmappedJson(source.skeleton, map, true)}, {"target", unmappedJson(ts, map, false)}};
     j["rootScale"] = jsonFloat(job.rootScale);
+    j["sourceFloor"] = jsonFloat(job.sourceFloor);
+    j["targetFloor"] = jsonFloat(job.targetFloor);
     j["contacts"] = {{"left", intervalsJson(contacts[0])}, {"right", intervalsJson(contacts[1])}};
     j["footSkate"] = {{"before", jsonFloat(skateBefore)}, {"after", jsonFloat(skateAfter)}};
     j["keys"] = {{"before", reduction.keysBefore}, {"after", reduction.keysAfter}};

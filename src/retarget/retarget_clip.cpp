@@ -92,6 +92,47 @@ Result<float> restHipHeight(const Skeleton& skeleton, const HumanoidMap& humanoi
   return h;
 }
 
+namespace {
+
+constexpr HumanoidBone kFeet[] = {HumanoidBone::LeftFoot, HumanoidBone::RightFoot, HumanoidBone::LeftToes,
+                                  HumanoidBone::RightToes};
+
+// The lowest world Y of the humanoid's foot and toe joints in one set of world matrices.
+bool lowestFoot(const std::vector<glm::mat4>& world, const HumanoidMap& humanoid, float& lowest) {
+  bool any = false;
+  for (HumanoidBone b : kFeet) {
+    const int j = humanoid[b];
+    if (j < 0) continue;
+    lowest = any ? std::min(lowest, world[j][3].y) : world[j][3].y;
+    any = true;
+  }
+  return any;
+}
+
+}  // namespace
+
+Result<FootFloors> footFloors(const Skeleton& source, const Clip& clip, const HumanoidMap& sourceHumanoid,
+                              const Skeleton& target, const HumanoidMap& targetHumanoid) {
+  FootFloors floors;
+  if (!lowestFoot(computeWorld(target, Pose::rest(target)), targetHumanoid, floors.target))
+    return Result<FootFloors>::failure("no feet to stand the target on");
+  bool any = false;
+  Pose pose = Pose::rest(source);
+  std::vector<glm::mat4> world;
+  for (int f = 0, n = clipFrameCount(clip); f < n; ++f) {
+    pose = Pose::rest(source);
+    sampleClip(clip, clip.frameToTime(f), pose);
+    computeWorld(source, pose, world);
+    float low = 0.0f;
+    if (!lowestFoot(world, sourceHumanoid, low)) return Result<FootFloors>::failure("no feet to find the take's floor from");
+    floors.source = any ? std::min(floors.source, low) : low;
+    any = true;
+  }
+  if (!std::isfinite(floors.source) || !std::isfinite(floors.target))
+    return Result<FootFloors>::failure("the feet's heights are not finite");
+  return floors;
+}
+
 std::string RetargetJob::validate() const {
   if (!source || !target || !sourceClip || !map || !output) return "retarget: missing input or output";
   if (source->empty() || target->empty()) return "retarget: empty skeleton";
@@ -104,6 +145,10 @@ std::string RetargetJob::validate() const {
   if (sourceRoot >= source->size() || targetRoot >= target->size()) return "retarget: root joint out of range";
   if (targetRoot >= 0 && map->sourceOf(targetRoot) < 0) return "retarget: the target root is not mapped";
   if (!(rootScale > 0.0f) || !std::isfinite(rootScale)) return "retarget: root scale must be positive and finite";
+  if (!std::isfinite(sourceFloor) || !std::isfinite(targetFloor)) return "retarget: the floors must be finite";
+  for (int foot : targetFeet)
+    if (foot < 0 || foot >= target->size()) return "retarget: a foot joint is out of range";
+  if (!targetFeet.empty() && targetRoot < 0) return "retarget: grounding the feet needs root motion";
   return {};
 }
 
@@ -147,6 +192,12 @@ bool RetargetJob::run() const {
     c.values.reserve(frames);
   }
 
+  // Grounding: the lowest the target's feet come over the take, and per frame the root's
+  // parent's world rotation (a world shift of the root is a local shift through it).
+  float lowestFoot = 0.0f;
+  bool anyFoot = false;
+  std::vector<glm::mat3> rootParentRotation;
+  if (targetRoot >= 0) rootParentRotation.reserve(frames);
   Pose sourcePose = Pose::rest(s);
   std::vector<glm::mat4> worldS;
   std::vector<glm::quat> rotT(t.size());
@@ -168,12 +219,13 @@ bool RetargetJob::run() const {
         local.rotation = safeNormalize(glm::conjugate(parentRot) * world);
       }
       if (j == targetRoot) {
-        // Scaled about the world origin, the floor under both characters: a BVH's rest root
-        // offset is often 0 while its motion stands the hips at their height.
+        // Horizontally scaled about the world origin; the height from each side's floor.
         glm::vec3 world = rootScale * glm::vec3(worldS[sourceRoot][3]);
+        world.y = targetFloor + rootScale * (worldS[sourceRoot][3].y - sourceFloor);
         if (inPlace) world.x = pt[j].x, world.z = pt[j].z;
         const glm::mat4 parentWorld = parent >= 0 ? worldT[parent] : glm::mat4(1.0f);
         local.translation = glm::vec3(glm::inverse(parentWorld) * glm::vec4(world, 1.0f));
+        rootParentRotation.push_back(glm::mat3(parentWorld));
       }
       rotT[j] = safeNormalize(parentRot * local.rotation);
       worldT[j] = (parent >= 0 ? worldT[parent] : glm::mat4(1.0f)) * local.toMatrix();
@@ -191,6 +243,18 @@ bool RetargetJob::run() const {
         c.values.push_back(glm::vec4(local.translation, 0.0f));
       }
     }
+    for (int foot : targetFeet) {
+      lowestFoot = anyFoot ? std::min(lowestFoot, worldT[foot][3].y) : worldT[foot][3].y;
+      anyFoot = true;
+    }
+  }
+  // The whole take moved up or down so its lowest foot stands on the target's floor: the
+  // hip-height ratio alone leaves it off by the legs' differing proportions.
+  if (rootChannel >= 0 && anyFoot && std::isfinite(lowestFoot)) {
+    const glm::vec3 up(0.0f, targetFloor - lowestFoot, 0.0f);
+    Channel& c = out.channels[rootChannel];
+    for (size_t f = 0; f < c.values.size(); ++f)
+      c.values[f] += glm::vec4(glm::inverse(rootParentRotation[f]) * up, 0.0f);
   }
   *output = std::move(out);
   return true;

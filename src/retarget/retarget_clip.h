@@ -2,6 +2,7 @@
 // Pose transfer from one skeleton's clip onto another skeleton, through world-space
 // rotations relative to each rest pose (ozz-style job: explicit inputs, one output).
 #include <string>
+#include <vector>
 
 #include "anim/clip.h"
 #include "core/result.h"
@@ -18,9 +19,12 @@ namespace kinema {
 // drives an A-pose character with the same world bone directions. World rotations become
 // local ones down the target hierarchy; unmapped target joints keep their rest local
 // rotation. The root-motion joint's world position is rootScale times the source root's
-// world position (file units): both worlds' origins are taken to lie on the floor, as in BVH
-// takes (rest root offset often 0, the motion holding the hips at their height) and glTF
-// characters. inPlace keeps the root at its rest X and Z instead.
+// world position (file units), its height measured from each side's floor: target height =
+// targetFloor + rootScale * (source height - sourceFloor), so a foot planted on the source's
+// floor lands on the target's (footFloors gives the two floors from the feet); with
+// targetFeet, the whole take is then moved up or down so the lowest those joints come over it
+// is targetFloor (the legs' proportions differ, so the ratio alone misses by centimetres).
+// inPlace keeps the root at its rest X and Z instead.
 struct RetargetJob {
   const Skeleton* source = nullptr;
   const Clip* sourceClip = nullptr;  // sampled at its frames 0 .. nearestFrame(duration)
@@ -29,6 +33,9 @@ struct RetargetJob {
   int sourceRoot = -1;                // the joints root motion goes between (-1: none);
   int targetRoot = -1;                //   targetRoot must be in the map
   float rootScale = 1.0f;             // > 0, finite: target hip height / source hip height
+  float sourceFloor = 0.0f;           // world Y of each side's planted feet (finite; file units)
+  float targetFloor = 0.0f;
+  std::vector<int> targetFeet;        // target joints grounded on targetFloor (empty: none)
   bool inPlace = false;
 
   // Written: one Linear key per source frame on a rotation channel of every mapped target
@@ -46,5 +53,16 @@ int clipFrameCount(const Clip& clip);
 // the length root motion is scaled by. Fails when the reading has no hips or feet, or the
 // legs have no length.
 Result<float> restHipHeight(const Skeleton& skeleton, const HumanoidMap& humanoid);
+
+// The floors root heights are measured from (world Y, file units): the lowest any foot or
+// toe joint of `source` comes over `clip` (a take's rest pose may stand anywhere: BVH rests
+// often put the hips at the origin), and the lowest foot or toe joint of the target's rest
+// pose (a character stands on its floor). Fails when a reading has no feet.
+struct FootFloors {
+  float source = 0.0f;
+  float target = 0.0f;
+};
+Result<FootFloors> footFloors(const Skeleton& source, const Clip& clip, const HumanoidMap& sourceHumanoid,
+                              const Skeleton& target, const HumanoidMap& targetHumanoid);
 
 }  // namespace kinema

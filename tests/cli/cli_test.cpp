@@ -135,7 +135,7 @@ TEST_F(Cli, PoseTimeInterpolatesAndClamps) {
 TEST_F(Cli, PoseWithoutJsonPrintsATable) {
   ASSERT_EQ(kinema("pose '" + bvh_ + "' --frame 0"), 0);
   EXPECT_NE(out_.find("Arm_End"), std::string::npos);
-  EXPECT_THROW((void)nlohmann::json::parse(out_), nlohmann::json::parse_error);
+  EXPECT_THROW({ [[maybe_unused]] const nlohmann::json parsed = nlohmann::json::parse(out_); }, nlohmann::json::parse_error);
 }
 
 TEST_F(Cli, UsageErrorsExitTwoWithOneLine) {

@@ -6,8 +6,11 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "anim/sampling.h"
 #include "core/default_character.h"
+#include "core/forward_kinematics.h"
 #include "io/kinema_file.h"
+#include "io/scene.h"
 #include "retarget/retarget_test_support.h"
 #include "test_support.h"
 
@@ -141,6 +144,41 @@ TEST_F(RetargetCli, SharedTakesOntoTheDefaultCharacter) {
     const nlohmann::json j = nlohmann::json::parse(out_);
     EXPECT_GE(j["map"].size(), 15u) << file;
     EXPECT_LE(j["footSkate"]["after"].get<double>(), j["footSkate"]["before"].get<double>() + 1e-9) << file;
+  }
+}
+
+// Planted feet land on the character's floor: over each shared take retargeted onto the
+// default character, the lowest foot or toe joint comes exactly as low as the character's
+// rest feet (1e-4 of its height). Scaling the hips about the origin instead left the CMU
+// take's feet 10 cm above it, and the hip-height ratio alone 5 cm.
+TEST_F(RetargetCli, PlantedFeetLandOnTheCharactersFloor) {
+  KINEMA_REQUIRE_SHARED_DATA();
+  const Skeleton character = makeDefaultCharacter();
+  const std::vector<glm::mat4> rest = computeWorld(character, Pose::rest(character));
+  std::vector<int> feet;
+  for (int j = 0; j < character.size(); ++j)
+    if (character.names[j].rfind("Foot.", 0) == 0 || character.names[j].rfind("Toe.", 0) == 0) feet.push_back(j);
+  ASSERT_GE(feet.size(), 2u);
+  float restLowest = 1e9f, top = -1e9f;
+  for (int j : feet) restLowest = std::min(restLowest, rest[j][3].y);
+  for (const glm::mat4& w : rest) top = std::max(top, w[3].y);
+  for (const char* file : {"bvh/cmu_01_01_first720.bvh", "bvh/games105_walk60.bvh", "bvh/mocapbank_test.bvh"}) {
+    SCOPED_TRACE(file);
+    const std::string out = dir_ + "/floor.kinema";
+    ASSERT_EQ(kinema("'" + sharedDataDir() + "/" + file + "' --out '" + out + "'"), 0) << err_;
+    const Result<Scene> scene = loadScene(out);
+    ASSERT_TRUE(scene.ok()) << scene.error();
+    ASSERT_EQ(scene->skeleton.names, character.names);
+    ASSERT_FALSE(scene->clips.empty());
+    const Clip& clip = scene->clips[0];
+    float lowest = 1e9f;
+    for (long long f = 0, n = clip.nearestFrame(clip.duration()); f <= n; ++f) {
+      Pose pose = Pose::rest(scene->skeleton);
+      sampleClip(clip, clip.frameToTime(f), pose);
+      const std::vector<glm::mat4> world = computeWorld(scene->skeleton, pose);
+      for (int j : feet) lowest = std::min(lowest, world[j][3].y);
+    }
+    EXPECT_NEAR(lowest, restLowest, 1e-4f * (top - restLowest));
   }
 }
 
