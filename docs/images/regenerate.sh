@@ -21,6 +21,13 @@ done
 "$kinema" render "$bvh" --frame 240 --select LeftArm --size 960x540 --out "$root/docs/images/render_cmu_frame240.png"
 "$kinema" render ../shared/data/gltf/CesiumMan.glb --time 1 --bones xray --size 960x540 --out "$root/docs/images/skinned_cesium_man.png"
 "$kinema" render ../shared/data/gltf/Fox.glb --clip 2 --time 0.6 --camera 60,15 --size 960x540 --out "$root/docs/images/skinned_fox.png"
+# The CMU take and the default character playing it after `kinema retarget` (issue 21), frame 150.
+tmp=$(mktemp -d)
+"$kinema" retarget "$bvh" --out "$tmp/cmu_on_default.kinema" --fix-feet
+"$kinema" render "$bvh" --frame 150 --size 560x640 --camera 30,10 --out "$tmp/source.png"
+"$kinema" render "$tmp/cmu_on_default.kinema" --frame 150 --size 560x640 --camera 30,10 --out "$tmp/target.png"
+convert "$tmp/source.png" "$tmp/target.png" +append "$root/docs/images/retarget_cmu_default.png"
+rm -rf "$tmp"
 # The editor's FK gizmo and IK drag, posed by replaying recorded input (kinema edit --script);
 # XDG folders point away from the user's recent files and recovery files.
 tmp=$(mktemp -d)
