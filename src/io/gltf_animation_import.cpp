@@ -4,6 +4,7 @@
 // rotations interpolated component-wise and then normalised.
 #include <tiny_gltf.h>
 
+#include "core/rotation.h"
 #include "io/gltf_import_parts.h"
 
 namespace kinema {
@@ -110,9 +111,11 @@ std::string importAnimations(GltfContext& ctx, const std::vector<int>& jointOfNo
         }
         if (target == ChannelTarget::Rotation && !cubic)
           for (glm::vec4& q : channel.values) {
-            const float len = glm::length(q);
-            if (!(len > 1e-12f)) return ctx.error(sw + " output: key rotation is a zero quaternion");
-            q /= len;
+            if (q == glm::vec4(0.0f)) return ctx.error(sw + " output: key rotation is a zero quaternion");
+            // Scaled by its largest component first: a plain length overflows beyond 1e19
+            // (the fuzzer's keys of 1e36 became zero quaternions the .kinema reader refused).
+            const glm::quat n = safeNormalize(glm::quat(q.w, q.x, q.y, q.z));
+            q = glm::vec4(n.x, n.y, n.z, n.w);
           }
         clip.channels.push_back(std::move(channel));
       }

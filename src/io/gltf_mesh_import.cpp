@@ -118,8 +118,12 @@ std::string readInfluences(GltfContext& ctx, const tinygltf::Primitive& p, const
     for (const auto& a : all) sum += a.first;
     if (std::abs(sum - 1.0) > kWeightSumTolerance) ++renormalised;
     for (size_t k = 0; k < all.size(); ++k) {
+      const float w = static_cast<float>(all[k].first / sum);
+      // A weight the division took to zero sits on joint 0, as core/mesh.h promises and the
+      // .kinema reader makes it (the fuzzer found the two disagreeing on a 1e-43 weight).
+      if (w == 0.0f) continue;
       out.influenceJoints[v * kMaxInfluences + k] = static_cast<uint16_t>(all[k].second);
-      out.influenceWeights[v * kMaxInfluences + k] = static_cast<float>(all[k].first / sum);
+      out.influenceWeights[v * kMaxInfluences + k] = w;
       maxJoint = std::max(maxJoint, static_cast<int>(all[k].second));
     }
   }
@@ -158,6 +162,8 @@ std::string readTriangles(GltfContext& ctx, const tinygltf::Primitive& p, const 
     if (idx.size() % 3) ctx.warn(where + ": " + std::to_string(idx.size() % 3) + " indices after the last whole triangle ignored");
     idx.resize(idx.size() - idx.size() % 3);
     out = std::move(idx);
+  } else if (mode == TINYGLTF_MODE_POINTS) {
+    // Vertices without faces (lines are dropped before this; see importMeshes).
   } else if (idx.size() >= 3) {
     out.reserve((idx.size() - 2) * 3);
     for (size_t i = 0; i + 2 < idx.size(); ++i) {
@@ -303,8 +309,10 @@ std::string importMeshes(GltfContext& ctx, const std::vector<int>& jointOfNode, 
       const int mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
       if (mode < TINYGLTF_MODE_POINTS || mode > TINYGLTF_MODE_TRIANGLE_FAN)
         return ctx.error(where + ": mode " + std::to_string(mode) + " is not a glTF primitive mode (0..6)");
-      if (mode < TINYGLTF_MODE_TRIANGLES) {
-        ctx.warn(where + ": points and lines are not kept");
+      // Points are kept as vertices without triangles (Kinema writes a primitive with no
+      // triangle so); lines are not kept.
+      if (mode != TINYGLTF_MODE_POINTS && mode < TINYGLTF_MODE_TRIANGLES) {
+        ctx.warn(where + ": lines are not kept");
         continue;
       }
       if (!p.attributes.count("POSITION")) {

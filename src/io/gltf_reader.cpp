@@ -9,6 +9,7 @@
 #include <fstream>
 #include <unordered_set>
 
+#include "core/rotation.h"
 #include "io/gltf_error_text.h"
 #include "io/gltf_external_files.h"
 #include "io/gltf_import_parts.h"
@@ -122,8 +123,9 @@ std::string restTransform(const GltfContext& ctx, int n, const tinygltf::Node& n
   if (!node.scale.empty()) out.scale = vec3Of(node.scale);
   if (!node.rotation.empty()) {
     const glm::quat q(float(node.rotation[3]), float(node.rotation[0]), float(node.rotation[1]), float(node.rotation[2]));
-    if (!(glm::length(q) > 1e-6f)) return ctx.error(where + ": rotation is a zero quaternion");
-    out.rotation = glm::normalize(q);
+    if (!isFinite(q)) return ctx.error(where + ": rotation does not fit in float");
+    if (q == glm::quat(0.0f, 0.0f, 0.0f, 0.0f)) return ctx.error(where + ": rotation is a zero quaternion");
+    out.rotation = safeNormalize(q);  // huge or tiny components normalise too (a plain length overflows)
   }
   return {};
 }

@@ -206,6 +206,10 @@ void addMesh(const Mesh& mesh, BufferBuilder& b, tinygltf::Model& model) {
         prim.indices = b.integers(p.indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
                                   p.indices.size(), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
       }
+    } else {
+      // No triangle (Kinema's empty index list): glTF's triangles without indices would read
+      // back as one triangle per three vertices, so the vertices are written as points.
+      prim.mode = TINYGLTF_MODE_POINTS;
     }
     for (const MorphTarget& t : p.targets) {
       std::map<std::string, int> target;

@@ -125,6 +125,26 @@ TEST(GltfImport, StepHoldsAndLinearRotationTakesTheShortArc) {
   EXPECT_VEC3_NEAR(glm::vec3(world[1][3]), glm::vec3(-2.0f, 0.0f, 0.0f), 1e-6f);
 }
 
+// Keys and node rotations far from unit length normalise to the same rotation as their unit
+// versions: a plain length in float overflows beyond 1e19, and the fuzzer's keys of 1e36 came
+// out as zero quaternions that the .kinema reader then refused.
+TEST(GltfImport, HugeAndTinyRotationsNormaliseWithoutOverflow) {
+  GltfTestFile f;
+  const float h = std::sqrt(0.5f);
+  f.addNode({{"name", "root"}, {"rotation", {0.0, 0.0, 3e37 * h, 3e37 * h}}});  // 90 deg about z, huge
+  const int times = f.addFloats({0.0f, 1.0f}, "SCALAR");
+  const int keys = f.addFloats({0.0f, 0.0f, 2e36f * h, 2e36f * h, 1e-40f, 0.0f, 0.0f, 0.0f}, "VEC4");
+  f.doc["animations"] = {{{"samplers", {{{"input", times}, {"output", keys}, {"interpolation", "LINEAR"}}}},
+                          {"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "rotation"}}}}}}}};
+  const Scene s = parsed(f);
+  const glm::quat zQuarter(h, 0.0f, 0.0f, h);
+  EXPECT_SAME_ROTATION(s.skeleton.rest[0].rotation, zQuarter, 1e-6f);
+  ASSERT_EQ(s.clips.size(), 1u);
+  EXPECT_SAME_ROTATION(quatOf(sampleChannel(s.clips[0].channels[0], 0.0f)), zQuarter, 1e-6f);
+  // A denormal key along x is a half turn about x.
+  EXPECT_SAME_ROTATION(quatOf(sampleChannel(s.clips[0].channels[0], 1.0f)), glm::quat(0.0f, 1.0f, 0.0f, 0.0f), 1e-6f);
+}
+
 TEST(GltfImport, SkeletonIsParentFirstWithNodeMap) {
   GltfTestFile f;
   f.addNode({{"name", "hand"}, {"translation", {1, 0, 0}}});      // 0: child of 2
@@ -203,15 +223,19 @@ TEST(GltfImport, StripsAndFansBecomeTriangleLists) {
                        {{{"attributes", {{"POSITION", pos}}}, {"mode", 5}},
                         {{"attributes", {{"POSITION", pos}}}, {"mode", 6}, {"indices", idx}},
                         {{"attributes", {{"POSITION", pos}}}},
-                        {{"attributes", {{"POSITION", pos}}}, {"mode", 1}}}}}};
+                        {{"attributes", {{"POSITION", pos}}}, {"mode", 1}},
+                        {{"attributes", {{"POSITION", pos}}}, {"mode", 0}}}}}};
   f.addNode({{"mesh", 0}});
   const Scene s = parsed(f);
-  ASSERT_EQ(s.meshes[0].primitives.size(), 3u);  // the lines primitive is dropped...
+  ASSERT_EQ(s.meshes[0].primitives.size(), 4u);  // the lines primitive is dropped...
+  // ...and the points are kept as vertices without triangles.
+  EXPECT_EQ(s.meshes[0].primitives[3].positions.size(), 4u);
+  EXPECT_TRUE(s.meshes[0].primitives[3].indices.empty());
   EXPECT_EQ(s.meshes[0].primitives[0].indices, (std::vector<uint32_t>{0, 1, 2, 1, 3, 2}));
   EXPECT_EQ(s.meshes[0].primitives[1].indices, (std::vector<uint32_t>{2, 1, 3, 1, 0, 3}));
   EXPECT_EQ(s.meshes[0].primitives[2].indices, (std::vector<uint32_t>{0, 1, 2}));  // 4th vertex: no whole triangle
   bool warned = false;  // ...and reported
-  for (const std::string& w : s.warnings) warned |= w.find("points and lines") != std::string::npos;
+  for (const std::string& w : s.warnings) warned |= w.find("lines are not kept") != std::string::npos;
   EXPECT_TRUE(warned);
   ASSERT_EQ(s.meshInstances.size(), 1u);
 }

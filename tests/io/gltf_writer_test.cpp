@@ -9,6 +9,7 @@
 
 #include "anim/sampling.h"
 #include "core/rotation.h"
+#include "io/gltf_reader.h"
 #include "io/gltf_writer.h"
 #include "io/image.h"
 #include "io/sample_scene.h"
@@ -388,6 +389,25 @@ TEST(GltfWriter, GlbIsBinaryAndHoldsTheSameScene) {
   EXPECT_EQ(m.nodes.size(), 9u);
   EXPECT_EQ(m.animations.size(), 2u);
   EXPECT_EQ(m.images.at(0).image, scene.images[0].rgba);
+}
+
+// A primitive with vertices and no triangle (an empty index list) stays without triangles: it
+// is written as points, since glTF triangles without indices would read back as one triangle
+// per three vertices (the fuzzer's round trip found it).
+TEST(GltfWriter, APrimitiveWithoutTrianglesStaysWithoutTriangles) {
+  Scene scene = makeSampleScene();
+  ASSERT_FALSE(scene.meshes.empty());
+  MeshPrimitive& prim = scene.meshes[0].primitives.at(0);
+  ASSERT_GE(prim.positions.size(), 3u);
+  prim.indices.clear();
+  const Result<std::string> gltf = gltfBytes(scene, {});
+  ASSERT_TRUE(gltf.ok()) << gltf.error();
+  EXPECT_EQ(parse(gltf.value(), false).meshes.at(0).primitives.at(0).mode, TINYGLTF_MODE_POINTS);
+  const Result<Scene> back = parseGltf(gltf.value(), "points.gltf");
+  ASSERT_TRUE(back.ok()) << back.error();
+  const MeshPrimitive& read = back->meshes.at(0).primitives.at(0);
+  EXPECT_EQ(read.positions.size(), prim.positions.size());
+  EXPECT_TRUE(read.indices.empty());
 }
 
 TEST(GltfWriter, FailedSaveLeavesThePreviousFile) {
