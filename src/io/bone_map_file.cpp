@@ -1,6 +1,7 @@
 #include "io/bone_map_file.h"
 
 #include "io/json_document.h"
+#include "io/message_text.h"
 #include "io/text_file.h"
 
 namespace kinema {
@@ -30,16 +31,16 @@ Result<BoneMap> parseBoneMapJson(const std::string& text, const std::string& sou
   std::vector<std::string> usedBy(to.skeleton->size());
   std::vector<char> sourceUsed(from.skeleton->size(), 0);
   for (auto it = doc.begin(); it != doc.end(); ++it) {
-    const std::string where = source + ": \"" + it.key() + "\": ";
+    const std::string where = source + ": \"" + cutForMessage(it.key()) + "\": ";
     if (!it.value().is_string()) return R::failure(where + "expected a target joint name (a string)");
     const std::string targetName = it.value().get<std::string>();
     const int s = resolve(from, it.key());
-    if (s < 0) return R::failure(where + from.label + " has no joint or humanoid bone named '" + it.key() + "'");
+    if (s < 0) return R::failure(where + from.label + " has no joint or humanoid bone named '" + cutForMessage(it.key()) + "'");
     const int t = resolve(to, targetName);
-    if (t < 0) return R::failure(where + to.label + " has no joint or humanoid bone named '" + targetName + "'");
-    if (sourceUsed[s]) return R::failure(where + "source joint '" + from.skeleton->names[s] + "' is mapped twice");
+    if (t < 0) return R::failure(where + to.label + " has no joint or humanoid bone named '" + cutForMessage(targetName) + "'");
+    if (sourceUsed[s]) return R::failure(where + "source joint '" + cutForMessage(from.skeleton->names[s]) + "' is mapped twice");
     if (!usedBy[t].empty())
-      return R::failure(where + "target joint '" + to.skeleton->names[t] + "' is already mapped from '" + usedBy[t] + "'");
+      return R::failure(where + "target joint '" + cutForMessage(to.skeleton->names[t]) + "' is already mapped from '" + cutForMessage(usedBy[t]) + "'");
     sourceUsed[s] = 1;
     usedBy[t] = it.key();
     map.pairs.push_back({s, t});

@@ -9,6 +9,7 @@
 #include "io/bone_map_file.h"
 #include "io/bvh.h"
 #include "io/gltf_reader.h"
+#include "io/message_text.h"
 #include "io/scene.h"
 #include "retarget/bone_map.h"
 #include "test_support.h"
@@ -239,6 +240,11 @@ TEST_F(RetargetMapFile, ErrorsNameTheFileAndKey) {
   const Result<BoneMap> syntax = parse("{\"Hips\": ");
   ASSERT_FALSE(syntax.ok());
   EXPECT_EQ(syntax.error().rfind("map.json: not valid JSON: line 1", 0), 0u) << syntax.error();
+  // A megabyte-long name is cut in the message, which stays one short line.
+  const Result<BoneMap> huge = parse("{\"" + std::string(1 << 20, 'x') + "\": \"Hips\"}");
+  ASSERT_FALSE(huge.ok());
+  EXPECT_LE(huge.error().size(), kMaxMessageBytes) << huge.error().substr(0, 400);
+  EXPECT_NE(huge.error().find("\xE2\x80\xA6"), std::string::npos) << "cut with an ellipsis";
 }
 
 }  // namespace
