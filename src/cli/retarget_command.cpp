@@ -15,6 +15,7 @@
 #include "retarget/foot_locking.h"
 #include "retarget/key_reduction.h"
 #include "retarget/retarget_clip.h"
+#include "retarget/retarget_motion.h"
 
 namespace kinema::cli {
 
@@ -134,14 +135,10 @@ int runRetarget(const RetargetOptions& o) {
   BoneMap map;
   std::string mapBy;
   if (o.map.empty()) {
-    if (!sourceHuman) return badInput(o.source + ": " + sourceHuman.error());
-    if (!targetHuman) return badInput(targetLabel + ": " + targetHuman.error());
-    map = mapThroughHumanoid(sourceHuman->bones, targetHuman->bones);
-    mapBy = sourceHuman->source == HumanoidSource::Names && targetHuman->source == HumanoidSource::Names
-                ? "names"
-                : (sourceHuman->source == HumanoidSource::Topology && targetHuman->source == HumanoidSource::Topology
-                       ? "topology"
-                       : "names and topology");
+    Result<AutomaticBoneMap> automatic = automaticBoneMap(sourceHuman, targetHuman, o.source, targetLabel);
+    if (!automatic) return badInput(automatic.error());
+    map = std::move(automatic->map);
+    mapBy = automatic->mapBy;
   } else {
     const BoneMapSide from{&source.skeleton, sourceHuman ? &sourceHuman->bones : nullptr, "the source (" + o.source + ")"};
     const BoneMapSide to{&target.skeleton, targetHuman ? &targetHuman->bones : nullptr, "the target (" + targetLabel + ")"};
@@ -150,42 +147,21 @@ int runRetarget(const RetargetOptions& o) {
     map = std::move(loaded.value());
     mapBy = "file";
   }
-  if (const std::string bad = map.validate(source.skeleton, target.skeleton); !bad.empty())
-    return badInput((o.map.empty() ? o.source + " onto " + targetLabel : o.map) + ": " + bad);
-
-  // Root motion between the hips, scaled by the hip heights; without humanoid readings (a
-  // hand-written map) between the topmost mapped joints, unscaled.
-  RetargetJob job;
-  job.source = &source.skeleton;
-  job.sourceClip = &source.clips[clipIndex];
-  job.target = &target.skeleton;
-  job.map = &map;
-  job.inPlace = o.inPlace;
   const bool humans = sourceHuman.ok() && targetHuman.ok();
-  if (humans && map.sourceOf(targetHuman->bones[HumanoidBone::Hips]) == sourceHuman->bones[HumanoidBone::Hips] &&
-      targetHuman->bones.has(HumanoidBone::Hips)) {
-    const Result<float> hs = restHipHeight(source.skeleton, sourceHuman->bones);
-    if (!hs) return badInput(o.source + ": " + hs.error());
-    const Result<float> ht = restHipHeight(target.skeleton, targetHuman->bones);
-    if (!ht) return badInput(targetLabel + ": " + ht.error());
-    job.sourceRoot = sourceHuman->bones[HumanoidBone::Hips];
-    job.targetRoot = targetHuman->bones[HumanoidBone::Hips];
-    job.rootScale = ht.value() / hs.value();
-    const Result<FootFloors> floors = footFloors(source.skeleton, source.clips[clipIndex], sourceHuman->bones,
-                                                 target.skeleton, targetHuman->bones);
-    if (!floors) return badInput(o.source + " onto " + targetLabel + ": " + floors.error());
-    job.sourceFloor = floors->source;
-    job.targetFloor = floors->target;
-    for (HumanoidBone b : {HumanoidBone::LeftFoot, HumanoidBone::RightFoot, HumanoidBone::LeftToes, HumanoidBone::RightToes})
-      if (targetHuman->bones.has(b)) job.targetFeet.push_back(targetHuman->bones[b]);
-  } else {
-    job.sourceRoot = map.pairs.front().source;
-    job.targetRoot = map.pairs.front().target;  // pairs are in target order: the topmost
-  }
-  Clip clip;
-  job.output = &clip;
-  if (const std::string bad = job.validate(); !bad.empty()) return badInput(o.source + ": " + bad);
-  job.run();
+  RetargetMotionInput input;
+  input.source = &source.skeleton;
+  input.clip = &source.clips[clipIndex];
+  input.sourceHuman = sourceHuman ? &sourceHuman.value() : nullptr;
+  input.target = &target.skeleton;
+  input.targetHuman = targetHuman ? &targetHuman.value() : nullptr;
+  input.map = &map;
+  input.inPlace = o.inPlace;
+  input.sourceLabel = o.source;
+  input.targetLabel = targetLabel;
+  input.mapLabel = o.map;
+  Result<RetargetedMotion> retargeted = retargetMotion(input);
+  if (!retargeted) return badInput(retargeted.error());
+  Clip clip = std::move(retargeted->clip);
   const int frames = clipFrameCount(clip);
 
   // Foot contacts and skate on the target (needs its legs).
@@ -285,9 +261,9 @@ int runRetarget(const RetargetOptions& o) {
       }
     j["humanoidBones"] = bones;
     j["unmapped"] = {{"source", unmappedJson(source.skeleton, map, true)}, {"target", unmappedJson(ts, map, false)}};
-    j["rootScale"] = jsonFloat(job.rootScale);
-    j["sourceFloor"] = jsonFloat(job.sourceFloor);
-    j["targetFloor"] = jsonFloat(job.targetFloor);
+    j["rootScale"] = jsonFloat(retargeted->rootScale);
+    j["sourceFloor"] = jsonFloat(retargeted->sourceFloor);
+    j["targetFloor"] = jsonFloat(retargeted->targetFloor);
     j["contacts"] = {{"left", intervalsJson(contacts[0])}, {"right", intervalsJson(contacts[1])}};
     j["footSkate"] = {{"before", jsonFloat(skateBefore)}, {"after", jsonFloat(skateAfter)}};
     j["keys"] = {{"before", reduction.keysBefore}, {"after", reduction.keysAfter}};

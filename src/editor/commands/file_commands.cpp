@@ -8,6 +8,7 @@
 #include "editor/commands/command_sets.h"
 #include "editor/commands/file_commands.h"
 #include "editor/model/key_codes.h"
+#include "editor/model/motion_import.h"
 #include "editor/viewport/viewport_controller.h"
 
 namespace kinema {
@@ -140,8 +141,55 @@ void requestExport(EditorState& state, FileDialogPurpose format) {
   openFileDialog(state.panels.fileDialog, format, state.doc.path());
 }
 
+void requestImportMotion(EditorState& state) {
+  FileDialogState& d = state.panels.fileDialog;
+  openFileDialog(d, FileDialogPurpose::ImportMotion, state.doc.path());
+  setFileDialogField(d, "");  // the document's own name is no motion file to offer
+}
+
+void startMotionImport(EditorState& state, const std::string& path) {
+  PanelState& p = state.panels;
+  Result<MotionImport> prepared = prepareMotionImport(state.doc, path, state.inputLimits, p.fileDialog.bvhUp);
+  if (!prepared) {
+    showEditorError(state, prepared.error());
+    return;
+  }
+  p.motionImport = std::move(prepared.value());
+  p.motionImportJustOpened = true;
+  p.motionImportError.clear();
+  state.statusMessage = "Import motion from " + path + " (bone map by " + p.motionImport->mapBy + ")";
+}
+
+void applyMotionImportInEditor(EditorState& state) {
+  PanelState& p = state.panels;
+  if (!p.motionImport) return;
+  const std::string error = applyMotionImport(state.doc, *p.motionImport);
+  if (!error.empty()) {
+    p.motionImportError = error;
+    showEditorError(state, error);
+    return;
+  }
+  const std::string from = p.motionImport->path;
+  p.motionImport.reset();
+  p.motionImportError.clear();
+  followDocumentClip(state);
+  const int active = state.doc.activeClip();
+  const std::vector<Clip>& clips = state.doc.scene().clips;
+  state.statusMessage = "Imported motion " + (active >= 0 && active < static_cast<int>(clips.size()) ? clips[active].name : std::string()) +
+                        " from " + from;
+}
+
+void cancelMotionImport(EditorState& state) {
+  state.panels.motionImport.reset();
+  state.panels.motionImportError.clear();
+}
+
 void finishFileDialog(EditorState& state, const std::string& path) {
   const FileDialogPurpose purpose = state.panels.fileDialog.purpose;
+  if (purpose == FileDialogPurpose::ImportMotion) {
+    startMotionImport(state, path);
+    return;
+  }
   if (purpose == FileDialogPurpose::Open) {
     openNow(state, path, state.panels.fileDialog.bvhUp);  // the discard question was asked before the dialog opened
     return;
@@ -226,6 +274,13 @@ void addFileCommands(std::vector<Command>& out) {
   out.push_back(CommandDef("file.open", "Open...").menu("File").key(keys::O, kModCtrl)
                     .run([](CommandContext& c) { requestOpenDialog(c.state); }));
   // File > Open Recent is drawn by the menu itself (one item per recent file).
+  out.push_back(CommandDef("file.import_motion", "Import Motion onto Character...").menu("File", true)
+                    .hint("a BVH, glTF or .kinema take retargeted onto this skeleton as a new clip")
+                    .enabled([](const CommandContext& c) {
+                      return documentShown(c) && !c.state.doc.dragging() && c.state.tool.mode == ModalTool::None &&
+                             c.state.doc.skeleton().size() > 0;
+                    })
+                    .run([](CommandContext& c) { requestImportMotion(c.state); }));
   out.push_back(CommandDef("file.save", "Save").menu("File", true).key(keys::S, kModCtrl)
                     .hint("save the .kinema file (Save As for a new document)")
                     .run([](CommandContext& c) { requestSave(c.state); }));

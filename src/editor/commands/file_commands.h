@@ -15,6 +15,15 @@ void requestOpenPath(EditorState& state, const std::string& path);
 void requestSave(EditorState& state);
 void requestSaveAs(EditorState& state);
 void requestExport(EditorState& state, FileDialogPurpose format);
+// File > Import Motion onto Character…: the file dialog for a motion file; once one is chosen
+// its bone map shows in the "Import Motion" modal (or the error popup says why not).
+void requestImportMotion(EditorState& state);
+// Reads `path` for the modal (motion_import.h prepareMotionImport); an error goes to the popup.
+void startMotionImport(EditorState& state, const std::string& path);
+// The modal's Apply: the retargeted clip becomes a new active clip (one undo step) and the
+// modal closes; on failure nothing changes and the reason stays in the modal (and the popup).
+void applyMotionImportInEditor(EditorState& state);
+void cancelMotionImport(EditorState& state);
 void requestQuit(EditorState& state);
 // A freshly loaded document (opened, new, recovered, or the file `kinema edit` was given)
 // replaces the old one: tools, hover and panel state that pointed into the old skeleton

@@ -16,10 +16,10 @@ void setFileDialogField(FileDialogState& d, const std::string& text) {
   std::snprintf(d.path, sizeof(d.path), "%s", text.c_str());
 }
 
-bool isSaveDialog(FileDialogPurpose p) { return p != FileDialogPurpose::Open; }
+bool isSaveDialog(FileDialogPurpose p) { return p != FileDialogPurpose::Open && p != FileDialogPurpose::ImportMotion; }
 
 bool showsBvhUpAxis(const FileDialogState& d) {
-  return d.purpose == FileDialogPurpose::Open && lowerExtension(d.path) == ".bvh";
+  return !isSaveDialog(d.purpose) && lowerExtension(d.path) == ".bvh";
 }
 
 void relistFileDialog(FileDialogState& d, const std::string& folder) {
@@ -40,6 +40,7 @@ const char* fileDialogTitle(FileDialogPurpose purpose) {
     case FileDialogPurpose::ExportGltf: return "Export glTF";
     case FileDialogPurpose::ExportGlb: return "Export GLB";
     case FileDialogPurpose::ExportBvh: return "Export BVH";
+    case FileDialogPurpose::ImportMotion: return "Import Motion File";
   }
   return "File";
 }
@@ -51,6 +52,7 @@ std::vector<std::string> fileDialogExtensions(FileDialogPurpose purpose) {
     case FileDialogPurpose::ExportGltf: return {".gltf"};
     case FileDialogPurpose::ExportGlb: return {".glb"};
     case FileDialogPurpose::ExportBvh: return {".bvh"};
+    case FileDialogPurpose::ImportMotion: return openableExtensions();
   }
   return {};
 }

@@ -9,7 +9,8 @@ namespace kinema {
 
 // The editor's own file dialog (ImGui 1.86 has none): a path field, the current folder's
 // listing filtered by the extensions the purpose accepts, and the recent files.
-enum class FileDialogPurpose { Open, SaveAs, ExportGltf, ExportGlb, ExportBvh };
+// ImportMotion reads a motion file for File > Import Motion onto Character… (motion_import.h).
+enum class FileDialogPurpose { Open, SaveAs, ExportGltf, ExportGlb, ExportBvh, ImportMotion };
 
 struct FileDialogState {
   bool visible = false;
@@ -20,7 +21,7 @@ struct FileDialogState {
   FolderListing listing;
   std::string listingError;
   std::string confirmOverwrite;  // a save target that exists: asked about before it is chosen
-  // Open: the up axis a .bvh file is read with (shown when the field names one; Y is the
+  // Open and ImportMotion: the up axis a .bvh file is read with (shown when the field names one; Y is the
   // BVH convention, Z what Blender's BVH exporter writes). Kept between openings.
   UpAxis bvhUp = UpAxis::Y;
 };
@@ -38,7 +39,7 @@ void relistFileDialog(FileDialogState& dialog, const std::string& folder);
 // Puts `text` into the path field (cut to the field's size).
 void setFileDialogField(FileDialogState& dialog, const std::string& text);
 
-// Whether the dialog offers the BVH up-axis choice: Open, with a .bvh name in the field.
+// Whether the dialog offers the BVH up-axis choice: Open or ImportMotion, with a .bvh name in the field.
 bool showsBvhUpAxis(const FileDialogState& dialog);
 
 // The path the field names: absolute as typed, else relative to the listed folder, with the

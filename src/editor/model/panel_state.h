@@ -6,6 +6,7 @@
 #include "core/rotation.h"
 #include "editor/model/document_files.h"
 #include "editor/model/file_dialog_state.h"
+#include "editor/model/motion_import.h"
 #include "editor/model/pose_clipboard.h"
 #include "editor/model/recovery_file.h"
 
@@ -60,6 +61,11 @@ struct PanelState {
   std::string pendingPath;
   bool askDiscard = false;  // OpenPopup on the next frame
   bool resumeAfterSaveAs = false;  // "Save first" needed Save As: the action waits for it
+  // File > Import Motion onto Character…: the file read and its bone map, shown in the
+  // "Import Motion" modal until Apply or Cancel (motion_import.h).
+  std::optional<MotionImport> motionImport;
+  bool motionImportJustOpened = false;  // OpenPopup on the next draw
+  std::string motionImportError;        // why the last Apply changed nothing (shown in the modal)
 
   // Autosave and recovery
   std::optional<Autosaver> autosaver;

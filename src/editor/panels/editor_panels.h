@@ -28,6 +28,9 @@ void drawIkTargetsPanel(CommandContext& ctx);  // IK targets and the active join
 void drawHistoryPanel(EditorState& state);    // undo stack, click to jump
 void drawStatusBar(CommandContext& ctx, float fps);
 void drawSessionDialogs(CommandContext& ctx);  // file dialog, discard / recover modals, errors, Help > Controls
+// File > Import Motion onto Character…: the bone map of the chosen file, Apply / Cancel
+// (motion_import_dialog.cpp).
+void drawMotionImportDialog(CommandContext& ctx);
 void drawAnimationDisplayWindows(EditorState& state);  // onion skin & motion path settings, motion control
 void drawPreferencesWindow(CommandContext& ctx);  // Edit > Preferences: UI scale, theme, presentation, loop, new keys
 void drawLogWindow(EditorState& state);           // View > Log: every message in full, with its time

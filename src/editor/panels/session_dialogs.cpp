@@ -177,6 +177,7 @@ void drawSessionDialogs(CommandContext& ctx) {
     if (!state.doc.dirty()) runPendingFileAction(state);  // saved: New / Open / Quit goes on
     else p.pending = PendingFileAction::None;             // cancelled or failed
   }
+  drawMotionImportDialog(ctx);
   discardModal(state);
   recoveryModal(state);
   errorPopup(state);
