@@ -21,6 +21,11 @@ done
 "$kinema" render "$bvh" --frame 240 --select LeftArm --size 960x540 --out "$root/docs/images/render_cmu_frame240.png"
 "$kinema" render ../shared/data/gltf/CesiumMan.glb --time 1 --bones xray --size 960x540 --out "$root/docs/images/skinned_cesium_man.png"
 "$kinema" render ../shared/data/gltf/Fox.glb --clip 2 --time 0.6 --camera 60,15 --size 960x540 --out "$root/docs/images/skinned_fox.png"
+# File > Import Motion onto Character...'s bone-map dialog on the default character (issue 21).
+tmp=$(mktemp -d)
+XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp sh "$root/tests/tools/xvfb_run.sh" 1600x1000x24 "$kinema" edit --size 1400x900 \
+  --script "$root/docs/images/import_motion.jsonl" --frame-count 20 --screenshot "$root/docs/images/import_motion.png"
+rm -rf "$tmp"
 # The CMU take and the default character playing it after `kinema retarget` (issue 21), frame 150.
 tmp=$(mktemp -d)
 "$kinema" retarget "$bvh" --out "$tmp/cmu_on_default.kinema" --fix-feet
