@@ -12,3 +12,5 @@ for preset in $("$kinema" demo list --json | python3 -c 'import json,sys; print(
   "$kinema" demo "$preset" --out "$out/$preset" --size 520x390 --max-steps 7
 done
 "$kinema" demo solver-table --out "$out/solver-table" --targets 100 > /dev/null
+# Issue 23: the four integrators on the damped spring chain (no timings: the numbers are exact).
+"$kinema" demo stiff-springs --out "$out/stiff-springs" --size 1500x800 > /dev/null

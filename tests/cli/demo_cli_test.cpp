@@ -1,6 +1,7 @@
 // `kinema demo`: the presets' figures and numbers, and that they replay under `kinema ik`.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -185,6 +186,51 @@ TEST(DemoCommand, TheGifKeepsTheFiguresColours) {
     }
   ASSERT_GT(drawn, 1000);
   EXPECT_LT(sum / (3.0 * drawn), 12.0) << "mean difference per channel on " << drawn << " drawn pixels";
+}
+
+}  // namespace
+}  // namespace kinema
+
+namespace kinema {
+namespace {
+
+// Issue 23: `kinema demo stiff-springs`. The limits in numbers.json against the closed forms
+// computed here from the chain's parameters (w_max of a fixed-free chain of N masses), and the
+// measured blow-up steps within 5 % above them.
+TEST(DemoCommand, StiffSpringsWritesTheFiguresAndLimits) {
+  const std::string dir = test::makeTempDir();
+  std::string out, err;
+  ASSERT_EQ(kinema("demo stiff-springs --out " + dir + " --size 800x480 --zeta 0.2", &out, &err), 0) << err;
+  const Json n = Json::parse(test::readFile(dir + "/numbers.json"));
+  const double pi = 3.14159265358979323846, masses = n["masses"].get<double>();
+  const double wMax = 2.0 * std::sqrt(n["stiffness_n_per_m"].get<double>() / n["mass_kg"].get<double>()) *
+                      std::sin((2.0 * masses - 1.0) * pi / (2.0 * (2.0 * masses + 1.0)));
+  EXPECT_NEAR(n["omega_max_rad_per_s"].get<double>(), wMax, 1e-9 * wMax);
+  const double zeta = 0.2;
+  ASSERT_EQ(n["limits"].size(), 4u);
+  EXPECT_EQ(n["limits"][0]["scheme"], "explicit_euler");
+  EXPECT_NEAR(n["limits"][0]["derived_limit_s"].get<double>(), 2.0 * zeta / wMax, 1e-12);
+  EXPECT_EQ(n["limits"][1]["scheme"], "symplectic_euler");
+  EXPECT_NEAR(n["limits"][1]["derived_limit_s"].get<double>(), 2.0 * (std::sqrt(1.0 + zeta * zeta) - zeta) / wMax, 1e-12);
+  EXPECT_TRUE(n["limits"][3]["derived_limit_s"].is_null());  // backward Euler
+  for (int s = 0; s < 3; ++s) {
+    const double derived = n["limits"][s]["derived_limit_s"], measured = n["limits"][s]["measured_blow_up_step_s"];
+    EXPECT_GE(measured, derived) << n["limits"][s]["scheme"];
+    EXPECT_LE(measured, 1.05 * derived) << n["limits"][s]["scheme"];
+  }
+  // 4 schemes x 5 steps; backward Euler never blows up, explicit Euler does from the 2nd column.
+  ASSERT_EQ(n["runs"].size(), 20u);
+  for (int c = 0; c < 5; ++c) {
+    EXPECT_FALSE(n["runs"][15 + c]["blew_up"].get<bool>()) << c;
+    EXPECT_EQ(n["runs"][c]["blew_up"].get<bool>(), c > 0) << c;
+  }
+  for (const char* f : {"motion.png", "energy.png", "numbers.csv"}) EXPECT_TRUE(fs::exists(fs::path(dir) / f)) << f;
+  const Result<Image> img = loadPng(dir + "/energy.png");
+  ASSERT_TRUE(img.ok()) << img.error();
+  EXPECT_EQ(img->width, 800);  // 5 x 4 panels of 160 x 120
+  EXPECT_EQ(img->height, 480);
+  EXPECT_EQ(kinema("demo stiff-springs --out " + dir + " --zeta 1.5", &out, &err), 1);
+  EXPECT_NE(err.find("zeta"), std::string::npos) << err;
 }
 
 }  // namespace
