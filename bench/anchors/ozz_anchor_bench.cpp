@@ -274,14 +274,14 @@ void checkSamples(const TwinClip& c, const std::vector<float>& times, int joints
 double randomAt64[2] = {0.0, 0.0};  // Kinema's random-access figure at 64 joints (ns/joint), per path
 
 // ozz builds at most 1,024 joints (Skeleton::kMaxJoints): beyond that Kinema runs alone and
-// the row shows its growth from 64 joints. `job`: Kinema samples through PlaybackSamplingJob
+// the row shows its growth from 64 joints. `viaJob`: Kinema samples through PlaybackSamplingJob
 // on a PlaybackClip built once from the clip (built before timing, as ozz's Animation is);
 // otherwise through sampleClip (with a SamplingCache in playback).
-void sampling(int joints, bool playback, bool job) {
+void sampling(int joints, bool playback, bool viaJob) {
   constexpr int kKeys = 1000;
   const bool withOzz = joints <= 1024;
   const TwinClip c = makeClip(joints, kKeys, !withOzz ? -1.0f : playback ? 0.0f : 1.0f);
-  const PlaybackClip fast = job ? PlaybackClip::build(c.kinema, joints) : PlaybackClip();
+  const PlaybackClip fast = viaJob ? PlaybackClip::build(c.kinema, joints) : PlaybackClip();
   const float duration = c.kinema.duration();
   std::vector<float> times;
   if (playback) {
@@ -291,7 +291,7 @@ void sampling(int joints, bool playback, bool job) {
     std::uniform_real_distribution<float> any(0.0f, duration);
     for (int i = 0; i < 4096; ++i) times.push_back(any(rng));
   }
-  const std::string path = job ? "`PlaybackSamplingJob`" : "`sampleClip`";
+  const std::string path = viaJob ? "`PlaybackSamplingJob`" : "`sampleClip`";
   const std::string row = playback ? "clip sampling, playback (" + std::to_string(joints) +
                                          " joints x 1,000 keys, 1/60 s steps), " + path
                                    : "clip sampling, random times, " + std::to_string(joints) + " joints x 1,000 keys, " + path;
@@ -299,7 +299,7 @@ void sampling(int joints, bool playback, bool job) {
   SamplingCache cache;
   PlaybackContext playbackContext;
   auto sampleKinema = [&](float time, Pose& out) {
-    if (job)
+    if (viaJob)
       samplePlayback(fast, time, out, playbackContext);
     else if (playback)
       sampleClip(c.kinema, time, out, cache);
@@ -326,11 +326,11 @@ void sampling(int joints, bool playback, bool job) {
   if (!withOzz) {
     const anchor::SideBySide r = alternate(kin, kin, joints);
     std::printf("| %s | %.3g ns/joint | (ozz: at most 1,024 joints) | %.2fx Kinema at 64 joints |\n", row.c_str(),
-                r.kinema, r.kinema / randomAt64[job]);
+                r.kinema, r.kinema / randomAt64[viaJob]);
     return;
   }
   const anchor::SideBySide r = alternate(kin, ozzSide, joints);
-  if (!playback && joints == 64) randomAt64[job] = r.kinema;
+  if (!playback && joints == 64) randomAt64[viaJob] = r.kinema;
   printRow(row, r, "ns/joint", playback ? "ozz `SamplingJob`" : "ozz `SamplingJob`, 1 s iframes,");
 }
 

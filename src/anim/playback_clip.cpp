@@ -16,6 +16,7 @@ namespace {
 // own setting starts no segment); Bezier otherwise, meaning "not for a grid".
 Interpolation uniformInterpolation(const Channel& ch) {
   if (ch.keys.empty()) return ch.interpolation;
+  if (ch.keys.size() != ch.times.size()) return Interpolation::Bezier;
   const Interpolation first = ch.keys[0].interpolation;
   for (int k = 1; k + 1 < ch.keyCount(); ++k)
     if (ch.keys[k].interpolation != first) return Interpolation::Bezier;

@@ -15,9 +15,8 @@ namespace kinema {
 
 namespace {
 
-static_assert(sizeof(glm::quat) == 16 && offsetof(glm::quat, x) == 0 && offsetof(glm::quat, w) == 12,
-              "rotations are written as four floats x, y, z, w");
-static_assert(sizeof(glm::vec3) == 12 && offsetof(glm::vec3, z) == 8, "vectors are written as three floats");
+// Rotations are written as four floats x, y, z, w (glm's default storage), vectors as three.
+static_assert(sizeof(glm::quat) == 16 && sizeof(glm::vec3) == 12, "glm types are plain floats");
 
 // True when hi is the first key after `time` (0: before the first key, n: at or after the last).
 inline bool isUpperKey(const float* times, int n, int hi, float time) {

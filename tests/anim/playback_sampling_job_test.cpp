@@ -111,7 +111,7 @@ Clip randomClip(int joints, int keys, std::mt19937& rng) {
   Channel scalar = makeChannel(-1, ChannelTarget::Translation);
   scalar.target = ChannelTarget::Scalar;
   scalar.property = "weight";
-  clip.channels.insert(clip.channels.begin() + rng() % clip.channels.size(), scalar);
+  clip.channels.insert(clip.channels.begin() + rng() % (clip.channels.size() + 1), scalar);
   clip.channels.push_back(makeChannel(joints, ChannelTarget::Translation));  // a joint the skeleton lacks
   return clip;
 }
