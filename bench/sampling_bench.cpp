@@ -146,6 +146,16 @@ void BM_RandomAccess_Bezier_Slerp_Job(benchmark::State& state) {
   static const Clip clip = makeClip(Interpolation::Bezier, Interpolation::Linear, true);
   run(state, clip, false, true);
 }
+// Building the PlaybackClip of the linear clip (once per clip, and in the editor again after
+// an edit made while it plays): time per build, ns_per_joint per joint.
+void BM_BuildPlaybackClip_Linear(benchmark::State& state) {
+  static const Clip clip = makeClip(Interpolation::Linear, Interpolation::Linear, false);
+  for (auto _ : state) {
+    PlaybackClip p = PlaybackClip::build(clip, kJoints);
+    benchmark::DoNotOptimize(p.grids.data());
+  }
+  report(state);
+}
 
 BENCHMARK(BM_Playback_Linear);
 BENCHMARK(BM_RandomAccess_Linear);
@@ -159,5 +169,6 @@ BENCHMARK(BM_Playback_CatmullRom_Squad_Job);
 BENCHMARK(BM_RandomAccess_CatmullRom_Squad_Job);
 BENCHMARK(BM_Playback_Bezier_Slerp_Job);
 BENCHMARK(BM_RandomAccess_Bezier_Slerp_Job);
+BENCHMARK(BM_BuildPlaybackClip_Linear);
 
 }  // namespace
