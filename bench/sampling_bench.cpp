@@ -1,14 +1,17 @@
 // Clip sampling throughput: 64 joints, each with a translation and a rotation channel of
 // 1,000 keys (30 keys per second, a random walk of a few degrees per key like motion capture). "ns_per_joint" is wall time per joint per sample (both
 // channels). Playback samples consecutive 60 fps frames through a SamplingCache; random
-// access samples shuffled times without one (binary search). Reference point: ozz-animation
-// samples about 12 ns per joint in playback and 54 ns per joint at random times.
+// access samples shuffled times without one (binary search). The "Job" variants sample the
+// same clips through PlaybackSamplingJob on a PlaybackClip built once before timing (one
+// context, in playback and at random times). Reference point: ozz-animation samples about
+// 12 ns per joint in playback and 54 ns per joint at random times.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <random>
 #include <vector>
 
+#include "anim/playback_sampling_job.h"
 #include "anim/sampling.h"
 
 namespace {
@@ -64,7 +67,7 @@ void report(benchmark::State& state) {
       benchmark::Counter(kJoints, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
-void run(benchmark::State& state, const Clip& clip, bool playback) {
+void run(benchmark::State& state, const Clip& clip, bool playback, bool job = false) {
   const Skeleton s = makeSkeleton();
   Pose pose = Pose::rest(s);
   const float duration = clip.duration();
@@ -77,9 +80,13 @@ void run(benchmark::State& state, const Clip& clip, bool playback) {
     for (int i = 0; i < 4096; ++i) times.push_back(any(rng));
   }
   SamplingCache cache;
+  const PlaybackClip fast = job ? PlaybackClip::build(clip, kJoints) : PlaybackClip();
+  PlaybackContext context;
   size_t i = 0;
   for (auto _ : state) {
-    if (playback) {
+    if (job) {
+      samplePlayback(fast, times[i], pose, context);
+    } else if (playback) {
       sampleClip(clip, times[i], pose, cache);
     } else {
       sampleClip(clip, times[i], pose);
@@ -115,6 +122,40 @@ void BM_RandomAccess_Bezier_Slerp(benchmark::State& state) {
   static const Clip clip = makeClip(Interpolation::Bezier, Interpolation::Linear, true);
   run(state, clip, false);
 }
+void BM_Playback_Linear_Job(benchmark::State& state) {
+  static const Clip clip = makeClip(Interpolation::Linear, Interpolation::Linear, false);
+  run(state, clip, true, true);
+}
+void BM_RandomAccess_Linear_Job(benchmark::State& state) {
+  static const Clip clip = makeClip(Interpolation::Linear, Interpolation::Linear, false);
+  run(state, clip, false, true);
+}
+void BM_Playback_CatmullRom_Squad_Job(benchmark::State& state) {
+  static const Clip clip = makeClip(Interpolation::CatmullRom, Interpolation::Squad, true);
+  run(state, clip, true, true);
+}
+void BM_RandomAccess_CatmullRom_Squad_Job(benchmark::State& state) {
+  static const Clip clip = makeClip(Interpolation::CatmullRom, Interpolation::Squad, true);
+  run(state, clip, false, true);
+}
+void BM_Playback_Bezier_Slerp_Job(benchmark::State& state) {
+  static const Clip clip = makeClip(Interpolation::Bezier, Interpolation::Linear, true);
+  run(state, clip, true, true);
+}
+void BM_RandomAccess_Bezier_Slerp_Job(benchmark::State& state) {
+  static const Clip clip = makeClip(Interpolation::Bezier, Interpolation::Linear, true);
+  run(state, clip, false, true);
+}
+// Building the PlaybackClip of the linear clip (once per clip, and in the editor again after
+// an edit made while it plays): time per build, ns_per_joint per joint.
+void BM_BuildPlaybackClip_Linear(benchmark::State& state) {
+  static const Clip clip = makeClip(Interpolation::Linear, Interpolation::Linear, false);
+  for (auto _ : state) {
+    PlaybackClip p = PlaybackClip::build(clip, kJoints);
+    benchmark::DoNotOptimize(p.grids.data());
+  }
+  report(state);
+}
 
 BENCHMARK(BM_Playback_Linear);
 BENCHMARK(BM_RandomAccess_Linear);
@@ -122,5 +163,12 @@ BENCHMARK(BM_Playback_CatmullRom_Squad);
 BENCHMARK(BM_RandomAccess_CatmullRom_Squad);
 BENCHMARK(BM_Playback_Bezier_Slerp);
 BENCHMARK(BM_RandomAccess_Bezier_Slerp);
+BENCHMARK(BM_Playback_Linear_Job);
+BENCHMARK(BM_RandomAccess_Linear_Job);
+BENCHMARK(BM_Playback_CatmullRom_Squad_Job);
+BENCHMARK(BM_RandomAccess_CatmullRom_Squad_Job);
+BENCHMARK(BM_Playback_Bezier_Slerp_Job);
+BENCHMARK(BM_RandomAccess_Bezier_Slerp_Job);
+BENCHMARK(BM_BuildPlaybackClip_Linear);
 
 }  // namespace

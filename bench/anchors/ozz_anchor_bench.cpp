@@ -6,6 +6,8 @@
 // Instructions per 64-joint playback sample, both sides:
 //   valgrind --tool=callgrind --toggle-collect='*PlaybackLoop*'
 //     ./build/bench/anchors/ozz_anchor_bench callgrind-playback   (one command line)
+// (kinemaPlaybackLoop: sampleClip with a SamplingCache; kinemaJobPlaybackLoop:
+// PlaybackSamplingJob on a PlaybackClip; ozzPlaybackLoop: ozz's SamplingJob.)
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -14,6 +16,7 @@
 #include <vector>
 
 #include "anchor_timing.h"
+#include "anim/playback_sampling_job.h"
 #include "anim/sampling.h"
 #include "core/forward_kinematics.h"
 #include "ik/ik_solver.h"
@@ -243,14 +246,15 @@ TwinClip makeClip(int joints, int keys, float iframeInterval) {
 
 // Both sides at the same times: translations within ozz's half-float keys, rotations within
 // its 16-bit keys and nlerp (Kinema slerps).
-void checkSamples(const TwinClip& c, const std::vector<float>& times, int joints, const std::string& row) {
+template <class Sample>
+void checkSamples(const TwinClip& c, const std::vector<float>& times, int joints, const std::string& row,
+                  Sample&& sample) {
   Pose pose = Pose::rest(c.skeleton);
   std::vector<ozz::math::SoaTransform> soa((joints + 3) / 4);
   oz::SamplingJob::Context context(joints);
-  SamplingCache cache;
   float dt = 0.0f, dr = 0.0f;
   for (size_t i = 0; i < times.size() && i < 600; ++i) {
-    sampleClip(c.kinema, times[i], pose, cache);
+    sample(times[i], pose);
     oz::SamplingJob job;
     job.animation = c.ozz.get();
     job.context = &context;
@@ -267,14 +271,17 @@ void checkSamples(const TwinClip& c, const std::vector<float>& times, int joints
                                       std::to_string(dr) + " rad");
 }
 
-double randomAt64 = 0.0;  // Kinema's random-access figure at 64 joints (ns/joint)
+double randomAt64[2] = {0.0, 0.0};  // Kinema's random-access figure at 64 joints (ns/joint), per path
 
 // ozz builds at most 1,024 joints (Skeleton::kMaxJoints): beyond that Kinema runs alone and
-// the row shows its growth from 64 joints.
-void sampling(int joints, bool playback) {
+// the row shows its growth from 64 joints. `viaJob`: Kinema samples through PlaybackSamplingJob
+// on a PlaybackClip built once from the clip (built before timing, as ozz's Animation is);
+// otherwise through sampleClip (with a SamplingCache in playback).
+void sampling(int joints, bool playback, bool viaJob) {
   constexpr int kKeys = 1000;
   const bool withOzz = joints <= 1024;
   const TwinClip c = makeClip(joints, kKeys, !withOzz ? -1.0f : playback ? 0.0f : 1.0f);
+  const PlaybackClip fast = viaJob ? PlaybackClip::build(c.kinema, joints) : PlaybackClip();
   const float duration = c.kinema.duration();
   std::vector<float> times;
   if (playback) {
@@ -284,20 +291,27 @@ void sampling(int joints, bool playback) {
     std::uniform_real_distribution<float> any(0.0f, duration);
     for (int i = 0; i < 4096; ++i) times.push_back(any(rng));
   }
+  const std::string path = viaJob ? "`PlaybackSamplingJob`" : "`sampleClip`";
   const std::string row = playback ? "clip sampling, playback (" + std::to_string(joints) +
-                                         " joints x 1,000 keys, 1/60 s steps)"
-                                   : "clip sampling, random times, " + std::to_string(joints) + " joints x 1,000 keys";
-  if (withOzz) checkSamples(c, times, joints, row);
+                                         " joints x 1,000 keys, 1/60 s steps), " + path
+                                   : "clip sampling, random times, " + std::to_string(joints) + " joints x 1,000 keys, " + path;
   Pose pose = Pose::rest(c.skeleton);
   SamplingCache cache;
+  PlaybackContext playbackContext;
+  auto sampleKinema = [&](float time, Pose& out) {
+    if (viaJob)
+      samplePlayback(fast, time, out, playbackContext);
+    else if (playback)
+      sampleClip(c.kinema, time, out, cache);
+    else
+      sampleClip(c.kinema, time, out);
+  };
+  if (withOzz) checkSamples(c, times, joints, row, sampleKinema);
   std::vector<ozz::math::SoaTransform> soa((joints + 3) / 4);
   oz::SamplingJob::Context context(withOzz ? joints : 4);
   size_t ik = 0, io = 0;
   auto kin = [&] {
-    if (playback)
-      sampleClip(c.kinema, times[ik], pose, cache);
-    else
-      sampleClip(c.kinema, times[ik], pose);
+    sampleKinema(times[ik], pose);
     if (++ik == times.size()) ik = 0;
   };
   auto ozzSide = [&] {
@@ -312,17 +326,21 @@ void sampling(int joints, bool playback) {
   if (!withOzz) {
     const anchor::SideBySide r = alternate(kin, kin, joints);
     std::printf("| %s | %.3g ns/joint | (ozz: at most 1,024 joints) | %.2fx Kinema at 64 joints |\n", row.c_str(),
-                r.kinema, r.kinema / randomAt64);
+                r.kinema, r.kinema / randomAt64[viaJob]);
     return;
   }
   const anchor::SideBySide r = alternate(kin, ozzSide, joints);
-  if (!playback && joints == 64) randomAt64 = r.kinema;
+  if (!playback && joints == 64) randomAt64[viaJob] = r.kinema;
   printRow(row, r, "ns/joint", playback ? "ozz `SamplingJob`" : "ozz `SamplingJob`, 1 s iframes,");
 }
 
 // For callgrind (--toggle-collect='*PlaybackLoop*'): `count` playback samples of each side.
 __attribute__((noinline)) void kinemaPlaybackLoop(const Clip& clip, Pose& pose, SamplingCache& cache, int count) {
   for (int i = 0; i < count; ++i) sampleClip(clip, i / 60.0f, pose, cache);
+}
+__attribute__((noinline)) void kinemaJobPlaybackLoop(const PlaybackClip& clip, Pose& pose, PlaybackContext& context,
+                                                     int count) {
+  for (int i = 0; i < count; ++i) samplePlayback(clip, i / 60.0f, pose, context);
 }
 __attribute__((noinline)) void ozzPlaybackLoop(const oz::Animation& animation, oz::SamplingJob::Context& context,
                                                std::vector<ozz::math::SoaTransform>& soa, int count) {
@@ -368,8 +386,11 @@ void callgrindPlayback() {
   std::vector<ozz::math::SoaTransform> soa(16);
   oz::SamplingJob::Context context(64);
   kinemaPlaybackLoop(c.kinema, pose, cache, 1000);
+  const PlaybackClip fast = PlaybackClip::build(c.kinema, 64);
+  PlaybackContext playbackContext;
+  kinemaJobPlaybackLoop(fast, pose, playbackContext, 1000);
   ozzPlaybackLoop(*c.ozz, context, soa, 1000);
-  std::printf("ran 1,000 playback samples (64 joints) on each side: instructions / 1,000 = per sample\n");
+  std::printf("ran 1,000 playback samples (64 joints) on each side (Kinema twice: sampleClip, then PlaybackSamplingJob): instructions / 1,000 = per sample\n");
 }
 
 // ---------------------------------------------------------------- skinning
@@ -581,12 +602,12 @@ int main(int argc, char** argv) {
   auto want = [&](const char* name) { return only.empty() || std::string(name).find(only) != std::string::npos; };
   anchor::printHeader("Kinema beside ozz-animation 0.16.0 (CPU time per item, median of 11 alternating rounds)");
   if (want("fk")) fk();
-  if (want("sampling-playback")) sampling(64, true);
-  if (want("sampling-random")) {
-    sampling(64, false);
-    sampling(1024, false);
-    sampling(10000, false);
-  }
+  // Each sampling row twice: sampleClip (the Clip as edited), then PlaybackSamplingJob.
+  if (want("sampling-playback"))
+    for (bool job : {false, true}) sampling(64, true, job);
+  if (want("sampling-random"))
+    for (int joints : {64, 1024, 10000})
+      for (bool job : {false, true}) sampling(joints, false, job);
   if (want("skinning")) skinning();
   if (want("two-bone")) twoBone();
   if (failures) std::printf("%d comparison(s) did not match: the figures above are not comparable\n", failures);

@@ -8,6 +8,7 @@
 #include "anim/hermite.h"
 #include "anim/quaternion_curves.h"
 #include "anim/tcb_spline.h"
+#include "anim/unit_slerp.h"
 
 namespace kinema {
 
@@ -79,47 +80,12 @@ void apply(const Channel& ch, const glm::vec4& v, Transform& t) {
   }
 }
 
-// The weights sin((1 - u) theta) / sin(theta) and sin(u theta) / sin(theta) of a slerp with
-// cos(theta) = x, as the series in (x - 1) of Eberly's "A fast and accurate algorithm for
-// computing SLERP" (2011), cut after six terms: for x >= 0.8 (keys up to 74 degrees apart)
-// it is within 2e-8 of the sines, with no acos, sin or division.
-inline float slerpWeight(float u, float xm1) {
-  const float u2 = u * u;
-  float acc = 1.0f + (u2 / 78.0f - 6.0f / 13.0f) * xm1;
-  acc = 1.0f + (u2 / 55.0f - 5.0f / 11.0f) * xm1 * acc;
-  acc = 1.0f + (u2 / 36.0f - 4.0f / 9.0f) * xm1 * acc;
-  acc = 1.0f + (u2 / 21.0f - 3.0f / 7.0f) * xm1 * acc;
-  acc = 1.0f + (u2 / 10.0f - 2.0f / 5.0f) * xm1 * acc;
-  acc = 1.0f + (u2 / 3.0f - 1.0f / 3.0f) * xm1 * acc;
-  return u * acc;
-}
-
-inline bool isUnit(const glm::vec4& v) { return std::abs(glm::dot(v, v) - 1.0f) < 1e-6f; }
-
-// slerpShortest of two unit quaternions (x, y, z, w), normalised, with the sines replaced by
-// slerpWeight wherever it is exact to float precision. slerpShortest blends linearly above
-// cos 0.9995 (within 5e-7 of the slerp there); the series stays on the slerp, and without
-// that branch, which on motion capture goes either way from key to key.
-inline glm::vec4 slerpUnitKeys(const glm::vec4& a, glm::vec4 b, float u) {
-  float d = glm::dot(a, b);
-  if (d < 0.0f) {
-    b = -b;
-    d = -d;
-  }
-  if (!(d >= 0.8f))
-    return toVec(unit(slerpShortest(glm::quat(a.w, a.x, a.y, a.z), glm::quat(b.w, b.x, b.y, b.z), u)));
-  const float xm1 = std::min(d, 1.0f) - 1.0f;
-  const glm::vec4 r = slerpWeight(1.0f - u, xm1) * a + slerpWeight(u, xm1) * b;
-  // |r| is within 1e-7 of 1: one Newton step for 1 / |r| is exact to float precision.
-  return r * (1.5f - 0.5f * glm::dot(r, r));
-}
-
 // A Linear segment from key lo to lo + 1 at fraction u: a straight line, or for rotations
 // the shortest-arc slerp of the (normalised) keys.
 inline glm::vec4 linearSegment(const Channel& ch, bool rotation, int lo, float u) {
   const glm::vec4 &a = ch.values[lo], &b = ch.values[lo + 1];
   if (!rotation) return glm::mix(a, b, u);
-  if (isUnit(a) && isUnit(b)) return slerpUnitKeys(a, b, u);
+  if (isUnitLength(a) && isUnitLength(b)) return slerpUnitKeys(a, b, u);
   return toVec(unit(slerpShortest(toQuat(a), toQuat(b), u)));
 }
 
@@ -211,7 +177,7 @@ void sampleInto(const Clip& clip, float time, Pose& pose, int* cursors) {
         case ChannelTarget::Translation: t.translation = glm::mix(glm::vec3(a), glm::vec3(b), u); continue;
         case ChannelTarget::Scale: t.scale = glm::mix(glm::vec3(a), glm::vec3(b), u); continue;
         case ChannelTarget::Rotation: {
-          const glm::vec4 q = isUnit(a) && isUnit(b) ? slerpUnitKeys(a, b, u) : linearSegment(ch, true, lo, u);
+          const glm::vec4 q = isUnitLength(a) && isUnitLength(b) ? slerpUnitKeys(a, b, u) : linearSegment(ch, true, lo, u);
           t.rotation = glm::quat(q.w, q.x, q.y, q.z);
           continue;
         }

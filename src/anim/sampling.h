@@ -25,7 +25,9 @@ glm::vec4 sampleChannel(const Channel& channel, float time, int* cursor = nullpt
 // rotation key normalised, slerp by acos and sin. Same values to 1e-6, several times slower.
 glm::vec4 sampleChannelReference(const Channel& channel, float time);
 
-// sampleClip (clip.h) with cursors kept in `cache` (resized to the clip as needed).
+// sampleClip (clip.h) with cursors kept in `cache` (resized to the clip as needed). For many
+// samples of one unchanging clip (playback, export), PlaybackSamplingJob on a PlaybackClip
+// built once (anim/playback_sampling_job.h) gives the same values several times faster.
 void sampleClip(const Clip& clip, float time, Pose& pose, SamplingCache& cache);
 
 }  // namespace kinema

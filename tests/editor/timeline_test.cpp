@@ -138,6 +138,63 @@ TEST(Timeline, FrameChangesPoseTheDocumentWithoutAnUndoStep) {
   EXPECT_NEAR(2.0f * std::atan2(s.doc.pose().local[arm].rotation.z, s.doc.pose().local[arm].rotation.w), 0.2f, 1e-6f);
 }
 
+// Playback poses through PlaybackSamplingJob (anim/playback_sampling_job.h): the same pose
+// as sampleClip to 1e-6, and an edit of the clip while it plays shows on the next frame
+// (the sampling form is rebuilt after any change of the document).
+TEST(Timeline, PlaybackPosesFromTheSamplingFormAndFollowsEditsWhilePlaying) {
+  Scene scene;
+  constexpr int kJoints = 6;
+  for (int j = 0; j < kJoints; ++j) scene.skeleton.addJoint("J" + std::to_string(j), j - 1, Transform{});
+  Clip clip;
+  clip.frameTime = 1.0 / 24.0;
+  std::vector<float> times;
+  for (int k = 0; k < 48; ++k) times.push_back(clip.frameToTime(k));
+  for (int j = 0; j < kJoints; ++j) {
+    Channel t(j, ChannelTarget::Translation, Interpolation::Linear, times, {});
+    Channel r(j, ChannelTarget::Rotation, Interpolation::Linear, times, {});
+    for (int k = 0; k < 48; ++k) {
+      t.values.emplace_back(0.1f * k, j, -0.05f * k * j, 0.0f);
+      const glm::quat q = glm::angleAxis(0.05f * k * (j + 1), glm::normalize(glm::vec3(1, j, 2)));
+      r.values.emplace_back(q.x, q.y, q.z, q.w);
+    }
+    clip.channels.push_back(std::move(t));
+    clip.channels.push_back(std::move(r));
+  }
+  scene.clips.push_back(clip);
+  EditorState s;
+  s.doc = Document(scene);
+  resetTimeline(s);
+  auto expectPoseOfClip = [&](const char* when) {
+    Pose expected = s.doc.pose();
+    sampleClip(s.doc.scene().clips[0], static_cast<float>(s.time), expected);
+    for (int j = 0; j < kJoints; ++j) {
+      const Transform &a = s.doc.pose().local[j], &b = expected.local[j];
+      for (int i = 0; i < 3; ++i) EXPECT_NEAR(a.translation[i], b.translation[i], 1e-6f) << when << ", joint " << j;
+      for (int i = 0; i < 4; ++i) EXPECT_NEAR(a.rotation[i], b.rotation[i], 1e-6f) << when << ", joint " << j;
+    }
+  };
+  togglePlayback(s);
+  for (int frame = 0; frame < 10; ++frame) {
+    advancePlayback(s, 0.37 / 24.0);
+    evaluateEditorPose(s);
+    expectPoseOfClip("playing");
+  }
+  // The played clip went through its sampling form: one grid of all twelve channels.
+  ASSERT_EQ(s.playbackSampler.clip.grids.size(), 1u);
+  EXPECT_EQ(s.playbackSampler.clip.trackCount(), 2 * kJoints);
+  // An edit while playing: every translation key of joint 2 moves up by 3.
+  ASSERT_EQ(s.doc.edit("Move keys",
+                       [](DocumentEdit& e) {
+                         for (glm::vec4& v : e.clips[0].channels[4].values) v.y += 3.0f;
+                         return std::string();
+                       }),
+            "");
+  advancePlayback(s, 0.5 / 24.0);
+  evaluateEditorPose(s);
+  EXPECT_GT(s.doc.pose().local[2].translation.y, 4.9f);  // 2 + 3
+  expectPoseOfClip("after the edit");
+}
+
 TEST(Timeline, RulerMapsFramesToPixelsAndBack) {
   EditorState s = newState();
   const TimelineRuler r = timelineRuler(s, 250, 700, 720, 40);

@@ -3,6 +3,7 @@
 #include <utility>
 #include <vector>
 
+#include "anim/playback_sampling_job.h"
 #include "core/pose.h"
 #include "editor/model/document.h"
 #include "editor/model/bottom_panels.h"
@@ -125,6 +126,16 @@ struct EditorState {
       return clip == o.clip && time == o.time && poseRevision == o.poseRevision && changeCount == o.changeCount;
     }
   } sampledAt;
+
+  // The played clip in its sampling form (anim/playback_clip.h), used while the clip plays
+  // (poseAtPlayhead): built on the first played frame and again after any change of the
+  // document, which changeCount and clipListRevision (unique to a document) tell.
+  struct PlaybackSampler {
+    PlaybackClip clip;
+    PlaybackContext context;
+    int clipIndex = -1, joints = -1;
+    long long clipListRevision = -1, changeCount = -1;
+  } playbackSampler;
 
   // World transforms of the document's pose (model space, one per joint): the document's
   // cached evaluation (Document::worldTransforms), recomputed only after the pose changed.

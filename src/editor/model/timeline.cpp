@@ -13,13 +13,28 @@ namespace {
 
 const Clip* editedClip(const EditorState& s) { return s.hasMotion() ? &s.doc.scene().clips[s.clip] : nullptr; }
 
+// The played clip as a PlaybackClip, rebuilt when the document changed since it was built.
+const PlaybackClip& playbackClip(EditorState& s, const Clip& clip, int joints) {
+  EditorState::PlaybackSampler& p = s.playbackSampler;
+  const long long clipList = s.doc.clipListRevision(), changes = s.doc.changeCount();
+  if (p.clipIndex != s.clip || p.joints != joints || p.clipListRevision != clipList || p.changeCount != changes) {
+    p.clip = PlaybackClip::build(clip, joints);
+    p.clipIndex = s.clip, p.joints = joints, p.clipListRevision = clipList, p.changeCount = changes;
+  }
+  return p.clip;
+}
+
 }  // namespace
 
 void poseAtPlayhead(EditorState& s) {
   const Clip* clip = editedClip(s);
   if (!clip) return;
   Pose pose = s.doc.pose();
-  sampleClip(*clip, static_cast<float>(s.time), pose);
+  // Playing: the sampling form, built once (same values to 1e-6); a single frame (scrub,
+  // step, pause, edit) samples the clip directly rather than build it.
+  if (!s.playing || !samplePlayback(playbackClip(s, *clip, pose.size()), static_cast<float>(s.time), pose,
+                                    s.playbackSampler.context))
+    sampleClip(*clip, static_cast<float>(s.time), pose);
   s.doc.setAnimatedPose(pose);
 }
 
