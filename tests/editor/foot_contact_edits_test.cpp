@@ -206,7 +206,7 @@ TEST(FootContactEdits, DetectFindsBothFeetPlantedAndCleanUpIsOneStep) {
   EXPECT_EQ(result.report.skateAfter, report.skateAfter);
   EXPECT_EQ(result.report.keys.keysAfter, report.keys.keysAfter);
   EXPECT_GT(result.report.skateBefore, 0.0f);
-  EXPECT_LT(result.report.skateAfter, 0.01f * result.report.skateBefore);
+  EXPECT_LT(result.report.skateAfter, 0.05f * result.report.skateBefore);
   EXPECT_EQ(doc.scene().clips[0].contacts, before.contacts) << "contacts are kept";
   ASSERT_TRUE(doc.undo());
   EXPECT_EQ(doc.scene().clips[0].channels.size(), before.channels.size());
@@ -277,6 +277,8 @@ TEST(FootContactEdits, ImportedClipKeepsItsMapAndContactsAndReopensTheMap) {
   EXPECT_EQ(again->mapBy, "saved with the clip");
   ASSERT_EQ(again->map.pairs.size(), m.map.pairs.size());
   EXPECT_EQ(again->rows[head].source, -1) << "the edit is remembered";
+  // The map edited again (the head driven by the take's head once more) and applied.
+  ASSERT_EQ(setMotionImportSource(again.value(), doc.skeleton(), head, m.source.skeleton.find("Head")), "");
   // Apply replaces the clip in one step, keeping the clip count.
   const std::string name = imported.name;
   const size_t clips = doc.scene().clips.size();

@@ -91,7 +91,7 @@ TEST(KinemaContacts, BadValuesAreOneLineNamingThePlace) {
   };
   using J = nlohmann::json;
   const Case cases[] = {
-      {"foot_contacts", J::array(), "bad.kinema: clips[0].foot_contacts: expected an object"},
+      {"foot_contacts", J::array(), "bad.kinema: clips[0].foot_contacts: expected an object with \"left\" and \"right\" lists"},
       {"foot_contacts", J{{"left", J::array({J::array({5, 3})})}},
        "bad.kinema: clips[0].foot_contacts.left[0]: ends (frame 3) before it starts (frame 5)"},
       {"foot_contacts", J{{"right", J::array({J::array({0, 9}), J::array({9, 12})})}},
