@@ -180,7 +180,9 @@ void drawCleanUpWindow(CommandContext& ctx) {
     ImGui::SameLine();
     ImGui::TextColored(kAfter, "after");
     ImGui::SameLine();
-    ImGui::TextDisabled("(foot skate: mean slide per contact frame, in leg lengths)");
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("(foot skate: the ankle's mean slide per contact frame, in leg lengths)");
+    ImGui::PopStyleColor();
     if (res.options.reduce)
       ImGui::Text("Largest reduction error: %.3g file units, %.3g degrees", rep.keys.maxPositionError,
                   rep.keys.maxAngleError / 0.01745329251994329577);
