@@ -12,6 +12,7 @@
 #include "editor/model/foot_contact_edits.h"
 #include "editor/model/motion_cleanup_edit.h"
 #include "editor/model/motion_import.h"
+#include "io/kinema_file.h"
 #include "retarget/bone_map.h"
 #include "test_support.h"
 
@@ -249,6 +250,7 @@ TEST(FootContactEdits, ContactsAndBoneMapSurviveSaveAndReopen) {
   EXPECT_EQ(back->scene().clips[0].contacts, doc.scene().clips[0].contacts);
   EXPECT_EQ(back->scene().clips[0].sourceMap, doc.scene().clips[0].sourceMap);
   EXPECT_FALSE(back->dirty());
+  test::runCommand("rm -rf '" + dir + "'");
 }
 
 // An imported clip keeps its map and contacts, and Edit Bone Map of Clip… shows that map.
@@ -285,6 +287,35 @@ TEST(FootContactEdits, ImportedClipKeepsItsMapAndContactsAndReopensTheMap) {
   ASSERT_EQ(applyMotionImport(doc, again.value()), "");
   EXPECT_EQ(doc.scene().clips.size(), clips);
   EXPECT_EQ(doc.historyLabels().back(), "Re-import motion " + name);
+}
+
+}  // namespace
+}  // namespace kinema
+
+namespace kinema {
+namespace {
+
+// The Import dialog's Clip combo: any clip of the file, not only its first (kinema retarget
+// --clip); the new clip is named after it and its saved map says which.
+TEST(MotionImportClip, TheChosenClipIsTheOneRetargeted) {
+  const std::string dir = test::makeTempDir();
+  Scene take = standingScene(12);
+  Clip second = take.clips[0];
+  second.name = "second";
+  second.channels[0].values.back().y += 0.2f;  // a different motion: the hips rise at the end
+  take.clips.push_back(second);
+  ASSERT_EQ(saveKinemaFile(dir + "/two.kinema", take), "");
+  Document doc = newDocument();
+  Result<MotionImport> prepared = prepareMotionImport(doc, dir + "/two.kinema");
+  ASSERT_TRUE(prepared) << prepared.error();
+  EXPECT_EQ(prepared->clip, 0) << "the first by default";
+  prepared->clip = 1;
+  ASSERT_EQ(applyMotionImport(doc, prepared.value()), "");
+  const Clip& imported = doc.scene().clips[doc.activeClip()];
+  EXPECT_EQ(imported.name, "second");
+  EXPECT_EQ(imported.sourceMap.clip, 1);
+  EXPECT_EQ(imported.sourceMap.file, dir + "/two.kinema");
+  test::runCommand("rm -rf '" + dir + "'");
 }
 
 }  // namespace
