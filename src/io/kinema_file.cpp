@@ -6,6 +6,7 @@
 #include <cstring>
 #include <functional>
 #include <unordered_map>
+#include <unordered_set>
 #include <nlohmann/json.hpp>
 
 #include "core/rotation.h"
@@ -673,6 +674,8 @@ bool readSourceMap(Reader& r, const Json& j, const std::string& p, const Skeleto
   if (!pairs) return false;
   if (!pairs->is_array() || pairs->empty())
     return r.fail(p + ".pairs", "expected a non-empty array of [source joint, target joint] pairs");
+  std::unordered_set<std::string> sources;
+  std::unordered_set<int> targets;
   for (size_t i = 0; i < pairs->size(); ++i) {
     const std::string ip = p + ".pairs[" + std::to_string(i) + "]";
     const Json& pair = (*pairs)[i];
@@ -683,11 +686,10 @@ bool readSourceMap(Reader& r, const Json& j, const std::string& p, const Skeleto
     if (sp.source.empty()) return r.fail(ip + "[0]", "empty source joint name");
     sp.target = r.joint(s, target);
     if (sp.target < 0) return r.fail(ip + "[1]", "no joint named '" + cutForMessage(target) + "'");
-    for (const SourceMapPair& earlier : out.pairs) {
-      if (earlier.source == sp.source)
-        return r.fail(ip + "[0]", "source joint '" + cutForMessage(sp.source) + "' is mapped twice");
-      if (earlier.target == sp.target) return r.fail(ip + "[1]", "joint '" + cutForMessage(target) + "' is mapped twice");
-    }
+    // Sets, not a scan of the earlier pairs: a file may map a 200,000-joint skeleton.
+    if (!sources.insert(sp.source).second)
+      return r.fail(ip + "[0]", "source joint '" + cutForMessage(sp.source) + "' is mapped twice");
+    if (!targets.insert(sp.target).second) return r.fail(ip + "[1]", "joint '" + cutForMessage(target) + "' is mapped twice");
     out.pairs.push_back(std::move(sp));
   }
   return true;
