@@ -26,6 +26,17 @@ tmp=$(mktemp -d)
 XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp sh "$root/tests/tools/xvfb_run.sh" 1600x1000x24 "$kinema" edit --size 1400x900 \
   --script "$root/docs/images/import_motion.jsonl" --frame-count 20 --screenshot "$root/docs/images/import_motion.png"
 rm -rf "$tmp"
+# The foot contacts on the timeline and the Clean Up window (issue 21), on the CMU take
+# retargeted onto the default character (the .kinema keeps its contacts and bone map).
+tmp=$(mktemp -d)
+"$kinema" retarget "$bvh" --out "$tmp/cmu_on_default.kinema"
+XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp sh "$root/tests/tools/xvfb_run.sh" 1600x1000x24 "$kinema" edit "$tmp/cmu_on_default.kinema" \
+  --size 1400x900 --script "$root/docs/images/foot_contacts.jsonl" --frame-count 20 --screenshot "$tmp/contacts.png"
+# The strip and the timeline under it, the whole width.
+convert "$tmp/contacts.png" -gravity South -crop 1400x150+0+0 +repage "$root/docs/images/foot_contacts_timeline.png"
+XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp sh "$root/tests/tools/xvfb_run.sh" 1600x1000x24 "$kinema" edit "$tmp/cmu_on_default.kinema" \
+  --size 1400x900 --script "$root/docs/images/clean_up.jsonl" --frame-count 16 --screenshot "$root/docs/images/clean_up_motion.png"
+rm -rf "$tmp"
 # The CMU take and the default character playing it after `kinema retarget` (issue 21), frame 150.
 tmp=$(mktemp -d)
 "$kinema" retarget "$bvh" --out "$tmp/cmu_on_default.kinema" --fix-feet

@@ -159,6 +159,8 @@ long long Clip::nearestFrame(double time) const {
 std::string Clip::validate(const Skeleton& skeleton) const {
   if (hasRange && (!std::isfinite(rangeStart) || !std::isfinite(rangeEnd) || rangeStart > rangeEnd))
     return "the playback range must be two finite times, start <= end";
+  if (std::string bad = contacts.validate(); !bad.empty()) return bad;
+  if (std::string bad = sourceMap.validate(skeleton.size()); !bad.empty()) return bad;
   for (size_t c = 0; c < channels.size(); ++c) {
     const Channel& ch = channels[c];
     const std::string where = "channel " + std::to_string(c);

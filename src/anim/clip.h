@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "anim/clip_source_map.h"
+#include "anim/foot_contact_intervals.h"
 #include "core/pose.h"
 #include "core/rotation.h"
 
@@ -114,6 +116,11 @@ struct Clip {
   bool hasRange = false;
   float rangeStart = 0.0f;
   float rangeEnd = 0.0f;
+  // When the feet are planted, per foot, in this clip's frames (detected on import, edited
+  // on the timeline); empty for clips nobody detected contacts on. Sampling ignores them.
+  FootContacts contacts = {};
+  // The bone map a retargeted clip came through; empty for other clips. Sampling ignores it.
+  ClipSourceMap sourceMap = {};
 
   float playStart() const { return hasRange ? rangeStart : 0.0f; }
   float playEnd() const { return hasRange ? rangeEnd : duration(); }
@@ -136,7 +143,8 @@ struct Clip {
   long long nearestFrame(double time) const;
   // Empty when every channel names a joint of the skeleton (Scalar channels may use -1),
   // times are finite and strictly increasing, values and settings are finite (one per key)
-  // and each key's interpolation suits the channel's target.
+  // and each key's interpolation suits the channel's target; the contacts and the source
+  // map are valid (FootContacts::validate, ClipSourceMap::validate).
   std::string validate(const Skeleton& skeleton) const;
 };
 

@@ -14,6 +14,7 @@
 #include "retarget/foot_contacts.h"
 #include "retarget/foot_locking.h"
 #include "retarget/key_reduction.h"
+#include "retarget/motion_cleanup.h"
 #include "retarget/retarget_clip.h"
 #include "retarget/retarget_motion.h"
 
@@ -71,15 +72,6 @@ nlohmann::ordered_json unmappedJson(const Skeleton& s, const BoneMap& map, bool 
   for (int j = 0; j < s.size(); ++j)
     if ((sourceSide ? map.targetOf(j) : map.sourceOf(j)) < 0) a.push_back(s.names[j]);
   return a;
-}
-
-float lowestFootHeight(const Skeleton& s, const LegJoints legs[2]) {
-  const std::vector<glm::mat4> w = computeWorld(s, Pose::rest(s));
-  float lo = w[legs[0].foot][3].y;
-  for (int side = 0; side < 2; ++side)
-    for (int j : {legs[side].foot, legs[side].toes})
-      if (j >= 0) lo = std::min(lo, w[j][3].y);
-  return lo;
 }
 
 }  // namespace
@@ -164,63 +156,62 @@ int runRetarget(const RetargetOptions& o) {
   Clip clip = std::move(retargeted->clip);
   const int frames = clipFrameCount(clip);
 
-  // Foot contacts and skate on the target (needs its legs).
+  // Foot contacts and skate on the target (needs its legs); the clip keeps both its contacts
+  // and the map it came through (.kinema clips[c].foot_contacts, bone_map).
+  clip.sourceMap = toClipSourceMap(map, source.skeleton, o.source, clipIndex);
   LegJoints legs[2];
-  std::vector<ContactInterval> contacts[2];
   bool haveLegs = false;
+  std::string noLegs;
   if (targetHuman) {
-    legsOf(targetHuman->bones, legs);
-    haveLegs = legs[0].valid(target.skeleton.size()) && legs[1].valid(target.skeleton.size());
+    bool zeroLength = false;
+    noLegs = humanoidLegs(target.skeleton, targetHuman->bones, legs, &zeroLength);
+    if (zeroLength) return badInput(targetLabel + ": " + noLegs);
+    haveLegs = noLegs.empty();
+  } else {
+    noLegs = targetHuman.error();
   }
-  if (haveLegs && !(restLegLength(target.skeleton, legs[0]) > 0.0f && restLegLength(target.skeleton, legs[1]) > 0.0f))
-    return badInput(targetLabel + ": zero-length legs (hip, knee and ankle of a leg coincide in the rest pose)");
   if (o.fixFeet && !haveLegs)
-    return badInput(targetLabel + ": --fix-feet needs the target's legs (" +
-                    (targetHuman ? std::string("its humanoid reading has none") : targetHuman.error()) + ")");
-  float skateBefore = 0.0f, skateAfter = 0.0f;
+    return badInput(targetLabel + ": --fix-feet needs the target's legs (" + noLegs + ")");
+  MotionCleanupReport cleanup;
   if (haveLegs) {
-    FootContactJob contactJob;
-    contactJob.skeleton = &target.skeleton;
-    contactJob.clip = &clip;
-    contactJob.legs[0] = legs[0];
-    contactJob.legs[1] = legs[1];
-    contactJob.output[0] = &contacts[0];
-    contactJob.output[1] = &contacts[1];
-    if (!contactJob.run()) return badInput(targetLabel + ": " + contactJob.validate());
-    skateBefore = footSkate(target.skeleton, clip, legs, contacts);
-    skateAfter = skateBefore;
+    if (const std::string bad = detectFootContacts(target.skeleton, clip, legs, clip.contacts); !bad.empty())
+      return badInput(targetLabel + ": " + bad);
   }
-  if (o.fixFeet) {
-    Clip locked;
-    FootLockJob lock;
-    lock.skeleton = &target.skeleton;
-    lock.clip = &clip;
-    lock.legs[0] = legs[0];
-    lock.legs[1] = legs[1];
-    lock.contacts[0] = &contacts[0];
-    lock.contacts[1] = &contacts[1];
-    lock.floorHeight = lowestFootHeight(target.skeleton, legs);
-    lock.output = &locked;
-    if (!lock.run()) return badInput(targetLabel + ": " + lock.validate());
-    clip = std::move(locked);
-    skateAfter = footSkate(target.skeleton, clip, legs, contacts);
+  const FootContacts& contacts = clip.contacts;
+  if (haveLegs) {
+    MotionCleanupJob job;
+    job.skeleton = &target.skeleton;
+    job.clip = &clip;
+    job.legs[0] = legs[0];
+    job.legs[1] = legs[1];
+    job.contacts = &clip.contacts;
+    job.settings.lockFeet = o.fixFeet;
+    job.settings.reduce = reduce;
+    job.settings.reduction.positionTolerance = static_cast<float>(reducePos);
+    job.settings.reduction.angleTolerance = static_cast<float>(reduceDeg) * kDegree;
+    Clip cleaned;
+    job.output = &cleaned;
+    job.report = &cleanup;
+    if (!job.run()) return badInput(o.source + ": " + job.validate());
+    clip = std::move(cleaned);
+  } else {
+    for (const Channel& c : clip.channels) cleanup.keys.keysBefore += c.keyCount();
+    cleanup.keys.keysAfter = cleanup.keys.keysBefore;
+    if (reduce) {
+      Clip reduced;
+      KeyReductionJob r;
+      r.skeleton = &target.skeleton;
+      r.clip = &clip;
+      r.settings.positionTolerance = static_cast<float>(reducePos);
+      r.settings.angleTolerance = static_cast<float>(reduceDeg) * kDegree;
+      r.output = &reduced;
+      r.report = &cleanup.keys;
+      if (!r.run()) return badInput(o.source + ": " + r.validate());
+      clip = std::move(reduced);
+    }
   }
-  KeyReductionReport reduction;
-  reduction.keysBefore = reduction.keysAfter = 0;
-  for (const Channel& c : clip.channels) reduction.keysBefore += c.keyCount();
-  reduction.keysAfter = reduction.keysBefore;
-  if (reduce) {
-    Clip reduced;
-    KeyReductionJob r;
-    r.skeleton = &target.skeleton;
-    r.clip = &clip;
-    r.settings.positionTolerance = static_cast<float>(reducePos);
-    r.settings.angleTolerance = static_cast<float>(reduceDeg) * kDegree;
-    r.output = &reduced;
-    r.report = &reduction;
-    if (!r.run()) return badInput(o.source + ": " + r.validate());
-    clip = std::move(reduced);
-  }
+  const float skateBefore = cleanup.skateBefore, skateAfter = cleanup.skateAfter;
+  const KeyReductionReport& reduction = cleanup.keys;
 
   // The target's file with its meshes and skins, playing the one new clip.
   Scene out = std::move(target);
@@ -264,7 +255,7 @@ int runRetarget(const RetargetOptions& o) {
     j["rootScale"] = jsonFloat(retargeted->rootScale);
     j["sourceFloor"] = jsonFloat(retargeted->sourceFloor);
     j["targetFloor"] = jsonFloat(retargeted->targetFloor);
-    j["contacts"] = {{"left", intervalsJson(contacts[0])}, {"right", intervalsJson(contacts[1])}};
+    j["contacts"] = {{"left", intervalsJson(contacts.feet[0])}, {"right", intervalsJson(contacts.feet[1])}};
     j["footSkate"] = {{"before", jsonFloat(skateBefore)}, {"after", jsonFloat(skateAfter)}};
     j["keys"] = {{"before", reduction.keysBefore}, {"after", reduction.keysAfter}};
     j["reductionError"] = {{"position", jsonFloat(reduction.maxPositionError)},

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <functional>
 #include <unordered_map>
+#include <unordered_set>
 #include <nlohmann/json.hpp>
 
 #include "core/rotation.h"
@@ -625,6 +626,75 @@ bool readChannel(Reader& r, const Json& j, const std::string& p, const Skeleton&
   return true;
 }
 
+// clips[c].foot_contacts: {"left": [[first, last], ...], "right": [...]} in frames, each list
+// in order without overlaps (FootContacts::validate).
+bool readFootContacts(Reader& r, const Json& j, const std::string& p, FootContacts& out) {
+  if (!j.is_object()) return r.fail(p, "expected an object with \"left\" and \"right\" lists");
+  for (int f = 0; f < 2; ++f) {
+    const char* side = toString(static_cast<Foot>(f));
+    const Json* list = r.member(j, p, side, false);
+    if (!list) continue;
+    const std::string lp = p + "." + side;
+    if (!list->is_array()) return r.fail(lp, "expected an array of [first, last] frame pairs");
+    for (size_t i = 0; i < list->size(); ++i) {
+      const std::string ip = lp + "[" + std::to_string(i) + "]";
+      const Json& pair = (*list)[i];
+      if (!pair.is_array() || pair.size() != 2) return r.fail(ip, "expected [first, last] (two frame numbers)");
+      long long frame[2];
+      for (int k = 0; k < 2; ++k) {
+        if (!r.integer(pair[k], ip + "[" + std::to_string(k) + "]", frame[k])) return false;
+        if (frame[k] < 0 || frame[k] > INT_MAX)
+          return r.fail(ip + "[" + std::to_string(k) + "]", "frame " + std::to_string(frame[k]) + " is outside 0.." +
+                                                                 std::to_string(INT_MAX));
+      }
+      if (frame[1] < frame[0]) return r.fail(ip, "ends (frame " + std::to_string(frame[1]) + ") before it starts (frame " +
+                                                     std::to_string(frame[0]) + ")");
+      std::vector<ContactInterval>& foot = out.feet[f];
+      if (!foot.empty() && frame[0] <= foot.back().last)
+        return r.fail(ip, "starts at frame " + std::to_string(frame[0]) + ", not after the previous contact ends (frame " +
+                              std::to_string(foot.back().last) + ")");
+      foot.push_back(ContactInterval{static_cast<int>(frame[0]), static_cast<int>(frame[1])});
+    }
+  }
+  return true;
+}
+
+// clips[c].bone_map: {"file": PATH, "clip": I, "pairs": [[source name, target joint], ...]}.
+bool readSourceMap(Reader& r, const Json& j, const std::string& p, const Skeleton& s, ClipSourceMap& out) {
+  if (!j.is_object()) return r.fail(p, "expected an object");
+  const Json* v;
+  if ((v = r.member(j, p, "file", false)) && !r.string(*v, p + ".file", out.file)) return false;
+  if ((v = r.member(j, p, "clip", false))) {
+    long long clip = 0;
+    if (!r.integer(*v, p + ".clip", clip)) return false;
+    if (clip < 0 || clip > INT_MAX) return r.fail(p + ".clip", "clip " + std::to_string(clip) + " is outside 0.." + std::to_string(INT_MAX));
+    out.clip = static_cast<int>(clip);
+  }
+  const Json* pairs = r.member(j, p, "pairs", true);
+  if (!pairs) return false;
+  if (!pairs->is_array() || pairs->empty())
+    return r.fail(p + ".pairs", "expected a non-empty array of [source joint, target joint] pairs");
+  std::unordered_set<std::string> sources;
+  std::unordered_set<int> targets;
+  for (size_t i = 0; i < pairs->size(); ++i) {
+    const std::string ip = p + ".pairs[" + std::to_string(i) + "]";
+    const Json& pair = (*pairs)[i];
+    if (!pair.is_array() || pair.size() != 2) return r.fail(ip, "expected [source joint, target joint] (two names)");
+    SourceMapPair sp;
+    std::string target;
+    if (!r.string(pair[0], ip + "[0]", sp.source) || !r.string(pair[1], ip + "[1]", target)) return false;
+    if (sp.source.empty()) return r.fail(ip + "[0]", "empty source joint name");
+    sp.target = r.joint(s, target);
+    if (sp.target < 0) return r.fail(ip + "[1]", "no joint named '" + cutForMessage(target) + "'");
+    // Sets, not a scan of the earlier pairs: a file may map a 200,000-joint skeleton.
+    if (!sources.insert(sp.source).second)
+      return r.fail(ip + "[0]", "source joint '" + cutForMessage(sp.source) + "' is mapped twice");
+    if (!targets.insert(sp.target).second) return r.fail(ip + "[1]", "joint '" + cutForMessage(target) + "' is mapped twice");
+    out.pairs.push_back(std::move(sp));
+  }
+  return true;
+}
+
 bool readClips(Reader& r, const Json& root, Scene& scene) {
   const Json* clips = r.member(root, "", "clips", false);
   if (!clips) return true;
@@ -667,6 +737,11 @@ bool readClips(Reader& r, const Json& root, Scene& scene) {
         return false;
       clip.channels.push_back(std::move(ch));
     }
+    if ((v = r.member(j, p, "foot_contacts", false)) && !readFootContacts(r, *v, p + ".foot_contacts", clip.contacts))
+      return false;
+    if ((v = r.member(j, p, "bone_map", false)) &&
+        !readSourceMap(r, *v, p + ".bone_map", scene.skeleton, clip.sourceMap))
+      return false;
     scene.clips.push_back(std::move(clip));
   }
   return true;
@@ -1259,6 +1334,21 @@ std::string toKinemaJson(const Scene& scene) {
     Json channels = Json::array();
     for (const Channel& ch : clip.channels) channels.push_back(channelJson(ch, s));
     c["channels"] = std::move(channels);
+    // Optional: what the retargeting and the timeline's contact edits left on the clip.
+    if (!clip.contacts.empty()) {
+      Json contacts = Json::object();
+      for (int f = 0; f < 2; ++f) {
+        Json list = Json::array();
+        for (const ContactInterval& ci : clip.contacts.feet[f]) list.push_back(Json::array({ci.first, ci.last}));
+        contacts[toString(static_cast<Foot>(f))] = std::move(list);
+      }
+      c["foot_contacts"] = std::move(contacts);
+    }
+    if (!clip.sourceMap.empty()) {
+      Json pairs = Json::array();
+      for (const SourceMapPair& sp : clip.sourceMap.pairs) pairs.push_back(Json::array({sp.source, s.names[sp.target]}));
+      c["bone_map"] = {{"file", clip.sourceMap.file}, {"clip", clip.sourceMap.clip}, {"pairs", std::move(pairs)}};
+    }
     clips.push_back(std::move(c));
   }
   root["clips"] = std::move(clips);

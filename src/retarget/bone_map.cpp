@@ -517,4 +517,26 @@ const char* humanoidRoleOf(const HumanoidMap& reading, int joint) {
   return nullptr;
 }
 
+ClipSourceMap toClipSourceMap(const BoneMap& map, const Skeleton& source, const std::string& file, int clip) {
+  ClipSourceMap out;
+  out.file = file;
+  out.clip = clip;
+  for (const BonePair& p : map.pairs) out.pairs.push_back(SourceMapPair{source.names[p.source], p.target});
+  return out;
+}
+
+Result<BoneMap> fromClipSourceMap(const ClipSourceMap& kept, const Skeleton& source, const Skeleton& target) {
+  BoneMap map;
+  for (const SourceMapPair& p : kept.pairs) {
+    const int s = source.find(p.source);
+    if (s < 0) return Result<BoneMap>::failure("the saved bone map names source joint '" + p.source + "', which " +
+                                               (kept.file.empty() ? std::string("the motion file") : kept.file) +
+                                               " does not have");
+    map.pairs.push_back(BonePair{s, p.target});
+  }
+  if (std::string bad = map.validate(source, target); !bad.empty())
+    return Result<BoneMap>::failure("the saved bone map: " + bad);
+  return map;
+}
+
 }  // namespace kinema

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "anim/clip_source_map.h"
 #include "core/result.h"
 #include "core/skeleton.h"
 #include "retarget/humanoid_bones.h"
@@ -52,6 +53,12 @@ struct BoneMap {
 BoneMap mapThroughHumanoid(const HumanoidMap& source, const HumanoidMap& target);
 // Each joint onto the joint of the same name (a skeleton onto itself or a copy of it).
 BoneMap mapByIdenticalNames(const Skeleton& source, const Skeleton& target);
+
+// The map as a clip keeps it (Clip::sourceMap): source joints by name, in the map's order.
+ClipSourceMap toClipSourceMap(const BoneMap& map, const Skeleton& source, const std::string& file, int clip);
+// Back to joint indices of `source` (the motion file's skeleton, read again); fails with one
+// line naming a source joint that skeleton does not have, or a map that does not validate.
+Result<BoneMap> fromClipSourceMap(const ClipSourceMap& kept, const Skeleton& source, const Skeleton& target);
 
 // Joint i of `skeleton`: the canonical bone it plays in `reading`, or nullptr.
 const char* humanoidRoleOf(const HumanoidMap& reading, int joint);

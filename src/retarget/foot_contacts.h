@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "anim/clip.h"
+#include "anim/foot_contact_intervals.h"
 #include "retarget/humanoid_bones.h"
 
 namespace kinema {
@@ -29,11 +30,7 @@ struct FootContactSettings {
   int minFrames = 3;
 };
 
-// Frames first..last (inclusive) of the clip's frame grid.
-struct ContactInterval {
-  int first = 0, last = 0;
-  bool operator==(const ContactInterval& o) const { return first == o.first && last == o.last; }
-};
+// ContactInterval (frames first..last of the clip's grid): anim/foot_contact_intervals.h.
 
 struct FootContactJob {
   const Skeleton* skeleton = nullptr;

@@ -65,6 +65,9 @@ void openDocumentInEditor(EditorState& state, Document doc) {
   state.playing = false;
   state.sampleClip = false;
   state.sampledAt = {};
+  state.contactSelection = {};
+  state.contactDrag = FootContactDrag{};  // its drag belonged to the old document
+  state.lastCleanUp.reset();
   resetTimeline(state);  // the file's playhead (or the clip's start), posed from the clip there
   // The new file framed from the current direction, as Home does.
   const float aspect = state.viewportRect.w > 0 ? state.viewportRect.z / state.viewportRect.w : 1.0f;
@@ -158,6 +161,19 @@ void startMotionImport(EditorState& state, const std::string& path) {
   p.motionImportJustOpened = true;
   p.motionImportError.clear();
   state.statusMessage = "Import motion from " + path + " (bone map by " + p.motionImport->mapBy + ")";
+}
+
+void reopenMotionImport(EditorState& state, int clip) {
+  PanelState& p = state.panels;
+  Result<MotionImport> prepared = prepareMotionImportOfClip(state.doc, clip, state.inputLimits, p.fileDialog.bvhUp);
+  if (!prepared) {
+    showEditorError(state, prepared.error());
+    return;
+  }
+  p.motionImport = std::move(prepared.value());
+  p.motionImportJustOpened = true;
+  p.motionImportError.clear();
+  state.statusMessage = "Bone map of " + state.doc.scene().clips[clip].name + " (from " + p.motionImport->path + ")";
 }
 
 void applyMotionImportInEditor(EditorState& state) {

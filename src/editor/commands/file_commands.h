@@ -23,6 +23,11 @@ void startMotionImport(EditorState& state, const std::string& path);
 // The modal's Apply: the retargeted clip becomes a new active clip (one undo step) and the
 // modal closes; on failure nothing changes and the reason stays in the modal (and the popup).
 void applyMotionImportInEditor(EditorState& state);
+// Animation > Edit Bone Map of Clip…: the Import Motion dialog on the map clip `clip` keeps
+// (prepareMotionImportOfClip); Apply replaces the clip.
+void reopenMotionImport(EditorState& state, int clip);
+// Animation > Clean Up Motion…: the window open, Add Foot Contact's range from the playhead.
+void openCleanUpWindow(EditorState& state);
 void cancelMotionImport(EditorState& state);
 void requestQuit(EditorState& state);
 // A freshly loaded document (opened, new, recovered, or the file `kinema edit` was given)

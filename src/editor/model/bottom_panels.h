@@ -9,6 +9,7 @@ constexpr float kAnimationEditorHeight = 260.0f;
 struct BottomPanels {
   bool timeline = false;
   bool animationEditor = false;
+  bool contactLanes = false;  // the active clip's foot contacts, a strip over the timeline
 };
 inline float bottomPanelsHeight(BottomPanels b) {
   return (b.timeline ? kTimelineHeight : 0.0f) + (b.animationEditor ? kAnimationEditorHeight : 0.0f);

@@ -46,7 +46,8 @@ bool sameChannel(const Channel& a, const Channel& b) {
 
 bool sameClip(const Clip& a, const Clip& b) {
   if (a.name != b.name || a.frameTime != b.frameTime || a.loop != b.loop || a.hasRange != b.hasRange ||
-      a.rangeStart != b.rangeStart || a.rangeEnd != b.rangeEnd || a.channels.size() != b.channels.size())
+      a.rangeStart != b.rangeStart || a.rangeEnd != b.rangeEnd || a.channels.size() != b.channels.size() ||
+      a.contacts != b.contacts || a.sourceMap != b.sourceMap)
     return false;
   for (size_t i = 0; i < a.channels.size(); ++i)
     if (!sameChannel(a.channels[i], b.channels[i])) return false;

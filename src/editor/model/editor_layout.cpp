@@ -46,11 +46,14 @@ float splitHeight(float columnHeight, float fraction, const LayoutMetrics& m) {
 
 struct Rows {
   float area, timeline, animationEditor, viewMin;
+  float lanes;  // of `timeline`, the contact lanes' share over the strip
 };
 Rows rowHeights(float height, const PanelSizes& sizes, BottomPanels bottom, const LayoutMetrics& m) {
   Rows r;
   r.area = std::max(height - m.menuBarHeight() - m.statusBarHeight(), 1.0f);
-  r.timeline = bottom.timeline ? std::min(m.timelineHeight(), r.area * 0.5f) : 0.0f;
+  const float lanes = bottom.timeline && bottom.contactLanes ? m.contactLanesHeight() : 0.0f;
+  r.timeline = bottom.timeline ? std::min(m.timelineHeight() + lanes, r.area * 0.5f) : 0.0f;
+  r.lanes = std::max(r.timeline - m.timelineHeight(), 0.0f);
   r.viewMin = std::min(kMinViewHeight * m.scale, r.area * 0.5f);
   r.animationEditor = 0.0f;
   if (bottom.animationEditor) {
@@ -83,7 +86,8 @@ EditorLayout computeEditorLayout(float W, float H, const PanelSizes& sizes, Bott
   const float viewW = atLeast1(W - c.left - c.right);
   l.viewport = {c.left, menu, viewW, atLeast1(r.area - r.timeline - r.animationEditor)};
   l.animationEditor = {c.left, l.viewport.bottom(), viewW, atLeast1(r.animationEditor)};
-  l.timeline = {c.left, menu + r.area - r.timeline, viewW, atLeast1(r.timeline)};
+  l.contactLanes = {c.left, menu + r.area - r.timeline, viewW, r.lanes};
+  l.timeline = {c.left, menu + r.area - r.timeline + r.lanes, viewW, atLeast1(r.timeline - r.lanes)};
   return l;
 }
 

@@ -44,11 +44,17 @@ struct LayoutMetrics {
   float menuBarHeight() const { return frameHeight(); }
   float statusBarHeight() const { return fontSize + 11.0f * scale; }
   float timelineHeight() const { return 2.0f * frameHeight() + 2.0f * scale; }  // two rows of widgets
+  // The foot contact strip over the timeline: a lane per foot, each most of a row of text.
+  float contactLaneHeight() const { return 0.8f * frameHeight(); }
+  float contactLanesHeight() const { return 2.0f * contactLaneHeight() + 2.0f * scale; }
 };
 
 struct EditorLayout {
   LayoutMetrics metrics;  // what it was computed with
   PanelRect menuBar, outliner, history, properties, ikTargets, viewport, animationEditor, timeline, statusBar;
+  // The foot contact lanes (BottomPanels::contactLanes) right over the timeline, as wide;
+  // zero height without them.
+  PanelRect contactLanes;
   PanelRect panelArea;  // between the menu bar and the status bar, the whole width (the compare mode)
 };
 

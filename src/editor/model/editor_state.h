@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -13,6 +14,8 @@
 #include "editor/model/compare_mode.h"
 #include "editor/model/curve_editor.h"
 #include "editor/model/dope_sheet.h"
+#include "editor/model/foot_contact_edits.h"
+#include "editor/model/motion_cleanup_edit.h"
 #include "editor/model/item_rects.h"
 #include "editor/model/editor_layout.h"
 #include "editor/model/message_log.h"
@@ -114,6 +117,20 @@ struct EditorState {
   EditorLayout layout;      // this frame's panel rectangles (window pixels), set by the window
   MessageLog log;           // every message in full (View > Log)
   bool preferencesWindowOpen = false, logWindowOpen = false;
+  // Foot contacts (the strip over the timeline, contact_lanes.h) and Animation > Clean Up
+  // Motion… (motion_cleanup_edit.h): the chosen contact, the bar being dragged, the window's
+  // settings, the range Add Foot Contact covers, and the last clean-up's figures.
+  FootContactSelection contactSelection;
+  FootContactDrag contactDrag;
+  // A press on an empty lane: a new contact starts from contactNewFrame once the mouse moves.
+  bool contactNewArmed = false;
+  Foot contactNewFoot = Foot::Left;
+  long long contactNewFrame = 0;
+  bool cleanUpWindowOpen = false;
+  CleanUpOptions cleanUp;
+  Foot newContactFoot = Foot::Left;
+  int newContactFirst = 0, newContactLast = 10;  // frames
+  std::optional<CleanUpResult> lastCleanUp;
 
   bool wasPlaying = false;  // playback stopped since the last evaluate: the document takes the frame
   // The playhead and document state the pose was last sampled at while playing: a second
@@ -151,6 +168,7 @@ struct EditorState {
     BottomPanels b;
     b.timeline = timelineShown();
     b.animationEditor = animationEditor != AnimationEditorKind::None;
+    b.contactLanes = hasMotion() && (cleanUpWindowOpen || !doc.scene().clips[clip].contacts.empty());
     return b;
   }
   // Whether window pixel p is over the animation editor (right under the 3D view, when

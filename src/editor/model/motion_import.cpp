@@ -6,6 +6,7 @@
 
 #include "editor/model/clip_list.h"
 #include "editor/model/document.h"
+#include "retarget/motion_cleanup.h"
 #include "retarget/retarget_motion.h"
 
 namespace kinema {
@@ -61,6 +62,26 @@ Result<MotionImport> prepareMotionImport(const Document& doc, const std::string&
   return m;
 }
 
+Result<MotionImport> prepareMotionImportOfClip(const Document& doc, int clip, const InputLimits& limits, UpAxis bvhUp) {
+  using R = Result<MotionImport>;
+  if (clip < 0 || clip >= static_cast<int>(doc.scene().clips.size())) return R::failure("the document has no such clip");
+  const Clip& c = doc.scene().clips[clip];
+  if (c.sourceMap.empty() || c.sourceMap.file.empty())
+    return R::failure("clip '" + c.name + "' keeps no bone map (it was not imported onto this character)");
+  Result<MotionImport> m = prepareMotionImport(doc, c.sourceMap.file, limits, bvhUp);
+  if (!m) return m;
+  if (c.sourceMap.clip >= static_cast<int>(m->source.clips.size()))
+    return R::failure(c.sourceMap.file + ": has no clip " + std::to_string(c.sourceMap.clip) + " any more");
+  Result<BoneMap> kept = fromClipSourceMap(c.sourceMap, m->source.skeleton, doc.skeleton());
+  if (!kept) return R::failure(c.sourceMap.file + ": " + kept.error());
+  m->map = std::move(kept.value());
+  m->mapBy = "saved with the clip";
+  m->clip = c.sourceMap.clip;
+  m->replaceClip = clip;
+  refreshMotionImportRows(m.value(), doc.skeleton());
+  return m;
+}
+
 std::string setMotionImportSource(MotionImport& m, const Skeleton& target, int row, int sourceJoint) {
   if (row < 0 || row >= static_cast<int>(m.rows.size())) return "no such bone row";
   const int t = m.rows[row].target;
@@ -96,6 +117,20 @@ std::string applyMotionImport(Document& doc, const MotionImport& m) {
   Result<RetargetedMotion> retargeted = retargetMotion(in);
   if (!retargeted) return retargeted.error();
   Clip clip = std::move(retargeted->clip);
+  clip.sourceMap = toClipSourceMap(m.map, m.source.skeleton, m.path, m.clip);
+  LegJoints legs[2];
+  if (humanoidLegs(doc.skeleton(), m.targetHuman.bones, legs).empty())
+    if (std::string bad = detectFootContacts(doc.skeleton(), clip, legs, clip.contacts); !bad.empty()) return bad;
+  const int replace = m.replaceClip;
+  if (replace >= static_cast<int>(doc.scene().clips.size())) return "the clip to re-import is gone";
+  if (replace >= 0) {
+    clip.name = doc.scene().clips[replace].name;
+    return doc.edit("Re-import motion " + clip.name, [&](DocumentEdit& e) {
+      e.clips[replace] = clip;
+      e.activeClip = replace;
+      return std::string();
+    });
+  }
   clip.name = uniqueClipName(doc.scene().clips, clip.name.empty() ? std::string("Motion") : clip.name);
   return doc.edit("Import motion " + clip.name, [&](DocumentEdit& e) {
     e.clips.push_back(clip);

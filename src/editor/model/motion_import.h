@@ -28,7 +28,10 @@ struct MotionImportRow {
 struct MotionImport {
   std::string path;    // the motion file
   Scene source;        // what it holds (its skeleton and clips)
-  int clip = 0;        // the clip played (the file's first)
+  int clip = 0;        // the clip played (the file's first unless the dialog chose another)
+  // -1: Apply adds a new clip; else the document clip whose bone map was opened again
+  // (prepareMotionImportOfClip), which Apply replaces.
+  int replaceClip = -1;
   HumanoidReading sourceHuman;
   HumanoidReading targetHuman;
   BoneMap map;
@@ -43,6 +46,12 @@ struct MotionImport {
 // the document is not touched either way.
 Result<MotionImport> prepareMotionImport(const Document& doc, const std::string& path, const InputLimits& limits = {},
                                          UpAxis bvhUp = UpAxis::Y);
+// The import a retargeted clip came from, opened again with the bone map it keeps
+// (Clip::sourceMap: the file read again, the saved pairs) so the dialog shows and edits it;
+// Apply then replaces that clip. Fails with one line (no saved map, the file gone, a saved
+// joint the file no longer has).
+Result<MotionImport> prepareMotionImportOfClip(const Document& doc, int clip, const InputLimits& limits = {},
+                                               UpAxis bvhUp = UpAxis::Y);
 // Rebuilds rows and the unmapped lists from `import.map` (after the map changed).
 void refreshMotionImportRows(MotionImport& import, const Skeleton& target);
 // Sets the source joint playing canonical row `row` (-1: none) and rebuilds the rows.
@@ -50,7 +59,10 @@ void refreshMotionImportRows(MotionImport& import, const Skeleton& target);
 std::string setMotionImportSource(MotionImport& import, const Skeleton& target, int row, int sourceJoint);
 
 // Retargets the clip onto the document's skeleton and appends it as a new clip named after
-// the source clip (uniqueClipName), made active: one undo step "Import motion NAME".
+// the source clip (uniqueClipName), made active: one undo step "Import motion NAME". The
+// clip keeps its bone map (Clip::sourceMap) and, on a skeleton with humanoid legs, the foot
+// contacts detected on it (Clip::contacts). With replaceClip the clip there is replaced
+// instead (its name kept): "Re-import motion NAME".
 // Returns "" or a one-line reason nothing changed.
 std::string applyMotionImport(Document& doc, const MotionImport& import);
 

@@ -44,6 +44,8 @@ void closePopupsOnEscape(EditorState& state);
 // Older panels kept for the joint list view and playback.
 void drawJointListPanel(EditorState& state);
 void drawTimelinePanel(CommandContext& ctx);
+void drawContactLanesPanel(CommandContext& ctx);  // the foot contact strip over the timeline (drag to edit)
+void drawCleanUpWindow(CommandContext& ctx);      // Animation > Clean Up Motion…: contacts, locking, reduction, figures
 void drawCurveEditorPanel(CommandContext& ctx);  // curve editor in the animation editor area (Shift+F6)
 
 }  // namespace kinema

@@ -72,8 +72,29 @@ void drawMotionImportDialog(CommandContext& ctx) {
   const Skeleton& target = state.doc.skeleton();
   const Skeleton& source = m.source.skeleton;
   ImGui::TextWrapped("%s", m.path.c_str());
-  ImGui::Text("Clip '%s' onto %s (%d joints); bone map by %s", m.source.clips[m.clip].name.c_str(),
-              documentTitle(state).c_str(), target.size(), m.mapBy.c_str());
+  if (m.source.clips.size() > 1) {
+    // The file's clip to retarget (kinema retarget --clip): any of them, the first by default.
+    ImGui::TextUnformatted("Clip");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 14.0f);
+    const std::string current = std::to_string(m.clip) + ": " + m.source.clips[m.clip].name;
+    const bool open = ImGui::BeginCombo("##clip", current.c_str());
+    recordItem(std::string(kTitle) + "/Clip");
+    if (open) {
+      for (int c = 0; c < static_cast<int>(m.source.clips.size()); ++c) {
+        const std::string label = std::to_string(c) + ": " + m.source.clips[c].name;
+        if (ImGui::Selectable(label.c_str(), c == m.clip)) m.clip = c;
+        recordItem(std::string(kTitle) + "/Clip/" + label);
+      }
+      ImGui::EndCombo();
+    }
+    ImGui::SameLine();
+    ImGui::Text("of %d, onto %s (%d joints); bone map by %s", static_cast<int>(m.source.clips.size()),
+                documentTitle(state).c_str(), target.size(), m.mapBy.c_str());
+  } else {
+    ImGui::Text("Clip '%s' onto %s (%d joints); bone map by %s", m.source.clips[m.clip].name.c_str(),
+                documentTitle(state).c_str(), target.size(), m.mapBy.c_str());
+  }
   ImGui::Text("Unmapped: %d of %d source joints, %d of %d target joints", static_cast<int>(m.unmappedSource.size()),
               source.size(), static_cast<int>(m.unmappedTarget.size()), target.size());
   recordItem(std::string(kTitle) + "/Unmapped");
@@ -124,7 +145,9 @@ void drawMotionImportDialog(CommandContext& ctx) {
     ImGui::EndTable();
   }
   if (!p.motionImportError.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", p.motionImportError.c_str());
-  const bool apply = ImGui::Button("Apply", ImVec2(ImGui::GetFontSize() * 8.5f, 0));
+  // Apply adds a clip; on a clip's own map (Animation > Edit Bone Map of Clip…) it replaces it.
+  const bool apply = ImGui::Button(m.replaceClip >= 0 ? "Apply (replace clip)###Apply" : "Apply",
+                                   ImVec2(ImGui::GetFontSize() * (m.replaceClip >= 0 ? 11.0f : 8.5f), 0));
   recordItem(std::string(kTitle) + "/Apply");
   ImGui::SameLine();
   const bool cancel = ImGui::Button("Cancel", ImVec2(ImGui::GetFontSize() * 8.5f, 0)) ||

@@ -205,12 +205,14 @@ void drawEditorPanels(CommandContext& ctx, float fps) {
   drawIkTargetsPanel(ctx);
   drawStatusBar(ctx, fps);
   drawTimelinePanel(ctx);
+  drawContactLanesPanel(ctx);
   drawCurveEditorPanel(ctx);
   drawDopeSheetPanel(state);
   drawPanelSplitters(state);
   drawAnimationDisplayWindows(state);
   drawPreferencesWindow(ctx);
   drawLogWindow(state);
+  drawCleanUpWindow(ctx);
   drawSessionDialogs(ctx);
   closePopupsOnEscape(state);
 }

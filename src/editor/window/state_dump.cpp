@@ -56,6 +56,34 @@ json timelineJson(const EditorState& s) {
     }
   }
   t["channels"] = channels;
+  // The foot contact strip (contact_lanes.h): the clip's contacts per foot, the selected one,
+  // the strip's rectangle, and the bone map the clip keeps (its pair count and file).
+  json contacts = {{"shown", s.bottomPanels().contactLanes}};
+  if (s.hasMotion()) {
+    const Clip& clip = s.doc.scene().clips[s.clip];
+    for (int f = 0; f < 2; ++f) {
+      json list = json::array();
+      for (const ContactInterval& c : clip.contacts.feet[f]) list.push_back(json::array({c.first, c.last}));
+      contacts[toString(static_cast<Foot>(f))] = list;
+    }
+    contacts["bone_map_pairs"] = clip.sourceMap.pairs.size();
+    contacts["bone_map_file"] = clip.sourceMap.file;
+    int keys = 0;
+    for (const Channel& ch : clip.channels) keys += ch.keyCount();
+    t["key_count"] = keys;
+  }
+  contacts["selected"] = {{"foot", toString(s.contactSelection.foot)}, {"index", s.contactSelection.index}};
+  const PanelRect& lanes = s.layout.contactLanes;
+  contacts["strip"] = {{"x", lanes.x}, {"y", lanes.y}, {"width", lanes.w}, {"height", lanes.h}};
+  t["contacts"] = contacts;
+  if (s.lastCleanUp) {
+    const MotionCleanupReport& r = s.lastCleanUp->report;
+    t["clean_up"] = {{"clip", s.lastCleanUp->clipName},     {"keys_before", r.keys.keysBefore},
+                     {"keys_after", r.keys.keysAfter},      {"skate_before", r.skateBefore},
+                     {"skate_after", r.skateAfter},         {"max_position_error", r.keys.maxPositionError},
+                     {"max_degrees", r.keys.maxAngleError / 0.01745329251994329577}};
+  }
+  t["clean_up_window"] = s.cleanUpWindowOpen;
   return t;
 }
 
