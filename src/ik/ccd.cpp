@@ -17,8 +17,8 @@ using ik_detail::IkChain;
 namespace {
 
 // The shortest rotation of `from` onto `to`, capped at maxAngle (the per-step damping).
-glm::quat dampedFromTo(const glm::vec3& from, const glm::vec3& to, float maxAngle) {
-  glm::quat q = ik_detail::fastFromTo(from, to);
+glm::quat dampedFromTo(const glm::vec3& from, const glm::vec3& to, float fromSq, float toSq, float maxAngle) {
+  glm::quat q = ik_detail::fastFromTo(from, to, fromSq, toSq);
   if (maxAngle < glm::pi<float>()) {
     glm::vec3 axis;
     float angle;
@@ -32,27 +32,33 @@ glm::quat dampedFromTo(const glm::vec3& from, const glm::vec3& to, float maxAngl
 // it visits (valid: see above), writes their local rotations and rotation[].
 void sweep(IkChain& c, const Goal& g, const IkSettings& settings, int it) {
   IkTrace* trace = settings.trace;
+  const bool damped = settings.maxStepAngle < glm::pi<float>();
   glm::vec3 effector = c.position(g.slot);
   for (int s = c.parentSlot[g.slot]; s >= 0; s = c.parentSlot[s]) {
     const glm::vec3 p = c.position(s);
     const glm::vec3 toEffector = effector - p, toTarget = g.position - p;
+    const float ee = glm::dot(toEffector, toEffector), tt = glm::dot(toTarget, toTarget);
     // A target at the joint (or an effector on it) gives no direction: skip the joint.
-    if (glm::dot(toEffector, toEffector) > 1e-20f && glm::dot(toTarget, toTarget) > 1e-20f) {
-      const glm::quat delta = dampedFromTo(toEffector, toTarget, settings.maxStepAngle);
+    if (ee > 1e-20f && tt > 1e-20f) {
+      const glm::quat delta = dampedFromTo(toEffector, toTarget, ee, tt, settings.maxStepAngle);
       const glm::quat parentRot = c.parentRotation(s);
-      glm::quat local = ik_detail::renormalize(glm::conjugate(parentRot) * delta * c.rotation[s]);
-      glm::quat applied = delta;
+      glm::quat local =
+          ik_detail::renormalize(ik_detail::mul(ik_detail::mul(glm::conjugate(parentRot), delta), c.rotation[s]));
       if (c.limit[s]) {
         local = applyJointLimit(*c.limit[s], c.skeleton->rest[c.joints[s]].rotation, local);
         const glm::quat newWorld = ik_detail::renormalize(parentRot * local);
-        applied = ik_detail::renormalize(newWorld * glm::conjugate(c.rotation[s]));
-        c.rotation[s] = newWorld;
+        const glm::quat applied = ik_detail::renormalize(newWorld * glm::conjugate(c.rotation[s]));
+        effector = p + applied * toEffector;
+      } else if (damped) {
+        effector = p + delta * toEffector;
       } else {
-        // parentRot * local is delta * rotation[s]: one product fewer.
-        c.rotation[s] = ik_detail::renormalize(delta * c.rotation[s]);
+        // The full turn lays joint->effector along joint->target, length kept: no rotation
+        // of the vector needed.
+        effector = p + toTarget * std::sqrt(ee / tt);
       }
+      // rotation[s] is not updated: the sweep never reads it again (it climbs to the
+      // ancestors), and the FK after the sweep recomputes every slot.
       c.pose->local[c.joints[s]].rotation = local;
-      effector = p + applied * toEffector;
     }
     if (trace) {
       // Tracing only: refresh the sub-tree so the recorded positions are exact. The
@@ -71,7 +77,8 @@ IkResult solveCcd(const IkProblem& problem, const IkSettings& settings) {
   if (IkResult bad; !(bad.message = c.begin(problem, settings)).empty()) return bad;
   IkTrace* trace = settings.trace;
   int it = 0;
-  while (!c.converged(settings) && it < settings.maxIterations) {
+  float error = c.maxError();  // of the current pose: measured once per sweep
+  while (!c.converged(error, settings) && it < settings.maxIterations) {
     ++it;
     for (const Goal& g : c.goals) {
       if (g.hasOrientation) {
@@ -83,9 +90,10 @@ IkResult solveCcd(const IkProblem& problem, const IkSettings& settings) {
       // Bring every slot up to date before the next goal (or the error test) reads them.
       c.forwardKinematics();
     }
-    if (c.stalled(c.maxError(), settings)) break;
+    error = c.maxError();
+    if (c.stalled(error, settings)) break;
   }
-  if (!c.converged(settings) && c.straightenIfUnreachable()) c.record(trace, it, IkStep::Straighten);
+  if (!c.converged(error, settings) && c.straightenIfUnreachable()) c.record(trace, it, IkStep::Straighten);
   return c.result(it, settings);
 }
 

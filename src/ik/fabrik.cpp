@@ -45,11 +45,6 @@ glm::quat bestRotation(const std::vector<glm::vec3>& from, const std::vector<glm
   return safeNormalize(glm::quat_cast(m));
 }
 
-glm::vec3 childPosition(const IkChain& c, int child) {
-  const int s = c.parentSlot[child];
-  return glm::vec3(c.world[s] * glm::vec4(c.pose->local[c.joints[child]].translation, 1.0f));
-}
-
 // A sub-base with several children is one rigid body (a chest with two shoulders): where
 // its children's backward positions ask it to be is the rigid motion that best carries
 // the children (and the sub-base's own target, if any) onto them (weighted Kabsch with
@@ -147,7 +142,7 @@ glm::quat twistForHingeChild(const IkChain& c, int s, const glm::quat& parentRot
 
 // solveFabrik's per-slot arrays, kept per thread so that repeated solves allocate nothing.
 struct FabrikScratch {
-  std::vector<float> boneLength, count, fitWeight;
+  std::vector<float> boneLength, count, fitWeight, fromSq, toSq;
   std::vector<int> goalOf, proposals, children;
   std::vector<glm::vec3> reached, sum, from, to;
   std::vector<glm::quat> backRot, limitedParent;
@@ -191,6 +186,7 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
   hasLimitedParent.assign(m, 0);
   std::vector<glm::vec3>&from = scratch.from, &to = scratch.to;
   std::vector<float>& fitWeight = scratch.fitWeight;
+  std::vector<float>&fromSq = scratch.fromSq, &toSq = scratch.toSq;
   std::vector<int>& children = scratch.children;
   children.assign(m, 0);
   for (int s = 0; s < m; ++s)
@@ -266,14 +262,20 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
     for (int s = 0; s < m; ++s) {
       if (c.parentSlot[s] >= 0) c.forwardSlot(s);
       const glm::vec3 p = c.position(s);
+      // Bone directions as they are (from) and as the backward pass wants them (to), not
+      // normalised: each use below normalises what it needs.
       from.clear();
       to.clear();
+      fromSq.clear();
+      toSq.clear();
       for (int k = s + 1; k < s + c.subtreeSize[s]; k += c.subtreeSize[k]) {
-        const glm::vec3 a = childPosition(c, k) - p, b = reached[k] - p;
-        const float la = glm::length(a), lb = glm::length(b);
-        if (la > 1e-12f && lb > 1e-12f) {
-          from.push_back(a / la);
-          to.push_back(b / lb);
+        const glm::vec3 a = c.childPosition(k) - p, b = reached[k] - p;
+        const float aa = glm::dot(a, a), bb = glm::dot(b, b);
+        if (aa > 1e-24f && bb > 1e-24f) {  // both longer than 1e-12
+          from.push_back(a);
+          to.push_back(b);
+          fromSq.push_back(aa);
+          toSq.push_back(bb);
         }
       }
       glm::quat local = c.pose->local[c.joints[s]].rotation;
@@ -287,17 +289,22 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
         const glm::vec3 a = base * (glm::conjugate(c.rotation[s]) * from[0]);
         local = glm::conjugate(parentRot) * fromToRotation(a, to[0]) * base;
       } else if (from.size() == 1) {
-        local = glm::conjugate(parentRot) * fromToRotation(from[0], to[0]) * c.rotation[s];
+        local = glm::conjugate(parentRot) * ik_detail::fastFromTo(from[0], to[0], fromSq[0], toSq[0]) * c.rotation[s];
       } else if (from.size() > 1) {
+        for (size_t i = 0; i < from.size(); ++i) {
+          from[i] /= std::sqrt(fromSq[i]);
+          to[i] /= std::sqrt(toSq[i]);
+        }
         local = glm::conjugate(parentRot) * bestRotation(from, to) * c.rotation[s];
       } else {
         continue;
       }
-      local = safeNormalize(local);
+      // A product of unit quaternions: renormalize is exact enough and much cheaper.
+      local = ik_detail::renormalize(local);
       if (from.size() == 1) local = twistForHingeChild(c, s, parentRot, local, reached);
       if (c.limit[s]) local = applyJointLimit(*c.limit[s], c.skeleton->rest[c.joints[s]].rotation, local);
       c.pose->local[c.joints[s]].rotation = local;
-      c.forwardSlot(s);
+      c.forwardRotation(s);
     }
     c.record(trace, it, IkStep::FabrikForward);
     const float error = c.maxError();

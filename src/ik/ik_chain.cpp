@@ -58,7 +58,7 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
   parentSlot.assign(m, -1);
   subtreeSize.assign(m, 1);
   fixedParent.assign(m, problem.rootTransform);
-  world.assign(m, glm::mat4(1.0f));
+  positions.assign(m, glm::vec3(0.0f));
   rotation.assign(m, glm::quat(1.0f, 0.0f, 0.0f, 0.0f));
   limit.assign(m, nullptr);
   for (int i = 0; i < m; ++i) {
@@ -82,8 +82,12 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
       if (parentSlot[i] < 0 && p >= 0) fixedParent[i] = problem.rootTransform * all[p];
     }
   }
+  fixedPosition.assign(m, glm::vec3(0.0f));
   for (int i = 0; i < m; ++i)
-    if (parentSlot[i] < 0) fixedRotation[i] = rotationOf(fixedParent[i]);
+    if (parentSlot[i] < 0) {
+      fixedRotation[i] = rotationOf(fixedParent[i]);
+      fixedPosition[i] = glm::vec3(fixedParent[i][3]);
+    }
   rigid = true;
   for (int i = 0; i < m && rigid; ++i) {
     rigid = pose->local[joints[i]].scale == glm::vec3(1.0f);
@@ -95,6 +99,7 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
         for (int b = 0; b < 3; ++b) rigid = rigid && std::abs(ltl[a][b] - (a == b ? 1.0f : 0.0f)) < 1e-6f;
     }
   }
+  world.assign(rigid ? 0 : m, glm::mat4(1.0f));
   goals.clear();
   for (const IkTarget& t : problem.targets) {
     Goal g;
@@ -113,21 +118,43 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
 
 void IkChain::forwardSlot(int s) {
   const Transform& t = pose->local[joints[s]];
-  const glm::mat4& parent = parentSlot[s] >= 0 ? world[parentSlot[s]] : fixedParent[s];
-  const glm::quat parentRot = parentRotation(s);
-  rotation[s] = renormalize(parentRot * t.rotation);
+  const int ps = parentSlot[s];
+  const glm::quat parentRot = ps >= 0 ? rotation[ps] : fixedRotation[s];
+  rotation[s] = renormalize(mul(parentRot, t.rotation));
   if (rigid) {
-    // About half the work of the affine product: one quaternion to matrix conversion.
-    const glm::mat3 r = glm::mat3_cast(rotation[s]);
-    const glm::vec3 p = glm::vec3(parent[3]) + parentRot * t.translation;
-    world[s] = glm::mat4(glm::vec4(r[0], 0.0f), glm::vec4(r[1], 0.0f), glm::vec4(r[2], 0.0f), glm::vec4(p, 1.0f));
+    // A quaternion product and a rotated vector: no matrix at all.
+    positions[s] = (ps >= 0 ? positions[ps] : fixedPosition[s]) + rotate(parentRot, t.translation);
     return;
   }
-  world[s] = multiplyAffine(parent, t.toMatrix());
+  world[s] = multiplyAffine(ps >= 0 ? world[ps] : fixedParent[s], t.toMatrix());
+  positions[s] = glm::vec3(world[s][3]);
+}
+
+glm::vec3 IkChain::childPosition(int child) const {
+  const int s = parentSlot[child];
+  const glm::vec3& t = pose->local[joints[child]].translation;
+  if (rigid) return positions[s] + rotation[s] * t;
+  return glm::vec3(world[s] * glm::vec4(t, 1.0f));
 }
 
 void IkChain::forwardKinematics() {
-  for (int s = 0; s < static_cast<int>(joints.size()); ++s) forwardSlot(s);
+  const int m = static_cast<int>(joints.size());
+  if (!rigid) {
+    for (int s = 0; s < m; ++s) forwardSlot(s);
+    return;
+  }
+  // forwardSlot's rigid branch, inlined: every iterative solver runs this once a step.
+  const Transform* local = pose->local.data();
+  for (int s = 0; s < m; ++s) {
+    const int ps = parentSlot[s];
+    const Transform& t = local[joints[s]];
+    // References, not copies: GCC copies a selected quaternion through integer registers.
+    const glm::quat& parentRot = ps >= 0 ? rotation[ps] : fixedRotation[s];
+    const glm::vec3& parentPos = ps >= 0 ? positions[ps] : fixedPosition[s];
+    const glm::vec3 p = parentPos + rotate(parentRot, t.translation);
+    rotation[s] = renormalize(mul(parentRot, t.rotation));
+    positions[s] = p;
+  }
 }
 
 glm::quat IkChain::rotateJoint(int s, const glm::quat& delta) {
@@ -142,10 +169,12 @@ glm::quat IkChain::rotateJoint(int s, const glm::quat& delta) {
   const glm::mat3 r = glm::mat3_cast(applied);
   const glm::vec3 pivot = position(s);
   for (int k = s; k < s + subtreeSize[s]; ++k) {
+    positions[k] = pivot + r * (positions[k] - pivot);
+    rotation[k] = safeNormalize(applied * rotation[k]);
+    if (rigid) continue;
     glm::mat4& w = world[k];
     for (int c = 0; c < 3; ++c) w[c] = glm::vec4(r * glm::vec3(w[c]), 0.0f);
-    w[3] = glm::vec4(pivot + r * (glm::vec3(w[3]) - pivot), 1.0f);
-    rotation[k] = safeNormalize(applied * rotation[k]);
+    w[3] = glm::vec4(positions[k], 1.0f);
   }
   rotation[s] = newWorld;
   return applied;
@@ -174,9 +203,9 @@ float IkChain::orientationError() const {
   return e;
 }
 
-bool IkChain::converged(const IkSettings& settings) const {
+bool IkChain::converged(float error, const IkSettings& settings) const {
   // Orientation targets share the tolerance, read as radians.
-  return maxError() <= settings.tolerance && orientationError() <= std::max(settings.tolerance, 1e-3f);
+  return error <= settings.tolerance && orientationError() <= std::max(settings.tolerance, 1e-3f);
 }
 
 bool IkChain::stalled(float error, const IkSettings& settings) {

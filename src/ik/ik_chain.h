@@ -9,6 +9,21 @@
 
 namespace kinema::ik_detail {
 
+// The quaternion product a * b and the rotation q * v, written out in scalars for the
+// solvers' inner loops (the same formulas as glm's, which GCC's vectoriser turns into
+// shuffle-heavy code when inlined there).
+inline glm::quat mul(const glm::quat& a, const glm::quat& b) {
+  return glm::quat(a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z, a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+                   a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w);
+}
+inline glm::vec3 rotate(const glm::quat& q, const glm::vec3& v) {
+  // t = 2 (q.xyz x v); q v q* = v + w t + q.xyz x t.
+  const float tx = 2.0f * (q.y * v.z - q.z * v.y), ty = 2.0f * (q.z * v.x - q.x * v.z),
+              tz = 2.0f * (q.x * v.y - q.y * v.x);
+  return glm::vec3(v.x + q.w * tx + (q.y * tz - q.z * ty), v.y + q.w * ty + (q.z * tx - q.x * tz),
+                   v.z + q.w * tz + (q.x * ty - q.y * tx));
+}
+
 // Normalises a quaternion that is already nearly unit (a product of unit quaternions):
 // at most one square root, where safeNormalize guards against denormal, huge and NaN input
 // (still the fallback here) at several times the cost in the solvers' inner loops.
@@ -27,16 +42,23 @@ inline void makeUnit(glm::quat& q) {
   if (std::abs(glm::dot(q, q) - 1.0f) > 1e-6f) q = safeNormalize(q);
 }
 
-// The shortest rotation taking direction `from` onto `to` (neither need be unit): the
-// half-way quaternion (|a||b| + a.b, a x b), normalised, costs two square roots where
-// normalising both inputs first costs four. Zero or opposite inputs go to fromToRotation.
-inline glm::quat fastFromTo(const glm::vec3& from, const glm::vec3& to) {
-  const float ll = std::sqrt(glm::dot(from, from) * glm::dot(to, to));
+// The shortest rotation taking direction `from` onto `to` (neither need be unit), given
+// their squared lengths: the half-way quaternion (|a||b| + a.b, a x b), whose squared
+// length is 2 |a||b| (|a||b| + a.b), so two square roots and no normalisation of the
+// inputs. Zero or opposite inputs go to fromToRotation.
+inline glm::quat fastFromTo(const glm::vec3& from, const glm::vec3& to, float fromSq, float toSq) {
+  const float ll = std::sqrt(fromSq * toSq);
   const float d = glm::dot(from, to);
   if (!(ll > 0.0f) || d < -0.999999f * ll) return fromToRotation(from, to);
   const glm::vec3 c = glm::cross(from, to);
-  const glm::quat q(ll + d, c.x, c.y, c.z);
-  return renormalize(q * (1.0f / ll));
+  const float n2 = 2.0f * ll * (ll + d);
+  // Tiny or huge lengths under- or overflow n2: normalise the slow, safe way there.
+  if (!(n2 > 1e-30f && n2 < 1e30f)) return safeNormalize(glm::quat(ll + d, c.x, c.y, c.z));
+  const float s = 1.0f / std::sqrt(n2);
+  return glm::quat((ll + d) * s, c.x * s, c.y * s, c.z * s);
+}
+inline glm::quat fastFromTo(const glm::vec3& from, const glm::vec3& to) {
+  return fastFromTo(from, to, glm::dot(from, from), glm::dot(to, to));
 }
 
 struct Goal {
@@ -58,8 +80,12 @@ struct IkChain {
   std::vector<int> subtreeSize;     // this slot and the slots below it
   std::vector<glm::mat4> fixedParent;  // world of the parent, for slots with parentSlot -1
   std::vector<glm::quat> fixedRotation;  // its rotation (scale removed), computed once
-  std::vector<glm::mat4> world;     // current world transform of each slot
-  std::vector<glm::quat> rotation;  // its world rotation (scale removed)
+  std::vector<glm::vec3> fixedPosition;  // and its position
+  std::vector<glm::vec3> positions;  // current world position of each slot
+  std::vector<glm::quat> rotation;   // its world rotation (scale removed)
+  // Its whole world transform, kept only when some scale is present (!rigid): a rigid
+  // chain is fully described by positions and rotations, half the work to update.
+  std::vector<glm::mat4> world;
   std::vector<const JointLimit*> limit;
   std::vector<Goal> goals;
   std::vector<float> history;       // error after each iteration, for stall detection
@@ -79,7 +105,15 @@ struct IkChain {
   void forwardKinematics();
   // Recomputes slot s only (its parent must be up to date).
   void forwardSlot(int s);
-  glm::vec3 position(int s) const { return glm::vec3(world[s][3]); }
+  // The same after only s's local rotation changed (its position stays where it is).
+  void forwardRotation(int s) {
+    if (!rigid) return forwardSlot(s);
+    rotation[s] = renormalize(parentRotation(s) * pose->local[joints[s]].rotation);
+  }
+  glm::vec3 position(int s) const { return positions[s]; }
+  // Where a child slot sits given its parent's current transform (the child's own world
+  // may be stale).
+  glm::vec3 childPosition(int child) const;
   glm::quat parentRotation(int s) const { return parentSlot[s] >= 0 ? rotation[parentSlot[s]] : fixedRotation[s]; }
   // Turns slot s by `delta` (a world rotation about its own position), clamps the result
   // to the joint's limit, and carries its sub-tree along rigidly. Returns the rotation
@@ -90,7 +124,9 @@ struct IkChain {
   float goalError(const Goal& g) const { return distanceInDouble(position(g.slot), g.position); }
   float maxError() const;
   float orientationError() const;  // largest angle (radians) to an orientation target
-  bool converged(const IkSettings& settings) const;
+  bool converged(const IkSettings& settings) const { return converged(maxError(), settings); }
+  // The same, given maxError() of the current pose.
+  bool converged(float error, const IkSettings& settings) const;
   // True when the last stallWindow iterations improved the error by less than
   // stallFraction; records `error` first.
   bool stalled(float error, const IkSettings& settings);

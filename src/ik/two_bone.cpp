@@ -52,8 +52,8 @@ struct PathWorld {
       for (int i = n - 1; i >= 0; --i) {
         const Transform& t = pose.local[up[i]];
         if (up[i] == root) inPath = true;
-        p += q * t.translation;
-        q = q * t.rotation;
+        p += ik_detail::rotate(q, t.translation);
+        q = ik_detail::mul(q, t.rotation);
         if (inPath) {
           joints[count] = up[i];
           rotation[count] = q;
@@ -121,7 +121,7 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
     // The job does the geometry; the path gives it model-space inputs.
     const glm::quat ra = ik_detail::renormalize(path.rotation[0]);
     const glm::quat rb = ik_detail::renormalize(path.rotation[ib]);
-    glm::quat correctionA, correctionB;
+    glm::quat correctionA, correctionB, deltaA, deltaB;
     TwoBoneIkJob job;
     job.startPosition = pa;
     job.startRotation = ra;
@@ -136,13 +136,14 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
     }
     job.startCorrection = &correctionA;
     job.midCorrection = &correctionB;
+    job.startTurn = &deltaA;
+    job.midTurn = &deltaB;
     job.runUnchecked();  // inputs come from a validated problem
     pose.local[a].rotation = ik_detail::renormalize(pose.local[a].rotation * correctionA);
     pose.local[b].rotation = ik_detail::renormalize(pose.local[b].rotation * correctionB);
     // The world turns behind the corrections: of the start joint, and of everything from
     // the mid joint down (the mid's own turn after the start's).
-    const glm::quat deltaA = ra * correctionA * glm::conjugate(ra);
-    const glm::quat deltaBA = deltaA * rb * correctionB * glm::conjugate(rb);
+    const glm::quat deltaBA = ik_detail::mul(deltaA, deltaB);
     glm::quat effectorParentRot(1.0f, 0.0f, 0.0f, 0.0f);
     bool limited = false;
     if (problem.rig) {

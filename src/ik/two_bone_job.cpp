@@ -124,7 +124,11 @@ void TwoBoneIkJob::runUnchecked() const {
     const glm::quat identity(1.0f, 0.0f, 0.0f, 0.0f);
     cA = slerpShortest(identity, cA, weight);
     cB = slerpShortest(identity, cB, weight);
+    dA = startRotation * cA * glm::conjugate(startRotation);
+    dB = midRotation * cB * glm::conjugate(midRotation);
   }
+  if (startTurn) *startTurn = dA;
+  if (midTurn) *midTurn = dB;
   *startCorrection = cA;
   *midCorrection = cB;
 }

@@ -32,6 +32,10 @@ struct TwoBoneIkJob {
   glm::quat* startCorrection = nullptr;
   glm::quat* midCorrection = nullptr;
   bool* reached = nullptr;  // optional: the target is within reach and softening left it alone
+  // Optional: the same corrections as model-space turns (start joint about its position;
+  // mid joint about its own, before the start's turn), D = R * correction * R^-1.
+  glm::quat* startTurn = nullptr;
+  glm::quat* midTurn = nullptr;
 
   // Empty when the inputs are usable; otherwise what is wrong with them.
   std::string validate() const;
