@@ -33,16 +33,22 @@ float angleBetween(const glm::vec3& u, const glm::vec3& v) {
   return std::acos(std::clamp(glm::dot(glm::normalize(u), glm::normalize(v)), -1.0f, 1.0f)) * kDegrees;
 }
 
-// Runs `seconds` of steps on the rest pose; returns the world matrices of the last pose.
-std::vector<glm::mat4> simulate(const Skeleton& s, const std::vector<SpringBoneChain>& chains, SpringBoneState& state,
-                                float seconds, float dt = 1.0f / 60.0f) {
-  Pose pose = Pose::rest(s);
+SpringBoneJob jobFor(const Skeleton& s, const std::vector<SpringBoneChain>& chains, Pose& pose, SpringBoneState& state,
+                     float dt) {
   SpringBoneJob job;
   job.skeleton = &s;
   job.chains = &chains;
   job.dt = dt;
   job.pose = &pose;
   job.state = &state;
+  return job;
+}
+
+// Runs `seconds` of steps on the rest pose; returns the world matrices of the last pose.
+std::vector<glm::mat4> simulate(const Skeleton& s, const std::vector<SpringBoneChain>& chains, SpringBoneState& state,
+                                float seconds, float dt = 1.0f / 60.0f) {
+  Pose pose = Pose::rest(s);
+  SpringBoneJob job = jobFor(s, chains, pose, state, dt);
   EXPECT_EQ(job.validate(), "");
   const int steps = static_cast<int>(std::lround(seconds / dt));
   for (int i = 0; i < steps; ++i) {
@@ -109,12 +115,7 @@ TEST(SpringBones, LagsBehindAMovingParentKeepsLengthsAndStaysOutOfColliders) {
   const std::vector<SpringBoneChain> chains = {chain};
   Pose pose = Pose::rest(s);
   SpringBoneState state;
-  SpringBoneJob job;
-  job.skeleton = &s;
-  job.chains = &chains;
-  job.dt = 1.0f / 30.0f;
-  job.pose = &pose;
-  job.state = &state;
+  SpringBoneJob job = jobFor(s, chains, pose, state, 1.0f / 30.0f);
   float largestLag = 0.0f;
   for (int f = 0; f < 90; ++f) {
     pose = Pose::rest(s);
@@ -162,12 +163,7 @@ TEST(SpringBones, TheSameInputGivesTheSameBitsAndABakedClipReplaysIt) {
   SpringBoneState state;
   Pose pose = Pose::rest(s);
   const std::vector<SpringBoneChain> chains = {chain};
-  SpringBoneJob job;
-  job.skeleton = &s;
-  job.chains = &chains;
-  job.dt = 1.0f / 24.0f;
-  job.pose = &pose;
-  job.state = &state;
+  SpringBoneJob job = jobFor(s, chains, pose, state, 1.0f / 24.0f);
   for (int f = 0; f <= 48; ++f) {
     pose = Pose::rest(s);
     sampleClip(clip, clip.frameToTime(f), pose);
@@ -199,12 +195,7 @@ TEST(SpringBones, TailsRestOnACollider) {
   const std::vector<SpringBoneChain> chains = {chain};
   Pose pose = Pose::rest(s);
   SpringBoneState state;
-  SpringBoneJob job;
-  job.skeleton = &s;
-  job.chains = &chains;
-  job.dt = 1.0f / 60.0f;
-  job.pose = &pose;
-  job.state = &state;
+  SpringBoneJob job = jobFor(s, chains, pose, state, 1.0f / 60.0f);
   for (int f = 0; f < 300; ++f) {
     pose = Pose::rest(s);
     ASSERT_TRUE(job.run());

@@ -150,30 +150,29 @@ void requestImportMotion(EditorState& state) {
   setFileDialogField(d, "");  // the document's own name is no motion file to offer
 }
 
-void startMotionImport(EditorState& state, const std::string& path) {
-  PanelState& p = state.panels;
-  Result<MotionImport> prepared = prepareMotionImport(state.doc, path, state.inputLimits, p.fileDialog.bvhUp);
+// Opens the Import Motion dialog on a prepared import, or shows why it could not be prepared.
+static bool openMotionImportDialog(EditorState& state, Result<MotionImport> prepared) {
   if (!prepared) {
     showEditorError(state, prepared.error());
-    return;
+    return false;
   }
+  PanelState& p = state.panels;
   p.motionImport = std::move(prepared.value());
   p.motionImportJustOpened = true;
   p.motionImportError.clear();
-  state.statusMessage = "Import motion from " + path + " (bone map by " + p.motionImport->mapBy + ")";
+  return true;
+}
+
+void startMotionImport(EditorState& state, const std::string& path) {
+  if (openMotionImportDialog(state, prepareMotionImport(state.doc, path, state.inputLimits, state.panels.fileDialog.bvhUp)))
+    state.statusMessage = "Import motion from " + path + " (bone map by " + state.panels.motionImport->mapBy + ")";
 }
 
 void reopenMotionImport(EditorState& state, int clip) {
-  PanelState& p = state.panels;
-  Result<MotionImport> prepared = prepareMotionImportOfClip(state.doc, clip, state.inputLimits, p.fileDialog.bvhUp);
-  if (!prepared) {
-    showEditorError(state, prepared.error());
-    return;
-  }
-  p.motionImport = std::move(prepared.value());
-  p.motionImportJustOpened = true;
-  p.motionImportError.clear();
-  state.statusMessage = "Bone map of " + state.doc.scene().clips[clip].name + " (from " + p.motionImport->path + ")";
+  if (openMotionImportDialog(state,
+                             prepareMotionImportOfClip(state.doc, clip, state.inputLimits, state.panels.fileDialog.bvhUp)))
+    state.statusMessage =
+        "Bone map of " + state.doc.scene().clips[clip].name + " (from " + state.panels.motionImport->path + ")";
 }
 
 void applyMotionImportInEditor(EditorState& state) {
