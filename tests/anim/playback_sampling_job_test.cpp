@@ -9,6 +9,7 @@
 
 #include "anim/playback_sampling_job.h"
 #include "anim/sampling.h"
+#include "anim/reference_pose.h"
 #include "test_support.h"
 
 namespace kinema {
@@ -117,36 +118,6 @@ Clip randomClip(int joints, int keys, std::mt19937& rng) {
 }
 
 // sampleClip's meaning, from the plain evaluation: each channel in clip order onto the base.
-Pose referencePose(const Clip& clip, const Pose& base, float time) {
-  Pose pose = base;
-  for (const Channel& ch : clip.channels) {
-    if (ch.target == ChannelTarget::Scalar || ch.joint < 0 || ch.joint >= pose.size() || ch.times.empty()) continue;
-    const glm::vec4 v = sampleChannelReference(ch, time);
-    Transform& t = pose.local[ch.joint];
-    switch (ch.target) {
-      case ChannelTarget::Translation: t.translation = glm::vec3(v); break;
-      case ChannelTarget::Scale: t.scale = glm::vec3(v); break;
-      case ChannelTarget::Rotation: t.rotation = glm::quat(v.w, v.x, v.y, v.z); break;
-      case ChannelTarget::Euler: t.rotation = eulerToQuat(glm::vec3(v), ch.eulerOrder); break;
-      case ChannelTarget::Scalar: break;
-    }
-  }
-  return pose;
-}
-
-float maxDifference(const Pose& a, const Pose& b) {
-  float d = 0.0f;
-  for (int j = 0; j < a.size(); ++j) {
-    const Transform &x = a.local[j], &y = b.local[j];
-    for (int i = 0; i < 3; ++i) {
-      d = std::max(d, std::abs(x.translation[i] - y.translation[i]));
-      d = std::max(d, std::abs(x.scale[i] - y.scale[i]));
-    }
-    for (int i = 0; i < 4; ++i) d = std::max(d, std::abs(x.rotation[i] - y.rotation[i]));
-  }
-  return d;
-}
-
 Pose randomBase(int joints, std::mt19937& rng) {
   std::uniform_real_distribution<float> val(-1.0f, 1.0f);
   Pose p;
@@ -192,7 +163,7 @@ TEST(PlaybackSamplingJob, EqualsReferenceOnRandomClipsOfEveryInterpolation) {
     float worst = 0.0f, worstTime = 0.0f;
     for (float t : sampleTimes(clip, rng)) {
       ASSERT_TRUE(samplePlayback(playback, t, pose, context));
-      const float d = maxDifference(pose, referencePose(clip, base, t));
+      const float d = test::maxPoseDifference(pose, test::referencePose(clip, base, t));
       if (d > worst) worst = d, worstTime = t;
     }
     EXPECT_LE(worst, kTolerance) << "case " << c << " at time " << worstTime;
@@ -249,7 +220,7 @@ TEST(PlaybackSamplingJob, AContextFromAnotherClipOnlyCostsASearch) {
   ASSERT_TRUE(samplePlayback(pa, a.duration(), pose, context));
   pose = base;
   ASSERT_TRUE(samplePlayback(pb, 0.1f, pose, context));
-  EXPECT_LE(maxDifference(pose, referencePose(b, base, 0.1f)), kTolerance);
+  EXPECT_LE(test::maxPoseDifference(pose, test::referencePose(b, base, 0.1f)), kTolerance);
 }
 
 TEST(PlaybackSamplingJob, ValidateRefusesMissingOrShortInputsAndWritesNothing) {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <random>
 
+#include "anim/reference_pose.h"
 #include "anim/sampling.h"
 
 namespace kinema {
@@ -80,35 +81,6 @@ Clip randomClip(int joints, int keys, unsigned seed) {
   return clip;
 }
 
-Pose referencePose(const Clip& clip, const Skeleton& skeleton, float time) {
-  Pose pose = Pose::rest(skeleton);
-  for (const Channel& ch : clip.channels) {
-    const glm::vec4 v = sampleChannelReference(ch, time);
-    Transform& t = pose.local[ch.joint];
-    switch (ch.target) {
-      case ChannelTarget::Translation: t.translation = glm::vec3(v); break;
-      case ChannelTarget::Scale: t.scale = glm::vec3(v); break;
-      case ChannelTarget::Rotation: t.rotation = glm::quat(v.w, v.x, v.y, v.z); break;
-      case ChannelTarget::Euler: t.rotation = eulerToQuat(glm::vec3(v), ch.eulerOrder); break;
-      case ChannelTarget::Scalar: break;
-    }
-  }
-  return pose;
-}
-
-float maxDifference(const Pose& a, const Pose& b) {
-  float d = 0.0f;
-  for (int j = 0; j < a.size(); ++j) {
-    const Transform &x = a.local[j], &y = b.local[j];
-    for (int i = 0; i < 3; ++i) {
-      d = std::max(d, std::abs(x.translation[i] - y.translation[i]));
-      d = std::max(d, std::abs(x.scale[i] - y.scale[i]));
-    }
-    for (int i = 0; i < 4; ++i) d = std::max(d, std::abs(x.rotation[i] - y.rotation[i]));
-  }
-  return d;
-}
-
 Skeleton skeletonOf(int joints) {
   Skeleton s;
   for (int j = 0; j < joints; ++j) s.addJoint("j" + std::to_string(j), j - 1, Transform());
@@ -131,11 +103,11 @@ TEST(SamplingFastPath, EqualsReferenceOnRandomClipsOfEveryInterpolation) {
     Pose cached = Pose::rest(skeleton), plain = Pose::rest(skeleton);
     float worstCached = 0.0f, worstPlain = 0.0f, worstChannel = 0.0f;
     for (float t : times) {
-      const Pose reference = referencePose(clip, skeleton, t);
+      const Pose reference = test::referencePose(clip, Pose::rest(skeleton), t);
       sampleClip(clip, t, cached, cache);
       sampleClip(clip, t, plain);
-      worstCached = std::max(worstCached, maxDifference(cached, reference));
-      worstPlain = std::max(worstPlain, maxDifference(plain, reference));
+      worstCached = std::max(worstCached, test::maxPoseDifference(cached, reference));
+      worstPlain = std::max(worstPlain, test::maxPoseDifference(plain, reference));
       for (const Channel& ch : clip.channels) {
         const glm::vec4 d = glm::abs(sampleChannel(ch, t) - sampleChannelReference(ch, t));
         worstChannel = std::max({worstChannel, d.x, d.y, d.z, d.w});
