@@ -7,6 +7,7 @@
 #include "cli/demo_command.h"
 #include "cli/edit_command.h"
 #include "cli/ik_command.h"
+#include "cli/lsystem_command.h"
 #include "cli/plot_curves_command.h"
 #include "cli/pose_command.h"
 #include "cli/render_command.h"
@@ -37,6 +38,8 @@ int main(int argc, char** argv) {
   CLI::App* demoCmd = kinema::cli::addDemoCommand(app, demo);
   kinema::cli::RetargetOptions retarget;
   CLI::App* retargetCmd = kinema::cli::addRetargetCommand(app, retarget);
+  kinema::cli::LSystemOptions lsystem;
+  CLI::App* lsystemCmd = kinema::cli::addLSystemCommand(app, lsystem);
 
   try {
     app.parse(argc, argv);
@@ -60,5 +63,6 @@ int main(int argc, char** argv) {
   if (skinCmd->parsed()) return kinema::cli::runSkin(skin);
   if (demoCmd->parsed()) return kinema::cli::runDemo(demo);
   if (retargetCmd->parsed()) return kinema::cli::runRetarget(retarget);
+  if (lsystemCmd->parsed()) return kinema::cli::runLSystem(lsystem);
   return kinema::cli::runDefault();
 }

@@ -1,0 +1,104 @@
+// Procedural groups (issue 24): "ns_per_member" is wall time per boid or particle per step.
+//  BM_BoidsGrid/N    one flock step of N members (default settings, uniform hash grid)
+//  BM_BoidsNaive/N   the same step with the all-pairs O(n^2) neighbour search
+//  BM_Particles/N    one particle step of N live particles under gravity, wind and drag, with
+//                    the ground and a sphere to bounce off (state reset every 60 steps)
+//   ./build/bench/procedural_bench --benchmark_min_time=0.5
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <vector>
+
+#include "procedural/boids.h"
+#include "procedural/particles.h"
+#include "procedural/random.h"
+
+namespace {
+
+using namespace kinema;
+
+void countNsPerMember(benchmark::State& state, size_t members) {
+  state.counters["ns_per_member"] = benchmark::Counter(static_cast<double>(members) * state.iterations() * 1e-9,
+                                                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+// A flock at one density whatever its size: a jittered lattice 2 m apart (about 30 members
+// within the default 4 m neighbour radius of each), flying in random directions at 2 m/s.
+void makeFlock(int n, std::vector<glm::vec3>& p, std::vector<glm::vec3>& v) {
+  SplitMix64 r(3);
+  const int side = static_cast<int>(std::ceil(std::cbrt(double(n))));
+  p.clear();
+  v.clear();
+  for (int i = 0; i < n; ++i) {
+    const glm::vec3 cell(i % side, (i / side) % side, i / (side * side));
+    p.push_back(2.0f * cell + glm::vec3(r.uniform(-0.5, 0.5), r.uniform(-0.5, 0.5), r.uniform(-0.5, 0.5)));
+    v.push_back(2.0f * glm::normalize(glm::vec3(r.normal(), r.normal(), r.normal())));
+  }
+}
+
+void boids(benchmark::State& state, NeighbourSearch search) {
+  const int n = static_cast<int>(state.range(0));
+  BoidsSettings settings;
+  settings.search = search;
+  std::vector<glm::vec3> p, v;
+  makeFlock(n, p, v);
+  BoidsStepJob job;
+  job.settings = &settings;
+  job.positions = &p;
+  job.velocities = &v;
+  for (auto _ : state) {  // the same start state each time: the cost of one step at this density
+    job.run();
+    benchmark::DoNotOptimize(job.outPositions.data());
+  }
+  countNsPerMember(state, static_cast<size_t>(n));
+}
+
+void BM_BoidsGrid(benchmark::State& state) { boids(state, NeighbourSearch::Grid); }
+void BM_BoidsNaive(benchmark::State& state) { boids(state, NeighbourSearch::Naive); }
+BENCHMARK(BM_BoidsGrid)->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BoidsNaive)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+
+ParticleState particleCloud(int n) {
+  ParticleState s;
+  SplitMix64 r(11);
+  for (int i = 0; i < n; ++i) {
+    s.positions.emplace_back(r.uniform(-5, 5), r.uniform(0.5, 6), r.uniform(-5, 5));
+    s.velocities.emplace_back(r.uniform(-2, 2), r.uniform(0, 5), r.uniform(-2, 2));
+    s.ages.push_back(0.0f);
+    s.lifetimes.push_back(1e6f);
+    s.emitterOf.push_back(0);
+  }
+  return s;
+}
+
+void BM_Particles(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  ParticleForces forces;
+  forces.wind = glm::vec3(1.5f, 0.0f, 0.0f);
+  forces.drag = 0.3f;
+  forces.restitution = 0.6f;
+  forces.spheres.push_back({glm::vec3(0, 1, 0), 1.0f});
+  const std::vector<ParticleEmitter> emitters;  // a fixed population
+  const ParticleState start = particleCloud(n);
+  ParticleState s = start;
+  ParticleStepJob job;
+  job.emitters = &emitters;
+  job.forces = &forces;
+  job.state = &s;
+  int steps = 0;
+  for (auto _ : state) {
+    if (++steps % 60 == 0) {
+      state.PauseTiming();
+      s = start;
+      state.ResumeTiming();
+    }
+    job.run();
+    benchmark::DoNotOptimize(s.positions.data());
+  }
+  countNsPerMember(state, static_cast<size_t>(n));
+}
+BENCHMARK(BM_Particles)->Arg(100000)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
