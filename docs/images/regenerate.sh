@@ -79,3 +79,13 @@ rm -rf "$tmp"
 build=$(cd "$(dirname "$kinema")/.." && pwd)
 "$build/tests/kinema_tests" --gtest_filter=DopeSheetE2e.ScreenshotForTheReadme >/dev/null
 cp "$build/dope_sheet_e2e/dope_sheet.png" "$root/docs/images/dope_sheet.png"
+# L-system plants (issue 24): the seed's derivation, and a stochastic bush, rendered by Kinema.
+tmp=$(mktemp -d)
+"$kinema" lsystem "$root/docs/examples/lsystems/seed_plant.lsys" --generations 5 --choices 0,0,0,1,0,1,1,1 --out "$tmp/seed.kinema"
+"$kinema" render "$tmp/seed.kinema" --out "$root/docs/images/lsystem_seed_plant.png" --size 480x480 --bones none --camera 0,10,7
+"$kinema" lsystem "$root/docs/examples/lsystems/bush.lsys" --generations 6 --seed 3 --segment-length 0.3 --out "$tmp/bush.gltf"
+"$kinema" render "$tmp/bush.gltf" --out "$root/docs/images/lsystem_bush.png" --size 640x480 --bones none --camera 0,12,6.6
+# Game of Life (issue 24): the demo's snapshot sheet.
+"$kinema" demo life --out "$tmp/life" --size 640x400 >/dev/null
+cp "$tmp/life/snapshots.png" "$root/docs/images/life_snapshots.png"
+rm -rf "$tmp"
