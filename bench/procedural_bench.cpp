@@ -3,12 +3,19 @@
 //  BM_BoidsNaive/N   the same step with the all-pairs O(n^2) neighbour search
 //  BM_Particles/N    one particle step of N live particles under gravity, wind and drag, with
 //                    the ground and a sphere to bounce off (state reset every 60 steps)
+//  BM_CrowdFkAndSampling/N  one frame of an N-character crowd: each member samples its own
+//                    time (a phase offset) of a 2 s clip on the default character's 27 joints
+//                    (a rotation channel per joint, 30 keys per second, and the root's
+//                    translation) through its own SamplingCache, then runs forward kinematics
 //   ./build/bench/procedural_bench --benchmark_min_time=0.5
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <vector>
 
+#include "anim/sampling.h"
+#include "core/default_character.h"
+#include "core/forward_kinematics.h"
 #include "procedural/boids.h"
 #include "procedural/particles.h"
 #include "procedural/random.h"
@@ -98,6 +105,52 @@ void BM_Particles(benchmark::State& state) {
   countNsPerMember(state, static_cast<size_t>(n));
 }
 BENCHMARK(BM_Particles)->Arg(100000)->Unit(benchmark::kMillisecond);
+
+Clip walkLikeClip(const Skeleton& skeleton) {
+  SplitMix64 r(5);
+  Clip clip;
+  for (int j = 0; j < skeleton.size(); ++j) {
+    Channel rotation(j, ChannelTarget::Rotation, Interpolation::Linear, {}, {});
+    for (int k = 0; k <= 60; ++k) {
+      const glm::quat q = skeleton.rest[j].rotation *
+                          glm::angleAxis(static_cast<float>(0.3 * std::sin(k * 0.2094 + j)), glm::vec3(1, 0, 0));
+      rotation.times.push_back(k / 30.0f);
+      rotation.values.emplace_back(q.x, q.y, q.z, q.w);
+    }
+    clip.channels.push_back(std::move(rotation));
+  }
+  Channel root(0, ChannelTarget::Translation, Interpolation::Linear, {}, {});
+  for (int k = 0; k <= 60; ++k) {
+    root.times.push_back(k / 30.0f);
+    root.values.emplace_back(skeleton.rest[0].translation + glm::vec3(0.0f, 0.03f * static_cast<float>(r.uniform()), 0.05f * k), 0.0f);
+  }
+  clip.channels.push_back(std::move(root));
+  return clip;
+}
+
+void BM_CrowdFkAndSampling(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const Skeleton skeleton = makeDefaultCharacter();
+  const Clip clip = walkLikeClip(skeleton);
+  std::vector<Pose> poses(n, Pose::rest(skeleton));
+  std::vector<SamplingCache> caches(n);
+  std::vector<std::vector<glm::mat4>> world(n);
+  std::vector<float> phase(n);
+  SplitMix64 r(8);
+  for (float& p : phase) p = static_cast<float>(r.uniform(0.0, 2.0));
+  float time = 0.0f;
+  for (auto _ : state) {
+    time += 1.0f / 60.0f;
+    for (int i = 0; i < n; ++i) {
+      sampleClip(clip, std::fmod(time + phase[i], 2.0f), poses[i], caches[i]);
+      computeWorld(skeleton, poses[i], world[i]);
+    }
+    benchmark::DoNotOptimize(world.data());
+  }
+  countNsPerMember(state, static_cast<size_t>(n));
+  state.counters["joints"] = skeleton.size();
+}
+BENCHMARK(BM_CrowdFkAndSampling)->Arg(1000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -55,7 +55,8 @@ int runLSystem(const LSystemOptions& o) {
     return usage("cannot write '" + ext + "' files (use .kinema, .gltf or .glb)");
   LSystemDerivationJob job;
   if (!parseChoices(o.choices, job.choices)) return usage("--choices '" + o.choices + "' is not a list like 0,0,1");
-  if (o.generations < 0) return badInput("--generations must be >= 0, found " + std::to_string(o.generations));
+  if (o.generations < 0 || o.generations > 10000)
+    return badInput("--generations must be in 0 .. 10000, found " + std::to_string(o.generations));
   if (!(o.segmentLength > 0.0) || !std::isfinite(o.segmentLength))
     return badInput("--segment-length must be a positive finite number of metres");
   if (!(o.radius >= 0.0) || !std::isfinite(o.radius)) return badInput("--radius must be a finite number >= 0");

@@ -28,6 +28,12 @@ float boxDistance(const BoidBox& b, const glm::vec3& p, glm::vec3& normal) {
   return q[axis];
 }
 
+// The grid cell of a position; clamped so members far away (or a runaway) stay defined.
+glm::ivec3 cellOf(const glm::vec3& p, float cell) {
+  const glm::vec3 c = glm::clamp(glm::floor(p / cell), glm::vec3(-1e9f), glm::vec3(1e9f));
+  return glm::ivec3(c);
+}
+
 uint32_t hashCell(int x, int y, int z, uint32_t mask) {
   const uint32_t h = static_cast<uint32_t>(x) * 73856093u ^ static_cast<uint32_t>(y) * 19349663u ^
                      static_cast<uint32_t>(z) * 83492791u;
@@ -125,7 +131,7 @@ bool BoidsStepJob::run() {
     cellOf_.resize(n);
     cellEntries_.resize(n);
     for (int i = 0; i < n; ++i) {
-      const glm::ivec3 c(glm::floor(p[i] / cell));
+      const glm::ivec3 c = cellOf(p[i], cell);
       cellOf_[i] = hashCell(c.x, c.y, c.z, mask);
       ++cellStart_[cellOf_[i] + 1];
     }
@@ -161,7 +167,7 @@ bool BoidsStepJob::run() {
     if (s.search == NeighbourSearch::Naive) {
       for (int j = 0; j < n; ++j) consider(j);
     } else {
-      const glm::ivec3 c(glm::floor(pi / cell));
+      const glm::ivec3 c = cellOf(pi, cell);
       uint32_t visited[27];
       int visitedCount = 0;
       for (int dz = -1; dz <= 1; ++dz)

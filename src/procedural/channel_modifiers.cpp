@@ -1,5 +1,6 @@
 #include "procedural/channel_modifiers.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "anim/sampling.h"
@@ -20,6 +21,7 @@ double gradient(uint64_t lattice, int64_t i) {
 // Perlin's 1D gradient noise with the quintic fade, scaled to [-1, 1]:
 // |(1 - s) g0 u + s g1 (u - 1)| <= (1 - s) u + s (1 - u) <= 1/2 for |g| <= 1.
 double gradientNoise(uint64_t lattice, double x) {
+  x = std::clamp(x, -4.5e15, 4.5e15);  // past 2^52 a double has no fraction left anyway
   const double cell = std::floor(x);
   const double u = x - cell;
   const int64_t i = static_cast<int64_t>(cell);
@@ -162,7 +164,7 @@ glm::vec4 ModifiedChannelJob::evaluate(float time) const {
   } else {
     const int limit = after ? cycles->afterCount : cycles->beforeCount;
     const double d = after ? double(time) - t1 : double(t0) - time;
-    double n = std::ceil(d / period);
+    double n = std::min(std::ceil(d / period), 1e15);  // beyond that float time has no resolution
     double local;
     if (limit > 0 && n > limit) {
       n = limit;

@@ -7,7 +7,8 @@ namespace kinema {
 std::string LSystemDerivationJob::validate() const {
   if (!grammar) return "no grammar";
   if (std::string bad = grammar->validate(); !bad.empty()) return bad;
-  if (generations < 0) return "generations must be >= 0, found " + std::to_string(generations);
+  if (generations < 0 || generations > 10000)
+    return "generations must be in 0 .. 10000, found " + std::to_string(generations);
   for (size_t k = 0; k < choices.size(); ++k)
     if (choices[k] < 0) return "choice " + std::to_string(k + 1) + " is negative";
   return "";

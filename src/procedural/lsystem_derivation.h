@@ -14,7 +14,7 @@ namespace kinema {
 // `seed` once the forced choices are used up, so one seed always gives one plant.
 struct LSystemDerivationJob {
   const LSystemGrammar* grammar = nullptr;
-  int generations = 0;              // >= 0
+  int generations = 0;              // 0 .. 10000
   uint64_t seed = 1;
   std::vector<int> choices;         // forced rule indices among a symbol's rules (0-based, file order)
   size_t maxSymbols = 1u << 22;     // a string longer than this is refused (growth is exponential)
@@ -23,7 +23,7 @@ struct LSystemDerivationJob {
   std::vector<std::string> strings;  // generations + 1 strings; strings[0] is the start symbol
   std::vector<int> choicesMade;      // every choice made, forced or drawn, in order
 
-  // Empty when the inputs can run: a valid grammar, generations >= 0, choices >= 0.
+  // Empty when the inputs can run: a valid grammar, generations in 0 .. 10000, choices >= 0.
   std::string validate() const;
   // False with `error` (one line) when a forced choice names a rule the symbol lacks or the
   // string outgrows maxSymbols; the outputs then hold the generations done before.

@@ -27,6 +27,8 @@ std::string checkRange(const RandomRange& r, const char* what) {
 struct Motion {
   glm::vec3 g, w;
   float k;
+  float step;  // the whole step, whose decay is computed once for every particle
+  float stepDecay = std::exp(-k * step);
   void at(const glm::vec3& p0, const glm::vec3& v0, float tau, glm::vec3& p, glm::vec3& v) const {
     if (k == 0.0f) {
       p = p0 + v0 * tau + 0.5f * g * tau * tau;
@@ -34,7 +36,7 @@ struct Motion {
       return;
     }
     const glm::vec3 terminal = w + g / k;
-    const float decay = std::exp(-k * tau);
+    const float decay = tau == step ? stepDecay : std::exp(-k * tau);
     v = terminal + (v0 - terminal) * decay;
     p = p0 + terminal * tau + (v0 - terminal) * ((1.0f - decay) / k);
   }
@@ -128,7 +130,7 @@ bool ParticleStepJob::run() {
   if (!validate().empty()) return false;
   ParticleState& s = *state;
   const ParticleForces& f = *forces;
-  const Motion motion{f.gravity, f.wind, f.drag};
+  const Motion motion{f.gravity, f.wind, f.drag, dt};
   const glm::vec3 up(0, 1, 0);
   // Age, and drop the dead (keeping birth order).
   int kept = 0;
@@ -205,9 +207,10 @@ bool ParticleStepJob::run() {
   s.emitCarry.resize(emitters->size(), 0.0f);
   for (size_t e = 0; e < emitters->size(); ++e) {
     const ParticleEmitter& em = (*emitters)[e];
-    float carry = s.emitCarry[e] + draw(em.rate, random) * dt;
-    const int count = static_cast<int>(std::floor(carry));
-    carry -= static_cast<float>(count);
+    const double owed = static_cast<double>(s.emitCarry[e]) + static_cast<double>(draw(em.rate, random)) * dt;
+    const double whole = std::floor(owed);
+    const float carry = static_cast<float>(owed - whole);
+    const int count = static_cast<int>(std::min(whole, static_cast<double>(maxParticles)));
     s.emitCarry[e] = carry;
     std::vector<double> cumulative;
     if (em.shape == EmitterShape::MeshSurface) {
