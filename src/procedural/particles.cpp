@@ -28,7 +28,7 @@ struct Motion {
   glm::vec3 g, w;
   float k;
   float step;  // the whole step, whose decay is computed once for every particle
-  float stepDecay = std::exp(-k * step);
+  float stepDecay;  // exp(-k step)
   void at(const glm::vec3& p0, const glm::vec3& v0, float tau, glm::vec3& p, glm::vec3& v) const {
     if (k == 0.0f) {
       p = p0 + v0 * tau + 0.5f * g * tau * tau;
@@ -130,7 +130,7 @@ bool ParticleStepJob::run() {
   if (!validate().empty()) return false;
   ParticleState& s = *state;
   const ParticleForces& f = *forces;
-  const Motion motion{f.gravity, f.wind, f.drag, dt};
+  const Motion motion{f.gravity, f.wind, f.drag, dt, std::exp(-f.drag * dt)};
   const glm::vec3 up(0, 1, 0);
   // Age, and drop the dead (keeping birth order).
   int kept = 0;
