@@ -89,3 +89,9 @@ tmp=$(mktemp -d)
 "$kinema" demo life --out "$tmp/life" --size 640x400 >/dev/null
 cp "$tmp/life/snapshots.png" "$root/docs/images/life_snapshots.png"
 rm -rf "$tmp"
+# Boids (issue 24): priority allocation against the naive average.
+tmp=$(mktemp -d)
+"$kinema" demo boids --out "$tmp/boids" --size 960x640 >/dev/null
+cp "$tmp/boids/priority.png" "$root/docs/images/boids_priority.png"
+cp "$tmp/boids/average.png" "$root/docs/images/boids_average.png"
+rm -rf "$tmp"

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "cli/command_line.h"
+#include "cli/boids_demo.h"
 #include "cli/life_demo.h"
 #include "cli/stiff_springs_demo.h"
 #include "ik/solver_comparison.h"
@@ -273,7 +274,7 @@ int runSolverTable(const DemoOptions& o, int width, int height) {
 
 CLI::App* addDemoCommand(CLI::App& app, DemoOptions& o) {
   CLI::App* cmd = app.add_subcommand("demo", "Teaching figures: every solver step of a preset as PNG, plots and numbers");
-  cmd->add_option("name", o.name, "A preset (see `kinema demo list`), list, solver-table, stiff-springs or life")->required();
+  cmd->add_option("name", o.name, "A preset (see `kinema demo list`), list, solver-table, stiff-springs, life or boids")->required();
   cmd->add_option("--out", o.out, "Output folder (created)");
   cmd->add_option("--size", o.size, "Image size WxH in pixels (default 640x480)");
   cmd->add_option("--max-steps", o.maxSteps, "At most N step images per solver, plus the last (default: all)");
@@ -303,6 +304,7 @@ int runDemo(const DemoOptions& o) {
       for (const TeachingCase& c : teachingPresets()) std::printf("%-24s %s\n", c.name.c_str(), c.title.c_str());
       std::printf("%-24s %s\n", "solver-table", "The FABRIK paper's comparison of every solver (kinema demo solver-table --out DIR)");
       std::printf("%-24s %s\n", "stiff-springs", "Why a time step blows up: four integrators on a damped spring chain (kinema demo stiff-springs --out DIR)");
+      std::printf("%-24s %s\n", "boids", "Priority acceleration allocation vs the naive average: a flock past obstacles (kinema demo boids --out DIR)");
       std::printf("%-24s %s\n", "life", "Conway's Game of Life, the seed's rules: a glider gun and still lifes (kinema demo life --out DIR)");
     }
     return kExitOk;
@@ -316,10 +318,11 @@ int runDemo(const DemoOptions& o) {
   if (o.out.empty()) return usage("give --out DIR");
   if (o.name == "solver-table") return runSolverTable(o, w, h);
   if (o.name == "life") return runLifeDemo(o.out, w, h);
+  if (o.name == "boids") return runBoidsDemo(o.out, w, h);
   if (o.name == "stiff-springs") return runStiffSpringsDemo(o.out, o.zeta, std::max(160, w / 5), std::max(120, h / 4));  // 5 x 4 panels
   const TeachingCase* preset = findTeachingPreset(o.name);
   if (!preset)
-    return badInput("no demo preset named '" + o.name + "' (presets: " + presetNames() + ", solver-table, stiff-springs, life)");
+    return badInput("no demo preset named '" + o.name + "' (presets: " + presetNames() + ", solver-table, stiff-springs, life, boids)");
   return runPreset(*preset, o, w, h);
 }
 

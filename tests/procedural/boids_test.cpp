@@ -4,6 +4,9 @@
 
 #include <cmath>
 
+#include <nlohmann/json.hpp>
+
+#include "io/image.h"
 #include "procedural/boids.h"
 #include "procedural/random.h"
 #include "test_support.h"
@@ -174,6 +177,29 @@ TEST(Boids, FieldOfViewHidesMembersBehind) {
   s.fieldOfViewDegrees = 360.0f;
   ASSERT_TRUE(step.run());
   EXPECT_EQ(step.debug.neighbours, 2);
+}
+
+}  // namespace
+}  // namespace kinema
+
+namespace kinema {
+namespace {
+
+TEST(BoidsDemo, WritesBothModesAndPriorityKeepsMembersOutOfObstacles) {
+  const std::string dir = test::makeTempDir();
+  std::string out, err;
+  ASSERT_EQ(test::runCommand(std::string(KINEMA_BINARY) + " demo boids --out " + dir + " --size 640x420", &out, &err), 0)
+      << err;
+  const nlohmann::json j = nlohmann::json::parse(test::readFile(dir + "/numbers.json"));
+  EXPECT_EQ(j["priority"]["intrusion_steps"], 0);
+  // The naive average lets avoidance be outvoted by the goal and the flock (this scene, its seed).
+  EXPECT_GT(j["average"]["intrusion_steps"].get<int>(), 0);
+  EXPECT_GT(j["priority"]["reached_goal"].get<int>(), 0);
+  for (const char* f : {"priority.png", "average.png"}) {
+    Result<Image> img = loadPng(dir + "/" + f);
+    ASSERT_TRUE(img.ok()) << f;
+    EXPECT_EQ(img->width, 640);
+  }
 }
 
 }  // namespace
