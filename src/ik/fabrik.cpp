@@ -289,7 +289,9 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
         const glm::vec3 a = base * (glm::conjugate(c.rotation[s]) * from[0]);
         local = glm::conjugate(parentRot) * fromToRotation(a, to[0]) * base;
       } else if (from.size() == 1) {
-        local = glm::conjugate(parentRot) * ik_detail::fastFromTo(from[0], to[0], fromSq[0], toSq[0]) * c.rotation[s];
+        // Renormalised below with the other branches.
+        local = ik_detail::mul(ik_detail::mul(glm::conjugate(parentRot), ik_detail::fastFromTo(from[0], to[0], fromSq[0], toSq[0])),
+                               c.rotation[s]);
       } else if (from.size() > 1) {
         for (size_t i = 0; i < from.size(); ++i) {
           from[i] /= std::sqrt(fromSq[i]);
@@ -301,7 +303,8 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
       }
       // A product of unit quaternions: renormalize is exact enough and much cheaper.
       local = ik_detail::renormalize(local);
-      if (from.size() == 1) local = twistForHingeChild(c, s, parentRot, local, reached);
+      // Only a hinge child's plane asks for a twist (checked here first: it is rare).
+      if (from.size() == 1 && s + 1 < m && c.limit[s + 1]) local = twistForHingeChild(c, s, parentRot, local, reached);
       if (c.limit[s]) local = applyJointLimit(*c.limit[s], c.skeleton->rest[c.joints[s]].rotation, local);
       c.pose->local[c.joints[s]].rotation = local;
       c.forwardRotation(s);

@@ -177,7 +177,7 @@ void IkChain::forwardSlot(int s) {
 glm::vec3 IkChain::childPosition(int child) const {
   const int s = parentSlot[child];
   const glm::vec3& t = pose->local[joints[child]].translation;
-  if (rigid) return positions[s] + rotation[s] * t;
+  if (rigid) return positions[s] + rotate(rotation[s], t);
   return glm::vec3(world[s] * glm::vec4(t, 1.0f));
 }
 
@@ -189,6 +189,25 @@ void IkChain::forwardKinematics() {
   }
   // forwardSlot's rigid branch, inlined: every iterative solver runs this once a step.
   const Transform* local = pose->local.data();
+#if defined(__SSE2__)
+  // The previous slot's rotation and position stay in registers: along a chain (parent =
+  // previous slot) nothing is read back from memory.
+  __m128 rot = _mm_setzero_ps(), pos = _mm_setzero_ps();
+  for (int s = 0; s < m; ++s) {
+    const int ps = parentSlot[s];
+    const Transform& t = local[joints[s]];
+    __m128 parentRot = rot, parentPos = pos;
+    if (ps != s - 1 || ps < 0) {
+      parentRot = simd::load(ps >= 0 ? rotation[ps] : fixedRotation[s]);
+      parentPos = simd::load3(ps >= 0 ? positions[ps] : fixedPosition[s]);
+    }
+    // t.translation is followed by t.rotation in memory: a 4-float load stays inside t.
+    pos = _mm_add_ps(parentPos, simd::rotate(parentRot, _mm_loadu_ps(&t.translation.x)));
+    rot = simd::renormalize(simd::mul(parentRot, simd::load(t.rotation)));
+    simd::store(rotation[s], rot);
+    simd::store3(positions[s], pos);
+  }
+#else
   for (int s = 0; s < m; ++s) {
     const int ps = parentSlot[s];
     const Transform& t = local[joints[s]];
@@ -199,6 +218,7 @@ void IkChain::forwardKinematics() {
     rotation[s] = renormalize(mul(parentRot, t.rotation));
     positions[s] = p;
   }
+#endif
 }
 
 glm::quat IkChain::rotateJoint(int s, const glm::quat& delta) {
