@@ -74,12 +74,14 @@ Solves solveAll(IkSolver solver, const Skeleton& chain, const std::vector<glm::v
   return out;
 }
 
-// For callgrind (--toggle-collect='*ccdSolveLoop*'): CCD on the given targets, untimed.
-__attribute__((noinline)) int ccdSolveLoop(const Skeleton& chain, const std::vector<glm::vec3>& targets) {
+// For callgrind: one solver on the given targets from the straight rest pose, untimed;
+// `reachableRun` as in solveAll. Each solver has its own entry so --toggle-collect can
+// name it ('*ccdSolveLoop*', '*fabrikSolveLoop*').
+int solveLoop(IkSolver solver, const Skeleton& chain, const std::vector<glm::vec3>& targets, bool reachableRun) {
   IkSettings settings;
   settings.tolerance = kTolerance;
   settings.maxIterations = kMaxSweeps;
-  settings.stallFraction = 0.0f;
+  if (reachableRun) settings.stallFraction = 0.0f;
   IkProblem problem;
   problem.skeleton = &chain;
   problem.targets.resize(1);
@@ -92,9 +94,17 @@ __attribute__((noinline)) int ccdSolveLoop(const Skeleton& chain, const std::vec
   for (const glm::vec3& t : targets) {
     pose = rest;
     problem.targets[0].position = t;
-    sweeps += solveIk(IkSolver::Ccd, problem, settings).iterations;
+    sweeps += solveIk(solver, problem, settings).iterations;
   }
   return sweeps;
+}
+__attribute__((noinline)) int ccdSolveLoop(const Skeleton& chain, const std::vector<glm::vec3>& targets,
+                                           bool reachableRun) {
+  return solveLoop(IkSolver::Ccd, chain, targets, reachableRun);
+}
+__attribute__((noinline)) int fabrikSolveLoop(const Skeleton& chain, const std::vector<glm::vec3>& targets,
+                                              bool reachableRun) {
+  return solveLoop(IkSolver::Fabrik, chain, targets, reachableRun);
 }
 
 double mean(const std::vector<double>& v) {
@@ -112,10 +122,13 @@ double meanInt(const std::vector<int>& v) {
 
 int main(int argc, char** argv) {
   const std::string dir = KINEMA_THREE_CCD_DIR;
-  // Instructions per CCD solve (reachable targets of an earlier run, no node):
+  // Instructions per solve (the targets of an earlier run, no node), one command line:
   //   valgrind --tool=callgrind --toggle-collect='*ccdSolveLoop*'
-  //     ./build/bench/anchors/three_ccd_anchor_bench callgrind-ccd   (one command line)
-  const bool callgrind = argc > 1 && std::string(argv[1]) == "callgrind-ccd";
+  //     ./build/bench/anchors/three_ccd_anchor_bench callgrind-ccd
+  // callgrind-ccd / callgrind-fabrik: the reachable targets; callgrind-ccd-unreachable /
+  // callgrind-fabrik-unreachable: the unreachable ones (toggle '*fabrikSolveLoop*' for FABRIK).
+  const std::string mode = argc > 1 ? argv[1] : "";
+  const bool callgrind = mode.rfind("callgrind-", 0) == 0;
   const std::string targetsPath = dir + "/targets.json", resultsPath = dir + "/results.json",
                     summaryPath = dir + "/summary.json";
   const std::string command = "cd '" + dir + "' && '" + KINEMA_NODE +
@@ -147,10 +160,42 @@ int main(int argc, char** argv) {
     chain.addJoint("j" + std::to_string(i), i - 1,
                    Transform::fromTranslation(glm::vec3(0.0f, i == 0 ? 0.0f : 1.0f, 0.0f)));
 
+  if (mode == "dump") {
+    // Per target: solver, index, iterations, final error and the effector's world position,
+    // to compare two builds' answers (diff the outputs).
+    const Pose rest = Pose::rest(chain);
+    for (IkSolver solver : {IkSolver::Ccd, IkSolver::Fabrik})
+      for (size_t i = 0; i < all; ++i) {
+        IkSettings settings;
+        settings.tolerance = kTolerance;
+        settings.maxIterations = kMaxSweeps;
+        if (i < reachable) settings.stallFraction = 0.0f;
+        IkProblem problem;
+        problem.skeleton = &chain;
+        problem.targets.resize(1);
+        problem.targets[0].effector = kBones;
+        problem.targets[0].root = 0;
+        problem.targets[0].position = targets[i];
+        Pose pose = rest;
+        problem.pose = &pose;
+        const IkResult r = solveIk(solver, problem, settings);
+        const glm::vec3 e(computeWorld(chain, pose)[kBones][3]);
+        std::printf("%s %zu %d %.9g %.9g %.9g %.9g\n", toString(solver), i, r.iterations, r.error, e.x, e.y, e.z);
+      }
+    return 0;
+  }
   if (callgrind) {
-    const std::vector<glm::vec3> reachableTargets(targets.begin(), targets.begin() + reachable);
-    std::printf("%zu CCD solves, %d sweeps: instructions / %zu = per solve\n", reachable,
-                ccdSolveLoop(chain, reachableTargets), reachable);
+    const bool far = mode.find("-unreachable") != std::string::npos;
+    const std::vector<glm::vec3> some(far ? targets.begin() + reachable : targets.begin(),
+                                      far ? targets.end() : targets.begin() + reachable);
+    const bool fabrik = mode.rfind("callgrind-fabrik", 0) == 0;
+    if (!fabrik && mode.rfind("callgrind-ccd", 0) != 0) {
+      std::fprintf(stderr, "error: unknown mode '%s'\n", mode.c_str());
+      return 1;
+    }
+    const int iterations = fabrik ? fabrikSolveLoop(chain, some, !far) : ccdSolveLoop(chain, some, !far);
+    std::printf("%zu %s solves, %d iterations: instructions / %zu = per solve\n", some.size(),
+                fabrik ? "FABRIK" : "CCD", iterations, some.size());
     return 0;
   }
   // Same answers first: CCD's sweep count on every reachable target equals three's.

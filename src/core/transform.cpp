@@ -18,8 +18,4 @@ glm::mat4 Transform::toMatrix() const {
   return m;
 }
 
-bool Transform::isFinite() const {
-  return kinema::isFinite(translation) && kinema::isFinite(rotation) && kinema::isFinite(scale);
-}
-
 }  // namespace kinema

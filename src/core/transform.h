@@ -18,7 +18,10 @@ struct Transform {
 
   // The 4x4 affine matrix T * R * S.
   glm::mat4 toMatrix() const;
-  bool isFinite() const;
+  // Inline: validation runs it on every chain joint of every IK solve.
+  bool isFinite() const {
+    return kinema::isFinite(translation) && kinema::isFinite(rotation) && kinema::isFinite(scale);
+  }
   bool operator==(const Transform& o) const {
     return translation == o.translation && rotation == o.rotation && scale == o.scale;
   }

@@ -41,9 +41,8 @@ void sweep(IkChain& c, const Goal& g, const IkSettings& settings, int it) {
     // A target at the joint (or an effector on it) gives no direction: skip the joint.
     if (ee > 1e-20f && tt > 1e-20f) {
       const glm::quat delta = dampedFromTo(toEffector, toTarget, ee, tt, settings.maxStepAngle);
-      const glm::quat parentRot = c.parentRotation(s);
-      glm::quat local =
-          ik_detail::renormalize(ik_detail::mul(ik_detail::mul(glm::conjugate(parentRot), delta), c.rotation[s]));
+      const glm::quat& parentRot = c.parentRotation(s);
+      glm::quat local = ik_detail::turnedLocal(parentRot, delta, c.rotation[s]);
       if (c.limit[s]) {
         local = applyJointLimit(*c.limit[s], c.skeleton->rest[c.joints[s]].rotation, local);
         const glm::quat newWorld = ik_detail::renormalize(parentRot * local);
@@ -70,12 +69,51 @@ void sweep(IkChain& c, const Goal& g, const IkSettings& settings, int it) {
   }
 }
 
+// sweep() in the common case, in registers: one target without orientation (its slots
+// run root..effector, each the parent of the next), no limits, no damping, no trace. The
+// same arithmetic as sweep() with fastFromTo and turnedLocal written out, operation for
+// operation, so both give the same bits; GCC keeps these scalars in registers where the
+// glm temporaries of the general loop went through the stack.
+void plainSweep(IkChain& c, const Goal& g) {
+  const glm::vec3* pos = c.positions.data();
+  const glm::quat* rot = c.rotation.data();
+  const int* joints = c.joints.data();
+  Transform* local = c.pose->local.data();
+  const float gx = g.position.x, gy = g.position.y, gz = g.position.z;
+  float ex = pos[g.slot].x, ey = pos[g.slot].y, ez = pos[g.slot].z;
+  for (int s = g.slot - 1; s >= g.rootSlot; --s) {
+    const float px = pos[s].x, py = pos[s].y, pz = pos[s].z;
+    const float ax = ex - px, ay = ey - py, az = ez - pz;  // joint -> effector
+    const float bx = gx - px, by = gy - py, bz = gz - pz;  // joint -> target
+    const float ee = ax * ax + ay * ay + az * az, tt = bx * bx + by * by + bz * bz;
+    if (!(ee > 1e-20f && tt > 1e-20f)) continue;
+    glm::quat delta;
+    const float ll = std::sqrt(ee * tt), d = ax * bx + ay * by + az * bz;
+    const float cx = ay * bz - by * az, cy = az * bx - bz * ax, cz = ax * by - bx * ay;
+    const float n2 = 2.0f * ll * (ll + d);
+    if (!(ll > 0.0f) || d < -0.999999f * ll || !(n2 > 1e-30f && n2 < 1e30f)) {
+      delta = ik_detail::fastFromTo(glm::vec3(ax, ay, az), glm::vec3(bx, by, bz), ee, tt);
+    } else {
+      const float k = 1.0f / std::sqrt(n2);
+      delta = glm::quat((ll + d) * k, cx * k, cy * k, cz * k);
+    }
+    const glm::quat& parentRot = s > 0 ? rot[s - 1] : c.fixedRotation[s];
+    local[joints[s]].rotation = ik_detail::turnedLocal(parentRot, delta, rot[s]);
+    const float k = std::sqrt(ee / tt);
+    ex = px + bx * k;
+    ey = py + by * k;
+    ez = pz + bz * k;
+  }
+}
+
 }  // namespace
 
 IkResult solveCcd(const IkProblem& problem, const IkSettings& settings) {
   IkChain& c = ik_detail::workspace();
   if (IkResult bad; !(bad.message = c.begin(problem, settings)).empty()) return bad;
   IkTrace* trace = settings.trace;
+  const bool plain = !trace && !(settings.maxStepAngle < glm::pi<float>()) && c.goals.size() == 1 &&
+                     !c.goals[0].hasOrientation && !c.hasLimits();
   int it = 0;
   float error = c.maxError();  // of the current pose: measured once per sweep
   while (!c.converged(error, settings) && it < settings.maxIterations) {
@@ -86,7 +124,10 @@ IkResult solveCcd(const IkProblem& problem, const IkSettings& settings) {
         c.rotateJoint(g.slot, ik_detail::renormalize(g.orientation * glm::conjugate(c.rotation[g.slot])));
         c.record(trace, it, IkStep::CcdJoint, c.joints[g.slot]);
       }
-      sweep(c, g, settings, it);
+      if (plain)
+        plainSweep(c, g);
+      else
+        sweep(c, g, settings, it);
       // Bring every slot up to date before the next goal (or the error test) reads them.
       c.forwardKinematics();
     }

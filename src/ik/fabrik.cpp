@@ -149,6 +149,57 @@ struct FabrikScratch {
   std::vector<char> twisted, hasLimitedParent;
 };
 
+// The passes in the common case: one target without orientation (its slots run
+// root..effector, each the parent of the next), no limits, a rigid chain, no trace. The
+// general passes below reduce to this for such a chain, operation for operation (a
+// single proposal per joint, a single child per bone, no twist, no fit), without their
+// per-slot bookkeeping. Returns the number of passes.
+int plainPasses(IkChain& c, const IkSettings& settings, std::vector<float>& boneLength,
+                std::vector<glm::vec3>& reached) {
+  const int m = static_cast<int>(c.joints.size());
+  const Goal& goal = c.goals[0];
+  glm::vec3* pos = c.positions.data();
+  glm::quat* rot = c.rotation.data();
+  Transform* local = c.pose->local.data();
+  const int* joints = c.joints.data();
+  int it = 0;
+  while (!c.converged(settings) && it < settings.maxIterations) {
+    ++it;
+    // Backward: from the target, each joint's parent at bone length towards where it is.
+    reached[m - 1] = goal.weight * goal.position / goal.weight;
+    for (int s = m - 1; s > 0; --s) {
+      const int p = s - 1;
+      glm::vec3 dir = pos[p] - reached[s];
+      float len = glm::length(dir);
+      if (!(len > 1e-12f)) {  // on top of the parent: keep the bone's current direction
+        dir = -(pos[s] - pos[p]);
+        len = glm::length(dir);
+      }
+      reached[p] = len > 1e-12f ? reached[s] + dir * (boneLength[s] / len) : pos[p];
+    }
+    // Forward: from the fixed root, each joint turns its bone onto its child's backward place.
+    for (int s = 0; s < m; ++s) {
+      const glm::quat parentRot = s > 0 ? rot[s - 1] : c.fixedRotation[0];
+      if (s > 0) {
+        const Transform& t = local[joints[s]];
+        rot[s] = ik_detail::renormalize(ik_detail::mul(parentRot, t.rotation));
+        pos[s] = pos[s - 1] + ik_detail::rotate(parentRot, t.translation);
+      }
+      if (s == m - 1) break;
+      const glm::vec3 p = pos[s];
+      const glm::vec3 a = (p + ik_detail::rotate(rot[s], local[joints[s + 1]].translation)) - p, b = reached[s + 1] - p;
+      const float aa = glm::dot(a, a), bb = glm::dot(b, b);
+      if (!(aa > 1e-24f && bb > 1e-24f)) continue;
+      const glm::quat turned =
+          ik_detail::renormalize(ik_detail::mul(ik_detail::mul(glm::conjugate(parentRot), ik_detail::fastFromTo(a, b, aa, bb)), rot[s]));
+      local[joints[s]].rotation = turned;
+      rot[s] = ik_detail::renormalize(ik_detail::mul(parentRot, turned));
+    }
+    if (c.stalled(c.maxError(), settings)) break;
+  }
+  return it;
+}
+
 }  // namespace
 
 IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
@@ -166,6 +217,10 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
   boneLength.assign(m, 0.0f);
   for (int s = 0; s < m; ++s)
     if (c.parentSlot[s] >= 0) boneLength[s] = glm::length(c.position(s) - c.position(c.parentSlot[s]));
+  if (!trace && c.rigid && c.goals.size() == 1 && !c.goals[0].hasOrientation && !c.hasLimits()) {
+    scratch.reached.resize(m);
+    return c.result(plainPasses(c, settings, boneLength, scratch.reached), settings);
+  }
   std::vector<int>& goalOf = scratch.goalOf;
   goalOf.assign(m, -1);
   for (int g = 0; g < static_cast<int>(c.goals.size()); ++g) goalOf[c.goals[g].slot] = g;
@@ -289,7 +344,9 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
         const glm::vec3 a = base * (glm::conjugate(c.rotation[s]) * from[0]);
         local = glm::conjugate(parentRot) * fromToRotation(a, to[0]) * base;
       } else if (from.size() == 1) {
-        local = glm::conjugate(parentRot) * ik_detail::fastFromTo(from[0], to[0], fromSq[0], toSq[0]) * c.rotation[s];
+        // Renormalised below with the other branches.
+        local = ik_detail::mul(ik_detail::mul(glm::conjugate(parentRot), ik_detail::fastFromTo(from[0], to[0], fromSq[0], toSq[0])),
+                               c.rotation[s]);
       } else if (from.size() > 1) {
         for (size_t i = 0; i < from.size(); ++i) {
           from[i] /= std::sqrt(fromSq[i]);
@@ -301,7 +358,8 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
       }
       // A product of unit quaternions: renormalize is exact enough and much cheaper.
       local = ik_detail::renormalize(local);
-      if (from.size() == 1) local = twistForHingeChild(c, s, parentRot, local, reached);
+      // Only a hinge child's plane asks for a twist (checked here first: it is rare).
+      if (from.size() == 1 && s + 1 < m && c.limit[s + 1]) local = twistForHingeChild(c, s, parentRot, local, reached);
       if (c.limit[s]) local = applyJointLimit(*c.limit[s], c.skeleton->rest[c.joints[s]].rotation, local);
       c.pose->local[c.joints[s]].rotation = local;
       c.forwardRotation(s);

@@ -26,88 +26,132 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
   rig = problem.rig;
   const Skeleton& s = *skeleton;
   const int n = s.size();
-  // Mark the union of root..effector paths.
-  std::vector<int>& slotOf = slotOfScratch;
-  std::vector<char>& in = inScratch;
-  slotOf.assign(n, -1);
-  in.assign(n, 0);
-  for (const IkTarget& t : problem.targets) {
+  std::vector<int>& order = orderScratch;
+  order.clear();
+  if (problem.targets.size() == 1) {
+    // One target: the slots are its root..effector path, root first (the preorder of a
+    // path), found by walking up from the effector; no marking, no child search.
+    const IkTarget& t = problem.targets[0];
     const int root = ikRootOf(s, t, twoBone);
     for (int j = t.effector; j >= 0; j = s.parents[j]) {
-      in[j] = 1;
+      order.push_back(j);
       if (j == root) break;
     }
-  }
-  // Depth-first preorder over the marked joints (parents come before children in the
-  // skeleton, so an ascending scan finds children in order).
-  std::vector<int>& order = orderScratch;
-  std::vector<int>& stack = stackScratch;
-  order.clear();
-  stack.clear();
-  for (int j = n - 1; j >= 0; --j)
-    if (in[j] && (s.parents[j] < 0 || !in[s.parents[j]])) stack.push_back(j);
-  while (!stack.empty()) {
-    const int j = stack.back();
-    stack.pop_back();
-    order.push_back(j);
-    for (int c = n - 1; c > j; --c)
-      if (in[c] && s.parents[c] == j) stack.push_back(c);
+    std::reverse(order.begin(), order.end());
+  } else {
+    // Mark the union of root..effector paths.
+    std::vector<char>& in = inScratch;
+    in.assign(n, 0);
+    for (const IkTarget& t : problem.targets) {
+      const int root = ikRootOf(s, t, twoBone);
+      for (int j = t.effector; j >= 0; j = s.parents[j]) {
+        in[j] = 1;
+        if (j == root) break;
+      }
+    }
+    // Depth-first preorder over the marked joints: each marked joint's marked children,
+    // in ascending order, listed once (parents come before children in the skeleton).
+    std::vector<int>& childStart = stackScratch;  // per joint: start of its children in childList
+    std::vector<int>& childList = slotOfScratch;
+    childStart.assign(n + 1, 0);
+    for (int c = 0; c < n; ++c)
+      if (in[c] && s.parents[c] >= 0 && in[s.parents[c]]) ++childStart[s.parents[c] + 1];
+    for (int j = 0; j < n; ++j) childStart[j + 1] += childStart[j];
+    childList.assign(childStart[n], 0);
+    std::vector<int>& fill = fillScratch;
+    fill.assign(childStart.begin(), childStart.end() - 1);
+    for (int c = 0; c < n; ++c)
+      if (in[c] && s.parents[c] >= 0 && in[s.parents[c]]) childList[fill[s.parents[c]]++] = c;
+    std::vector<int>& stack = dfsScratch;
+    stack.clear();
+    for (int j = n - 1; j >= 0; --j)
+      if (in[j] && (s.parents[j] < 0 || !in[s.parents[j]])) stack.push_back(j);
+    while (!stack.empty()) {
+      const int j = stack.back();
+      stack.pop_back();
+      order.push_back(j);
+      for (int k = childStart[j + 1] - 1; k >= childStart[j]; --k) stack.push_back(childList[k]);
+    }
   }
   const int m = static_cast<int>(order.size());
   joints = order;
-  parentSlot.assign(m, -1);
+  // Every slot's entry is written below; fixedParent, fixedRotation and fixedPosition are
+  // read only for slots whose parent lies outside (parentSlot -1).
+  parentSlot.resize(m);
   subtreeSize.assign(m, 1);
-  fixedParent.assign(m, problem.rootTransform);
-  positions.assign(m, glm::vec3(0.0f));
-  rotation.assign(m, glm::quat(1.0f, 0.0f, 0.0f, 0.0f));
+  fixedParent.resize(m);
+  fixedRotation.resize(m);
+  fixedPosition.resize(m);
+  positions.resize(m);
+  rotation.resize(m);
   limit.assign(m, nullptr);
-  for (int i = 0; i < m; ++i) {
-    slotOf[joints[i]] = i;
-    makeUnit(pose->local[joints[i]].rotation);
-  }
-  bool needWorld = false;
-  for (int i = 0; i < m; ++i) {
-    const int p = s.parents[joints[i]];
-    parentSlot[i] = p >= 0 ? slotOf[p] : -1;
-    if (parentSlot[i] < 0 && p >= 0) needWorld = true;
-    if (rig) limit[i] = rig->limitOf(joints[i]);
-  }
-  fixedRotation.assign(m, glm::quat(1.0f, 0.0f, 0.0f, 0.0f));
-  for (int i = m - 1; i >= 0; --i)
-    if (parentSlot[i] >= 0) subtreeSize[parentSlot[i]] += subtreeSize[i];
-  if (needWorld) {
-    const std::vector<glm::mat4> all = computeWorld(s, *pose);
+  // One target: slot i's parent is slot i - 1. Several: through the joint -> slot map.
+  std::vector<int>& slotOf = slotOfScratch;
+  if (problem.targets.size() == 1) {
+    for (int i = 0; i < m; ++i) parentSlot[i] = i - 1;
+    for (int i = m - 1; i > 0; --i) subtreeSize[i - 1] += subtreeSize[i];
+  } else {
+    slotOf.assign(n, -1);
+    for (int i = 0; i < m; ++i) slotOf[joints[i]] = i;
     for (int i = 0; i < m; ++i) {
       const int p = s.parents[joints[i]];
-      if (parentSlot[i] < 0 && p >= 0) fixedParent[i] = problem.rootTransform * all[p];
+      parentSlot[i] = p >= 0 ? slotOf[p] : -1;
     }
+    for (int i = m - 1; i >= 0; --i)
+      if (parentSlot[i] >= 0) subtreeSize[parentSlot[i]] += subtreeSize[i];
   }
-  fixedPosition.assign(m, glm::vec3(0.0f));
-  for (int i = 0; i < m; ++i)
-    if (parentSlot[i] < 0) {
-      fixedRotation[i] = rotationOf(fixedParent[i]);
-      fixedPosition[i] = glm::vec3(fixedParent[i][3]);
+  for (int i = 0; i < m; ++i) makeUnit(pose->local[joints[i]].rotation);
+  if (rig)
+    for (int i = 0; i < m; ++i) limit[i] = rig->limitOf(joints[i]);
+  // The fixed parents: the placement times the world of the joint above the slot (FK of
+  // that joint's ancestors only).
+  const bool identityPlacement = problem.rootTransform == glm::mat4(1.0f);
+  bool fixedRigid = true;
+  for (int i = 0; i < m; ++i) {
+    if (parentSlot[i] >= 0) continue;
+    const int p = s.parents[joints[i]];
+    glm::mat4 parentWorld(1.0f);
+    if (p >= 0) {
+      std::vector<int>& up = stackScratch;
+      up.clear();
+      for (int j = p; j >= 0; j = s.parents[j]) up.push_back(j);
+      parentWorld = pose->local[up.back()].toMatrix();  // as computeWorld: a root's world is its local
+      for (auto it = up.rbegin() + 1; it != up.rend(); ++it)
+        parentWorld = multiplyAffine(parentWorld, pose->local[*it].toMatrix());
     }
-  rigid = true;
-  for (int i = 0; i < m && rigid; ++i) {
-    rigid = pose->local[joints[i]].scale == glm::vec3(1.0f);
-    if (parentSlot[i] < 0) {
-      // The fixed parent must be a rotation (orthonormal columns) for the shortcut.
-      const glm::mat3 l(fixedParent[i]);
-      const glm::mat3 ltl = glm::transpose(l) * l;
-      for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b) rigid = rigid && std::abs(ltl[a][b] - (a == b ? 1.0f : 0.0f)) < 1e-6f;
+    if (identityPlacement && p < 0) {
+      // No placement and no parent: the identity, exactly what the general branch gives.
+      fixedParent[i] = glm::mat4(1.0f);
+      fixedRotation[i] = glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
+      fixedPosition[i] = glm::vec3(0.0f);
+      continue;
     }
+    fixedParent[i] = p >= 0 ? problem.rootTransform * parentWorld : problem.rootTransform;
+    fixedRotation[i] = rotationOf(fixedParent[i]);
+    fixedPosition[i] = glm::vec3(fixedParent[i][3]);
+    // The fixed parent must be a rotation (orthonormal columns) for the rigid shortcut.
+    const glm::mat3 l(fixedParent[i]);
+    const glm::mat3 ltl = glm::transpose(l) * l;
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) fixedRigid = fixedRigid && std::abs(ltl[a][b] - (a == b ? 1.0f : 0.0f)) < 1e-6f;
   }
+  rigid = fixedRigid;
+  for (int i = 0; i < m && rigid; ++i) rigid = pose->local[joints[i]].scale == glm::vec3(1.0f);
   world.assign(rigid ? 0 : m, glm::mat4(1.0f));
   goals.clear();
   for (const IkTarget& t : problem.targets) {
     Goal g;
-    g.slot = slotOf[t.effector];
-    g.rootSlot = slotOf[ikRootOf(s, t, twoBone)];
+    if (problem.targets.size() == 1) {
+      g.slot = m - 1;
+      g.rootSlot = 0;
+    } else {
+      g.slot = slotOf[t.effector];
+      g.rootSlot = slotOf[ikRootOf(s, t, twoBone)];
+    }
     g.position = t.position;
     g.hasOrientation = t.hasOrientation;
-    g.orientation = safeNormalize(t.orientation);
+    // Read only where hasOrientation is set.
+    if (t.hasOrientation) g.orientation = safeNormalize(t.orientation);
     g.weight = t.weight;
     goals.push_back(g);
   }
@@ -133,7 +177,7 @@ void IkChain::forwardSlot(int s) {
 glm::vec3 IkChain::childPosition(int child) const {
   const int s = parentSlot[child];
   const glm::vec3& t = pose->local[joints[child]].translation;
-  if (rigid) return positions[s] + rotation[s] * t;
+  if (rigid) return positions[s] + rotate(rotation[s], t);
   return glm::vec3(world[s] * glm::vec4(t, 1.0f));
 }
 
@@ -145,6 +189,25 @@ void IkChain::forwardKinematics() {
   }
   // forwardSlot's rigid branch, inlined: every iterative solver runs this once a step.
   const Transform* local = pose->local.data();
+#if defined(__SSE2__)
+  // The previous slot's rotation and position stay in registers: along a chain (parent =
+  // previous slot) nothing is read back from memory.
+  __m128 rot = _mm_setzero_ps(), pos = _mm_setzero_ps();
+  for (int s = 0; s < m; ++s) {
+    const int ps = parentSlot[s];
+    const Transform& t = local[joints[s]];
+    __m128 parentRot = rot, parentPos = pos;
+    if (ps != s - 1 || ps < 0) {
+      parentRot = simd::load(ps >= 0 ? rotation[ps] : fixedRotation[s]);
+      parentPos = simd::load3(ps >= 0 ? positions[ps] : fixedPosition[s]);
+    }
+    // t.translation is followed by t.rotation in memory: a 4-float load stays inside t.
+    pos = _mm_add_ps(parentPos, simd::rotate(parentRot, _mm_loadu_ps(&t.translation.x)));
+    rot = simd::renormalize(simd::mul(parentRot, simd::load(t.rotation)));
+    simd::store(rotation[s], rot);
+    simd::store3(positions[s], pos);
+  }
+#else
   for (int s = 0; s < m; ++s) {
     const int ps = parentSlot[s];
     const Transform& t = local[joints[s]];
@@ -155,6 +218,7 @@ void IkChain::forwardKinematics() {
     rotation[s] = renormalize(mul(parentRot, t.rotation));
     positions[s] = p;
   }
+#endif
 }
 
 glm::quat IkChain::rotateJoint(int s, const glm::quat& delta) {
@@ -236,11 +300,24 @@ bool IkChain::straightenIfUnreachable() {
   const float d = glm::length(toTarget);
   if (!(d > reach(g)) || !(d > 0.0f)) return false;
   const glm::vec3 u = toTarget / d;
-  // Slots of a single chain are consecutive, root first.
+  // One target: the slots are its chain, root first, each the parent of the next. Root
+  // down, each joint turns its bone (as its ancestors' turns `turned` left it) onto u;
+  // one FK at the end places the chain. O(chain), where turning each joint's sub-tree
+  // along would be O(chain^2).
+  glm::quat turned(1.0f, 0.0f, 0.0f, 0.0f);
+  glm::quat parentWorld = parentRotation(g.rootSlot);
   for (int s = g.rootSlot; s < g.slot; ++s) {
-    const glm::vec3 bone = position(s + 1) - position(s);
-    if (glm::dot(bone, bone) > 0.0f) rotateJoint(s, fromToRotation(bone, u));
+    const glm::vec3 bone = rotate(turned, position(s + 1) - position(s));
+    glm::quat world = renormalize(mul(turned, rotation[s]));
+    if (glm::dot(bone, bone) > 0.0f) {
+      const glm::quat delta = fromToRotation(bone, u);
+      world = renormalize(mul(delta, world));
+      turned = renormalize(mul(delta, turned));
+    }
+    pose->local[joints[s]].rotation = renormalize(mul(glm::conjugate(parentWorld), world));
+    parentWorld = world;
   }
+  forwardKinematics();
   return true;
 }
 

@@ -7,14 +7,38 @@
 
 #include "ik/ik_solver.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace kinema::ik_detail {
 
-// The quaternion product a * b and the rotation q * v, written out in scalars for the
-// solvers' inner loops (the same formulas as glm's, which GCC's vectoriser turns into
-// shuffle-heavy code when inlined there).
+// The quaternion product a * b and the rotation q * v, written out for the solvers' inner
+// loops (the same formulas as glm's, which GCC's vectoriser turns into shuffle-heavy code
+// when inlined there). With SSE2 the product runs one component per lane, each lane
+// adding its four terms in the scalar order (a negated term added is exactly a term
+// subtracted), so both paths give the same bits.
 inline glm::quat mul(const glm::quat& a, const glm::quat& b) {
+#if defined(__SSE2__)
+  // glm stores x y z w. Lanes: x = aw bx + ax bw + ay bz - az by, y = aw by - ax bz + ay bw
+  // + az bx, z = aw bz + ax by - ay bx + az bw, w = aw bw - ax bx - ay by - az bz.
+  const __m128 A = _mm_loadu_ps(&a.x), B = _mm_loadu_ps(&b.x);
+  const __m128 ax = _mm_shuffle_ps(A, A, _MM_SHUFFLE(0, 0, 0, 0)), ay = _mm_shuffle_ps(A, A, _MM_SHUFFLE(1, 1, 1, 1)),
+               az = _mm_shuffle_ps(A, A, _MM_SHUFFLE(2, 2, 2, 2)), aw = _mm_shuffle_ps(A, A, _MM_SHUFFLE(3, 3, 3, 3));
+  const __m128 t2 = _mm_xor_ps(_mm_mul_ps(ax, _mm_shuffle_ps(B, B, _MM_SHUFFLE(0, 1, 2, 3))),
+                               _mm_set_ps(-0.0f, 0.0f, -0.0f, 0.0f));  // bw bz by bx; + - + -
+  const __m128 t3 = _mm_xor_ps(_mm_mul_ps(ay, _mm_shuffle_ps(B, B, _MM_SHUFFLE(1, 0, 3, 2))),
+                               _mm_set_ps(-0.0f, -0.0f, 0.0f, 0.0f));  // bz bw bx by; + + - -
+  const __m128 t4 = _mm_xor_ps(_mm_mul_ps(az, _mm_shuffle_ps(B, B, _MM_SHUFFLE(2, 3, 0, 1))),
+                               _mm_set_ps(-0.0f, 0.0f, 0.0f, -0.0f));  // by bx bw bz; - + + -
+  const __m128 r = _mm_add_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(aw, B), t2), t3), t4);
+  glm::quat q;
+  _mm_storeu_ps(&q.x, r);
+  return q;
+#else
   return glm::quat(a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z, a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
                    a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w);
+#endif
 }
 inline glm::vec3 rotate(const glm::quat& q, const glm::vec3& v) {
   // t = 2 (q.xyz x v); q v q* = v + w t + q.xyz x t.
@@ -28,11 +52,88 @@ inline glm::vec3 rotate(const glm::quat& q, const glm::vec3& v) {
 // at most one square root, where safeNormalize guards against denormal, huge and NaN input
 // (still the fallback here) at several times the cost in the solvers' inner loops.
 inline glm::quat renormalize(const glm::quat& q) {
+#if defined(__SSE2__)
+  // glm::dot's order, (w w + x x) + (y y + z z), in two lanes.
+  const __m128 Q = _mm_loadu_ps(&q.x), sq = _mm_mul_ps(Q, Q);
+  const __m128 pairs = _mm_add_ps(sq, _mm_shuffle_ps(sq, sq, _MM_SHUFFLE(0, 1, 2, 3)));  // x+w, y+z
+  const float d = _mm_cvtss_f32(_mm_add_ss(pairs, _mm_shuffle_ps(pairs, pairs, _MM_SHUFFLE(1, 1, 1, 1))));
+  if (std::abs(d - 1.0f) < 1e-3f) {
+    glm::quat r;
+    _mm_storeu_ps(&r.x, _mm_mul_ps(Q, _mm_set1_ps(1.5f - 0.5f * d)));
+    return r;
+  }
+#else
   const float d = glm::dot(q, q);
   // Within 1e-3 of unit length one Newton step for 1/sqrt(d) is exact to ~1e-6: no root.
   if (std::abs(d - 1.0f) < 1e-3f) return q * (1.5f - 0.5f * d);
+#endif
   if (d > 0.25f && d < 4.0f) return q * (1.0f / std::sqrt(d));
   return safeNormalize(q);
+}
+
+#if defined(__SSE2__)
+// The same three operations on values held in SSE registers (quaternions as x y z w,
+// 3-vectors as x y z and a lane that is ignored), for the loops that chain them: FK and
+// the CCD sweep keep a rotation in a register from one joint to the next instead of
+// going through glm types in memory. Bit-identical to mul / rotate / renormalize.
+namespace simd {
+inline __m128 load(const glm::quat& q) { return _mm_loadu_ps(&q.x); }
+inline void store(glm::quat& q, __m128 v) { _mm_storeu_ps(&q.x, v); }
+inline __m128 load3(const glm::vec3& v) { return _mm_set_ps(0.0f, v.z, v.y, v.x); }
+inline void store3(glm::vec3& v, __m128 x) {
+  _mm_storel_pi(reinterpret_cast<__m64*>(&v.x), x);
+  _mm_store_ss(&v.z, _mm_shuffle_ps(x, x, _MM_SHUFFLE(2, 2, 2, 2)));
+}
+inline __m128 conjugate(__m128 q) { return _mm_xor_ps(q, _mm_set_ps(0.0f, -0.0f, -0.0f, -0.0f)); }
+inline __m128 mul(__m128 A, __m128 B) {
+  const __m128 ax = _mm_shuffle_ps(A, A, _MM_SHUFFLE(0, 0, 0, 0)), ay = _mm_shuffle_ps(A, A, _MM_SHUFFLE(1, 1, 1, 1)),
+               az = _mm_shuffle_ps(A, A, _MM_SHUFFLE(2, 2, 2, 2)), aw = _mm_shuffle_ps(A, A, _MM_SHUFFLE(3, 3, 3, 3));
+  const __m128 t2 = _mm_xor_ps(_mm_mul_ps(ax, _mm_shuffle_ps(B, B, _MM_SHUFFLE(0, 1, 2, 3))),
+                               _mm_set_ps(-0.0f, 0.0f, -0.0f, 0.0f));
+  const __m128 t3 = _mm_xor_ps(_mm_mul_ps(ay, _mm_shuffle_ps(B, B, _MM_SHUFFLE(1, 0, 3, 2))),
+                               _mm_set_ps(-0.0f, -0.0f, 0.0f, 0.0f));
+  const __m128 t4 = _mm_xor_ps(_mm_mul_ps(az, _mm_shuffle_ps(B, B, _MM_SHUFFLE(2, 3, 0, 1))),
+                               _mm_set_ps(-0.0f, 0.0f, 0.0f, -0.0f));
+  return _mm_add_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(aw, B), t2), t3), t4);
+}
+// q.xyz x v, lane by lane in rotate()'s order (a.y b.z - a.z b.y, ...).
+inline __m128 cross(__m128 a, __m128 b) {
+  const __m128 ayzx = _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 0, 2, 1)), azxy = _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 1, 0, 2));
+  const __m128 byzx = _mm_shuffle_ps(b, b, _MM_SHUFFLE(3, 0, 2, 1)), bzxy = _mm_shuffle_ps(b, b, _MM_SHUFFLE(3, 1, 0, 2));
+  return _mm_sub_ps(_mm_mul_ps(ayzx, bzxy), _mm_mul_ps(azxy, byzx));
+}
+inline __m128 rotate(__m128 q, __m128 v) {
+  const __m128 t = _mm_mul_ps(_mm_set1_ps(2.0f), cross(q, v));
+  return _mm_add_ps(_mm_add_ps(v, _mm_mul_ps(_mm_shuffle_ps(q, q, _MM_SHUFFLE(3, 3, 3, 3)), t)), cross(q, t));
+}
+}  // namespace simd
+#endif
+
+#if defined(__SSE2__)
+namespace simd {
+inline __m128 renormalize(__m128 Q) {
+  const __m128 sq = _mm_mul_ps(Q, Q);
+  const __m128 pairs = _mm_add_ps(sq, _mm_shuffle_ps(sq, sq, _MM_SHUFFLE(0, 1, 2, 3)));
+  const float d = _mm_cvtss_f32(_mm_add_ss(pairs, _mm_shuffle_ps(pairs, pairs, _MM_SHUFFLE(1, 1, 1, 1))));
+  if (std::abs(d - 1.0f) < 1e-3f) return _mm_mul_ps(Q, _mm_set1_ps(1.5f - 0.5f * d));
+  glm::quat q;
+  store(q, Q);
+  return load(ik_detail::renormalize(q));
+}
+}  // namespace simd
+#endif
+
+// The local rotation that turns a joint of world rotation `world` by the world turn
+// `delta`, under a parent of world rotation `parentRot`: renormalize(parentRot^-1 delta world).
+inline glm::quat turnedLocal(const glm::quat& parentRot, const glm::quat& delta, const glm::quat& world) {
+#if defined(__SSE2__)
+  glm::quat q;
+  simd::store(q, simd::renormalize(simd::mul(simd::mul(simd::conjugate(simd::load(parentRot)), simd::load(delta)),
+                                             simd::load(world))));
+  return q;
+#else
+  return renormalize(mul(mul(glm::conjugate(parentRot), delta), world));
+#endif
 }
 
 // A valid pose may hold non-unit rotations (they still encode a rotation); the solvers
@@ -90,7 +191,7 @@ struct IkChain {
   std::vector<Goal> goals;
   std::vector<float> history;       // error after each iteration, for stall detection
   // build()'s scratch, kept so that a reused chain (see workspace()) allocates nothing.
-  std::vector<int> slotOfScratch, orderScratch, stackScratch;
+  std::vector<int> slotOfScratch, orderScratch, stackScratch, fillScratch, dfsScratch;
   std::vector<char> inScratch;
   // No scale anywhere (slots and fixed parents): FK then needs only quaternion products,
   // and a world matrix is its rotation plus its position.
@@ -108,7 +209,7 @@ struct IkChain {
   // The same after only s's local rotation changed (its position stays where it is).
   void forwardRotation(int s) {
     if (!rigid) return forwardSlot(s);
-    rotation[s] = renormalize(parentRotation(s) * pose->local[joints[s]].rotation);
+    rotation[s] = renormalize(mul(parentRotation(s), pose->local[joints[s]].rotation));
   }
   glm::vec3 position(int s) const { return positions[s]; }
   // Where a child slot sits given its parent's current transform (the child's own world

@@ -139,8 +139,8 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
     job.startTurn = &deltaA;
     job.midTurn = &deltaB;
     job.runUnchecked();  // inputs come from a validated problem
-    pose.local[a].rotation = ik_detail::renormalize(pose.local[a].rotation * correctionA);
-    pose.local[b].rotation = ik_detail::renormalize(pose.local[b].rotation * correctionB);
+    pose.local[a].rotation = ik_detail::renormalize(ik_detail::mul(pose.local[a].rotation, correctionA));
+    pose.local[b].rotation = ik_detail::renormalize(ik_detail::mul(pose.local[b].rotation, correctionB));
     // The world turns behind the corrections: of the start joint, and of everything from
     // the mid joint down (the mid's own turn after the start's).
     const glm::quat deltaBA = ik_detail::mul(deltaA, deltaB);
@@ -157,14 +157,14 @@ IkResult solveTwoBone(const IkProblem& problem, const IkSettings& settings) {
     if (target.hasOrientation) {
       const glm::quat rcp = ik_detail::renormalize(path.rotation[ic - 1]);
       // The effector's parent turned with the root, then with the middle joint.
-      effectorParentRot = ik_detail::renormalize(deltaBA * rcp);
+      effectorParentRot = ik_detail::renormalize(ik_detail::mul(deltaBA, rcp));
       pose.local[c].rotation = ik_detail::renormalize(glm::conjugate(effectorParentRot) * ik_detail::renormalize(target.orientation));
       if (problem.rig)
         if (const JointLimit* l = problem.rig->limitOf(c))
           pose.local[c].rotation = applyJointLimit(*l, s.rest[c].rotation, pose.local[c].rotation);
     }
     // Where the effector ended: pb turned about pa by deltaA, pc about pb by deltaBA.
-    glm::vec3 finalC = pa + deltaA * (pb - pa) + deltaBA * (pc - pb);
+    glm::vec3 finalC = pa + ik_detail::rotate(deltaA, pb - pa) + ik_detail::rotate(deltaBA, pc - pb);
     if (limited || settings.trace) {
       path.compute(s, pose, problem.rootTransform, a, c);
       finalC = path.position[ic];

@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "core/rotation.h"
+#include "ik/ik_chain.h"
 
 namespace kinema {
 
@@ -113,13 +114,13 @@ void TwoBoneIkJob::runUnchecked() const {
     // After dA the mid joint sits at start + l1 midDir; its bone must point at
     // start + d u, a vector of length l2. Taken back through dA, dB needs no new frame.
     const glm::vec3 lower = (d * u - l1 * midDir) * inv2;
-    dB = unitFromTo(bc * inv2, glm::conjugate(dA) * lower);
+    dB = unitFromTo(bc * inv2, ik_detail::rotate(glm::conjugate(dA), lower));
   } else {
     dA = fromToRotation(endPosition - startPosition, u);  // a zero-length bone: aim only
   }
   // A world turn D of a joint with world rotation R is the local correction R^-1 D R.
-  glm::quat cA = glm::conjugate(startRotation) * dA * startRotation;
-  glm::quat cB = glm::conjugate(midRotation) * dB * midRotation;
+  glm::quat cA = ik_detail::mul(ik_detail::mul(glm::conjugate(startRotation), dA), startRotation);
+  glm::quat cB = ik_detail::mul(ik_detail::mul(glm::conjugate(midRotation), dB), midRotation);
   if (weight < 1.0f) {
     const glm::quat identity(1.0f, 0.0f, 0.0f, 0.0f);
     cA = slerpShortest(identity, cA, weight);
