@@ -4,6 +4,7 @@
 # size given). The drag scripts come from make_ik_drag_script.py; each run's --dump-state is
 # checked for the IK target it adds, so a script that misses the hand fails here instead of
 # timing a box select. Preferences, recovery files and caches go to a temporary folder.
+# Each size ends with the ratio of the two medians (the issue 20 bound: at most 1.5).
 # Usage: bench/editor/frame_times.sh [build/src/kinema] [WIDTHxHEIGHT]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -18,14 +19,25 @@ run() {  # size script [options...]
     LIBGL_ALWAYS_SOFTWARE=1 MESA_GL_VERSION_OVERRIDE=3.3 \
     sh "$root/tests/tools/xvfb_run.sh" "${size}x24" "$kinema" edit --size "$size" --script "$script" --report-frame-times "$@" 2>&1
 }
+ratio() {  # frames.txt empty.txt label: the two medians' ratio
+  python3 - "$@" <<'PY'
+import re, sys
+def median(path):
+    m = re.findall(r"median ([0-9.]+) ms", open(path).read())
+    return float(m[-1]) if m else float("nan")
+a, b = median(sys.argv[1]), median(sys.argv[2])
+print(f"{sys.argv[3]}: {a:.2f} / {b:.2f} ms = {a / b:.2f}x")
+PY
+}
 for size in $sizes; do
   script=$root/bench/editor/ik_drag_$size.jsonl
   echo "$size IK drag:"
-  run "$size" "$script" --dump-state "$tmp/state.json"
+  run "$size" "$script" --dump-state "$tmp/state.json" | tee "$tmp/drag.txt"
   if ! python3 -c 'import json,sys; sys.exit(0 if len(json.load(open(sys.argv[1]))["ik_targets"]) == 1 else 1)' "$tmp/state.json"; then
     echo "frame_times.sh: $script added no IK target (it missed the hand: regenerate it with make_ik_drag_script.py)" >&2
     exit 1
   fi
   echo "$size empty ImGui frame:"
-  run "$size" "$script" --empty-frame
+  run "$size" "$script" --empty-frame | tee "$tmp/empty.txt"
+  ratio "$tmp/drag.txt" "$tmp/empty.txt" "$size IK drag / empty frame"
 done

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Editor frame time on llvmpipe while a clip plays (600 frames): the CMU take (shared data)
 # with the onion skin off, then on (2 ghosts before, 2 after: Alt+O), at 1280x800 and
-# 1600x1000 (or the one size given). Preferences, recovery files and caches go to a
-# temporary folder.
+# 1600x1000 (or the one size given), and an empty ImGui frame of the same size; each size
+# ends with the ratios of the medians to the empty frame's (the issue 20 bound: at most 1.5).
+# Preferences, recovery files and caches go to a temporary folder.
 # Usage: bench/editor/playback_frame_times.sh [build/src/kinema] [file.bvh] [WIDTHxHEIGHT]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -21,7 +22,20 @@ run() {  # size [options...]
     LIBGL_ALWAYS_SOFTWARE=1 MESA_GL_VERSION_OVERRIDE=3.3 \
     sh "$root/tests/tools/xvfb_run.sh" "${size}x24" "$kinema" edit "$file" --size "$size" --report-frame-times "$@" 2>&1
 }
+ratio() {  # frames.txt empty.txt label: the two medians' ratio
+  python3 - "$@" <<'PY'
+import re, sys
+def median(path):
+    m = re.findall(r"median ([0-9.]+) ms", open(path).read())
+    return float(m[-1]) if m else float("nan")
+a, b = median(sys.argv[1]), median(sys.argv[2])
+print(f"{sys.argv[3]}: {a:.2f} / {b:.2f} ms = {a / b:.2f}x")
+PY
+}
 for size in $sizes; do
-  echo "$size playback, onion skin off:"; run "$size" --script "$root/bench/editor/playback.jsonl"
-  echo "$size playback, onion skin on (4 ghosts):"; run "$size" --script "$tmp/onion.jsonl"
+  echo "$size playback, onion skin off:"; run "$size" --script "$root/bench/editor/playback.jsonl" | tee "$tmp/off.txt"
+  echo "$size playback, onion skin on (4 ghosts):"; run "$size" --script "$tmp/onion.jsonl" | tee "$tmp/on.txt"
+  echo "$size empty ImGui frame:"; run "$size" --script "$root/bench/editor/playback.jsonl" --empty-frame | tee "$tmp/empty.txt"
+  ratio "$tmp/off.txt" "$tmp/empty.txt" "$size playback, onion skin off / empty frame"
+  ratio "$tmp/on.txt" "$tmp/empty.txt" "$size playback, onion skin on / empty frame"
 done

@@ -29,6 +29,8 @@ CLI::App* addEditCommand(CLI::App& app, EditOptions& o) {
                   "Text and widget scale from 0.75 to 3 for this run (default: Edit > Preferences, saved)");
   cmd->add_option("--max-fps", o.maxFps, "Draw at most N frames per second (1 to 1000; for tests and slow machines)");
   cmd->add_flag("--report-frame-times", o.reportFrameTimes, "Print mean and median frame times (ms) on stderr at exit");
+  cmd->add_flag("--report-frame-passes", o.reportFramePasses,
+                "Time each pass of every frame (with glFinish between them) and print the medians on stderr at exit");
   cmd->add_flag("--empty-frame", o.emptyFrame, "Draw only an empty ImGui frame (baseline for --report-frame-times)");
   addUpOption(cmd, o.up);
   cmd->add_option("--compare", o.compare, "Open in Teach > Compare Solvers with this preset (kinema demo list)");
@@ -97,12 +99,16 @@ int runEdit(const EditOptions& o) {
   options.reportFrameTimes = o.reportFrameTimes;
   options.maxFps = std::max(o.maxFps, 0);
   options.emptyFrame = o.emptyFrame;
+  options.reportFramePasses = o.reportFramePasses;
   const EditorWindowResult result = runEditorWindow(state, options);
   if (!result.opened) return badInput("cannot open the editor window: " + result.error + " (kinema render works without one)");
   if (!result.error.empty()) return badInput(result.error);
   if (o.reportFrameTimes)
     std::fprintf(stderr, "frame times over %lld frames (first tenth left out): mean %.2f ms, median %.2f ms\n",
                  result.frames, result.meanFrameMs, result.medianFrameMs);
+  if (o.reportFramePasses)
+    std::fprintf(stderr, "frame passes over %lld frames (first tenth left out, glFinish after each):\n%s", result.frames,
+                 result.framePasses.c_str());
   return kExitOk;
 }
 

@@ -17,6 +17,7 @@ struct EditOptions {
   std::string size;
   int maxFps = -1;  // -1: not given (no cap beyond vsync)
   bool reportFrameTimes = false;
+  bool reportFramePasses = false;
   bool emptyFrame = false;
   std::string compare;  // open straight into Teach > Compare Solvers with this preset
   bool listCommands = false;  // print every command and its keys as markdown, open no window

@@ -91,8 +91,8 @@ void packJointTexels(const glm::mat4& m, float* out) {
 MeshRenderer::~MeshRenderer() {
   release();
   if (!program_.id()) return;  // init() never succeeded: no GL objects (and maybe no GL loaded)
-  const GLuint buffers[] = {jointBuffer_, feedbackBuffer_, emptyBuffer_, ghostBuffer_};
-  glDeleteBuffers(4, buffers);
+  const GLuint buffers[] = {jointBuffer_, feedbackBuffer_, emptyBuffer_, ghostBuffer_, cpuBuffer_};
+  glDeleteBuffers(5, buffers);
   const GLuint textures[] = {jointTexture_, emptyTexture_, ghostTexture_};
   glDeleteTextures(3, textures);
   glDeleteFramebuffers(1, &feedbackFbo_);
@@ -102,6 +102,7 @@ MeshRenderer::~MeshRenderer() {
 void MeshRenderer::release() {
   for (GpuPrimitive& p : primitives_) {
     glDeleteVertexArrays(1, &p.vao);
+    glDeleteVertexArrays(1, &p.cpuVao);
     const GLuint buffers[] = {p.vertices, p.influences, p.indices, p.morphBuffer};
     glDeleteBuffers(4, buffers);
     glDeleteTextures(1, &p.morphTexture);
@@ -134,6 +135,10 @@ std::string MeshRenderer::init() {
   emptyTexture_ = makeBufferTexture(emptyBuffer_, GL_RGBA32F);
   glBindBuffer(GL_TEXTURE_BUFFER, 0);
   glGenBuffers(1, &feedbackBuffer_);
+  glGenBuffers(1, &cpuBuffer_);
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const std::string name = renderer ? renderer : "";
+  cpuDeformation_ = name.find("llvmpipe") != std::string::npos || name.find("softpipe") != std::string::npos;
   // Draws need a complete framebuffer even with the rasterizer off, and a headless context
   // has none of its own: deform() binds this 1x1 one.
   glGenRenderbuffers(1, &feedbackColor_);
@@ -167,6 +172,7 @@ bool MeshRenderer::needsUpload(const Scene& scene) const { return keyOf(scene) !
 std::string MeshRenderer::upload(const Scene& scene) {
   release();
   warnings_.clear();
+  allNormals_ = true;
   scene_ = &scene;
   uploadKey_ = keyOf(scene);
   primitivesOfMesh_.resize(scene.meshes.size());
@@ -241,6 +247,19 @@ std::string MeshRenderer::upload(const Scene& scene) {
       glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(src.indices.size() * sizeof(uint32_t)),
                    src.indices.data(), GL_STATIC_DRAW);
       glBindVertexArray(0);
+      // The CPU-deformed twin: texcoords and indices from the same buffers; positions and
+      // normals are pointed at the frame's deformed vertices when drawn.
+      glGenVertexArrays(1, &p.cpuVao);
+      glBindVertexArray(p.cpuVao);
+      glBindBuffer(GL_ARRAY_BUFFER, p.vertices);
+      glEnableVertexAttribArray(2);
+      glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(PackedVertex), reinterpret_cast<void*>(offsetof(PackedVertex, texcoord)));
+      glBindBuffer(GL_ARRAY_BUFFER, cpuBuffer_);
+      glEnableVertexAttribArray(0);
+      glEnableVertexAttribArray(1);
+      glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, p.indices);
+      glBindVertexArray(0);
+      allNormals_ = allNormals_ && p.hasNormals;
 
       p.morphCount = std::min(static_cast<int>(src.targets.size()), kMaxMorphTargets);
       if (static_cast<int>(src.targets.size()) > kMaxMorphTargets)
@@ -410,8 +429,89 @@ void MeshRenderer::bindInstance(const MeshFrame& frame, int instance, const GpuP
   glActiveTexture(GL_TEXTURE0);
 }
 
+bool MeshRenderer::cpuEligible() const { return cpuDeformation_ && allNormals_; }
+
+bool MeshRenderer::appendCpuPose(const MeshFrame& frame, CpuPose& pose) {
+  SceneDeformationJob job;
+  job.scene = scene_;
+  job.world = frame.world;
+  job.morphWeights = frame.morphWeights;
+  job.out = &cpuDeformed_;
+  if (!job.validate().empty() || !job.run()) return false;
+  pose.assign(scene_->meshInstances.size(), {});
+  for (const DeformedPrimitive& d : cpuDeformed_) {
+    if (d.instance < 0 || d.instance >= static_cast<int>(pose.size()) || d.normals.size() != d.positions.size())
+      return false;
+    std::vector<long long>& offsets = pose[d.instance];
+    if (d.primitive >= static_cast<int>(offsets.size())) offsets.resize(d.primitive + 1, -1);
+    offsets[d.primitive] = static_cast<long long>(cpuScratch_.size());
+    const size_t at = cpuScratch_.size();
+    cpuScratch_.resize(at + d.positions.size() * 6);
+    float* out = &cpuScratch_[at];
+    for (size_t v = 0; v < d.positions.size(); ++v, out += 6) {
+      out[0] = d.positions[v].x;
+      out[1] = d.positions[v].y;
+      out[2] = d.positions[v].z;
+      out[3] = d.normals[v].x;
+      out[4] = d.normals[v].y;
+      out[5] = d.normals[v].z;
+    }
+  }
+  return true;
+}
+
+void MeshRenderer::uploadCpuScratch() {
+  if (cpuScratch_.empty()) cpuScratch_.assign(6, 0.0f);
+  glBindBuffer(GL_ARRAY_BUFFER, cpuBuffer_);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(cpuScratch_.size() * sizeof(float)), cpuScratch_.data(),
+               GL_STREAM_DRAW);
+}
+
+void MeshRenderer::drawInstancesCpu(const MeshFrame& frame, const CpuPose& pose) {
+  const glm::mat4 identity(1.0f);
+  const glm::mat3 identity3(1.0f);
+  for (size_t i = 0; i < scene_->meshInstances.size() && i < pose.size(); ++i) {
+    const MeshInstance& inst = scene_->meshInstances[i];
+    if (!uploadedMesh(inst.mesh)) continue;
+    for (int index : primitivesOfMesh_[inst.mesh]) {
+      const GpuPrimitive& p = primitives_[index];
+      if (p.indexCount == 0 || p.primitive >= static_cast<int>(scene_->meshes[inst.mesh].primitives.size())) continue;
+      if (p.primitive >= static_cast<int>(pose[i].size()) || pose[i][p.primitive] < 0) continue;
+      if (static_cast<long long>(scene_->meshes[inst.mesh].primitives[p.primitive].positions.size()) != p.vertexCount)
+        continue;
+      bindInstance(frame, static_cast<int>(i), p, false);
+      // Already in world space, morphed and skinned: the shader's unskinned path, identity model.
+      glUniform1i(program_.uniform("uSkinning"), 0);
+      glUniformMatrix4fv(program_.uniform("uModel"), 1, GL_FALSE, glm::value_ptr(identity));
+      glUniformMatrix3fv(program_.uniform("uModelNormal"), 1, GL_FALSE, glm::value_ptr(identity3));
+      glUniform1i(program_.uniform("uMorphCount"), 0);
+      glBindVertexArray(p.cpuVao);
+      glBindBuffer(GL_ARRAY_BUFFER, cpuBuffer_);
+      const size_t bytes = static_cast<size_t>(pose[i][p.primitive]) * sizeof(float);
+      glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), reinterpret_cast<void*>(bytes));
+      glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), reinterpret_cast<void*>(bytes + 3 * sizeof(float)));
+      glDrawElements(GL_TRIANGLES, p.indexCount, GL_UNSIGNED_INT, nullptr);
+    }
+  }
+}
+
 void MeshRenderer::draw(const MeshFrame& frame, const glm::mat4& viewProjection, const glm::mat4& view) {
   if (!scene_ || !frame.world || primitives_.empty()) return;
+  if (cpuEligible() && frame.weightJoint < 0) {
+    cpuScratch_.clear();
+    if (appendCpuPose(frame, cpuPose_)) {
+      uploadCpuScratch();
+      glUseProgram(program_.id());
+      glUniformMatrix4fv(program_.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
+      glUniformMatrix4fv(program_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
+      glUniform1i(program_.uniform("uGhost"), 0);
+      glEnable(GL_DEPTH_TEST);
+      glDisable(GL_CULL_FACE);
+      drawInstancesCpu(frame, cpuPose_);
+      unbindMeshDrawState();
+      return;
+    }
+  }
   uploadJointMatrices(frame);
   glUseProgram(program_.id());
   glUniformMatrix4fv(program_.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
@@ -441,6 +541,22 @@ void MeshRenderer::drawInstances(const MeshFrame& frame, bool weightsView) {
 
 void MeshRenderer::drawGhosts(const std::vector<MeshGhost>& ghosts, const glm::mat4& viewProjection, const glm::mat4& view) {
   if (!scene_ || primitives_.empty() || ghosts.empty()) return;
+  // CPU deformation: every ghost's vertices in one upload, then the same two passes.
+  bool cpu = cpuEligible();
+  if (cpu) {
+    cpuScratch_.clear();
+    cpuGhostPoses_.resize(ghosts.size());
+    for (size_t g = 0; g < ghosts.size() && cpu; ++g) {
+      MeshFrame frame;
+      frame.world = ghosts[g].world;
+      frame.morphWeights = ghosts[g].morphWeights;
+      if (!frame.world)
+        cpuGhostPoses_[g].clear();
+      else
+        cpu = appendCpuPose(frame, cpuGhostPoses_[g]);
+    }
+    if (cpu) uploadCpuScratch();
+  }
   // Every ghost's joints in one buffer of its own, pose after pose, uploaded once: as many
   // ghosts as the driver's texture buffers hold (the rest are left out).
   GLint maxTexels = 0;
@@ -482,7 +598,10 @@ void MeshRenderer::drawGhosts(const std::vector<MeshGhost>& ghosts, const glm::m
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
     glUniform1i(program_.uniform("uGhost"), 0);
-    drawInstances(frame, false);
+    if (cpu)
+      drawInstancesCpu(frame, cpuGhostPoses_[g]);
+    else
+      drawInstances(frame, false);
     // ...then that surface alone in the tint, blended once per pixel.
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_FALSE);
@@ -490,7 +609,10 @@ void MeshRenderer::drawGhosts(const std::vector<MeshGhost>& ghosts, const glm::m
     glEnable(GL_BLEND);
     glUniform1i(program_.uniform("uGhost"), 1);
     glUniform4fv(program_.uniform("uGhostColor"), 1, glm::value_ptr(ghosts[g].color));
-    drawInstances(frame, false);
+    if (cpu)
+      drawInstancesCpu(frame, cpuGhostPoses_[g]);
+    else
+      drawInstances(frame, false);
   }
   jointSlotBase_ = 0;
   glUniform1i(program_.uniform("uGhost"), 0);

@@ -78,6 +78,16 @@ class MeshRenderer {
   // when there is nothing to draw.
   Bounds deformedBounds(const MeshFrame& frame);
 
+  // Where the vertices are deformed for draw() and drawGhosts(): true, on the CPU by
+  // SceneDeformationJob, uploaded each frame, drawn with the shader's unskinned path;
+  // false, in the vertex shader. init() picks the CPU for software rasterisers (llvmpipe,
+  // softpipe): they run vertex shaders on the CPU anyway, one thread, and the shader's
+  // eight masked influence loops with texel fetches cost about 0.5 us a triangle there
+  // (4 ms a frame for the default character) against microseconds for the SIMD job. The
+  // weight heat view and primitives without normals always take the shader's path.
+  void setCpuDeformation(bool on) { cpuDeformation_ = on; }
+  bool cpuDeformation() const { return cpuDeformation_; }
+
   // Most morph targets a primitive blends (more are ignored, with a warning from upload()).
   static constexpr int kMaxMorphTargets = 32;
   // Warnings upload() found (too many morph targets...), one line each.
@@ -87,6 +97,7 @@ class MeshRenderer {
   struct GpuPrimitive {
     int mesh = -1, primitive = -1;
     GLuint vao = 0, vertices = 0, influences = 0, indices = 0;
+    GLuint cpuVao = 0;  // CPU-deformed drawing: positions and normals from cpuBuffer_, texcoords and indices shared
     GLuint morphBuffer = 0, morphTexture = 0;
     int vertexCount = 0, indexCount = 0, morphCount = 0;
     bool hasNormals = false, morphNormals = false, skinned = false;
@@ -95,6 +106,14 @@ class MeshRenderer {
   void uploadJointMatrices(const MeshFrame& frame);
   void appendJointTexels(const std::vector<glm::mat4>& world);  // one pose's texels onto jointScratch_
   void drawInstances(const MeshFrame& frame, bool weightsView);
+  // CPU deformation: one pose's deformed vertices appended to cpuScratch_ (position, normal
+  // interleaved), with the float offset of each instance's primitive (-1: none). False when
+  // the job's output does not match the uploaded primitives (then the shader path draws).
+  using CpuPose = std::vector<std::vector<long long>>;  // [instance][primitive]
+  bool appendCpuPose(const MeshFrame& frame, CpuPose& pose);
+  void uploadCpuScratch();
+  void drawInstancesCpu(const MeshFrame& frame, const CpuPose& pose);
+  bool cpuEligible() const;
   bool uploadedMesh(int mesh) const;
   void release();
 
@@ -112,6 +131,13 @@ class MeshRenderer {
   std::vector<float> jointScratch_;
   std::vector<glm::mat4> skinScratch_;
   std::vector<std::string> warnings_;
+  bool cpuDeformation_ = false;
+  bool allNormals_ = true;  // every uploaded primitive has its own normals
+  GLuint cpuBuffer_ = 0;
+  std::vector<float> cpuScratch_;
+  std::vector<DeformedPrimitive> cpuDeformed_;
+  CpuPose cpuPose_;
+  std::vector<CpuPose> cpuGhostPoses_;
   // What upload() saw: the scene's address and its mesh, skin, instance and image arrays.
   std::vector<const void*> uploadKey_;
   static std::vector<const void*> keyOf(const Scene& scene);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 
+#include "render/frame_pass_timer.h"
 #include "render/mesh_renderer.h"
 #include "render/shader_sources.h"
 #include "render/shape_meshes.h"
@@ -174,27 +175,36 @@ void SkeletonRenderer::drawGhosts(const std::vector<SkeletonDrawList>& ghosts, c
 
 void SkeletonRenderer::draw(const FrameDescription& frame) {
   if (frame.width <= 0 || frame.height <= 0) return;
+  auto mark = [&frame](const char* pass) {
+    if (frame.timer) frame.timer->mark(pass);
+  };
   glViewport(frame.x, frame.y, frame.width, frame.height);
-  glEnable(GL_SCISSOR_TEST);
   glScissor(frame.x, frame.y, frame.width, frame.height);
-  glClearColor(frame.background.r, frame.background.g, frame.background.b, frame.background.a);
-  glClearDepth(1.0);
   glDepthMask(GL_TRUE);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  if (frame.clear) {
+    glEnable(GL_SCISSOR_TEST);
+    glClearColor(frame.background.r, frame.background.g, frame.background.b, frame.background.a);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  }
   glDisable(GL_SCISSOR_TEST);
   glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);  // thin octahedra seen edge-on; the shader lights back faces too
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
+  mark("3D view: clear");
 
   const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
   const glm::mat4 view = frame.camera.view();
   const glm::mat4 viewProjection = frame.camera.projection(aspect) * view;
   if (frame.showGrid) drawGrid(frame, viewProjection);
+  mark("3D view: grid");
   if (frame.meshes && frame.meshes->renderer) frame.meshes->renderer->draw(frame.meshes->frame, viewProjection, view);
+  mark("3D view: mesh");
   if (frame.meshes && frame.meshes->renderer && frame.meshGhosts && !frame.meshGhosts->empty())
     frame.meshes->renderer->drawGhosts(*frame.meshGhosts, viewProjection, view);
+  mark("3D view: mesh ghosts");
   if (frame.skeleton && frame.bones != BoneDisplay::None) {
     glUseProgram(shaded_.id());
     glUniformMatrix4fv(shaded_.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
@@ -231,7 +241,9 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
       glUseProgram(shaded_.id());
     }
   }
+  mark("3D view: bones");
   if (frame.ghosts && !frame.ghosts->empty()) drawGhosts(*frame.ghosts, viewProjection, view);
+  mark("3D view: bone ghosts");
   if (frame.overlay && frame.lineScale != 1.0f) {
     OverlayDrawList scaled = *frame.overlay;
     scaled.scaleWidths(frame.lineScale);
@@ -241,6 +253,7 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
   }
   glBindVertexArray(0);
   glUseProgram(0);
+  mark("3D view: overlay");
 }
 
 }  // namespace kinema

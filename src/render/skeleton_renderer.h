@@ -11,6 +11,7 @@
 
 namespace kinema {
 
+class FramePassTimer;
 struct MeshDraw;
 struct MeshGhost;
 
@@ -27,6 +28,10 @@ struct FrameDescription {
   float sceneRadius = 1.0f;                 // sizes the grid
   bool showGrid = true;
   glm::vec4 background{0.235f, 0.235f, 0.235f, 1.0f};  // Blender's viewport grey
+  // false: the caller has already cleared the viewport to `background` and depth 1 (a
+  // window cleared whole), so draw() skips its own clear, which a software rasteriser pays
+  // for pixel by pixel when it is limited to part of the framebuffer.
+  bool clear = true;
   const MeshDraw* meshes = nullptr;  // shaded (skinned) meshes, drawn before the bones; may be null
   BoneDisplay bones = BoneDisplay::On;
   const OverlayDrawList* overlay = nullptr;             // gizmos, handles, ...; drawn last
@@ -40,6 +45,8 @@ struct FrameDescription {
   // with their renderer (so before the bones, whose x-ray pass would clear the body's depth).
   // Needs `meshes`; may be null.
   const std::vector<MeshGhost>* meshGhosts = nullptr;
+  // Measurement only (kinema edit --report-frame-passes): each pass is marked on it. May be null.
+  FramePassTimer* timer = nullptr;
 };
 
 // Draws grid, axes, bones and joints with OpenGL 3.3 core into whatever framebuffer is

@@ -39,11 +39,15 @@ std::vector<glm::mat4> posedWorld(const Scene& scene) {
   return computeWorld(scene.skeleton, pose);
 }
 
-Image render(HeadlessBackend backend, const Scene& scene, const std::vector<glm::mat4>& world) {
+// deformation: -1 as the renderer chose, 0 in the vertex shader, 1 on the CPU
+// (MeshRenderer::setCpuDeformation). `ghosts`: onion-skin ghosts of the body, may be null.
+Image render(HeadlessBackend backend, const Scene& scene, const std::vector<glm::mat4>& world, int deformation = -1,
+             const std::vector<MeshGhost>* ghosts = nullptr) {
   Result<std::unique_ptr<HeadlessRenderer>> opened = HeadlessRenderer::open(backend, kWidth, kHeight);
   EXPECT_TRUE(opened.ok()) << (opened ? "" : opened.error());
   if (!opened) return Image();
   HeadlessRenderer& renderer = *opened.value();
+  if (deformation >= 0) renderer.meshes().setCpuDeformation(deformation == 1);
   EXPECT_EQ(renderer.meshes().upload(scene), "");
   const std::vector<char> skinJoints = skinJointMask(scene);
   SkeletonDrawList list;
@@ -58,6 +62,7 @@ Image render(HeadlessBackend backend, const Scene& scene, const std::vector<glm:
   FrameDescription frame;
   frame.skeleton = &list;
   frame.meshes = &meshes;
+  frame.meshGhosts = ghosts;
   frame.bones = BoneDisplay::None;
   Bounds bounds = jointBounds(world);
   bounds.add(bounds.min - glm::vec3(0.15f));  // the body reaches past the joints a little
@@ -91,6 +96,43 @@ TEST(DefaultCharacterRender, PosedBodyMatchesGoldenWithEglAndOsMesa) {
   const int d2 = differingPixels(osmesa, reference.value(), 8);
   EXPECT_GE(d2, 0);
   EXPECT_LE(d2, kWidth * kHeight / 1000) << "osmesa: " << d2 << " pixels differ from the golden image";
+}
+
+// Software rasterisers deform the body on the CPU (SceneDeformationJob) and draw it with the
+// shader's unskinned path; the picture must be the one the skinning shader draws, body and
+// onion-skin ghosts alike (a wrong vertex offset or a missed instance moves whole limbs).
+TEST(DefaultCharacterRender, CpuDeformedBodyAndGhostsMatchTheSkinningShader) {
+  setenv("LIBGL_ALWAYS_SOFTWARE", "1", 0);
+  const Scene scene = makeDefaultCharacterScene();
+  const std::vector<glm::mat4> world = posedWorld(scene);
+  const std::vector<glm::mat4> rest = computeWorld(scene.skeleton, Pose::rest(scene.skeleton));
+  const std::vector<MeshGhost> ghosts{{&rest, nullptr, glm::vec4(0.2f, 0.9f, 0.3f, 0.4f)}};
+  for (const std::vector<MeshGhost>* g : {static_cast<const std::vector<MeshGhost>*>(nullptr), &ghosts}) {
+    const Image shader = render(HeadlessBackend::Egl, scene, world, 0, g);
+    const Image cpu = render(HeadlessBackend::Egl, scene, world, 1, g);
+    ASSERT_EQ(shader.width, kWidth);
+    ASSERT_EQ(cpu.width, kWidth);
+    const int diff = differingPixels(cpu, shader, 8);
+    EXPECT_GE(diff, 0);
+    EXPECT_LE(diff, kWidth * kHeight / 1000) << (g ? "with a ghost: " : "") << diff << " pixels differ";
+    // The body is there at all: the picture is not the empty background (the body covers
+    // about 3 % of this picture, 2,500 pixels).
+    const Image empty = render(HeadlessBackend::Egl, Scene(), world, 1);
+    EXPECT_GT(differingPixels(cpu, empty, 8), kWidth * kHeight / 50);
+  }
+  // And the ghost changed the picture (so the comparison above covered drawGhosts).
+  EXPECT_GT(differingPixels(render(HeadlessBackend::Egl, scene, world, 1, &ghosts), render(HeadlessBackend::Egl, scene, world, 1),
+                            8),
+            kWidth * kHeight / 100);
+}
+
+TEST(DefaultCharacterRender, SoftwareRasterisersDeformOnTheCpu) {
+  setenv("LIBGL_ALWAYS_SOFTWARE", "1", 0);
+  Result<std::unique_ptr<HeadlessRenderer>> opened = HeadlessRenderer::open(HeadlessBackend::Egl, 8, 8);
+  ASSERT_TRUE(opened.ok()) << (opened ? "" : opened.error());
+  const std::string name = queryRenderSizeLimit().renderer;
+  const bool software = name.find("llvmpipe") != std::string::npos || name.find("softpipe") != std::string::npos;
+  EXPECT_EQ(opened.value()->meshes().cpuDeformation(), software) << name;
 }
 
 }  // namespace

@@ -33,6 +33,7 @@
 #include "render/loose_joints.h"
 #include "render/mesh_renderer.h"
 #include "render/skeleton_renderer.h"
+#include "render/frame_pass_timer.h"
 #include "render/frame_signature.h"
 #include "render/viewport_target.h"
 #include "render/skeleton_view.h"
@@ -68,6 +69,11 @@ GLFWwindow* createWindow(const WindowPlacement& place, const std::string& title,
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_SAMPLES, samples);
+  // Depth for the 3D view drawn straight into the window, no stencil: nothing uses one, and
+  // with one a depth clear must keep the stencil bits, which makes llvmpipe write the
+  // buffer pixel by pixel (2.3 ms a frame at 1280x800) instead of filling it.
+  glfwWindowHint(GLFW_DEPTH_BITS, 24);
+  glfwWindowHint(GLFW_STENCIL_BITS, 0);
   return glfwCreateWindow(place.width, place.height, title.c_str(), nullptr, nullptr);
 }
 
@@ -232,6 +238,11 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
   imguiBackendsInit(window);
 
   std::vector<double> frameMs;
+  FramePassTimer passTimer;
+  FramePassTimer* timer = o.reportFramePasses ? &passTimer : nullptr;
+  auto mark = [timer](const char* pass) {
+    if (timer) timer->mark(pass);
+  };
   long long frame = 1;
   {
     SkeletonRenderer renderer;
@@ -301,6 +312,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     double previous = glfwGetTime();
     for (; error.empty() && result.error.empty() && !state.panels.quitApproved; ++frame) {
       const auto frameStart = std::chrono::steady_clock::now();
+      if (timer) timer->beginFrame();
       glfwPollEvents();
       if (glfwWindowShouldClose(window)) {
         glfwSetWindowShouldClose(window, GLFW_FALSE);
@@ -365,6 +377,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       advancePlayback(state, dt);
       evaluateEditorPose(state);
       const Bounds bounds = viewBounds();
+      mark("input, tools (IK), pose");
 
       state.items.frame = frame;
       imguiBackendsNewFrame();
@@ -375,6 +388,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       if (!o.emptyFrame) drawEditorPanels(commands, io.Framerate);
       ImGui::Render();
       evaluateEditorPose(state);  // the panels may have edited the document
+      mark("ImGui: build the panels");
 
       const bool scriptDone = o.replay && o.frameCount <= 0 && nextScripted >= o.script.size() && live.queue.empty() &&
                               frame >= lastScriptFrame + 2;
@@ -414,9 +428,11 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         const float sx = ww > 0 ? float(fbw) / ww : 1.0f, sy = wh > 0 ? float(fbh) / wh : 1.0f;
         const int vx = int(std::lround(vp.x * sx)), vw = std::max(int(std::lround(vp.w * sx)), 1);
         const int vh = std::max(int(std::lround(vp.h * sy)), 1), vy = std::max(fbh - int(std::lround(vp.y * sy)) - vh, 0);
+        mark("scene draw lists");
         glViewport(0, 0, fbw, fbh);
         glClearColor(0.235f, 0.235f, 0.235f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        mark("clear the window");
         buildViewportOverlay(state, ViewportView::of(state.camera, glm::vec2(vw, vh), glm::vec2(vp.x * sx, vp.y * sy)),
                              tools, overlay);
         buildAnimationDisplay(state, skinJoints, animationDisplay, overlay);  // onion skin, motion path
@@ -443,6 +459,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         description.meshes = meshes.empty() ? nullptr : &meshDraw;
         description.ghosts = &animationDisplay.ghostLists;
         description.meshGhosts = &meshGhosts;
+        description.timer = timer;
         description.bones = !state.view.showBones ? BoneDisplay::None
                             : state.view.xrayBones ? BoneDisplay::XRay
                                                    : BoneDisplay::On;
@@ -478,13 +495,17 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
             }
             viewportTarget.forget();
             glBindFramebuffer(GL_FRAMEBUFFER, 0);
+            description.clear = false;  // the window was cleared to the same grey above
             renderer.draw(description);
             state.viewportRender = {kMovingViewportSamples, false};
           }
           glViewport(0, 0, fbw, fbh);
+          mark("3D view: resolve, copy to the window");
         }
       }
+      mark("overlay, onion skin lists");
       imguiBackendsRenderDrawData(ImGui::GetDrawData());
+      mark("ImGui: draw the panels");
 
       if (last && !o.screenshotPath.empty()) {
         // Read the back buffer before swapping: its contents are undefined afterwards.
@@ -499,6 +520,10 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       glfwSwapBuffers(window);
       // --max-fps: the rest of the frame's time is slept (events keep queueing meanwhile).
       if (o.maxFps > 0) std::this_thread::sleep_until(frameStart + std::chrono::microseconds(1000000 / o.maxFps));
+      if (timer) {
+        timer->mark("swap");
+        timer->endFrame();
+      }
       if (o.reportFrameTimes) {
         glFinish();
         frameMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count());
@@ -528,6 +553,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       if (result.error.empty()) result.error = dumpError;
     }
   }
+  if (timer) result.framePasses = timer->report(static_cast<size_t>(frame / 10));
   if (!frameMs.empty()) {
     // The first frames compile shaders and upload meshes: leave out the first tenth.
     std::vector<double> t(frameMs.begin() + frameMs.size() / 10, frameMs.end());

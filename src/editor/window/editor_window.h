@@ -21,6 +21,9 @@ struct EditorWindowOptions {
   std::vector<InputEvent> script;
   std::string dumpStatePath;  // written on exit (editorStateJson)
   bool reportFrameTimes = false;  // mean / median frame time on stderr at exit
+  // --report-frame-passes: glFinish after each pass of every frame and the median time of
+  // each pass on stderr at exit (slower frames, but where the time goes).
+  bool reportFramePasses = false;
   bool emptyFrame = false;        // draw only an empty ImGui frame (the baseline for frame times)
   int maxFps = 0;                 // > 0: each frame lasts at least 1/maxFps s (kinema edit --max-fps)
 };
@@ -30,6 +33,7 @@ struct EditorWindowResult {
   std::string error;    // one line, empty on success
   double meanFrameMs = 0, medianFrameMs = 0;
   long long frames = 0;
+  std::string framePasses;  // reportFramePasses: the per-pass report, one line per pass
 };
 
 // Opens the GLFW window and runs the editor on `state` until the user closes it (or the

@@ -2,15 +2,76 @@
 
 #include <imgui.h>
 
+#include <cstring>
+
 #include "imgui_impl_opengl3.h"
 
 namespace kinema {
+
+namespace {
+// The frame's draw lists copied into one: the backend then fills its vertex and index
+// buffers once a frame. Given one list per window it re-fills the same buffers for each,
+// while the draws of the previous window still read them, and a software rasteriser
+// (llvmpipe) must finish everything queued so far before each re-fill: a dozen stalls a frame.
+struct MergedDrawData {
+  ImDrawList list{nullptr};
+  ImDrawList* lists[1] = {&list};
+  ImDrawData data;
+};
+MergedDrawData& merged() {
+  static MergedDrawData m;
+  return m;
+}
+}  // namespace
+
+void mergeImGuiDrawLists(const ImDrawData& in, ImDrawList& out) {
+  out.VtxBuffer.resize(0);
+  out.IdxBuffer.resize(0);
+  out.CmdBuffer.resize(0);
+  out.VtxBuffer.reserve(in.TotalVtxCount);
+  out.IdxBuffer.reserve(in.TotalIdxCount);
+  for (int n = 0; n < in.CmdListsCount; ++n) {
+    const ImDrawList& list = *in.CmdLists[n];
+    // Indices stay relative to each command's VtxOffset (16-bit indices address 64k
+    // vertices past it), so the lists' vertices and indices are appended unchanged and
+    // only the offsets move.
+    const unsigned int vtxBase = static_cast<unsigned int>(out.VtxBuffer.Size);
+    const unsigned int idxBase = static_cast<unsigned int>(out.IdxBuffer.Size);
+    const int vtx = out.VtxBuffer.Size, idx = out.IdxBuffer.Size;
+    out.VtxBuffer.resize(vtx + list.VtxBuffer.Size);
+    if (list.VtxBuffer.Size > 0)
+      std::memcpy(out.VtxBuffer.Data + vtx, list.VtxBuffer.Data, sizeof(ImDrawVert) * static_cast<size_t>(list.VtxBuffer.Size));
+    out.IdxBuffer.resize(idx + list.IdxBuffer.Size);
+    if (list.IdxBuffer.Size > 0)
+      std::memcpy(out.IdxBuffer.Data + idx, list.IdxBuffer.Data, sizeof(ImDrawIdx) * static_cast<size_t>(list.IdxBuffer.Size));
+    for (const ImDrawCmd& cmd : list.CmdBuffer) {
+      ImDrawCmd c = cmd;
+      c.VtxOffset += vtxBase;
+      c.IdxOffset += idxBase;
+      out.CmdBuffer.push_back(c);
+    }
+  }
+}
+
 // The platform side (mouse, keys, display size, time) is the editor's own input layer
 // (input_events.h, editor_window.cpp): ImGui's GLFW backend would read the live mouse
 // each frame and override replayed --script events.
 void imguiBackendsInit(GLFWwindow*) { ImGui_ImplOpenGL3_Init("#version 330 core"); }
 void imguiBackendsNewFrame() { ImGui_ImplOpenGL3_NewFrame(); }
-void imguiBackendsRenderDrawData(ImDrawData* data) { ImGui_ImplOpenGL3_RenderDrawData(data); }
+void imguiBackendsRenderDrawData(ImDrawData* data) {
+  // The backend draws with glDrawElementsBaseVertex (it sets RendererHasVtxOffset), so one
+  // list of any length draws like the separate ones.
+  if (!data || !(ImGui::GetIO().BackendFlags & ImGuiBackendFlags_RendererHasVtxOffset) || data->CmdListsCount < 2) {
+    ImGui_ImplOpenGL3_RenderDrawData(data);
+    return;
+  }
+  MergedDrawData& m = merged();
+  mergeImGuiDrawLists(*data, m.list);
+  m.data = *data;
+  m.data.CmdLists = m.lists;
+  m.data.CmdListsCount = 1;
+  ImGui_ImplOpenGL3_RenderDrawData(&m.data);
+}
 void imguiBackendsShutdown() { ImGui_ImplOpenGL3_Shutdown(); }
 void imguiBackendsReloadFonts() {
   ImGui_ImplOpenGL3_DestroyFontsTexture();
