@@ -82,5 +82,21 @@ TEST(ChannelModifierEdits, ASecondCyclesModifierIsRefusedAndNothingChanges) {
   EXPECT_EQ(n.validate(), "");
 }
 
+TEST(ChannelModifierEdits, TheCurveEditorPlotsThePlayedCurve) {
+  Document doc(testScene());
+  const Channel plain = doc.scene().clips[0].channels[0];
+  EXPECT_TRUE(modifiedCurvePoints(plain, 1, RotationView::Euler, EulerOrder::XYZ, 0.0f, 1.0f, 11).times.empty());
+  ASSERT_EQ(addChannelModifierEdit(doc, 0, {0}, ChannelModifierKind::Noise), "");
+  const Channel& ch = doc.scene().clips[0].channels[0];
+  // Past the last key too: the played curve spans the asked range, point for point.
+  const CurvePoints p = modifiedCurvePoints(ch, 1, RotationView::Euler, EulerOrder::XYZ, -0.5f, 2.0f, 26);
+  ASSERT_EQ(p.times.size(), 26u);
+  EXPECT_TRUE(p.keyTimes.empty());
+  for (size_t i = 0; i < p.times.size(); ++i) {
+    EXPECT_NEAR(p.times[i], -0.5f + 0.1f * i, 1e-6f);
+    EXPECT_EQ(p.values[i], sampleModifiedChannel(ch, p.times[i]).y);  // metres, shown as stored
+  }
+}
+
 }  // namespace
 }  // namespace kinema
