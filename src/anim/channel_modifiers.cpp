@@ -161,10 +161,10 @@ glm::vec4 ModifiedChannelJob::evaluate(float time) const {
   auto active = [](const ChannelModifier& m) { return m.enabled && m.validate().empty(); };
   const CyclesModifier* cycles = nullptr;
   for (const ChannelModifier& m : modifiers)
-      if (active(m) && m.kind == ChannelModifierKind::Cycles) {
-        cycles = &m.cycles;
-        break;
-      }
+    if (active(m) && m.kind == ChannelModifierKind::Cycles) {
+      cycles = &m.cycles;
+      break;
+    }
   // The keyed curve, with time remapped into the keyed range by Cycles.
   glm::vec4 value;
   const float t0 = c.startTime(), t1 = c.endTime(), period = t1 - t0;

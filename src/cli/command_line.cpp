@@ -62,7 +62,7 @@ Pose sampledPose(const Scene& scene, int clip, double time) {
     if (hasChannelModifiers(c)) {
       float first = 0.0f;
       for (const Channel& ch : c.channels) first = std::min(first, ch.startTime());
-      time = std::clamp(time, double(first), double(c.duration()));
+      time = std::clamp(time, double(first), double(std::max(first, c.duration())));
     }
     sampleClip(c, static_cast<float>(time), pose);
   }

@@ -9,6 +9,7 @@
 #include "editor/commands/command_sets.h"
 #include "editor/commands/file_commands.h"
 #include "editor/model/channel_modifier_edits.h"
+#include "editor/model/edit_labels.h"
 #include "editor/model/key_codes.h"
 #include "editor/model/timeline.h"
 
