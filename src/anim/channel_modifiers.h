@@ -10,7 +10,7 @@
 
 namespace kinema {
 
-class Skeleton;
+struct Skeleton;
 
 // Evaluates a channel with its modifier stack (channel->modifiers). Inputs are read only; no
 // state between calls. The channel's joint mixes into the noise lattices, so joints sway
