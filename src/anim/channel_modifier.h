@@ -16,7 +16,7 @@ namespace kinema {
 // Values are in the channel's units (metres, scale factors, radians for Euler channels and
 // for Rotation channels, where the added (x, y, z) is a rotation vector v applied in the
 // joint's local frame after the keyed rotation: q * R(v), R(v) = |v| radians about v / |v|).
-// Times in seconds. Only the first Cycles modifier of a stack may act (as in Blender).
+// Times in seconds. A stack holds at most one Cycles modifier (validateModifierStack).
 
 // Fractal (fBm) 1D gradient noise per component: strength * sum_o r^o n(2^o (t / scale + phase))
 // / sum_o r^o, with n the quintic-faded Perlin gradient noise scaled to [-1, 1]; so the added
