@@ -100,7 +100,7 @@ TEST(KinemaFileModifiers, FilesWithoutModifiersHaveNoModifiersKey) {
   EXPECT_EQ(toKinemaJson(back.value()), text);
   // The project's own saved asset reads and writes back byte for byte.
   const std::string path = std::string(KINEMA_SOURCE_DIR) + "/assets/default_character.kinema";
-  const std::string original = readFile(path);
+  const std::string original = test::readFile(path);
   Result<Scene> asset = parseKinemaJson(original, path);
   ASSERT_TRUE(asset.ok()) << asset.error();
   EXPECT_EQ(toKinemaJson(asset.value()), original);
@@ -211,7 +211,7 @@ TEST(KinemaFileModifiers, BvhExportWritesTheModifiedMotion) {
     const std::vector<glm::vec3> pa = positions(scene, t), pb = positions(read, t);
     ASSERT_EQ(pa.size(), 2u);
     ASSERT_GE(pb.size(), 2u);
-    for (size_t j = 0; j < 2; ++j) EXPECT_VEC3_NEAR(pa[j], pb[j], 1e-4f) << f;
+    for (size_t j = 0; j < 2; ++j) EXPECT_VEC3_NEAR(pa[j], pb[j], 1e-4f);
   }
 }
 
