@@ -18,7 +18,7 @@
 #include "core/forward_kinematics.h"
 #include "procedural/boids.h"
 #include "procedural/particles.h"
-#include "procedural/random.h"
+#include "core/random.h"
 
 namespace {
 

@@ -4,7 +4,8 @@
 // access samples shuffled times without one (binary search). The "Job" variants sample the
 // same clips through PlaybackSamplingJob on a PlaybackClip built once before timing (one
 // context, in playback and at random times). Reference point: ozz-animation samples about
-// 12 ns per joint in playback and 54 ns per joint at random times.
+// 12 ns per joint in playback and 54 ns per joint at random times. The "RotationNoise" variant
+// puts a noise modifier on every rotation channel (channel modifiers, anim/channel_modifier.h).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -146,6 +147,22 @@ void BM_RandomAccess_Bezier_Slerp_Job(benchmark::State& state) {
   static const Clip clip = makeClip(Interpolation::Bezier, Interpolation::Linear, true);
   run(state, clip, false, true);
 }
+// The linear clip with a two-octave noise modifier on every rotation (a procedural sway):
+// what channel modifiers cost, their channels sampled one by one through the stack.
+Clip withNoise(Clip clip) {
+  ChannelModifier noise;
+  noise.kind = ChannelModifierKind::Noise;
+  noise.noise.strength = 0.05f;
+  noise.noise.scale = 0.5f;
+  noise.noise.octaves = 2;
+  for (Channel& ch : clip.channels)
+    if (ch.target == ChannelTarget::Rotation) ch.modifiers = {noise};
+  return clip;
+}
+void BM_Playback_Linear_RotationNoise_Job(benchmark::State& state) {
+  static const Clip clip = withNoise(makeClip(Interpolation::Linear, Interpolation::Linear, false));
+  run(state, clip, true, true);
+}
 // Building the PlaybackClip of the linear clip (once per clip, and in the editor again after
 // an edit made while it plays): time per build, ns_per_joint per joint.
 void BM_BuildPlaybackClip_Linear(benchmark::State& state) {
@@ -169,6 +186,7 @@ BENCHMARK(BM_Playback_CatmullRom_Squad_Job);
 BENCHMARK(BM_RandomAccess_CatmullRom_Squad_Job);
 BENCHMARK(BM_Playback_Bezier_Slerp_Job);
 BENCHMARK(BM_RandomAccess_Bezier_Slerp_Job);
+BENCHMARK(BM_Playback_Linear_RotationNoise_Job);
 BENCHMARK(BM_BuildPlaybackClip_Linear);
 
 }  // namespace

@@ -168,6 +168,7 @@ std::string Clip::validate(const Skeleton& skeleton) const {
     if ((ch.joint < 0 && !(scalar && ch.joint == -1)) || ch.joint >= skeleton.size())
       return where + " animates joint " + std::to_string(ch.joint) + ", which does not exist";
     if (ch.times.empty()) return where + " has no keys";
+    if (std::string bad = validateModifierStack(ch.modifiers); !bad.empty()) return where + " " + bad;
     if (ch.times.size() != ch.values.size())
       return where + " has " + std::to_string(ch.times.size()) + " key times but " +
              std::to_string(ch.values.size()) + " values";

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "anim/channel_modifier.h"
 #include "anim/clip_source_map.h"
 #include "anim/foot_contact_intervals.h"
 #include "core/pose.h"
@@ -89,6 +90,10 @@ struct Channel {
   std::vector<KeySettings> keys;   // empty, or one per key
   EulerOrder eulerOrder = EulerOrder::XYZ;  // Euler channels
   std::string property;                     // Scalar channels: what the value means
+  // Procedural modifiers on top of the keyed curve (noise, cycles, wave; anim/channel_modifier.h),
+  // in stack order. sampleClip and the playback path apply them (sampleModifiedChannel);
+  // sampleChannel and key editing see the keys alone. Empty for most channels.
+  std::vector<ChannelModifier> modifiers;
 
   float startTime() const { return times.empty() ? 0.0f : times.front(); }
   float endTime() const { return times.empty() ? 0.0f : times.back(); }
@@ -144,7 +149,8 @@ struct Clip {
   // Empty when every channel names a joint of the skeleton (Scalar channels may use -1),
   // times are finite and strictly increasing, values and settings are finite (one per key)
   // and each key's interpolation suits the channel's target; the contacts and the source
-  // map are valid (FootContacts::validate, ClipSourceMap::validate).
+  // map are valid (FootContacts::validate, ClipSourceMap::validate); each channel's modifier
+  // stack is valid (validateModifierStack).
   std::string validate(const Skeleton& skeleton) const;
 };
 
@@ -178,8 +184,10 @@ void unwrapEulerAngles(Channel& channel);
 // Writes the clip's value at `time` into pose (which holds the rest pose or another
 // base for joints the clip does not animate). Time is clamped to each channel's keys:
 // before the first key it holds the first value, after the last key the last value.
-// Rotations are normalised and interpolated along the shortest arc. Scalar channels are
-// not part of a pose (sampleChannel in anim/sampling.h reads them).
+// Rotations are normalised and interpolated along the shortest arc. Channel modifiers apply
+// on top (sampleModifiedChannel; cycles and noise act at any time, the clamping above is
+// that of the keyed curve underneath). Scalar channels are not part of a pose
+// (sampleChannel in anim/sampling.h reads them).
 void sampleClip(const Clip& clip, float time, Pose& pose);
 
 }  // namespace kinema

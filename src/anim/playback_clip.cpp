@@ -24,7 +24,8 @@ Interpolation uniformInterpolation(const Channel& ch) {
 }
 
 bool suitsGrid(const Channel& ch) {
-  if (ch.keyCount() < 2 || ch.values.size() != ch.times.size()) return false;
+  // Modified channels are sampled one by one through their stack (sampleModifiedChannel).
+  if (ch.keyCount() < 2 || ch.values.size() != ch.times.size() || !ch.modifiers.empty()) return false;
   if (ch.target != ChannelTarget::Translation && ch.target != ChannelTarget::Scale &&
       ch.target != ChannelTarget::Rotation)
     return false;

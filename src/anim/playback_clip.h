@@ -38,7 +38,8 @@ struct PlaybackClip {
   int jointCount = 0;
   std::vector<PlaybackGrid> grids;
   // The other channels (Euler, Bezier, TCB, Hermite, ..., grids of fewer than
-  // kMinGridTracks tracks, single keys), sampled one by one as sampleClip does.
+  // kMinGridTracks tracks, single keys, channels with modifiers), sampled one by one as
+  // sampleClip does.
   std::vector<Channel> channels;
 
   // Grids shorter than this stay channels: a block of one track wastes three lanes.

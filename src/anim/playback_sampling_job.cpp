@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 
+#include "anim/channel_modifiers.h"
 #include "anim/sampling.h"
 #include "anim/unit_slerp.h"
 
@@ -231,7 +232,8 @@ bool PlaybackSamplingJob::run() const {
   for (size_t g = 0; g < clip->grids.size(); ++g) sampleGridAt(clip->grids[g], time, c.gridCursors[g], output);
   for (size_t i = 0; i < clip->channels.size(); ++i) {
     const Channel& ch = clip->channels[i];
-    apply(ch, sampleChannel(ch, time, &c.channelCursors[i]), output[ch.joint]);
+    apply(ch, ch.modifiers.empty() ? sampleChannel(ch, time, &c.channelCursors[i]) : sampleModifiedChannel(ch, time),
+          output[ch.joint]);
   }
   return true;
 }

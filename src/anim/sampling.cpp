@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "anim/bezier_handles.h"
+#include "anim/channel_modifiers.h"
 #include "anim/easing.h"
 #include "anim/hermite.h"
 #include "anim/quaternion_curves.h"
@@ -148,6 +149,10 @@ void sampleInto(const Clip& clip, float time, Pose& pose, int* cursors) {
     const float* times = ch.times.data();
     const int n = ch.keyCount();
     if (ch.target == ChannelTarget::Scalar || static_cast<unsigned>(ch.joint) >= joints || n == 0) continue;
+    if (!ch.modifiers.empty()) {  // procedural channels: the keyed curve, then the stack
+      apply(ch, sampleModifiedChannel(ch, time), out[ch.joint]);
+      continue;
+    }
     int* cursor = cursors ? cursors + c : nullptr;
     // Strictly inside the segment before key hi: playback's cursor, or at random times the
     // previous channel's answer, usually is. (On a key, sampleAt returns the key itself.)

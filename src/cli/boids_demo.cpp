@@ -13,7 +13,7 @@
 #include "io/atomic_write.h"
 #include "io/image.h"
 #include "procedural/boids.h"
-#include "procedural/random.h"
+#include "core/random.h"
 #include "render/raster_draw.h"
 
 namespace kinema::cli {

@@ -1,8 +1,10 @@
 #include "cli/command_line.h"
 
+#include <algorithm>
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "anim/channel_modifiers.h"
 #include "skin/default_character_scene.h"
 #include "io/json_number.h"
 
@@ -53,8 +55,17 @@ std::string clipIndexError(const Scene& scene, int clip) {
 
 Pose sampledPose(const Scene& scene, int clip, double time) {
   Pose pose = Pose::rest(scene.skeleton);
-  if (clip >= 0 && clip < static_cast<int>(scene.clips.size()))
-    sampleClip(scene.clips[clip], static_cast<float>(time), pose);
+  if (clip >= 0 && clip < static_cast<int>(scene.clips.size())) {
+    const Clip& c = scene.clips[clip];
+    // The contract clamps --time to the clip: keys clamp by themselves, but noise and
+    // cycles go on past the last key, so a modified clip is sampled at the clamped time.
+    if (hasChannelModifiers(c)) {
+      float first = 0.0f;
+      for (const Channel& ch : c.channels) first = std::min(first, ch.startTime());
+      time = std::clamp(time, double(first), double(std::max(first, c.duration())));
+    }
+    sampleClip(c, static_cast<float>(time), pose);
+  }
   return pose;
 }
 

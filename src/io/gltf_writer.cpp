@@ -10,6 +10,7 @@
 #include <numeric>
 #include <sstream>
 
+#include "anim/channel_modifiers.h"
 #include "core/forward_kinematics.h"
 #include "io/atomic_write.h"
 #include "io/gltf_curves.h"
@@ -584,7 +585,16 @@ Result<std::string> gltfBytes(const Scene& scene, const GltfWriteOptions& option
     const double wanted = rateFor(clip, options);
     const double rate = usableRate(wanted);
     const size_t before = report ? report->size() : 0;
-    animations.add(clip, c, rate);
+    // glTF has no procedural curves: modified channels go out as their bake, one key per
+    // frame at the export rate, so the file plays what Kinema plays at those frames.
+    Clip baked;
+    if (hasChannelModifiers(clip)) {
+      if (std::string e = bakeClipModifiers(clip, rate, baked); !e.empty())
+        return Result<std::string>::failure("cannot export: clip " + std::to_string(c) + ": baking its modifiers: " + e);
+      note("clip '" + (clip.name.empty() ? std::to_string(c) : clip.name) + "': channel modifiers baked to keys at " +
+           numberText(rate) + " fps");
+    }
+    animations.add(hasChannelModifiers(clip) ? baked : clip, c, rate);
     // Said only when a curve was resampled at the lowered rate (its own line follows).
     if (rate != wanted && report &&
         std::any_of(report->begin() + static_cast<long>(before), report->end(),

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cstdint>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -9,6 +10,8 @@
 #include <unordered_set>
 #include <nlohmann/json.hpp>
 
+#include "anim/channel_modifiers.h"
+#include "core/forward_kinematics.h"
 #include "core/rotation.h"
 #include "io/atomic_write.h"
 #include "io/json_depth.h"
@@ -560,6 +563,100 @@ bool checkMode(Reader& r, const std::string& path, Interpolation i, ChannelTarge
   return true;
 }
 
+// channels[k].modifiers: the channel's modifier stack (anim/channel_modifier.h), in order.
+// Every parameter is optional and defaults to the modifier's default; a wave without
+// "rest_position" takes the joint's rest position from the file's skeleton.
+const char* const kComponentLetters = "xyzw";
+
+bool readComponents(Reader& r, const Json& j, const std::string& path, uint32_t& mask) {
+  std::string text;
+  if (!r.string(j, path, text)) return false;
+  mask = 0;
+  for (char c : text) {
+    const char* at = c ? std::strchr(kComponentLetters, c) : nullptr;
+    if (!at || (mask & (1u << (at - kComponentLetters))))
+      return r.fail(path, "'" + cutForMessage(text) + "' is not a set of distinct letters from x, y, z, w");
+    mask |= 1u << (at - kComponentLetters);
+  }
+  if (!mask) return r.fail(path, "names no component (letters from x, y, z, w)");
+  return true;
+}
+
+bool readBoundedInt(Reader& r, const Json& j, const std::string& path, long long lo, long long hi, long long& out) {
+  if (!r.integer(j, path, out)) return false;
+  if (out < lo || out > hi)
+    return r.fail(path, std::to_string(out) + " is out of range (" + std::to_string(lo) + " to " + std::to_string(hi) + ")");
+  return true;
+}
+
+bool readModifier(Reader& r, const Json& j, const std::string& p, const Skeleton& s, int joint, ChannelModifier& m) {
+  if (!j.is_object()) return r.fail(p, "expected an object");
+  const Json* v;
+  if (!(v = r.member(j, p, "type", true)) || !readEnum(r, *v, p + ".type", m.kind, "noise, cycles, wave")) return false;
+  if ((v = r.member(j, p, "enabled", false))) {
+    if (!v->is_boolean()) return r.fail(p + ".enabled", "expected true or false, found " + std::string(v->type_name()));
+    m.enabled = v->get<bool>();
+  }
+  if ((v = r.member(j, p, "components", false)) && !readComponents(r, *v, p + ".components", m.components)) return false;
+  long long n = 0;
+  switch (m.kind) {
+    case ChannelModifierKind::Noise:
+      if ((v = r.member(j, p, "strength", false)) && !readFloat(r, *v, p + ".strength", m.noise.strength)) return false;
+      if (m.noise.strength < 0) return r.fail(p + ".strength", "must not be negative");
+      if ((v = r.member(j, p, "scale", false)) && !readFloat(r, *v, p + ".scale", m.noise.scale)) return false;
+      if (!(m.noise.scale > 0)) return r.fail(p + ".scale", "must be positive (seconds per noise cell)");
+      if ((v = r.member(j, p, "phase", false)) && !readFloat(r, *v, p + ".phase", m.noise.phase)) return false;
+      if ((v = r.member(j, p, "octaves", false))) {
+        if (!readBoundedInt(r, *v, p + ".octaves", 1, 8, n)) return false;
+        m.noise.octaves = static_cast<int>(n);
+      }
+      if ((v = r.member(j, p, "roughness", false)) && !readFloat(r, *v, p + ".roughness", m.noise.roughness)) return false;
+      if (!(m.noise.roughness >= 0 && m.noise.roughness <= 1)) return r.fail(p + ".roughness", "must be in [0, 1]");
+      if ((v = r.member(j, p, "seed", false))) {
+        if (!readBoundedInt(r, *v, p + ".seed", 0, UINT32_MAX, n)) return false;
+        m.noise.seed = static_cast<uint32_t>(n);
+      }
+      break;
+    case ChannelModifierKind::Cycles: {
+      const char* const modes = "hold, repeat, repeat_offset, mirror";
+      if ((v = r.member(j, p, "before", false)) && !readEnum(r, *v, p + ".before", m.cycles.before, modes)) return false;
+      if ((v = r.member(j, p, "after", false)) && !readEnum(r, *v, p + ".after", m.cycles.after, modes)) return false;
+      if ((v = r.member(j, p, "before_count", false))) {
+        if (!readBoundedInt(r, *v, p + ".before_count", 0, INT_MAX, n)) return false;
+        m.cycles.beforeCount = static_cast<int>(n);
+      }
+      if ((v = r.member(j, p, "after_count", false))) {
+        if (!readBoundedInt(r, *v, p + ".after_count", 0, INT_MAX, n)) return false;
+        m.cycles.afterCount = static_cast<int>(n);
+      }
+      break;
+    }
+    case ChannelModifierKind::Wave:
+      if ((v = r.member(j, p, "amplitude", false)) && !readFloat(r, *v, p + ".amplitude", m.wave.amplitude)) return false;
+      if ((v = r.member(j, p, "omega", false)) && !readFloat(r, *v, p + ".omega", m.wave.omega)) return false;
+      if ((v = r.member(j, p, "k", false)) && !r.floats(*v, p + ".k", 3, &m.wave.k.x)) return false;
+      if ((v = r.member(j, p, "phi", false)) && !readFloat(r, *v, p + ".phi", m.wave.phi)) return false;
+      if ((v = r.member(j, p, "rest_position", false))) {
+        if (!r.floats(*v, p + ".rest_position", 3, &m.wave.position.x)) return false;
+      } else if (joint >= 0 && joint < s.size()) {
+        m.wave.position = glm::vec3(computeWorld(s, Pose::rest(s))[joint][3]);
+      }
+      break;
+  }
+  // Anything the checks above let through (none today) is still caught here, with the path.
+  if (std::string bad = m.validate(); !bad.empty()) return r.fail(p, bad);
+  return true;
+}
+
+bool readModifiers(Reader& r, const Json& j, const std::string& p, const Skeleton& s, Channel& ch) {
+  if (!j.is_array()) return r.fail(p, "expected an array of modifier objects");
+  ch.modifiers.resize(j.size());
+  for (size_t i = 0; i < j.size(); ++i)
+    if (!readModifier(r, j[i], p + "[" + std::to_string(i) + "]", s, ch.joint, ch.modifiers[i])) return false;
+  if (std::string bad = validateModifierStack(ch.modifiers); !bad.empty()) return r.fail(p, bad);
+  return true;
+}
+
 bool readChannel(Reader& r, const Json& j, const std::string& p, const Skeleton& s, Channel& ch) {
   if (!j.is_object()) return r.fail(p, "expected an object");
   const Json* v;
@@ -623,6 +720,7 @@ bool readChannel(Reader& r, const Json& j, const std::string& p, const Skeleton&
       if (!checkMode(r, kp + ".interpolation", ch.keys[k].interpolation, ch.target)) return false;
     }
   }
+  if ((v = r.member(j, p, "modifiers", false)) && !readModifiers(r, *v, p + ".modifiers", s, ch)) return false;
   return true;
 }
 
@@ -1259,6 +1357,48 @@ std::string sceneAssetsError(const Scene& scene) {
   return {};
 }
 
+// A channel's modifier stack: every parameter of each modifier's kind is written, so the
+// file says exactly what plays; "enabled" only when false, "components" only when not xyz.
+Json modifiersJson(const std::vector<ChannelModifier>& stack) {
+  Json list = Json::array();
+  for (const ChannelModifier& m : stack) {
+    Json o = Json::object();
+    o["type"] = toString(m.kind);
+    if (!m.enabled) o["enabled"] = false;
+    if (m.components != ChannelModifier().components) {
+      std::string letters;
+      for (int c = 0; c < 4; ++c)
+        if (m.components & (1u << c)) letters += kComponentLetters[c];
+      o["components"] = letters;
+    }
+    switch (m.kind) {
+      case ChannelModifierKind::Noise:
+        o["strength"] = jsonFloat(m.noise.strength);
+        o["scale"] = jsonFloat(m.noise.scale);
+        o["phase"] = jsonFloat(m.noise.phase);
+        o["octaves"] = m.noise.octaves;
+        o["roughness"] = jsonFloat(m.noise.roughness);
+        o["seed"] = m.noise.seed;
+        break;
+      case ChannelModifierKind::Cycles:
+        o["before"] = toString(m.cycles.before);
+        o["after"] = toString(m.cycles.after);
+        o["before_count"] = m.cycles.beforeCount;
+        o["after_count"] = m.cycles.afterCount;
+        break;
+      case ChannelModifierKind::Wave:
+        o["amplitude"] = jsonFloat(m.wave.amplitude);
+        o["omega"] = jsonFloat(m.wave.omega);
+        o["k"] = vec(&m.wave.k.x, 3);
+        o["phi"] = jsonFloat(m.wave.phi);
+        o["rest_position"] = vec(&m.wave.position.x, 3);
+        break;
+    }
+    list.push_back(std::move(o));
+  }
+  return list;
+}
+
 // A channel; per-key settings list only what differs from KeySettings' defaults (which
 // the reader fills in), so simple keys stay small and every setting round-trips exactly.
 Json channelJson(const Channel& ch, const Skeleton& s) {
@@ -1298,6 +1438,8 @@ Json channelJson(const Channel& ch, const Skeleton& s) {
     }
     k["keys"] = std::move(keys);
   }
+  // Only channels that carry modifiers get the key, so files without them are unchanged.
+  if (!ch.modifiers.empty()) k["modifiers"] = modifiersJson(ch.modifiers);
   return k;
 }
 

@@ -1,6 +1,6 @@
 #include "procedural/lsystem_derivation.h"
 
-#include "procedural/random.h"
+#include "core/random.h"
 
 namespace kinema {
 

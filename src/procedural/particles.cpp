@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "procedural/random.h"
+#include "core/random.h"
 
 namespace kinema {
 

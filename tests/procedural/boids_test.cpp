@@ -8,7 +8,7 @@
 
 #include "io/image.h"
 #include "procedural/boids.h"
-#include "procedural/random.h"
+#include "core/random.h"
 #include "test_support.h"
 
 namespace kinema {

@@ -8,6 +8,8 @@
 
 #include "editor/commands/command_sets.h"
 #include "editor/commands/file_commands.h"
+#include "editor/model/channel_modifier_edits.h"
+#include "editor/model/edit_labels.h"
 #include "editor/model/key_codes.h"
 #include "editor/model/timeline.h"
 
@@ -56,6 +58,19 @@ bool curveEditorIdle(const CommandContext& c) {
 
 CommandDef curveEditor(const char* id, const char* label, int key, int mods, const char* hint) {
   return CommandDef(id, label).key(key, mods).scope(CommandScope::CurveEditor).hint(hint).enabled(curveEditorIdle);
+}
+
+// Curve editor > Add Modifier: on the channels of the selected keys, else on every shown
+// channel (modifierTargetChannels), one undo step.
+CommandDef addModifier(const char* id, const char* label, ChannelModifierKind kind, const char* hint) {
+  return CommandDef(id, label).menu("Animation/Add Modifier").scope(CommandScope::CurveEditor).hint(hint)
+      .enabled(curveEditorIdle).run([kind](CommandContext& c) {
+    EditorState& s = c.state;
+    const std::vector<int> channels = modifierTargetChannels(editedClip(s), s.doc.selection, s.curveEditor);
+    reportDopeSheetEdit(s, addChannelModifierEdit(s.doc, s.clip, channels, kind),
+                        "Added a " + std::string(toString(kind)) + " modifier to " +
+                            countPhrase(channels.size(), "channel"));
+  });
 }
 
 }  // namespace
@@ -119,6 +134,12 @@ void addAnimationEditorCommands(std::vector<Command>& out) {
                       c.state.curveEditor.boxArmed = true;
                       c.state.statusMessage = "Box select: drag over the keys (Esc cancels)";
                     }));
+  out.push_back(addModifier("curves.add_noise_modifier", "Add Noise Modifier", ChannelModifierKind::Noise,
+                            "fractal noise on the selected keys' channels (or every shown channel)"));
+  out.push_back(addModifier("curves.add_cycles_modifier", "Add Cycles Modifier", ChannelModifierKind::Cycles,
+                            "repeat the keyed range before and after (selected keys' channels, or every shown one)"));
+  out.push_back(addModifier("curves.add_wave_modifier", "Add Wave Modifier", ChannelModifierKind::Wave,
+                            "A cos(wt - k.x + phi) on the selected keys' channels (or every shown channel)"));
 }
 
 }  // namespace kinema

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "anim/bezier_handles.h"
+#include "anim/channel_modifiers.h"
 #include "anim/sampling.h"
 
 namespace kinema {
@@ -34,8 +35,8 @@ float unwrapNear(float angle, float previous, float turn) {
 }
 
 // The channel's value at `time` in display units (all components).
-glm::vec4 displayAt(const Channel& ch, float time, RotationView view, EulerOrder order) {
-  const glm::vec4 v = sampleChannel(ch, time);
+glm::vec4 displayAt(const Channel& ch, float time, RotationView view, EulerOrder order, bool modified = false) {
+  const glm::vec4 v = modified ? sampleModifiedChannel(ch, time) : sampleChannel(ch, time);
   const float unit = displayUnitScale(ch, view);
   if (!isRotationEuler(ch, view)) return v * unit;
   return glm::vec4(quatToEuler(toQuat(v), order) * unit, 0.0f);
@@ -112,6 +113,25 @@ CurvePoints curvePoints(const Channel& ch, int component, RotationView view, Eul
       continue;
     }
     for (int i = 1; i < steps; ++i) add(t0 + (t1 - t0) * float(i) / float(steps), false, nullptr);
+  }
+  return out;
+}
+
+CurvePoints modifiedCurvePoints(const Channel& ch, int component, RotationView view, EulerOrder order, float t0,
+                                float t1, int count) {
+  CurvePoints out;
+  if (!hasActiveModifiers(ch) || ch.keyCount() == 0 || !(t1 >= t0) || count < 2) return out;
+  const bool euler = isRotationEuler(ch, view);
+  const float turn = 2.0f * kPi * displayUnitScale(ch, view);
+  glm::vec4 previous(0.0f);
+  for (int i = 0; i < count; ++i) {
+    const float t = t0 + (t1 - t0) * float(i) / float(count - 1);
+    glm::vec4 v = displayAt(ch, t, view, order, true);
+    if (euler && i > 0)
+      for (int k = 0; k < 3; ++k) v[k] = unwrapNear(v[k], previous[k], turn);
+    previous = v;
+    out.times.push_back(t);
+    out.values.push_back(v[component]);
   }
   return out;
 }

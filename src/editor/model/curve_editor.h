@@ -65,6 +65,13 @@ struct CurvePoints {
 CurvePoints curvePoints(const Channel& channel, int component, RotationView view, EulerOrder order,
                         int samplesPerSegment = 12);
 
+// The curve as the clip plays it, its channel modifiers applied (noise, cycles, wave), at
+// `count` (>= 2) evenly spaced times from t0 to t1 (the visible range: cycles and noise go
+// on past the keys), display units, Euler angles unwrapped along the points; no keys. Empty
+// for a channel without enabled modifiers (the keyed curve is then what plays).
+CurvePoints modifiedCurvePoints(const Channel& channel, int component, RotationView view, EulerOrder order, float t0,
+                                float t1, int count);
+
 // The curve's display value at `time` (sampled, not read off the points); Euler angles are
 // unwrapped next to the plotted points, so it lies on the drawn curve.
 float curveValueAt(const Channel& channel, int component, RotationView view, EulerOrder order,

@@ -41,7 +41,7 @@ bool sameBitsArray(const std::vector<T>& a, const std::vector<T>& b) {
 bool sameChannel(const Channel& a, const Channel& b) {
   return a.joint == b.joint && a.target == b.target && a.interpolation == b.interpolation &&
          a.eulerOrder == b.eulerOrder && a.property == b.property && sameBitsArray(a.times, b.times) &&
-         sameBitsArray(a.values, b.values) && a.keys == b.keys;
+         sameBitsArray(a.values, b.values) && a.keys == b.keys && a.modifiers == b.modifiers;
 }
 
 bool sameClip(const Clip& a, const Clip& b) {

@@ -259,6 +259,12 @@ void drawCurveEditorPanel(CommandContext& ctx) {
   // Toolbar.
   const std::string fitKey = ctx.keymap ? ctx.keymap->shortcut("curves.frame_all") : std::string();
   commandButton(ctx, "curves.frame_all", "Curve Editor", fitKey.empty() ? "Fit" : ("Fit (" + fitKey + ")").c_str());
+  // Add Modifier (also Animation > Add Modifier): on the selected keys' channels, else the shown ones.
+  for (const char* kind : {"noise", "cycles", "wave"}) {
+    ImGui::SameLine();
+    const std::string shown = std::string("+") + kind;
+    commandButton(ctx, std::string("curves.add_") + kind + "_modifier", "Curve Editor", shown.c_str());
+  }
   ImGui::SameLine();
   if (ImGui::Checkbox("Normalize", &ce.normalized)) ce.fitPending = true;
   recordItem("Curve Editor/Normalize");
@@ -328,6 +334,15 @@ void drawCurveEditorPanel(CommandContext& ctx) {
     if (line.front().x > line[1].x) line.front() = line[1];
     if (line.back().x < line[line.size() - 2].x) line.back() = line[line.size() - 2];
     dl->AddPolyline(line.data(), static_cast<int>(line.size()), colour, 0, curveSelected ? 2.0f : 1.5f);
+    // With modifiers (Blender's Graph Editor): the played curve too, across the view, a point
+    // every two pixels; the keyed curve above stays what the keys edit.
+    const CurvePoints played = modifiedCurvePoints(ch, s.ref.component, ce.rotationView, ce.eulerOrder, view.t0, view.t1,
+                                                   std::max(2, static_cast<int>(plot.w / 2)));
+    if (!played.times.empty()) {
+      std::vector<ImVec2> modifiedLine;
+      for (size_t i = 0; i < played.times.size(); ++i) modifiedLine.push_back(screen(played.times[i], display(s, played.values[i])));
+      dl->AddPolyline(modifiedLine.data(), static_cast<int>(modifiedLine.size()), (colour & 0x00FFFFFFu) | 0xB0000000u, 0, 2.5f);
+    }
     // Keys closer than a few pixels apart (imported motion, a key per frame) are not drawn
     // unless selected: thousands of circles would cost more than the rest of the frame.
     const size_t keyCount = s.points.keyTimes.size();

@@ -1,9 +1,11 @@
 #pragma once
+// The data of channel modifiers (a Channel's stack, anim/clip.h); their evaluation and baking
+// are in anim/channel_modifiers.h.
 #include <cstdint>
 #include <string>
 #include <vector>
 
-#include "anim/clip.h"
+#include <glm/vec3.hpp>
 
 namespace kinema {
 
@@ -14,7 +16,7 @@ namespace kinema {
 // Values are in the channel's units (metres, scale factors, radians for Euler channels and
 // for Rotation channels, where the added (x, y, z) is a rotation vector v applied in the
 // joint's local frame after the keyed rotation: q * R(v), R(v) = |v| radians about v / |v|).
-// Times in seconds. Only the first Cycles modifier of a stack may act (as in Blender).
+// Times in seconds. A stack holds at most one Cycles modifier (validateModifierStack).
 
 // Fractal (fBm) 1D gradient noise per component: strength * sum_o r^o n(2^o (t / scale + phase))
 // / sum_o r^o, with n the quintic-faded Perlin gradient noise scaled to [-1, 1]; so the added
@@ -47,11 +49,16 @@ struct CyclesModifier {
 
 // The seed's travelling wave A cos(omega t - k . x + phi), x = the joint's rest position in
 // model space (metres): joints along k swing one after another (a plant swaying in the wind).
+// x is resolved when the wave is attached (resolveWavePositions, the .kinema reader when the
+// file gives none, the editor's Add Modifier) and stored here, so a clip samples without its
+// skeleton (sampleClip's contract); it is saved with the wave. Changing the rest pose later
+// keeps the stored x until resolveWavePositions runs again.
 struct WaveModifier {
   float amplitude = 0.1f;         // channel units
   float omega = 6.283185307f;     // angular frequency, radians per second
   glm::vec3 k{0.0f};              // wave vector, radians per metre
   float phi = 0.0f;               // phase, radians
+  glm::vec3 position{0.0f};       // x: the joint's rest position, model space, metres
   bool operator==(const WaveModifier& o) const;
 };
 
@@ -73,36 +80,8 @@ struct ChannelModifier {
   std::string validate() const;  // finite parameters in their ranges, components in 1..15
 };
 
-// Evaluates a channel with its modifier stack. Inputs are read only; no state between calls.
-struct ModifiedChannelJob {
-  const Channel* channel = nullptr;                    // at least one key
-  const std::vector<ChannelModifier>* modifiers = nullptr;  // may be null or empty
-  int joint = 0;                      // mixes into the noise lattices, so joints sway apart
-  glm::vec3 restPosition{0.0f};       // the joint's rest position, model space (Wave's x)
-
-  std::string validate() const;
-  // The value at `time` in the channel's layout (sampleChannel's), modifiers applied;
-  // rotations come back normalised.
-  glm::vec4 evaluate(float time) const;
-};
-
-// The raw fractal noise in [-1, 1] NoiseModifier describes (before `strength`).
-float fractalNoise(const NoiseModifier& noise, uint64_t lattice, float time);
-// The lattice a joint's component draws from (for fractalNoise).
-uint64_t noiseLattice(uint32_t seed, int joint, int component);
-
-// Bakes the stack into keys: one Linear key per frame from `start` to `end` (seconds; end
-// included) at `framesPerSecond`, values from ModifiedChannelJob. The result has the
-// channel's joint, target, Euler order and property, and no modifiers.
-struct BakeChannelModifiersJob {
-  ModifiedChannelJob source;
-  float start = 0.0f, end = 1.0f;       // finite, start <= end
-  double framesPerSecond = 24.0;        // > 0
-  int maxKeys = 1 << 20;
-
-  Channel output;
-  std::string validate() const;
-  bool run(std::string& error);
-};
+// Empty when every modifier is valid and at most one is a Cycles modifier; otherwise what is
+// wrong ("modifier N: ...", N from 1).
+std::string validateModifierStack(const std::vector<ChannelModifier>& stack);
 
 }  // namespace kinema

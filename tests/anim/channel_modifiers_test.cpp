@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "anim/sampling.h"
-#include "procedural/channel_modifiers.h"
+#include "anim/channel_modifiers.h"
 #include "test_support.h"
 
 namespace kinema {
@@ -23,13 +23,19 @@ ChannelModifier noise(float strength, float scale, int octaves, uint32_t seed) {
   return m;
 }
 
+// The channel with `stack` on joint `joint`, its waves' x set to `rest`.
+Channel withStack(Channel c, const std::vector<ChannelModifier>& stack, int joint = 0, glm::vec3 rest = glm::vec3(0.0f)) {
+  c.joint = joint;
+  c.modifiers = stack;
+  for (ChannelModifier& m : c.modifiers) m.wave.position = rest;
+  return c;
+}
+
 glm::vec4 evaluate(const Channel& c, const std::vector<ChannelModifier>& stack, float t, int joint = 0,
                    glm::vec3 rest = glm::vec3(0.0f)) {
+  const Channel modified = withStack(c, stack, joint, rest);
   ModifiedChannelJob job;
-  job.channel = &c;
-  job.modifiers = &stack;
-  job.joint = joint;
-  job.restPosition = rest;
+  job.channel = &modified;
   EXPECT_EQ(job.validate(), "");
   return job.evaluate(t);
 }
@@ -202,8 +208,8 @@ TEST(ChannelModifiers, StackAddsAndBakeMatchesEvaluation) {
     EXPECT_VEC3_NEAR(glm::vec3(evaluate(c, both, t)), glm::vec3(sum), 1e-5f);
   }
   BakeChannelModifiersJob bake;
-  bake.source.channel = &c;
-  bake.source.modifiers = &both;
+  const Channel modified = withStack(c, both);
+  bake.source.channel = &modified;
   bake.start = 0.0f;
   bake.end = 5.0f;
   bake.framesPerSecond = 10.0;

@@ -1,10 +1,13 @@
-#include "procedural/channel_modifiers.h"
+#include "anim/channel_modifiers.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "anim/sampling.h"
-#include "procedural/random.h"
+#include "core/forward_kinematics.h"
+#include "core/pose.h"
+#include "core/skeleton.h"
+#include "core/random.h"
 
 namespace kinema {
 
@@ -55,7 +58,7 @@ bool CyclesModifier::operator==(const CyclesModifier& o) const {
   return before == o.before && after == o.after && beforeCount == o.beforeCount && afterCount == o.afterCount;
 }
 bool WaveModifier::operator==(const WaveModifier& o) const {
-  return amplitude == o.amplitude && omega == o.omega && k == o.k && phi == o.phi;
+  return amplitude == o.amplitude && omega == o.omega && k == o.k && phi == o.phi && position == o.position;
 }
 bool ChannelModifier::operator==(const ChannelModifier& o) const {
   return kind == o.kind && enabled == o.enabled && components == o.components && noise == o.noise &&
@@ -107,6 +110,8 @@ std::string ChannelModifier::validate() const {
       if (!finite(wave.amplitude) || !finite(wave.omega) || !finite(wave.phi) || !finite(wave.k.x) ||
           !finite(wave.k.y) || !finite(wave.k.z))
         return "wave amplitude, omega, k and phi must be finite";
+      if (!finite(wave.position.x) || !finite(wave.position.y) || !finite(wave.position.z))
+        return "wave position (the joint's rest position) must be finite";
       return "";
   }
   return "unknown modifier kind";
@@ -129,31 +134,37 @@ float fractalNoise(const NoiseModifier& noise, uint64_t lattice, float time) {
   return static_cast<float>(sum / amplitudes);
 }
 
-std::string ModifiedChannelJob::validate() const {
-  if (!channel) return "no channel";
-  if (channel->times.empty() || channel->values.size() != channel->times.size()) return "the channel has no keys";
-  if (!std::isfinite(restPosition.x) || !std::isfinite(restPosition.y) || !std::isfinite(restPosition.z))
-    return "the rest position is not finite";
-  if (!modifiers) return "";
+std::string validateModifierStack(const std::vector<ChannelModifier>& stack) {
   int cycles = 0;
-  for (size_t i = 0; i < modifiers->size(); ++i) {
-    const ChannelModifier& m = (*modifiers)[i];
+  for (size_t i = 0; i < stack.size(); ++i) {
+    const ChannelModifier& m = stack[i];
     if (std::string bad = m.validate(); !bad.empty()) return "modifier " + std::to_string(i + 1) + ": " + bad;
-    if (m.kind == ChannelModifierKind::Cycles && ++cycles > 1) return "a channel takes one Cycles modifier";
+    if (m.kind == ChannelModifierKind::Cycles && ++cycles > 1)
+      return "modifier " + std::to_string(i + 1) + ": a channel takes one Cycles modifier";
   }
   return "";
 }
 
+std::string ModifiedChannelJob::validate() const {
+  if (!channel) return "no channel";
+  if (channel->times.empty() || channel->values.size() != channel->times.size()) return "the channel has no keys";
+  return validateModifierStack(channel->modifiers);
+}
+
 glm::vec4 ModifiedChannelJob::evaluate(float time) const {
   const Channel& c = *channel;
+  const std::vector<ChannelModifier>& modifiers = c.modifiers;
+  const int joint = c.joint;
   const bool rotation = c.target == ChannelTarget::Rotation;
+  // Invalid modifiers (a bad edit, a clip not yet validated) are skipped rather than
+  // evaluated into NaN.
+  auto active = [](const ChannelModifier& m) { return m.enabled && m.validate().empty(); };
   const CyclesModifier* cycles = nullptr;
-  if (modifiers)
-    for (const ChannelModifier& m : *modifiers)
-      if (m.enabled && m.kind == ChannelModifierKind::Cycles) {
-        cycles = &m.cycles;
-        break;
-      }
+  for (const ChannelModifier& m : modifiers)
+    if (active(m) && m.kind == ChannelModifierKind::Cycles) {
+      cycles = &m.cycles;
+      break;
+    }
   // The keyed curve, with time remapped into the keyed range by Cycles.
   glm::vec4 value;
   const float t0 = c.startTime(), t1 = c.endTime(), period = t1 - t0;
@@ -184,19 +195,18 @@ glm::vec4 ModifiedChannelJob::evaluate(float time) const {
       }
     }
   }
-  if (!modifiers) return value;
   // The additive modifiers, in stack order.
   const int size = rotation ? 3 : c.valueSize();
   glm::vec4 added(0.0f);
-  for (const ChannelModifier& m : *modifiers) {
-    if (!m.enabled || m.kind == ChannelModifierKind::Cycles) continue;
+  for (const ChannelModifier& m : modifiers) {
+    if (m.kind == ChannelModifierKind::Cycles || !active(m)) continue;
     for (int k = 0; k < size; ++k) {
       if (!(m.components & (1u << k))) continue;
       if (m.kind == ChannelModifierKind::Noise)
         added[k] += m.noise.strength * fractalNoise(m.noise, noiseLattice(m.noise.seed, joint, k), time);
       else
         added[k] += m.wave.amplitude *
-                    static_cast<float>(std::cos(double(m.wave.omega) * time - double(glm::dot(m.wave.k, restPosition)) + m.wave.phi));
+                    static_cast<float>(std::cos(double(m.wave.omega) * time - double(glm::dot(m.wave.k, m.wave.position)) + m.wave.phi));
     }
   }
   if (rotation) return asVec(glm::normalize(asQuat(value) * rotationVector(glm::vec3(added))));
@@ -230,6 +240,55 @@ bool BakeChannelModifiersJob::run(std::string& error) {
   if (output.times.back() < end - kKeyTimeTolerance) output.times.push_back(end);
   for (float t : output.times) output.values.push_back(source.evaluate(t));
   return true;
+}
+
+glm::vec4 sampleModifiedChannel(const Channel& channel, float time) {
+  if (channel.modifiers.empty() || channel.times.empty()) return sampleChannel(channel, time);
+  ModifiedChannelJob job;
+  job.channel = &channel;
+  return job.evaluate(time);
+}
+
+void resolveWavePositions(Clip& clip, const Skeleton& skeleton) {
+  std::vector<glm::mat4> world;
+  for (Channel& ch : clip.channels)
+    for (ChannelModifier& m : ch.modifiers) {
+      if (m.kind != ChannelModifierKind::Wave || ch.joint < 0 || ch.joint >= skeleton.size()) continue;
+      if (world.empty()) world = computeWorld(skeleton, Pose::rest(skeleton));
+      m.wave.position = glm::vec3(world[ch.joint][3]);
+    }
+}
+
+bool hasActiveModifiers(const Channel& channel) {
+  for (const ChannelModifier& m : channel.modifiers)
+    if (m.enabled) return true;
+  return false;
+}
+
+std::string bakeClipModifiers(const Clip& clip, double framesPerSecond, Clip& out) {
+  out = clip;
+  for (size_t c = 0; c < out.channels.size(); ++c) {
+    Channel& ch = out.channels[c];
+    if (!hasActiveModifiers(ch)) {
+      ch.modifiers.clear();
+      continue;
+    }
+    BakeChannelModifiersJob bake;
+    bake.source.channel = &clip.channels[c];
+    bake.start = 0.0f;
+    bake.end = clip.duration();
+    bake.framesPerSecond = framesPerSecond;
+    std::string error;
+    if (!bake.run(error)) return "channel " + std::to_string(c) + ": " + error;
+    ch = std::move(bake.output);
+  }
+  return "";
+}
+
+bool hasChannelModifiers(const Clip& clip) {
+  for (const Channel& ch : clip.channels)
+    if (!ch.modifiers.empty()) return true;
+  return false;
 }
 
 }  // namespace kinema
