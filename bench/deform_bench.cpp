@@ -3,6 +3,9 @@
 //  BM_Bend/Twist/Taper  one Barr deformer on 50,000 vertices
 //  BM_StackOnDefaultCharacter  a lattice, bend, twist, taper and soft pull on the default
 //                    character's body (the whole stack, per frame)
+//  BM_SceneDeformationWithStack  what the editor and `kinema render` run per frame for the
+//                    default character with that stack: morph targets (smile at 0.5), skinning
+//                    at the rest pose, the stack, and the normals recomputed (SceneDeformationJob)
 //   ./build/bench/deform_bench --benchmark_min_time=0.5
 #include <benchmark/benchmark.h>
 
@@ -10,7 +13,9 @@
 #include <vector>
 
 #include "deform/deformer_stack.h"
+#include "core/forward_kinematics.h"
 #include "skin/default_character_scene.h"
+#include "skin/scene_deformation.h"
 
 namespace {
 
@@ -128,5 +133,53 @@ void BM_StackOnDefaultCharacter(benchmark::State& state) {
   countNsPerVertex(state, pts.size());
 }
 BENCHMARK(BM_StackOnDefaultCharacter)->Unit(benchmark::kMicrosecond);
+
+void BM_SceneDeformationWithStack(benchmark::State& state) {
+  Scene scene = makeDefaultCharacterScene();
+  const std::vector<glm::vec3>& pts = scene.meshes[0].primitives[0].positions;
+  Deformer lattice;
+  lattice.name = "lattice";
+  lattice.type = DeformerType::Lattice;
+  lattice.lattice = movedLattice(pts, 4);
+  Deformer bend;
+  bend.name = "bend";
+  bend.type = DeformerType::Bend;
+  bend.axis.kind = AxisDeformerKind::Bend;
+  bend.axis.low = 1.0f;
+  bend.axis.high = 1.7f;
+  bend.axis.amount = 0.4f;
+  Deformer twist = bend;
+  twist.name = "twist";
+  twist.type = DeformerType::Twist;
+  twist.axis.kind = AxisDeformerKind::Twist;
+  Deformer taper = bend;
+  taper.name = "taper";
+  taper.type = DeformerType::Taper;
+  taper.axis.kind = AxisDeformerKind::Taper;
+  taper.axis.amount = 0.8f;
+  Deformer pull;
+  pull.name = "pull";
+  pull.type = DeformerType::SoftPull;
+  pull.pull.center = pts[pts.size() / 2];
+  pull.pull.offset = glm::vec3(0.0f, 0.05f, 0.02f);
+  pull.pull.radius = 0.2f;
+  scene.editDeformerStack(0).deformers = {lattice, bend, twist, taper, pull};
+  const std::vector<glm::mat4> world = computeWorld(scene.skeleton, Pose::rest(scene.skeleton));
+  std::vector<std::vector<float>> weights = {{0.0f, 0.5f, 0.0f, 0.0f}};
+  std::vector<DeformedPrimitive> out;
+  SceneDeformationJob job;
+  job.scene = &scene;
+  job.world = &world;
+  job.morphWeights = &weights;
+  job.out = &out;
+  if (!job.validate().empty()) state.SkipWithError(job.validate().c_str());
+  for (auto _ : state) {
+    job.run();
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.counters["vertices"] = static_cast<double>(pts.size());
+  countNsPerVertex(state, pts.size());
+}
+BENCHMARK(BM_SceneDeformationWithStack)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

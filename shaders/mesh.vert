@@ -98,7 +98,14 @@ void main() {
   } else {
     world = (uModel * vec4(position, 1.0)).xyz;
     worldNormal = uModelNormal * normal;
-    heat = uWeightJoint >= 0 ? 1.0 : 0.0;
+    // A skinned primitive deformed on the CPU (drawn rigid, influences still bound) shows its
+    // weights; a rigid instance follows one joint: all or nothing.
+    if (aWeights0.x > 0.0) {
+      for (int i = 0; i < 8; ++i)
+        if (joints[i] == uWeightJoint) heat += weights[i];
+    } else {
+      heat = uWeightJoint >= 0 ? 1.0 : 0.0;
+    }
   }
   float nl = length(worldNormal);
   worldNormal = nl > 0.0 ? worldNormal / nl : vec3(0.0);

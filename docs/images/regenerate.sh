@@ -95,3 +95,19 @@ tmp=$(mktemp -d)
 cp "$tmp/boids/priority.png" "$root/docs/images/boids_priority.png"
 cp "$tmp/boids/average.png" "$root/docs/images/boids_average.png"
 rm -rf "$tmp"
+# Deformers and the face (issue 22): the default character with a lattice (before / after),
+# a bend, a twist and a taper, and its four expression shapes at full weight.
+tmp=$(mktemp -d)
+python3 "$root/docs/images/deformer_scenes.py" "$root/assets/default_character.kinema" "$tmp"
+for n in rest lattice bend twist taper; do
+  "$kinema" render "$tmp/$n.kinema" --bones none --camera 35,10 --size 400x560 --out "$tmp/$n.png"
+  convert "$tmp/$n.png" -crop 240x300+80+130 +repage "$tmp/c_$n.png"
+done
+convert "$tmp/c_rest.png" "$tmp/c_lattice.png" +append "$root/docs/images/deform_lattice.png"
+convert "$tmp/c_rest.png" "$tmp/c_bend.png" "$tmp/c_twist.png" "$tmp/c_taper.png" +append "$root/docs/images/deform_bend_twist_taper.png"
+for n in neutral jaw_open smile brow_raise blink; do
+  "$kinema" render "$tmp/face_$n.kinema" --bones none --camera 0,0,3.2 --size 1200x1600 --out "$tmp/face_$n.png"
+  convert "$tmp/face_$n.png" -crop 220x220+490+60 +repage "$tmp/c_face_$n.png"
+done
+convert "$tmp"/c_face_{neutral,jaw_open,smile,brow_raise,blink}.png +append "$root/docs/images/face_shapes.png"
+rm -rf "$tmp"

@@ -6,12 +6,14 @@
 #include <cctype>
 #include <cmath>
 #include <iostream>
+#include <sstream>
 
 #include "cli/command_line.h"
 #include "io/bvh_writer.h"
 #include "io/gltf_writer.h"
 #include "io/kinema_file.h"
 #include "io/scene.h"
+#include "skin/bake_deformers.h"
 
 namespace kinema::cli {
 
@@ -46,6 +48,8 @@ CLI::App* addConvertCommand(CLI::App& app, ConvertOptions& o) {
                   "(default: the clip's own)");
   cmd->add_option("--rotation-order", o.rotationOrder, "Euler order of BVH rotation channels (default ZXY)");
   addUpOption(cmd, o.up);  // the input's; BVH output is always Y-up
+  cmd->add_flag("--bake-deformers", o.bakeDeformers,
+                "Write deformer stacks as morph targets made at their keys (and report the largest error)");
   return cmd;
 }
 
@@ -64,8 +68,24 @@ int runConvert(const ConvertOptions& o) {
 
   Result<Scene> loaded = loadScene(o.input, inputLimits(o.allowOutsidePaths), upAxisOf(o.up));
   if (!loaded) return badInput(loaded.error());
+  for (const std::string& line : loaded->warnings) std::cerr << "kinema convert: warning: " << o.input << ": " << line << "\n";
+  if (o.bakeDeformers && !loaded->deformers.empty()) {
+    Scene baked;
+    DeformerBakeReport bake;
+    BakeDeformersJob job;
+    job.scene = &loaded.value();
+    job.out = &baked;
+    job.report = &bake;
+    if (std::string e = job.validate(); !e.empty()) return badInput(o.input + ": " + e);
+    if (!job.run()) return badInput(o.input + ": the deformers could not be baked");
+    for (const std::string& line : bake.lines) std::cerr << "kinema convert: " << line << "\n";
+    std::ostringstream where;
+    if (bake.errorClip >= 0) where << " (clip " << bake.errorClip << ", time " << bake.errorTime << " s)";
+    std::cerr << "kinema convert: baked deformers: " << bake.targets << " morph target(s), largest error "
+              << bake.largestError << " m over " << bake.samples << " sampled pose(s)" << where.str() << "\n";
+    loaded.value() = std::move(baked);
+  }
   const Scene& scene = loaded.value();
-  for (const std::string& line : scene.warnings) std::cerr << "kinema convert: warning: " << o.input << ": " << line << "\n";
 
   std::vector<std::string> report;
   std::string error;

@@ -10,6 +10,7 @@ struct ConvertOptions {
   double rate = 0.0;  // frames per second for BVH output and glTF resampling; 0: the clip's
   std::string rotationOrder = "ZXY";
   std::string up = "y";  // --up: BVH files' up axis
+  bool bakeDeformers = false;  // --bake-deformers: deformer stacks become morph targets (BakeDeformersJob)
 };
 
 CLI::App* addConvertCommand(CLI::App& app, ConvertOptions& options);

@@ -243,14 +243,32 @@ int runRender(const RenderOptions& o) {
   // One camera for the whole sequence, framing every pose in it (joints and deformed
   // vertices, read back from the GPU), so the view does not jump.
   std::vector<std::vector<std::vector<float>>> morphWeights;  // per sample, per mesh instance
+  // Per sample: the instances with an active deformer stack, deformed on the CPU (morphs,
+  // skin, deformers); the GPU draws those vertices as they are.
+  std::vector<std::vector<DeformedPrimitive>> cpuDeformed(samples.size());
   Bounds bounds;
   for (size_t k = 0; k < samples.size(); ++k) {
     for (const glm::mat4& m : worlds[k]) bounds.add(glm::vec3(m[3]));
     if (!meshes) continue;
-    morphWeights.push_back(sampleMorphWeights(scene, scene.clips.empty() ? -1 : o.clip, samples[k].time));
+    const int clip = scene.clips.empty() ? -1 : o.clip;
+    morphWeights.push_back(sampleMorphWeights(scene, clip, samples[k].time));
+    const std::vector<DeformerStack> stacks = sampleDeformerStacks(scene, clip, samples[k].time);
+    if (anyDeformerActive(stacks)) {
+      SceneDeformationJob job;
+      job.scene = &scene;
+      job.world = &worlds[k];
+      job.morphWeights = &morphWeights.back();
+      job.deformers = &stacks;
+      job.withDeformersOnly = true;
+      job.out = &cpuDeformed[k];
+      if (std::string e = job.validate(); !e.empty()) return badInput(scene.source + ": " + e);
+      if (!job.run()) return badInput(scene.source + ": the deformer stacks could not be evaluated");
+      if (std::string e = nonFiniteVerticesError(scene, cpuDeformed[k], samples[k].time); !e.empty()) return badInput(e);
+    }
     MeshFrame meshFrame;
     meshFrame.world = &worlds[k];
     meshFrame.morphWeights = &morphWeights.back();
+    meshFrame.deformed = &cpuDeformed[k];
     const Bounds body = renderer.meshes().deformedBounds(meshFrame);
     if (!body.empty && !(isFinite(body.min) && isFinite(body.max))) {
       const std::string bad = deformedVerticesError(scene, worlds[k], morphWeights.back(), samples[k].time);
@@ -287,6 +305,7 @@ int runRender(const RenderOptions& o) {
     meshDraw.renderer = &renderer.meshes();
     meshDraw.frame.world = &worlds[k];
     meshDraw.frame.morphWeights = meshes ? &morphWeights[k] : nullptr;
+    meshDraw.frame.deformed = meshes ? &cpuDeformed[k] : nullptr;
     meshDraw.frame.weightJoint = weightJoint;
     FrameDescription frame;
     frame.skeleton = &list;

@@ -47,6 +47,8 @@ int runSkin(const SkinOptions& o) {
   job.scene = &scene;
   job.world = &world;
   job.morphWeights = &weights;
+  const std::vector<DeformerStack> stacks = sampleDeformerStacks(scene, o.clip, time);
+  job.deformers = &stacks;
   job.skinnedOnly = true;
   job.out = &deformed;
   if (const std::string bad = job.validate(); !bad.empty()) return badInput(scene.source + ": " + bad);

@@ -85,6 +85,38 @@ std::string Deformer::validate(int jointCount) const {
   return "unknown deformer type";
 }
 
+const Deformer* DeformerStack::find(const std::string& name) const {
+  for (const Deformer& d : deformers)
+    if (d.name == name) return &d;
+  return nullptr;
+}
+
+Deformer* DeformerStack::find(const std::string& name) {
+  for (Deformer& d : deformers)
+    if (d.name == name) return &d;
+  return nullptr;
+}
+
+std::string DeformerStack::validate(const Mesh& mesh, int jointCount) const {
+  for (size_t i = 0; i < deformers.size(); ++i) {
+    const Deformer& d = deformers[i];
+    const std::string at = "deformer " + std::to_string(i) + " ('" + d.name + "'): ";
+    if (d.name.empty()) return at + "a deformer needs a name";
+    if (d.name.find('/') != std::string::npos) return at + "a deformer's name may not contain '/'";
+    for (size_t k = 0; k < i; ++k)
+      if (deformers[k].name == d.name) return at + "the name is used by deformer " + std::to_string(k) + " too";
+    if (std::string e = d.validate(jointCount); !e.empty()) return at + e;
+    if (d.weights.size() > mesh.primitives.size())
+      return at + "weights for " + std::to_string(d.weights.size()) + " primitives, the mesh has " +
+             std::to_string(mesh.primitives.size());
+    for (size_t p = 0; p < d.weights.size(); ++p)
+      if (!d.weights[p].empty() && d.weights[p].size() != mesh.primitives[p].positions.size())
+        return at + std::to_string(d.weights[p].size()) + " weights for primitive " + std::to_string(p) + "'s " +
+               std::to_string(mesh.primitives[p].positions.size()) + " vertices";
+  }
+  return "";
+}
+
 std::vector<std::string> deformerParameters(const Deformer& d) {
   std::vector<std::string> names;
   switch (d.type) {

@@ -40,6 +40,17 @@ struct Deformer {
 // A mesh's deformers, applied in order.
 struct DeformerStack {
   std::vector<Deformer> deformers;
+
+  bool empty() const { return deformers.empty(); }
+  // The deformer called `name`, or null.
+  const Deformer* find(const std::string& name) const;
+  Deformer* find(const std::string& name);
+  // Empty when the stack can deform `mesh` on a skeleton of `jointCount` joints: every
+  // deformer valid (Deformer::validate), named (non-empty, no '/', unique in the stack: the
+  // name is how animation channels find it, "deformers/NAME/PARAM"), with no more weight
+  // lists than the mesh has primitives and each non-empty list one weight per vertex.
+  // Otherwise one sentence starting "deformer K ('name'): ".
+  std::string validate(const Mesh& mesh, int jointCount) const;
 };
 
 // The keyable parameters of a deformer, by name: Bend/Twist "angle" (radians), Taper

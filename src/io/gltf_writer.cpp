@@ -605,6 +605,11 @@ Result<std::string> gltfBytes(const Scene& scene, const GltfWriteOptions& option
                          "its frame time is too small to resample at)");
   }
   if (!scene.ik.empty()) note("IK limits and targets dropped (glTF has no place for them; .kinema keeps them)");
+  for (size_t i = 0; i < scene.deformers.size() && i < scene.meshInstances.size(); ++i)
+    if (!scene.deformers[i].empty())
+      note("mesh instance " + std::to_string(i) + " (joint '" + scene.skeleton.names[scene.meshInstances[i].joint] +
+           "'): " + std::to_string(scene.deformers[i].deformers.size()) +
+           " deformer(s) dropped (glTF has no deformers; kinema convert --bake-deformers writes them as morph targets)");
 
   // tinygltf writes a node without any property as null, which is not glTF: an unnamed
   // leaf at rest gets its identity rotation written out.

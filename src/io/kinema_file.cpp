@@ -1062,6 +1062,131 @@ bool readNamedJoint(Reader& r, const Json& j, const std::string& p, const Skelet
   return true;
 }
 
+bool readVec3(Reader& r, const Json& obj, const std::string& p, const char* key, bool required, glm::vec3& out) {
+  const Json* v = r.member(obj, p, key, required);
+  if (!v) return !required;
+  return r.floats(*v, p + "." + key, 3, &out.x);
+}
+
+bool readLattice(Reader& r, const Json& j, const std::string& p, FfdLattice& lat) {
+  if (!j.is_object()) return r.fail(p, "expected an object");
+  const Json* v;
+  if (!(v = r.member(j, p, "counts", true))) return false;
+  if (!v->is_array() || v->size() != 3) return r.fail(p + ".counts", "expected an array of 3 integers");
+  for (int a = 0; a < 3; ++a)
+    if (!readIndex(r, (*v)[a], p + ".counts[" + std::to_string(a) + "]", kLatticeMinPoints, kLatticeMaxPoints + 1,
+                   lat.counts[a]))
+      return false;
+  if (!readVec3(r, j, p, "origin", true, lat.origin)) return false;
+  if (!(v = r.member(j, p, "axes", true))) return false;
+  if (!v->is_array() || v->size() != 3) return r.fail(p + ".axes", "expected an array of 3 vectors");
+  for (int a = 0; a < 3; ++a)
+    if (!r.floats((*v)[a], p + ".axes[" + std::to_string(a) + "]", 3, &lat.axes[a].x)) return false;
+  if (!readVectors(r, j, p, "points", true, lat.points)) return false;
+  if (static_cast<int>(lat.points.size()) != lat.pointCount())
+    return r.fail(p + ".points", "expected " + std::to_string(lat.pointCount()) + " points (3 numbers each), found " +
+                                     std::to_string(lat.points.size()));
+  if (std::string e = lat.validate(); !e.empty()) return r.fail(p, e);
+  return true;
+}
+
+bool readAxisDeformer(Reader& r, const Json& j, const std::string& p, AxisDeformer& ax) {
+  if (!j.is_object()) return r.fail(p, "expected an object");
+  const Json* v;
+  if ((v = r.member(j, p, "axis", false)) && !readEnum(r, *v, p + ".axis", ax.axis, "x, y, z")) return false;
+  if (!readVec3(r, j, p, "origin", false, ax.origin)) return false;
+  if ((v = r.member(j, p, "low", false)) && !readFloat(r, *v, p + ".low", ax.low)) return false;
+  if ((v = r.member(j, p, "high", false)) && !readFloat(r, *v, p + ".high", ax.high)) return false;
+  if ((v = r.member(j, p, "amount", false)) && !readFloat(r, *v, p + ".amount", ax.amount)) return false;
+  if (std::string e = ax.validate(); !e.empty()) return r.fail(p, e);
+  return true;
+}
+
+bool readSoftPull(Reader& r, const Json& j, const std::string& p, SoftPull& pull) {
+  if (!j.is_object()) return r.fail(p, "expected an object");
+  const Json* v;
+  if (!readVec3(r, j, p, "center", true, pull.center) || !readVec3(r, j, p, "offset", false, pull.offset)) return false;
+  if ((v = r.member(j, p, "radius", false)) && !readFloat(r, *v, p + ".radius", pull.radius)) return false;
+  if ((v = r.member(j, p, "falloff", false)) &&
+      !readEnum(r, *v, p + ".falloff", pull.falloff, "smooth, sphere, root, sharp, linear, constant"))
+    return false;
+  if (std::string e = pull.validate(); !e.empty()) return r.fail(p, e);
+  return true;
+}
+
+// One entry of mesh_instances[i].deformers (docs/kinema-format.md, "Deformers").
+bool readDeformer(Reader& r, const Json& j, const std::string& p, const Skeleton& s, const Mesh& mesh, Deformer& d) {
+  if (!j.is_object()) return r.fail(p, "expected an object");
+  const Json* v;
+  if (!(v = r.member(j, p, "name", true)) || !r.string(*v, p + ".name", d.name)) return false;
+  if (d.name.empty() || d.name.find('/') != std::string::npos)
+    return r.fail(p + ".name", "a deformer's name must be non-empty and without '/'");
+  if (!(v = r.member(j, p, "type", true)) ||
+      !readEnum(r, *v, p + ".type", d.type, "lattice, bend, twist, taper, soft_pull"))
+    return false;
+  if ((v = r.member(j, p, "enabled", false))) {
+    if (!v->is_boolean()) return r.fail(p + ".enabled", "expected true or false, found " + std::string(v->type_name()));
+    d.enabled = v->get<bool>();
+  }
+  if ((v = r.member(j, p, "parent", false)) && !readNamedJoint(r, *v, p + ".parent", s, d.parentJoint)) return false;
+  if ((v = r.member(j, p, "parent_rest", false)) && !r.floats(*v, p + ".parent_rest", 16, glm::value_ptr(d.parentRest)))
+    return false;
+  if ((v = r.member(j, p, "weights", false))) {
+    if (!v->is_array()) return r.fail(p + ".weights", "expected an array with one list per primitive");
+    if (v->size() > mesh.primitives.size())
+      return r.fail(p + ".weights", "weights for " + std::to_string(v->size()) + " primitives, the mesh has " +
+                                        std::to_string(mesh.primitives.size()));
+    d.weights.resize(v->size());
+    for (size_t k = 0; k < v->size(); ++k) {
+      const std::string wp = p + ".weights[" + std::to_string(k) + "]";
+      if (!readFlatFloats(r, (*v)[k], wp, 1, d.weights[k])) return false;
+      if (!d.weights[k].empty() && d.weights[k].size() != mesh.primitives[k].positions.size())
+        return r.fail(wp, "expected " + std::to_string(mesh.primitives[k].positions.size()) +
+                              " weights (one per vertex) or none, found " + std::to_string(d.weights[k].size()));
+      for (size_t i = 0; i < d.weights[k].size(); ++i)
+        if (!(d.weights[k][i] >= 0.0f && d.weights[k][i] <= 1.0f))
+          return r.fail(wp + "[" + std::to_string(i) + "]", "a weight must be in [0, 1]");
+    }
+  }
+  const char* part = d.type == DeformerType::Lattice ? "lattice" : d.type == DeformerType::SoftPull ? "pull" : "axis";
+  if (!(v = r.member(j, p, part, true))) return false;
+  const std::string pp = p + "." + part;
+  switch (d.type) {
+    case DeformerType::Lattice:
+      if (!readLattice(r, *v, pp, d.lattice)) return false;
+      break;
+    case DeformerType::SoftPull:
+      if (!readSoftPull(r, *v, pp, d.pull)) return false;
+      break;
+    case DeformerType::Bend:
+    case DeformerType::Twist:
+    case DeformerType::Taper:
+      d.axis.kind = d.type == DeformerType::Bend    ? AxisDeformerKind::Bend
+                    : d.type == DeformerType::Twist ? AxisDeformerKind::Twist
+                                                    : AxisDeformerKind::Taper;
+      if (d.type == DeformerType::Taper) d.axis.amount = 1.0f;  // no taper when "amount" is left out
+      if (!readAxisDeformer(r, *v, pp, d.axis)) return false;
+      break;
+  }
+  if (std::string e = d.validate(s.size()); !e.empty()) return r.fail(p, e);
+  return true;
+}
+
+bool readDeformers(Reader& r, const Json& j, const std::string& p, const Skeleton& s, const Mesh& mesh,
+                   DeformerStack& stack) {
+  if (!j.is_array()) return r.fail(p, "expected an array of deformers");
+  stack.deformers.resize(j.size());
+  for (size_t i = 0; i < j.size(); ++i) {
+    const std::string dp = p + "[" + std::to_string(i) + "]";
+    if (!readDeformer(r, j[i], dp, s, mesh, stack.deformers[i])) return false;
+    for (size_t k = 0; k < i; ++k)
+      if (stack.deformers[k].name == stack.deformers[i].name)
+        return r.fail(dp + ".name", "'" + cutForMessage(stack.deformers[i].name) + "' is the name of deformer " +
+                                        std::to_string(k) + " too (names must be unique in a stack)");
+  }
+  return true;
+}
+
 bool readSceneAssets(Reader& r, const Json& root, Scene& scene) {
   const Skeleton& s = scene.skeleton;
   if (const Json* v = r.member(root, "", "node_of_joint", false)) {
@@ -1208,10 +1333,61 @@ bool readSceneAssets(Reader& r, const Json& root, Scene& scene) {
                                    std::to_string(i) + "] = " + std::to_string(prim.influenceJoints[i]) +
                                    " is past the skin's " + std::to_string(joints) + " joints");
         }
+        DeformerStack stack;
+        if ((v = r.member(j, p, "deformers", false)) && !readDeformers(r, *v, p + ".deformers", s, mesh, stack))
+          return false;
+        if (!stack.empty()) {
+          scene.deformers.resize(scene.meshInstances.size());
+          scene.deformers.push_back(std::move(stack));
+        }
         scene.meshInstances.push_back(std::move(mi));
         return true;
       });
+  // One stack per instance, or none at all.
+  if (ok && !scene.deformers.empty()) scene.deformers.resize(scene.meshInstances.size());
   return ok;
+}
+
+Json deformerJson(const Deformer& d, const Skeleton& s) {
+  Json j;
+  j["name"] = d.name;
+  j["type"] = toString(d.type);
+  if (!d.enabled) j["enabled"] = false;
+  if (d.parentJoint >= 0) j["parent"] = s.names[d.parentJoint];
+  if (d.parentRest != glm::mat4(1.0f)) j["parent_rest"] = vec(glm::value_ptr(d.parentRest), 16);
+  if (!d.weights.empty()) {
+    Json w = Json::array();
+    for (const std::vector<float>& list : d.weights) w.push_back(flatFloats(list, 1));
+    j["weights"] = std::move(w);
+  }
+  switch (d.type) {
+    case DeformerType::Lattice: {
+      const FfdLattice& l = d.lattice;
+      Json axes = Json::array();
+      for (const glm::vec3& a : l.axes) axes.push_back(vec(&a.x, 3));
+      j["lattice"] = {{"counts", {l.counts[0], l.counts[1], l.counts[2]}},
+                      {"origin", vec(&l.origin.x, 3)},
+                      {"axes", std::move(axes)},
+                      {"points", flatFloats(l.points, 3)}};
+      break;
+    }
+    case DeformerType::SoftPull:
+      j["pull"] = {{"center", vec(&d.pull.center.x, 3)},
+                   {"offset", vec(&d.pull.offset.x, 3)},
+                   {"radius", jsonFloat(d.pull.radius)},
+                   {"falloff", toString(d.pull.falloff)}};
+      break;
+    case DeformerType::Bend:
+    case DeformerType::Twist:
+    case DeformerType::Taper:
+      j["axis"] = {{"axis", toString(d.axis.axis)},
+                   {"origin", vec(&d.axis.origin.x, 3)},
+                   {"low", jsonFloat(d.axis.low)},
+                   {"high", jsonFloat(d.axis.high)},
+                   {"amount", jsonFloat(d.axis.amount)}};
+      break;
+  }
+  return j;
 }
 
 void sceneAssetsToJson(const Scene& scene, Json& root) {
@@ -1292,13 +1468,19 @@ void sceneAssetsToJson(const Scene& scene, Json& root) {
   }
   if (!scene.meshInstances.empty()) {
     Json a = Json::array();
-    for (const MeshInstance& mi : scene.meshInstances) {
+    for (size_t i = 0; i < scene.meshInstances.size(); ++i) {
+      const MeshInstance& mi = scene.meshInstances[i];
       Json j;
       j["joint"] = s.names[mi.joint];
       j["mesh"] = mi.mesh;
       if (mi.skin >= 0) j["skin"] = mi.skin;
       if (!mi.morphWeights.empty()) j["morph_weights"] = flatFloats(mi.morphWeights, 1);
       if (mi.skinning == SkinningMethod::DualQuaternion) j["skinning"] = "dual-quaternion";
+      if (const DeformerStack* stack = scene.deformerStack(i)) {
+        Json list = Json::array();
+        for (const Deformer& d : stack->deformers) list.push_back(deformerJson(d, s));
+        j["deformers"] = std::move(list);
+      }
       a.push_back(std::move(j));
     }
     root["mesh_instances"] = std::move(a);
@@ -1354,6 +1536,12 @@ std::string sceneAssetsError(const Scene& scene) {
         mi.skin >= static_cast<int>(scene.skins.size()))
       return "mesh instance " + std::to_string(i) + " names a missing joint, mesh or skin";
   }
+  if (scene.deformers.size() > scene.meshInstances.size())
+    return "deformer stacks for " + std::to_string(scene.deformers.size()) + " mesh instances, the scene has " +
+           std::to_string(scene.meshInstances.size());
+  for (size_t i = 0; i < scene.deformers.size(); ++i)
+    if (std::string e = scene.deformers[i].validate(scene.meshes[scene.meshInstances[i].mesh], joints); !e.empty())
+      return "mesh instance " + std::to_string(i) + ": " + e;
   return {};
 }
 

@@ -8,6 +8,7 @@
 #include "core/mesh.h"
 #include "core/pose.h"
 #include "core/skeleton.h"
+#include "deform/deformer_stack.h"
 #include "ik/ik_rig.h"
 #include "io/input_limits.h"
 #include "io/up_axis.h"
@@ -44,6 +45,11 @@ struct Scene {
   std::vector<Mesh> meshes;
   std::vector<Skin> skins;
   std::vector<MeshInstance> meshInstances;
+  // The deformer stack of each mesh instance (same order), run after its morph targets and
+  // skinning, in world space (SceneDeformationJob); empty when no instance has deformers.
+  // Their parameters are animated by Scalar channels "deformers/NAME/PARAM" on the
+  // instance's joint (anim/scalar_property.h).
+  std::vector<DeformerStack> deformers;
   std::vector<Material> materials;
   std::vector<TextureImage> images;
   // glTF: each node's name as the file gives it, indexed by node ("" when unnamed). Names
@@ -55,6 +61,15 @@ struct Scene {
 
   // The file index of each joint: nodeOfJoint when present, else the joint index.
   int fileIndexOf(int joint) const { return nodeOfJoint.empty() ? joint : nodeOfJoint[joint]; }
+  // Instance i's deformer stack, or null when it has none (no deformers at all).
+  const DeformerStack* deformerStack(size_t instance) const {
+    return instance < deformers.size() && !deformers[instance].empty() ? &deformers[instance] : nullptr;
+  }
+  // Instance i's stack for editing: `deformers` grows to one per instance first.
+  DeformerStack& editDeformerStack(size_t instance) {
+    if (deformers.size() < meshInstances.size()) deformers.resize(meshInstances.size());
+    return deformers[instance];
+  }
 };
 
 // An image that failed to decode on loading (the reader warned): no pixels at all.

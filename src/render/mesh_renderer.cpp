@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "render/shader_sources.h"
+#include "deform/deformer_stack.h"
 #include "skin/skinning_decomposition.h"
 #include "skin/skinning_matrices.h"
 
@@ -103,8 +104,9 @@ void MeshRenderer::release() {
   for (GpuPrimitive& p : primitives_) {
     glDeleteVertexArrays(1, &p.vao);
     glDeleteVertexArrays(1, &p.cpuVao);
-    const GLuint buffers[] = {p.vertices, p.influences, p.indices, p.morphBuffer};
-    glDeleteBuffers(4, buffers);
+    glDeleteVertexArrays(1, &p.deformedVao);
+    const GLuint buffers[] = {p.vertices, p.influences, p.indices, p.morphBuffer, p.deformedVertices};
+    glDeleteBuffers(5, buffers);
     glDeleteTextures(1, &p.morphTexture);
   }
   primitives_.clear();
@@ -497,7 +499,9 @@ void MeshRenderer::drawInstancesCpu(const MeshFrame& frame, const CpuPose& pose)
 
 void MeshRenderer::draw(const MeshFrame& frame, const glm::mat4& viewProjection, const glm::mat4& view) {
   if (!scene_ || !frame.world || primitives_.empty()) return;
-  if (cpuEligible() && frame.weightJoint < 0) {
+  // Frames with an active deformer stack take the shader path with those primitives streamed
+  // (bindCpuDeformed): the whole-scene CPU path below knows only morphs and skinning.
+  if (cpuEligible() && frame.weightJoint < 0 && !anyDeformed(frame.deformed)) {
     cpuScratch_.clear();
     if (appendCpuPose(frame, cpuPose_)) {
       uploadCpuScratch();
@@ -525,15 +529,88 @@ void MeshRenderer::draw(const MeshFrame& frame, const glm::mat4& viewProjection,
   unbindMeshDrawState();
 }
 
+const DeformedPrimitive* MeshRenderer::cpuDeformed(const MeshFrame& frame, int instance, const GpuPrimitive& p) {
+  if (!frame.deformed) return nullptr;
+  for (const DeformedPrimitive& d : *frame.deformed)
+    if (d.instance == instance && d.primitive == p.primitive)
+      return static_cast<int>(d.positions.size()) == p.vertexCount ? &d : nullptr;
+  return nullptr;
+}
+
+void MeshRenderer::bindCpuDeformed(GpuPrimitive& p, const DeformedPrimitive& d) {
+  const MeshPrimitive& src = scene_->meshes[p.mesh].primitives[p.primitive];
+  std::vector<glm::vec3> shading;
+  if (d.normals.size() != d.positions.size()) computeVertexNormals(d.positions, src.indices, shading);
+  const std::vector<glm::vec3>& normals = d.normals.size() == d.positions.size() ? d.normals : shading;
+  std::vector<PackedVertex> vertices(static_cast<size_t>(p.vertexCount));
+  for (int v = 0; v < p.vertexCount; ++v) {
+    PackedVertex& out = vertices[v];
+    for (int c = 0; c < 3; ++c) {
+      out.position[c] = d.positions[v][c];
+      out.normal[c] = normals[v][c];
+    }
+    const glm::vec2 uv = src.texcoords.size() == src.positions.size() ? src.texcoords[v] : glm::vec2(0.0f);
+    out.texcoord[0] = uv.x;
+    out.texcoord[1] = uv.y;
+  }
+  if (!p.deformedVao) {
+    glGenVertexArrays(1, &p.deformedVao);
+    glBindVertexArray(p.deformedVao);
+    glGenBuffers(1, &p.deformedVertices);
+    glBindBuffer(GL_ARRAY_BUFFER, p.deformedVertices);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(PackedVertex), reinterpret_cast<void*>(offsetof(PackedVertex, position)));
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(PackedVertex), reinterpret_cast<void*>(offsetof(PackedVertex, normal)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, sizeof(PackedVertex), reinterpret_cast<void*>(offsetof(PackedVertex, texcoord)));
+    if (p.influences) {  // kept for the weights view (the shader's rigid path reads them for heat only)
+      const GLsizei s = static_cast<GLsizei>(kMaxInfluences * (sizeof(uint16_t) + sizeof(float)));
+      const size_t w = kMaxInfluences * sizeof(uint16_t);
+      glBindBuffer(GL_ARRAY_BUFFER, p.influences);
+      glEnableVertexAttribArray(3);
+      glVertexAttribIPointer(3, 4, GL_UNSIGNED_SHORT, s, nullptr);
+      glEnableVertexAttribArray(4);
+      glVertexAttribIPointer(4, 4, GL_UNSIGNED_SHORT, s, reinterpret_cast<void*>(4 * sizeof(uint16_t)));
+      glEnableVertexAttribArray(5);
+      glVertexAttribPointer(5, 4, GL_FLOAT, GL_FALSE, s, reinterpret_cast<void*>(w));
+      glEnableVertexAttribArray(6);
+      glVertexAttribPointer(6, 4, GL_FLOAT, GL_FALSE, s, reinterpret_cast<void*>(w + 4 * sizeof(float)));
+    }
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, p.indices);
+  }
+  glBindVertexArray(p.deformedVao);
+  glBindBuffer(GL_ARRAY_BUFFER, p.deformedVertices);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(PackedVertex)), vertices.data(),
+               GL_STREAM_DRAW);
+  if (!p.influences) {  // an unskinned primitive: the shader reads constant zero influences
+    glVertexAttribI4ui(3, 0, 0, 0, 0);
+    glVertexAttribI4ui(4, 0, 0, 0, 0);
+    glVertexAttrib4f(5, 0, 0, 0, 0);
+    glVertexAttrib4f(6, 0, 0, 0, 0);
+  }
+  // Already world space, already morphed: no skinning, identity model, no morph targets.
+  const glm::mat4 identity(1.0f);
+  const glm::mat3 identity3(1.0f);
+  glUniform1i(program_.uniform("uSkinning"), 0);
+  glUniformMatrix4fv(program_.uniform("uModel"), 1, GL_FALSE, glm::value_ptr(identity));
+  glUniformMatrix3fv(program_.uniform("uModelNormal"), 1, GL_FALSE, glm::value_ptr(identity3));
+  glUniform1i(program_.uniform("uMorphCount"), 0);
+}
+
 void MeshRenderer::drawInstances(const MeshFrame& frame, bool weightsView) {
   for (size_t i = 0; i < scene_->meshInstances.size(); ++i) {
     const MeshInstance& inst = scene_->meshInstances[i];
     if (!uploadedMesh(inst.mesh)) continue;
     for (int index : primitivesOfMesh_[inst.mesh]) {
-      const GpuPrimitive& p = primitives_[index];
+      GpuPrimitive& p = primitives_[index];
       if (p.indexCount == 0 || p.primitive >= static_cast<int>(scene_->meshes[inst.mesh].primitives.size())) continue;
       bindInstance(frame, static_cast<int>(i), p, weightsView);
-      glBindVertexArray(p.vao);
+      if (const DeformedPrimitive* d = cpuDeformed(frame, static_cast<int>(i), p)) {
+        bindCpuDeformed(p, *d);
+      } else {
+        glBindVertexArray(p.vao);
+      }
       glDrawElements(GL_TRIANGLES, p.indexCount, GL_UNSIGNED_INT, nullptr);
     }
   }
@@ -543,6 +620,7 @@ void MeshRenderer::drawGhosts(const std::vector<MeshGhost>& ghosts, const glm::m
   if (!scene_ || primitives_.empty() || ghosts.empty()) return;
   // CPU deformation: every ghost's vertices in one upload, then the same two passes.
   bool cpu = cpuEligible();
+  for (const MeshGhost& ghost : ghosts) cpu = cpu && !anyDeformed(ghost.deformed);
   if (cpu) {
     cpuScratch_.clear();
     cpuGhostPoses_.resize(ghosts.size());
@@ -591,6 +669,7 @@ void MeshRenderer::drawGhosts(const std::vector<MeshGhost>& ghosts, const glm::m
     MeshFrame frame;
     frame.world = ghosts[g].world;
     frame.morphWeights = ghosts[g].morphWeights;
+    frame.deformed = ghosts[g].deformed;
     jointSlotBase_ = static_cast<int>(g) * jointSlots_;
     // Depth only: the ghost's nearest surface where nothing opaque is in front of it...
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
@@ -641,6 +720,12 @@ std::string MeshRenderer::deform(const MeshFrame& frame, bool skinnedOnly, std::
     for (int index : primitivesOfMesh_[inst.mesh]) {
       const GpuPrimitive& p = primitives_[index];
       if (p.primitive >= static_cast<int>(scene_->meshes[inst.mesh].primitives.size())) continue;
+      if (const DeformedPrimitive* d = cpuDeformed(frame, static_cast<int>(i), p)) {
+        DeformedPrimitive copy = *d;  // deformed on the CPU already: the GPU has nothing to add
+        if (!p.hasNormals) copy.normals.clear();
+        out.push_back(std::move(copy));
+        continue;
+      }
       DeformedPrimitive result;
       result.instance = static_cast<int>(i);
       result.primitive = p.primitive;

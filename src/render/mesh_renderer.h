@@ -18,6 +18,10 @@ namespace kinema {
 struct MeshFrame {
   const std::vector<glm::mat4>* world = nullptr;
   const std::vector<std::vector<float>>* morphWeights = nullptr;
+  // Optional: primitives deformed on the CPU (SceneDeformationJob with withDeformersOnly: the
+  // instances whose deformer stack is active), world space. Those are drawn from these
+  // positions and normals, streamed each frame, instead of being morphed and skinned here.
+  const std::vector<DeformedPrimitive>* deformed = nullptr;
   // Skeleton joint whose skin weights are shown as heat colours (blue 0 -> red 1) instead of
   // the shaded material; -1 shows the materials.
   int weightJoint = -1;
@@ -30,6 +34,7 @@ struct MeshGhost {
   const std::vector<glm::mat4>* world = nullptr;
   const std::vector<std::vector<float>>* morphWeights = nullptr;
   glm::vec4 color{1.0f};
+  const std::vector<DeformedPrimitive>* deformed = nullptr;  // as MeshFrame::deformed
 };
 
 // Draws a Scene's meshes with OpenGL 3.3 core, skinned in the vertex shader
@@ -99,6 +104,7 @@ class MeshRenderer {
     GLuint vao = 0, vertices = 0, influences = 0, indices = 0;
     GLuint cpuVao = 0;  // CPU-deformed drawing: positions and normals from cpuBuffer_, texcoords and indices shared
     GLuint morphBuffer = 0, morphTexture = 0;
+    GLuint deformedVao = 0, deformedVertices = 0;  // MeshFrame::deformed vertices, made when first needed
     int vertexCount = 0, indexCount = 0, morphCount = 0;
     bool hasNormals = false, morphNormals = false, skinned = false;
   };
@@ -114,6 +120,12 @@ class MeshRenderer {
   void uploadCpuScratch();
   void drawInstancesCpu(const MeshFrame& frame, const CpuPose& pose);
   bool cpuEligible() const;
+  // The frame's CPU-deformed primitive for (instance, primitive of the mesh), or null.
+  static const DeformedPrimitive* cpuDeformed(const MeshFrame& frame, int instance, const GpuPrimitive& p);
+  // Streams a CPU-deformed primitive into p's own buffer and binds it as world-space, unskinned,
+  // unmorphed geometry (after bindInstance).
+  void bindCpuDeformed(GpuPrimitive& p, const DeformedPrimitive& d);
+  static bool anyDeformed(const std::vector<DeformedPrimitive>* deformed) { return deformed && !deformed->empty(); }
   bool uploadedMesh(int mesh) const;
   void release();
 

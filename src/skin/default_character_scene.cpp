@@ -5,6 +5,7 @@
 #include "core/default_character.h"
 #include "core/forward_kinematics.h"
 #include "skin/default_body_mesh.h"
+#include "skin/default_face_shapes.h"
 
 namespace kinema {
 
@@ -57,6 +58,7 @@ Scene makeDefaultCharacterScene() {
   weights.outWeights = &body.influenceWeights;
   weights.run();  // inputs made above, always valid
   body.material = 0;
+  addDefaultFaceShapes(body);  // jaw_open, smile, brow_raise, blink: morph targets at weight 0
 
   Material clay;
   clay.name = "Clay";
@@ -66,6 +68,8 @@ Scene makeDefaultCharacterScene() {
   Mesh mesh;
   mesh.name = "Body";
   mesh.primitives.push_back(std::move(body));
+  mesh.targetNames = kDefaultFaceShapeNames;
+  mesh.morphWeights.assign(kDefaultFaceShapeNames.size(), 0.0f);
   scene.meshes.push_back(std::move(mesh));
 
   Skin skin;

@@ -9,6 +9,8 @@ namespace kinema {
 // The default character as a scene: makeDefaultCharacter()'s skeleton, the generated body
 // (makeDefaultBodyMesh) bound to it with capsule automatic weights (top 4) through a skin
 // listing every joint in order, a clay material, and one mesh instance on the root joint.
+// The body carries the face's expression shapes as morph targets (addDefaultFaceShapes:
+// jaw_open, smile, brow_raise, blink), all at weight 0.
 Scene makeDefaultCharacterScene();
 
 // The per-joint capsule radii (metres) the default character is bound with: how far from

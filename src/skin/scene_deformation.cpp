@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "anim/sampling.h"
+#include "anim/scalar_property.h"
 #include "skin/dual_quaternion_skinning.h"
 #include "skin/linear_blend_skinning.h"
 #include "skin/morph_targets.h"
@@ -14,20 +15,6 @@
 namespace kinema {
 
 namespace {
-
-// K of a "weights/K" property, or -1.
-int morphTargetOf(const std::string& property) {
-  static const std::string prefix = "weights/";
-  if (property.compare(0, prefix.size(), prefix) != 0 || property.size() == prefix.size() ||
-      property.size() > prefix.size() + 9)
-    return -1;
-  int k = 0;
-  for (size_t i = prefix.size(); i < property.size(); ++i) {
-    if (property[i] < '0' || property[i] > '9') return -1;
-    k = k * 10 + (property[i] - '0');
-  }
-  return k;
-}
 
 std::string instanceError(const Scene& scene, size_t i) {
   const MeshInstance& inst = scene.meshInstances[i];
@@ -108,11 +95,48 @@ std::vector<std::vector<float>> sampleMorphWeights(const Scene& scene, int clip,
   const float t = static_cast<float>(time);
   for (const Channel& ch : scene.clips[clip].channels) {
     if (ch.target != ChannelTarget::Scalar || ch.times.empty()) continue;
-    const int k = morphTargetOf(ch.property);
-    if (k < 0) continue;
+    const ScalarProperty property = parseScalarProperty(ch.property);
+    if (property.kind != ScalarPropertyKind::MorphWeight) continue;
+    const int k = property.morphTarget;
     const float value = sampleChannel(ch, t).x;  // clamped to the channel's keys
     for (size_t i = 0; i < scene.meshInstances.size(); ++i)
       if (scene.meshInstances[i].joint == ch.joint && k < static_cast<int>(out[i].size())) out[i][k] = value;
+  }
+  return out;
+}
+
+namespace {
+bool stackActive(const std::vector<DeformerStack>& stacks, size_t i) {
+  return i < stacks.size() && std::any_of(stacks[i].deformers.begin(), stacks[i].deformers.end(),
+                                          [](const Deformer& d) { return d.enabled; });
+}
+}  // namespace
+
+bool anyDeformerActive(const std::vector<DeformerStack>& stacks) {
+  for (size_t i = 0; i < stacks.size(); ++i)
+    if (stackActive(stacks, i)) return true;
+  return false;
+}
+
+std::vector<DeformerStack> sampleDeformerStacks(const Scene& scene, int clip, double time) {
+  std::vector<DeformerStack> out(scene.meshInstances.size());
+  for (size_t i = 0; i < out.size() && i < scene.deformers.size(); ++i) out[i] = scene.deformers[i];
+  if (clip < 0 || clip >= static_cast<int>(scene.clips.size()) || scene.deformers.empty()) return out;
+  const float t = static_cast<float>(time);
+  for (const Channel& ch : scene.clips[clip].channels) {
+    if (ch.target != ChannelTarget::Scalar || ch.times.empty()) continue;
+    const ScalarProperty property = parseScalarProperty(ch.property);
+    if (property.kind != ScalarPropertyKind::DeformerParameter) continue;
+    bool sampled = false;
+    float value = 0.0f;
+    for (size_t i = 0; i < out.size(); ++i) {
+      if (scene.meshInstances[i].joint != ch.joint) continue;
+      Deformer* d = out[i].find(property.deformer);
+      if (!d) continue;
+      if (!sampled) value = sampleChannel(ch, t).x;  // clamped to the channel's keys
+      sampled = true;
+      setDeformerParameter(*d, property.parameter, value);  // an unknown parameter changes nothing
+    }
   }
   return out;
 }
@@ -134,6 +158,14 @@ std::string SceneDeformationJob::validate() const {
            std::to_string(scene->meshInstances.size()) + " mesh instances";
   for (size_t i = 0; i < scene->meshInstances.size(); ++i)
     if (std::string e = instanceError(*scene, i); !e.empty()) return e;
+  const std::vector<DeformerStack>& stacks = deformers ? *deformers : scene->deformers;
+  if (stacks.size() > scene->meshInstances.size())
+    return "deformer stacks for " + std::to_string(stacks.size()) + " mesh instances, the scene has " +
+           std::to_string(scene->meshInstances.size());
+  for (size_t i = 0; i < stacks.size(); ++i)
+    if (std::string e = stacks[i].validate(scene->meshes[scene->meshInstances[i].mesh], scene->skeleton.size());
+        !e.empty())
+      return "mesh instance " + std::to_string(i) + ": " + e;
   return {};
 }
 
@@ -145,6 +177,9 @@ bool SceneDeformationJob::run() const {
   for (size_t i = 0; i < scene->meshInstances.size(); ++i) {
     const MeshInstance& inst = scene->meshInstances[i];
     if (skinnedOnly && inst.skin < 0) continue;
+    const std::vector<DeformerStack>& stacks = deformers ? *deformers : scene->deformers;
+    const bool deform = stackActive(stacks, i);
+    if (withDeformersOnly && !deform) continue;
     const Mesh& mesh = scene->meshes[inst.mesh];
     const std::vector<float>& weights =
         morphWeights ? (*morphWeights)[i] : (!inst.morphWeights.empty() ? inst.morphWeights : mesh.morphWeights);
@@ -198,6 +233,18 @@ bool SceneDeformationJob::run() const {
         LinearBlendSkinningJob lbs;
         const bool ok = inst.skinning == SkinningMethod::DualQuaternion ? fill(dq) : fill(lbs);
         if (!ok) return false;  // validate() above rules this out (non-finite world matrices aside)
+      }
+      // Last, the deformer stack in world space; the shading normals follow the new surface.
+      if (deform) {
+        DeformerStackJob job;
+        job.stack = &stacks[i];
+        job.primitive = static_cast<int>(p);
+        job.positions = d.positions.data();
+        job.count = static_cast<int>(d.positions.size());
+        job.world = world;
+        job.outPositions = d.positions.data();
+        if (!job.run()) return false;
+        if (!d.normals.empty() && !prim.indices.empty()) computeVertexNormals(d.positions, prim.indices, d.normals);
       }
       result.push_back(std::move(d));
     }

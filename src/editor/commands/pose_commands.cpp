@@ -8,6 +8,7 @@
 #include "editor/model/active_ik_target.h"
 #include "editor/model/key_codes.h"
 #include "editor/model/pose_edits.h"
+#include "editor/model/shape_keys.h"
 #include "editor/model/timeline.h"
 #include "editor/viewport/viewport_tools.h"
 
@@ -86,6 +87,14 @@ void addPoseCommands(std::vector<Command>& out) {
                     .scope(CommandScope::Viewport).hint("key the selected joints at the current frame")
                     .enabled(hasSelection)
                     .run([](CommandContext& c) { c.state.statusMessage = keySelectedJoints(c.state); }));
+  out.push_back(CommandDef("anim.insert_shape_keys", "Insert Shape Keys").menu("Pose")
+                    .hint("key every morph target's weight (the shape sliders) at the current frame")
+                    .enabled([](const CommandContext& c) {
+                      for (int i = 0; i < static_cast<int>(c.state.doc.scene().meshInstances.size()); ++i)
+                        if (shapeCount(c.state.doc, i) > 0) return true;
+                      return false;
+                    })
+                    .run([](CommandContext& c) { c.state.statusMessage = keyAllShapes(c.state); }));
   out.push_back(CommandDef("anim.insert_keys_all", "Insert Keys on All Joints").menu("Pose").enabled(documentShown)
                     .run([](CommandContext& c) { c.state.statusMessage = keyAllJoints(c.state); }));
   out.push_back(CommandDef("anim.delete_keyframe", "Delete Keyframe").menu("Pose").key(keys::I, kModAlt)

@@ -301,9 +301,17 @@ std::string Document::editMeshes(const std::string& label, const std::function<s
   if (!error.empty()) return error;
   if (scratch.meshInstances.size() != scene_.meshInstances.size())
     return "an edit may not add or remove mesh instances";
-  auto before = std::make_shared<SceneMeshes>(SceneMeshes{scene_.meshes, scene_.skins, scene_.meshInstances});
-  auto after = std::make_shared<SceneMeshes>(
-      SceneMeshes{std::move(scratch.meshes), std::move(scratch.skins), std::move(scratch.meshInstances)});
+  if (scratch.deformers.size() > scratch.meshInstances.size()) return "a deformer stack for a missing mesh instance";
+  for (size_t i = 0; i < scratch.deformers.size(); ++i) {
+    const int mesh = scratch.meshInstances[i].mesh;
+    if (mesh < 0 || mesh >= static_cast<int>(scratch.meshes.size())) continue;
+    if (std::string e = scratch.deformers[i].validate(scratch.meshes[mesh], scratch.skeleton.size()); !e.empty())
+      return "mesh instance " + std::to_string(i) + ": " + e;
+  }
+  auto before =
+      std::make_shared<SceneMeshes>(SceneMeshes{scene_.meshes, scene_.skins, scene_.meshInstances, scene_.deformers});
+  auto after = std::make_shared<SceneMeshes>(SceneMeshes{std::move(scratch.meshes), std::move(scratch.skins),
+                                                         std::move(scratch.meshInstances), std::move(scratch.deformers)});
   EditRecord record;
   record.label = label;
   record.meshesBefore = before;
@@ -364,6 +372,7 @@ void Document::apply(const EditRecord& r, bool forward) {
     scene_.meshes = m.meshes;
     scene_.skins = m.skins;
     scene_.meshInstances = m.instances;
+    scene_.deformers = m.deformers;
     skinning_.clear();
     for (const MeshInstance& i : scene_.meshInstances) skinning_.push_back(i.skinning);
     ++meshRevision_;

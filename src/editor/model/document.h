@@ -83,8 +83,9 @@ class Document {
   // changes nothing adds no step. Refused while a drag is in progress.
   std::string edit(const std::string& label, const std::function<std::string(DocumentEdit&)>& change);
 
-  // Replaces the scene's meshes, skins and mesh instances as one undo step: `change` edits a
-  // copy of the scene (only those three arrays are taken back; the instance count must stay).
+  // Replaces the scene's meshes, skins, mesh instances and deformer stacks as one undo step:
+  // `change` edits a copy of the scene (only those four arrays are taken back; the instance
+  // count must stay, and the stacks must be valid: DeformerStack::validate).
   std::string editMeshes(const std::string& label, const std::function<std::string(Scene&)>& change);
   // Grows whenever the meshes, skins or instances were replaced (GPU copies must upload again).
   long long meshRevision() const { return meshRevision_; }

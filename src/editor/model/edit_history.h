@@ -7,6 +7,7 @@
 #include "core/mesh.h"
 #include "core/transform.h"
 #include "editor/model/pose_ik_target.h"
+#include "deform/deformer_stack.h"
 #include "ik/joint_limits.h"
 
 namespace kinema {
@@ -18,6 +19,7 @@ struct SceneMeshes {
   std::vector<Mesh> meshes;
   std::vector<Skin> skins;
   std::vector<MeshInstance> instances;
+  std::vector<DeformerStack> deformers;  // Scene::deformers: empty or one stack per instance
 };
 
 struct EditRecord {

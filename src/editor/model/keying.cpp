@@ -152,4 +152,35 @@ std::string deleteKeys(Document& doc, int clip, float time, const std::vector<in
   });
 }
 
+std::string keyScalarProperty(Document& doc, int& clip, int joint, const std::string& property, float time, float value,
+                              const KeyPreferences& preferences, const std::string& label) {
+  if (!std::isfinite(value)) return "the value to key is not a finite number";
+  if (!std::isfinite(time)) return "the key time is not a finite number";
+  if (joint < -1 || joint >= doc.skeleton().size()) return "joint " + std::to_string(joint) + " does not exist";
+  int keyed = clip;
+  const std::string error = doc.edit(label, [&](DocumentEdit& e) {
+    if (keyed < 0 || keyed >= static_cast<int>(e.clips.size())) {
+      e.clips.push_back(newActionClip());
+      keyed = static_cast<int>(e.clips.size()) - 1;
+      e.activeClip = keyed;
+    }
+    Clip& c = e.clips[keyed];
+    Channel* channel = nullptr;
+    for (Channel& ch : c.channels)
+      if (ch.target == ChannelTarget::Scalar && ch.joint == joint && ch.property == property) channel = &ch;
+    if (!channel) {
+      Channel ch;
+      ch.joint = joint;
+      ch.target = ChannelTarget::Scalar;
+      ch.property = property;
+      c.channels.push_back(std::move(ch));
+      channel = &c.channels.back();
+    }
+    insertKey(*channel, time, glm::vec4(value, 0.0f, 0.0f, 0.0f), keySettingsFor(preferences, ChannelTarget::Scalar));
+    return std::string();
+  });
+  if (error.empty()) clip = keyed;
+  return error;
+}
+
 }  // namespace kinema

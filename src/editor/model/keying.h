@@ -42,5 +42,11 @@ std::string insertKeys(Document& doc, int& clip, float time, const std::vector<i
                        const KeyPreferences& preferences);
 std::string insertKeysOnAllJoints(Document& doc, int& clip, float time, const KeyPreferences& preferences);
 std::string deleteKeys(Document& doc, int clip, float time, const std::vector<int>& joints);
+// Keys `value` at `time` on the Scalar channel (`joint`, `property`) of clips[clip], made
+// when missing (non-joint channels: morph weights "weights/K", deformer parameters
+// "deformers/NAME/PARAM"; anim/scalar_property.h). One undo step named `label`; `clip`
+// naming no clip yet creates "Action" (the active clip) and is set to it.
+std::string keyScalarProperty(Document& doc, int& clip, int joint, const std::string& property, float time, float value,
+                              const KeyPreferences& preferences, const std::string& label);
 
 }  // namespace kinema

@@ -17,6 +17,9 @@ namespace kinema {
 enum class PendingFileAction { None, New, Open, OpenPath, Quit };
 
 struct PanelState {
+  // Properties > Deformers: the lattice control point whose x, y, z the fields edit and key
+  // (the flat index FfdLattice::index; clamped to the lattice shown).
+  int latticePoint = 0;
   // Outliner
   char search[128] = {};
   std::vector<bool> collapsed;  // by joint

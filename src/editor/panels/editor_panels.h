@@ -23,7 +23,7 @@ void drawOutlinerPanel(CommandContext& ctx);  // joint tree, search, select, ren
 void drawClipList(CommandContext& ctx);
 float clipListHeight(const EditorState& state);
 void drawClipMenuList(CommandContext& ctx);  // the Clip menu's list of clips (a click chooses)
-void drawPropertiesPanel(EditorState& state); // active joint: rotation, location, limits
+void drawPropertiesPanel(CommandContext& ctx); // active joint: rotation, location, limits, mesh, shapes
 void drawIkTargetsPanel(CommandContext& ctx);  // IK targets and the active joint's target settings
 void drawHistoryPanel(EditorState& state);    // undo stack, click to jump
 void drawStatusBar(CommandContext& ctx, float fps);

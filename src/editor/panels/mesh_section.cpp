@@ -7,10 +7,13 @@
 #include "editor/panels/editor_panels.h"
 #include "editor/panels/item_names.h"
 #include "editor/model/pose_edits.h"
+#include "editor/model/shape_keys.h"
+#include "editor/panels/command_widgets.h"
 
 namespace kinema {
 
-void drawMeshSection(EditorState& state) {
+void drawMeshSection(CommandContext& ctx) {
+  EditorState& state = ctx.state;
   Document& doc = state.doc;
   const std::vector<MeshInstance>& instances = doc.scene().meshInstances;
   if (instances.empty()) return;
@@ -32,6 +35,21 @@ void drawMeshSection(EditorState& state) {
       showEditorError(state, setMeshSkinning(doc, static_cast<int>(i),
                                              current == 1 ? SkinningMethod::DualQuaternion : SkinningMethod::LinearBlend));
   }
+  // Shape sliders: the weight at the playhead; a change keys it where it is animated.
+  bool anyShapes = false;
+  const int clip = state.hasMotion() ? state.clip : -1;
+  for (int i = 0; i < static_cast<int>(instances.size()); ++i)
+    for (int t = 0; t < shapeCount(doc, i); ++t) {
+      if (!anyShapes) ImGui::TextDisabled("Shapes");
+      anyShapes = true;
+      float w = shapeWeightAt(doc, clip, state.time, i, t);
+      const std::string name = shapeName(doc, i, t);
+      const std::string label = name + "##shape" + std::to_string(i) + "_" + std::to_string(t);
+      if (ImGui::SliderFloat(label.c_str(), &w, 0.0f, 1.0f, "%.3f"))
+        showEditorError(state, moveShapeSlider(state, i, t, w));
+      recordItem("Properties/Shapes/" + name);
+    }
+  if (anyShapes) commandButton(ctx, "anim.insert_shape_keys", "Properties");
 }
 
 }  // namespace kinema

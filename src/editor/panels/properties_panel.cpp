@@ -11,6 +11,7 @@
 
 #include "editor/panels/editor_panels.h"
 #include "editor/panels/item_names.h"
+#include "editor/panels/deformers_section.h"
 #include "editor/panels/mesh_section.h"
 #include "editor/panels/panel_drag.h"
 #include "editor/panels/panel_layout.h"
@@ -185,7 +186,8 @@ void limitSection(EditorState& state, int joint) {
 
 }  // namespace
 
-void drawPropertiesPanel(EditorState& state) {
+void drawPropertiesPanel(CommandContext& ctx) {
+  EditorState& state = ctx.state;
   Document& doc = state.doc;
   const PanelRect r = state.layout.properties;
   ImGui::SetNextWindowPos(ImVec2(r.x, r.y), ImGuiCond_Always);
@@ -199,6 +201,9 @@ void drawPropertiesPanel(EditorState& state) {
   const int joint = doc.selection.active();
   if (joint < 0 || joint >= doc.skeleton().size() || joint >= doc.pose().size()) {
     ImGui::TextDisabled("Select a joint (click it or pick it in the outliner).");
+    // The meshes' sections (skinning, shapes, deformers) do not depend on the joint.
+    drawMeshSection(ctx);
+    drawDeformersSection(ctx);
     ImGui::End();
     return;
   }
@@ -223,7 +228,8 @@ void drawPropertiesPanel(EditorState& state) {
   const glm::vec3 world(doc.worldTransforms()[joint][3]);
   ImGui::TextDisabled("world position %.3f %.3f %.3f", world.x, world.y, world.z);
   limitSection(state, joint);
-  drawMeshSection(state);
+  drawMeshSection(ctx);
+  drawDeformersSection(ctx);
   ImGui::PopID();
   ImGui::PopItemWidth();
   ImGui::End();

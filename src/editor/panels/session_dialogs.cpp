@@ -201,7 +201,7 @@ void drawEditorPanels(CommandContext& ctx, float fps) {
   relayoutPanels(state);
   drawOutlinerPanel(ctx);
   drawHistoryPanel(state);
-  drawPropertiesPanel(state);
+  drawPropertiesPanel(ctx);
   drawIkTargetsPanel(ctx);
   drawStatusBar(ctx, fps);
   drawTimelinePanel(ctx);

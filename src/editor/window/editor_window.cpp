@@ -420,6 +420,24 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         std::vector<std::vector<float>> morphWeights;  // animated blend shapes at the playhead
         if (!meshes.empty()) morphWeights = sampleMorphWeights(state.doc.scene(), state.hasMotion() ? state.clip : -1, state.time);
         meshDraw.frame.morphWeights = &morphWeights;
+        // Meshes with an active deformer stack: morphs, skin and deformers on the CPU (the
+        // reference path), drawn as they come out.
+        std::vector<DeformedPrimitive> cpuDeformed;
+        if (!meshes.empty() && !state.doc.scene().deformers.empty()) {
+          const std::vector<DeformerStack> stacks =
+              sampleDeformerStacks(state.doc.scene(), state.hasMotion() ? state.clip : -1, state.time);
+          if (anyDeformerActive(stacks)) {
+            SceneDeformationJob deformJob;
+            deformJob.scene = &state.doc.scene();
+            deformJob.world = &state.world();
+            deformJob.morphWeights = &morphWeights;
+            deformJob.deformers = &stacks;
+            deformJob.withDeformersOnly = true;
+            deformJob.out = &cpuDeformed;
+            if (!deformJob.run()) cpuDeformed.clear();
+          }
+        }
+        meshDraw.frame.deformed = &cpuDeformed;
         meshDraw.frame.weightJoint = state.view.showWeights ? state.doc.selection.active() : -1;
         colorSelection(state, list);
         state.camera.fitClipPlanes(bounds.radius());

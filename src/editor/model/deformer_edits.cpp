@@ -1,0 +1,154 @@
+#include "editor/model/deformer_edits.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "anim/scalar_property.h"
+#include "core/forward_kinematics.h"
+#include "editor/model/keying.h"
+#include "skin/scene_deformation.h"
+
+namespace kinema {
+namespace {
+
+std::string stackError(const Document& doc, int instance, int deformer) {
+  const DeformerStack* stack =
+      instance >= 0 ? doc.scene().deformerStack(static_cast<size_t>(instance)) : nullptr;
+  if (!stack || deformer < 0 || deformer >= static_cast<int>(stack->deformers.size()))
+    return "mesh instance " + std::to_string(instance) + " has no deformer " + std::to_string(deformer);
+  return "";
+}
+
+std::string uniqueName(const DeformerStack& stack, const std::string& base) {
+  if (!stack.find(base)) return base;
+  for (int k = 1;; ++k) {
+    char suffix[16];
+    std::snprintf(suffix, sizeof suffix, ".%03d", k);
+    if (!stack.find(base + suffix)) return base + suffix;
+  }
+}
+
+}  // namespace
+
+std::string addDeformer(Document& doc, int instance, DeformerType type) {
+  const Scene& scene = doc.scene();
+  if (instance < 0 || instance >= static_cast<int>(scene.meshInstances.size()))
+    return "no mesh instance " + std::to_string(instance);
+  // The mesh at the rest pose, world space: where the new deformer is placed.
+  const std::vector<glm::mat4> world = computeWorld(scene.skeleton, Pose::rest(scene.skeleton));
+  std::vector<DeformedPrimitive> rest;
+  SceneDeformationJob job;
+  job.scene = &scene;
+  job.world = &world;
+  const std::vector<DeformerStack> none(scene.meshInstances.size());
+  job.deformers = &none;
+  job.out = &rest;
+  if (std::string e = job.validate(); !e.empty()) return e;
+  job.run();
+  std::vector<glm::vec3> points;
+  for (const DeformedPrimitive& d : rest)
+    if (d.instance == instance) points.insert(points.end(), d.positions.begin(), d.positions.end());
+  if (points.empty()) return "mesh instance " + std::to_string(instance) + " has no vertices";
+  glm::vec3 lo = points[0], hi = points[0];
+  for (const glm::vec3& p : points) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  Deformer d;
+  d.type = type;
+  const float height = std::max(hi.y - lo.y, 1e-3f);
+  switch (type) {
+    case DeformerType::Lattice: {
+      const int counts[3] = {3, 3, 3};
+      d.lattice = fitLattice(points, {}, counts);
+      break;
+    }
+    case DeformerType::Bend:
+    case DeformerType::Twist:
+    case DeformerType::Taper:
+      d.axis.kind = type == DeformerType::Bend    ? AxisDeformerKind::Bend
+                    : type == DeformerType::Twist ? AxisDeformerKind::Twist
+                                                  : AxisDeformerKind::Taper;
+      d.axis.axis = DeformAxis::Y;
+      d.axis.origin = glm::vec3(0.5f * (lo.x + hi.x), lo.y, 0.5f * (lo.z + hi.z));
+      d.axis.low = 0.0f;
+      d.axis.high = height;
+      d.axis.amount = type == DeformerType::Taper ? 1.0f : 0.0f;
+      break;
+    case DeformerType::SoftPull: {
+      const auto top = std::max_element(points.begin(), points.end(),
+                                        [](const glm::vec3& a, const glm::vec3& b) { return a.y < b.y; });
+      d.pull.center = *top;
+      d.pull.radius = 0.1f * height;
+      break;
+    }
+  }
+  const DeformerStack* current = scene.deformerStack(static_cast<size_t>(instance));
+  d.name = uniqueName(current ? *current : DeformerStack(), toString(type));
+  return doc.editMeshes("Add " + d.name, [&](Scene& s) {
+    s.editDeformerStack(instance).deformers.push_back(d);
+    return std::string();
+  });
+}
+
+std::string removeDeformer(Document& doc, int instance, int deformer) {
+  if (std::string e = stackError(doc, instance, deformer); !e.empty()) return e;
+  const std::string name = doc.scene().deformers[instance].deformers[deformer].name;
+  return doc.editMeshes("Remove " + name, [&](Scene& s) {
+    std::vector<Deformer>& list = s.deformers[instance].deformers;
+    list.erase(list.begin() + deformer);
+    return std::string();
+  });
+}
+
+std::string moveDeformer(Document& doc, int instance, int deformer, int step) {
+  if (std::string e = stackError(doc, instance, deformer); !e.empty()) return e;
+  const int to = deformer + (step < 0 ? -1 : 1);
+  if (to < 0 || to >= static_cast<int>(doc.scene().deformers[instance].deformers.size()))
+    return "the deformer is already at that end of the stack";
+  return doc.editMeshes("Move " + doc.scene().deformers[instance].deformers[deformer].name, [&](Scene& s) {
+    std::swap(s.deformers[instance].deformers[deformer], s.deformers[instance].deformers[to]);
+    return std::string();
+  });
+}
+
+std::string setDeformerEnabled(Document& doc, int instance, int deformer, bool enabled) {
+  if (std::string e = stackError(doc, instance, deformer); !e.empty()) return e;
+  const std::string name = doc.scene().deformers[instance].deformers[deformer].name;
+  return doc.editMeshes((enabled ? "Enable " : "Disable ") + name, [&](Scene& s) {
+    s.deformers[instance].deformers[deformer].enabled = enabled;
+    return std::string();
+  });
+}
+
+std::string setDeformerValue(Document& doc, int instance, int deformer, const std::string& parameter, float value) {
+  if (std::string e = stackError(doc, instance, deformer); !e.empty()) return e;
+  const std::string name = doc.scene().deformers[instance].deformers[deformer].name;
+  return doc.editMeshes("Set " + name + " " + parameter, [&](Scene& s) {
+    if (!setDeformerParameter(s.deformers[instance].deformers[deformer], parameter, value))
+      return "'" + name + "' has no parameter '" + parameter + "' (or the value is not finite)";
+    return std::string();
+  });
+}
+
+float deformerValueAt(const Document& doc, int clip, double time, int instance, int deformer, const std::string& parameter) {
+  if (!stackError(doc, instance, deformer).empty()) return 0.0f;
+  const std::vector<DeformerStack> stacks = sampleDeformerStacks(doc.scene(), clip, time);
+  float value = 0.0f;
+  getDeformerParameter(stacks[instance].deformers[deformer], parameter, value);
+  return value;
+}
+
+std::string keyDeformerValue(Document& doc, int& clip, int instance, int deformer, const std::string& parameter,
+                             float time, float value, const KeyPreferences& preferences) {
+  if (std::string e = stackError(doc, instance, deformer); !e.empty()) return e;
+  const Deformer& d = doc.scene().deformers[instance].deformers[deformer];
+  float unused = 0.0f;
+  if (!getDeformerParameter(d, parameter, unused)) return "'" + d.name + "' has no parameter '" + parameter + "'";
+  return keyScalarProperty(doc, clip, doc.scene().meshInstances[instance].joint,
+                           deformerParameterProperty(d.name, parameter), time, value, preferences,
+                           "Insert key on " + d.name + " " + parameter);
+}
+
+}  // namespace kinema

@@ -1,0 +1,33 @@
+#pragma once
+#include <string>
+
+#include "deform/deformer_stack.h"
+#include "editor/model/document.h"
+#include "editor/model/key_preferences.h"
+
+namespace kinema {
+
+// The Deformers panel's edits of a mesh instance's stack (issue 22), each one undo step
+// (Document::editMeshes). Deformers act in world space after skinning (io/scene.h).
+
+// Adds a deformer of `type` at the end of the instance's stack, placed around the mesh as it
+// stands at the rest pose (world space): a 3x3x3 lattice fitted around it; a bend, twist or
+// taper along +Y over its height (bend 0, twist 0, taper 1: no change until a parameter is
+// set); a soft pull centred on its highest vertex with a tenth of its height as radius.
+// Named after the type, made unique ("twist", "twist.001"...), as Blender names modifiers.
+std::string addDeformer(Document& doc, int instance, DeformerType type);
+std::string removeDeformer(Document& doc, int instance, int deformer);
+// Moves deformer `deformer` one place up (-1) or down (+1) the stack.
+std::string moveDeformer(Document& doc, int instance, int deformer, int step);
+std::string setDeformerEnabled(Document& doc, int instance, int deformer, bool enabled);
+// Sets a keyable parameter by name (deformerParameters: "angle", "factor", "offset.y",
+// "point.12.x"...).
+std::string setDeformerValue(Document& doc, int instance, int deformer, const std::string& parameter, float value);
+// The parameter's value at `time` in `clip` (its channel "deformers/NAME/PARAM" on the
+// instance's joint where animated, else the stack's); 0 for an unknown one.
+float deformerValueAt(const Document& doc, int clip, double time, int instance, int deformer, const std::string& parameter);
+// Keys the parameter's value at `time` (keyScalarProperty; one undo step).
+std::string keyDeformerValue(Document& doc, int& clip, int instance, int deformer, const std::string& parameter,
+                             float time, float value, const KeyPreferences& preferences);
+
+}  // namespace kinema

@@ -1,0 +1,117 @@
+#include "editor/panels/deformers_section.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <string>
+
+#include "editor/model/deformer_edits.h"
+#include "editor/model/shape_keys.h"
+#include "editor/model/timeline.h"
+#include "editor/panels/editor_panels.h"
+#include "editor/panels/item_names.h"
+
+namespace kinema {
+
+namespace {
+
+// One keyable parameter: a drag field (an undoable edit, keyed instead when the parameter is
+// animated in the clip or auto-key is on) and a key button.
+void parameterRow(EditorState& state, int instance, int index, const Deformer& d, const std::string& parameter,
+                  const char* shown, float speed) {
+  Document& doc = state.doc;
+  const int clip = state.hasMotion() ? state.clip : -1;
+  float value = deformerValueAt(doc, clip, state.time, instance, index, parameter);
+  const std::string id = "##" + std::to_string(instance) + "_" + std::to_string(index) + "_" + parameter;
+  const std::string item = "Properties/Deformers/" + d.name + "/" + parameter;
+  bool animated = false;
+  if (clip >= 0)
+    for (const Channel& ch : doc.scene().clips[clip].channels)
+      animated = animated || (ch.target == ChannelTarget::Scalar && ch.property == "deformers/" + d.name + "/" + parameter);
+  if (ImGui::DragFloat((std::string(shown) + id).c_str(), &value, speed)) {
+    if (animated || doc.autoKey.enabled) {
+      showEditorError(state, keyDeformerValue(doc, state.clip, instance, index, parameter, static_cast<float>(state.time),
+                                              value, doc.autoKey.preferences));
+      syncDocumentPlayhead(state);
+    } else {
+      showEditorError(state, setDeformerValue(doc, instance, index, parameter, value));
+    }
+  }
+  recordItem(item);
+  ImGui::SameLine();
+  if (ImGui::SmallButton(("Key" + id).c_str())) {
+    showEditorError(state, keyDeformerValue(doc, state.clip, instance, index, parameter, static_cast<float>(state.time),
+                                            value, doc.autoKey.preferences));
+    syncDocumentPlayhead(state);
+  }
+  recordItem(item + "/Key");
+}
+
+}  // namespace
+
+void drawDeformersSection(CommandContext& ctx) {
+  EditorState& state = ctx.state;
+  Document& doc = state.doc;
+  const int instances = static_cast<int>(doc.scene().meshInstances.size());
+  if (instances == 0) return;
+  if (!ImGui::CollapsingHeader("Deformers", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  for (int i = 0; i < instances; ++i) {
+    ImGui::PushID(i);
+    static const DeformerType kinds[] = {DeformerType::Lattice, DeformerType::Bend, DeformerType::Twist,
+                                         DeformerType::Taper, DeformerType::SoftPull};
+    static const char* labels[] = {"Lattice", "Bend", "Twist", "Taper", "Soft pull"};
+    ImGui::TextDisabled("Add to mesh %d:", i);
+    for (int k = 0; k < 5; ++k) {
+      ImGui::SameLine();
+      if (ImGui::SmallButton(labels[k])) showEditorError(state, addDeformer(doc, i, kinds[k]));
+      recordItem(std::string("Properties/Deformers/Add ") + labels[k]);
+    }
+    const DeformerStack* stack = doc.scene().deformerStack(static_cast<size_t>(i));
+    const int count = stack ? static_cast<int>(stack->deformers.size()) : 0;
+    for (int k = 0; k < count; ++k) {
+      const Deformer d = doc.scene().deformers[i].deformers[k];  // a copy: the edits below replace the stack
+      ImGui::PushID(k);
+      bool enabled = d.enabled;
+      if (ImGui::Checkbox(d.name.c_str(), &enabled)) showEditorError(state, setDeformerEnabled(doc, i, k, enabled));
+      recordItem("Properties/Deformers/" + d.name);
+      ImGui::SameLine();
+      if (ImGui::SmallButton("Up")) showEditorError(state, moveDeformer(doc, i, k, -1));
+      ImGui::SameLine();
+      if (ImGui::SmallButton("Down")) showEditorError(state, moveDeformer(doc, i, k, 1));
+      ImGui::SameLine();
+      if (ImGui::SmallButton("Apply as shape")) showEditorError(state, applyDeformerAsShape(doc, i, k));
+      recordItem("Properties/Deformers/" + d.name + "/Apply as shape");
+      ImGui::SameLine();
+      if (ImGui::SmallButton("Remove")) showEditorError(state, removeDeformer(doc, i, k));
+      switch (d.type) {
+        case DeformerType::Bend:
+        case DeformerType::Twist: parameterRow(state, i, k, d, "angle", "angle (rad)", 0.01f); break;
+        case DeformerType::Taper: parameterRow(state, i, k, d, "factor", "factor", 0.01f); break;
+        case DeformerType::SoftPull:
+          parameterRow(state, i, k, d, "offset.x", "offset x", 0.002f);
+          parameterRow(state, i, k, d, "offset.y", "offset y", 0.002f);
+          parameterRow(state, i, k, d, "offset.z", "offset z", 0.002f);
+          break;
+        case DeformerType::Lattice: {
+          ImGui::TextDisabled("%d x %d x %d points", d.lattice.counts[0], d.lattice.counts[1], d.lattice.counts[2]);
+          int& point = state.panels.latticePoint;
+          point = std::clamp(point, 0, d.lattice.pointCount() - 1);
+          ImGui::SliderInt("point", &point, 0, d.lattice.pointCount() - 1);
+          recordItem("Properties/Deformers/" + d.name + "/point");
+          for (const char* axis : {"x", "y", "z"}) {
+            const std::string parameter = "point." + std::to_string(point) + "." + axis;
+            parameterRow(state, i, k, d, parameter, axis, 0.002f);
+          }
+          break;
+        }
+      }
+      ImGui::PopID();
+      if (!doc.scene().deformerStack(static_cast<size_t>(i)) ||
+          static_cast<int>(doc.scene().deformers[i].deformers.size()) != count)
+        break;  // removed or applied: the rest is drawn next frame
+    }
+    ImGui::PopID();
+  }
+}
+
+}  // namespace kinema

@@ -1,0 +1,106 @@
+// The editor's document carries the scene's deformer stacks (issue 22): an edit of the
+// meshes may change them as one undo step, invalid stacks are refused, and a save keeps them.
+#include <gtest/gtest.h>
+
+#include "editor/model/deformer_edits.h"
+#include "editor/model/document.h"
+#include "skin/default_character_scene.h"
+
+namespace kinema {
+namespace {
+
+Deformer twist(const std::string& name, float angle) {
+  Deformer d;
+  d.name = name;
+  d.type = DeformerType::Twist;
+  d.axis.kind = AxisDeformerKind::Twist;
+  d.axis.low = 1.0f;
+  d.axis.high = 1.6f;
+  d.axis.amount = angle;
+  return d;
+}
+
+TEST(DocumentDeformers, AddingADeformerIsOneUndoStep) {
+  Document doc(makeDefaultCharacterScene());
+  const long long revision = doc.meshRevision();
+  ASSERT_EQ(doc.editMeshes("Add Twist", [](Scene& s) {
+    s.editDeformerStack(0).deformers.push_back(twist("twist", 0.5f));
+    return std::string();
+  }), "");
+  EXPECT_GT(doc.meshRevision(), revision);  // the renderers see a new mesh state
+  ASSERT_NE(doc.scene().deformerStack(0), nullptr);
+  EXPECT_EQ(doc.scene().deformerStack(0)->deformers[0].axis.amount, 0.5f);
+  EXPECT_EQ(doc.sceneForSaving().deformers.size(), 1u);
+  doc.undo();
+  EXPECT_EQ(doc.scene().deformerStack(0), nullptr);
+  doc.redo();
+  ASSERT_NE(doc.scene().deformerStack(0), nullptr);
+  EXPECT_EQ(doc.scene().deformerStack(0)->deformers[0].name, "twist");
+}
+
+TEST(DocumentDeformers, InvalidStacksAreRefusedAndChangeNothing) {
+  Document doc(makeDefaultCharacterScene());
+  const std::string error = doc.editMeshes("Add Twists", [](Scene& s) {
+    s.editDeformerStack(0).deformers = {twist("t", 0.1f), twist("t", 0.2f)};
+    return std::string();
+  });
+  EXPECT_EQ(error, "mesh instance 0: deformer 1 ('t'): the name is used by deformer 0 too");
+  EXPECT_TRUE(doc.scene().deformers.empty());
+  EXPECT_FALSE(doc.dirty());
+}
+
+TEST(DocumentDeformers, PanelEditsAreUndoSteps) {
+  Document doc(makeDefaultCharacterScene());
+  ASSERT_EQ(addDeformer(doc, 0, DeformerType::Twist), "");
+  ASSERT_EQ(addDeformer(doc, 0, DeformerType::Twist), "");
+  ASSERT_EQ(addDeformer(doc, 0, DeformerType::Lattice), "");
+  const DeformerStack* stack = doc.scene().deformerStack(0);
+  ASSERT_NE(stack, nullptr);
+  ASSERT_EQ(stack->deformers.size(), 3u);
+  EXPECT_EQ(stack->deformers[0].name, "twist");
+  EXPECT_EQ(stack->deformers[1].name, "twist.001");
+  // A new lattice sits at rest around the body: every point at its rest place.
+  const FfdLattice& lattice = stack->deformers[2].lattice;
+  EXPECT_EQ(lattice.pointCount(), 27);
+  EXPECT_EQ(lattice.points[13], lattice.restPoint(1, 1, 1));
+  // The twist spans the body's height, upwards from its lowest point.
+  EXPECT_EQ(stack->deformers[0].axis.low, 0.0f);
+  EXPECT_GT(stack->deformers[0].axis.high, 1.5f);
+
+  ASSERT_EQ(setDeformerValue(doc, 0, 1, "angle", 0.5f), "");
+  EXPECT_EQ(doc.scene().deformers[0].deformers[1].axis.amount, 0.5f);
+  EXPECT_NE(setDeformerValue(doc, 0, 1, "factor", 2.0f), "");
+  ASSERT_EQ(moveDeformer(doc, 0, 1, -1), "");
+  EXPECT_EQ(doc.scene().deformers[0].deformers[0].name, "twist.001");
+  EXPECT_NE(moveDeformer(doc, 0, 0, -1), "");
+  ASSERT_EQ(setDeformerEnabled(doc, 0, 0, false), "");
+  EXPECT_FALSE(doc.scene().deformers[0].deformers[0].enabled);
+  ASSERT_EQ(removeDeformer(doc, 0, 2), "");
+  EXPECT_EQ(doc.scene().deformers[0].deformers.size(), 2u);
+  // Undo walks back through remove, disable, move and set.
+  for (int k = 0; k < 4; ++k) doc.undo();
+  EXPECT_EQ(doc.scene().deformers[0].deformers[1].name, "twist.001");
+  EXPECT_EQ(doc.scene().deformers[0].deformers[1].axis.amount, 0.0f);
+  EXPECT_TRUE(doc.scene().deformers[0].deformers[1].enabled);
+  EXPECT_EQ(doc.scene().deformers[0].deformers.size(), 3u);
+}
+
+TEST(DocumentDeformers, KeyedParametersAreInterpolatedChannels) {
+  Document doc(makeDefaultCharacterScene());
+  ASSERT_EQ(addDeformer(doc, 0, DeformerType::Lattice), "");
+  int clip = -1;
+  KeyPreferences linear;
+  linear.interpolation = Interpolation::Linear;
+  const float y0 = doc.scene().deformers[0].deformers[0].lattice.points[26].y;
+  ASSERT_EQ(keyDeformerValue(doc, clip, 0, 0, "point.26.y", 0.0f, y0, linear), "");
+  ASSERT_EQ(keyDeformerValue(doc, clip, 0, 0, "point.26.y", 2.0f, y0 + 0.2f, linear), "");
+  EXPECT_EQ(clip, 0);
+  const Channel& ch = doc.scene().clips[0].channels.at(0);
+  EXPECT_EQ(ch.property, "deformers/lattice/point.26.y");
+  EXPECT_NEAR(deformerValueAt(doc, 0, 1.0, 0, 0, "point.26.y"), y0 + 0.1f, 1e-6f);  // half way
+  EXPECT_NEAR(deformerValueAt(doc, -1, 1.0, 0, 0, "point.26.y"), y0, 0.0f);  // no clip: as placed
+  EXPECT_NE(keyDeformerValue(doc, clip, 0, 0, "angle", 0.0f, 1.0f, linear), "");
+}
+
+}  // namespace
+}  // namespace kinema
