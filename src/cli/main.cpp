@@ -11,6 +11,7 @@
 #include "cli/pose_command.h"
 #include "cli/render_command.h"
 #include "cli/retarget_command.h"
+#include "cli/simulate_command.h"
 #include "cli/skin_command.h"
 
 int main(int argc, char** argv) {
@@ -37,6 +38,8 @@ int main(int argc, char** argv) {
   CLI::App* demoCmd = kinema::cli::addDemoCommand(app, demo);
   kinema::cli::RetargetOptions retarget;
   CLI::App* retargetCmd = kinema::cli::addRetargetCommand(app, retarget);
+  kinema::cli::SimulateOptions simulate;
+  CLI::App* simulateCmd = kinema::cli::addSimulateCommand(app, simulate);
 
   try {
     app.parse(argc, argv);
@@ -60,5 +63,6 @@ int main(int argc, char** argv) {
   if (skinCmd->parsed()) return kinema::cli::runSkin(skin);
   if (demoCmd->parsed()) return kinema::cli::runDemo(demo);
   if (retargetCmd->parsed()) return kinema::cli::runRetarget(retarget);
+  if (simulateCmd->parsed()) return kinema::cli::runSimulate(simulate);
   return kinema::cli::runDefault();
 }
