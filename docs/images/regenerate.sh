@@ -79,3 +79,5 @@ rm -rf "$tmp"
 build=$(cd "$(dirname "$kinema")/.." && pwd)
 "$build/tests/kinema_tests" --gtest_filter=DopeSheetE2e.ScreenshotForTheReadme >/dev/null
 cp "$build/dope_sheet_e2e/dope_sheet.png" "$root/docs/images/dope_sheet.png"
+# Issue 23: Fox's swinging tail and a ragdoll fall, baked by `kinema simulate` and rendered.
+"$root/docs/images/physics_strips.sh" "$kinema"
