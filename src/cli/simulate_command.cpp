@@ -1,7 +1,10 @@
 #include "cli/simulate_command.h"
 
+#include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 
 #include "cli/command_line.h"

@@ -5,7 +5,9 @@
 #include "editor/e2e_harness.h"
 
 #include "anim/sampling.h"
+#include "editor/model/document.h"
 #include "editor/model/simulation_edits.h"
+#include "io/scene.h"
 
 namespace kinema::test {
 namespace {
@@ -71,7 +73,8 @@ TEST_F(SimulationE2e, FoxsTailMadeDynamicPlayedBakedUndoneRedoneExported) {
     Pose pe = Pose::rest(sk), pb = Pose::rest(back->skeleton);
     sampleClip(expected, clip.frameToTime(f), pe, a);
     sampleClip(back->clips[0], clip.frameToTime(f), pb, b);
-    for (const auto& [je, jb] : {std::pair<int, int>{tail, backTail}, {sk.find("b_Tail02_013"), backTail2}})
+    const std::vector<std::pair<int, int>> pairs = {{tail, backTail}, {sk.find("b_Tail02_013"), backTail2}};
+    for (const auto& [je, jb] : pairs)
       EXPECT_GT(std::abs(glm::dot(pe.local[je].rotation, pb.local[jb].rotation)), 1.0f - 1e-6f) << "frame " << f;
   }
 }

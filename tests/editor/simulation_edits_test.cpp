@@ -106,7 +106,7 @@ TEST(SimulationEdits, LiveSpringsShowTheSamePoseHoweverTheFrameIsReached) {
   for (int j : chain.joints) {
     EXPECT_EQ(viaSteps.local[j].rotation, viaJump.local[j].rotation) << s.names[j];
     EXPECT_EQ(viaBack.local[j].rotation, viaJump.local[j].rotation) << s.names[j];
-    EXPECT_EQ(keyed.local[j].rotation, viaJump.local[j].rotation) << s.names[j];
+    EXPECT_GT(std::abs(glm::dot(keyed.local[j].rotation, viaJump.local[j].rotation)), 1.0f - 1e-6f) << s.names[j];
   }
   // The tail did swing: it is not where the clip alone puts it.
   Pose still = Pose::rest(s);

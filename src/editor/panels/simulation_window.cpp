@@ -6,9 +6,11 @@
 // draws the same runs into figures).
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "editor/commands/animation_editor_commands.h"
 #include "editor/panels/command_widgets.h"
