@@ -8,9 +8,10 @@ KINEMA_BUILD=${KINEMA_BUILD:-$KINEMA_ROOT/build}
 # Everything Kinema builds and tests with, from Debian 12 packages.
 KINEMA_PACKAGES=(build-essential cmake ninja-build pkg-config
   libglfw3-dev libglm-dev libimgui-dev libstb-dev python3-glad libtinygltf-dev nlohmann-json3-dev
-  libcli11-dev libeigen3-dev libegl-dev libosmesa6-dev libgtest-dev libbenchmark-dev
+  libcli11-dev libeigen3-dev libbullet-dev libegl-dev libosmesa6-dev libgtest-dev libbenchmark-dev
   xvfb xauth xdotool imagemagick clang libclang-rt-14-dev
   libegl-mesa0 libgl1-mesa-dri libglx-mesa0 ffmpeg fonts-dejavu-core)
+# libbullet-dev: rigid bodies and constraints for ragdolls (library kinema_ragdoll only).
 # The last three are Mesa's EGL, llvmpipe and GLX drivers: they come in today through
 # libegl1 and libgl1, but rendering needs them, so they are named rather than assumed.
 # fonts-dejavu-core: the editor's text font (DejaVu Sans; ImGui's built-in font without it).

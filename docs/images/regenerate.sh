@@ -111,3 +111,5 @@ for n in neutral jaw_open smile brow_raise blink; do
 done
 convert "$tmp"/c_face_{neutral,jaw_open,smile,brow_raise,blink}.png +append "$root/docs/images/face_shapes.png"
 rm -rf "$tmp"
+# Issue 23: Fox's swinging tail and a ragdoll fall, baked by `kinema simulate` and rendered.
+"$root/docs/images/physics_strips.sh" "$kinema"

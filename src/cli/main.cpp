@@ -12,6 +12,7 @@
 #include "cli/pose_command.h"
 #include "cli/render_command.h"
 #include "cli/retarget_command.h"
+#include "cli/simulate_command.h"
 #include "cli/skin_command.h"
 
 int main(int argc, char** argv) {
@@ -40,6 +41,8 @@ int main(int argc, char** argv) {
   CLI::App* retargetCmd = kinema::cli::addRetargetCommand(app, retarget);
   kinema::cli::LSystemOptions lsystem;
   CLI::App* lsystemCmd = kinema::cli::addLSystemCommand(app, lsystem);
+  kinema::cli::SimulateOptions simulate;
+  CLI::App* simulateCmd = kinema::cli::addSimulateCommand(app, simulate);
 
   try {
     app.parse(argc, argv);
@@ -64,5 +67,6 @@ int main(int argc, char** argv) {
   if (demoCmd->parsed()) return kinema::cli::runDemo(demo);
   if (retargetCmd->parsed()) return kinema::cli::runRetarget(retarget);
   if (lsystemCmd->parsed()) return kinema::cli::runLSystem(lsystem);
+  if (simulateCmd->parsed()) return kinema::cli::runSimulate(simulate);
   return kinema::cli::runDefault();
 }

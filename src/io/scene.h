@@ -12,6 +12,7 @@
 #include "ik/ik_rig.h"
 #include "io/input_limits.h"
 #include "io/up_axis.h"
+#include "simulate/simulation_settings.h"
 
 namespace kinema {
 
@@ -31,6 +32,9 @@ struct Scene {
   Skeleton skeleton;
   std::vector<Clip> clips;
   IkRig ik;  // joint limits and saved IK targets (optional in files)
+  // Dynamic chains and ragdolls (.kinema "simulation"; optional): what `kinema simulate`
+  // and the editor's Bake simulate.
+  SimulationSettings simulation;
   // The editor's working pose as saved (.kinema "pose"); empty = the rest pose.
   Pose pose;
   // The editor's playhead as saved (.kinema "playhead"); empty for glTF, BVH and .kinema

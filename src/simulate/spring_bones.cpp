@@ -53,6 +53,7 @@ std::string SpringBoneChain::validate(const Skeleton& s) const {
   if (!finite(stiffness) || stiffness < 0.0f) return who + "stiffness must be a finite number >= 0";
   if (!finite(damping) || damping < 0.0f) return who + "damping must be a finite number >= 0";
   if (!isFinite(gravity)) return who + "gravity is not finite";
+  if (!finite(drag) || drag < 0.0f) return who + "drag must be a finite number >= 0";
   if (!finite(radius) || radius < 0.0f) return who + "radius must be a finite number >= 0";
   for (size_t c = 0; c < colliders.size(); ++c) {
     const SpringCollider& k = colliders[c];
@@ -122,7 +123,11 @@ bool SpringBoneJob::run() const {
         const float length = glm::length(target - head);
         // Position Verlet: the last step's motion, damped, plus this step's acceleration.
         const glm::vec3 accel = chain.stiffness * (target - tails[i]) + chain.gravity;
-        glm::vec3 next = tails[i] + keep * (tails[i] - previous[i]) + accel * (h * h);
+        // Air drag -drag |v| v, taken implicitly in the speed (v' = v / (1 + drag |v| h)), so
+        // no drag or step size can reverse the motion.
+        const glm::vec3 motion = tails[i] - previous[i];
+        const float dragKeep = chain.drag > 0.0f ? 1.0f / (1.0f + chain.drag * glm::length(motion)) : 1.0f;
+        glm::vec3 next = tails[i] + (keep * dragKeep) * motion + accel * (h * h);
         auto keepLength = [&](glm::vec3& t) {
           const glm::vec3 d = t - head;
           const float len = glm::length(d);

@@ -14,6 +14,7 @@ struct SpringCollider {
   int joint = -1;
   glm::vec3 a{0.0f}, b{0.0f};
   float radius = 0.05f;
+  bool operator==(const SpringCollider& o) const { return joint == o.joint && a == o.a && b == o.b && radius == o.radius; }
 };
 
 // A chain of joints that swings behind its animation (a tail, ears, hair, a belly): each
@@ -27,11 +28,16 @@ struct SpringBoneChain {
   float stiffness = 100.0f;  // 1/s^2 (acceleration per metre away from the animated tail)
   float damping = 5.0f;      // 1/s (velocity lost per second, as a fraction)
   glm::vec3 gravity{0.0f};   // m/s^2 in world space, e.g. (0, -9.81, 0)
+  float drag = 0.0f;         // 1/m: air drag, an acceleration -drag |v| v against the tails' world velocity v
   float radius = 0.02f;      // the tails' own radius against the colliders (m)
   std::vector<SpringCollider> colliders;
 
   // Empty when usable on `skeleton`; otherwise one sentence naming the problem.
   std::string validate(const Skeleton& skeleton) const;
+  bool operator==(const SpringBoneChain& o) const {
+    return name == o.name && joints == o.joints && stiffness == o.stiffness && damping == o.damping &&
+           gravity == o.gravity && drag == o.drag && radius == o.radius && colliders == o.colliders;
+  }
 };
 
 // What a simulation carries from step to step: each chain's tail positions now and one step

@@ -37,6 +37,16 @@ if(EXISTS "${SHARED_DATA}")
     run(${KINEMA} convert ${f} ${OUT}/gltf_${name}.kinema)
     run(${KINEMA} convert ${OUT}/gltf_${name}.kinema ${OUT}/gltf_${name}_via_kinema.gltf)
   endforeach()
+  # Issue 23: Fox with its tail made dynamic, baked by `kinema simulate` into glTF and GLB.
+  if(EXISTS "${SHARED_DATA}/gltf/Fox.glb")
+    file(READ ${OUT}/gltf_Fox.kinema fox)
+    string(JSON fox SET "${fox}" simulation
+      [=[{"spring_chains": [{"name": "tail", "joints": ["b_Tail01_012", "b_Tail02_013", "b_Tail03_014"],
+          "stiffness": 40, "damping": 3, "gravity": [0, -981, 0], "radius": 1}]}]=])
+    file(WRITE ${OUT}/fox_tail.kinema "${fox}")
+    run(${KINEMA} simulate ${OUT}/fox_tail.kinema --frames 0:40 --out ${OUT}/fox_tail_simulated.gltf)
+    run(${KINEMA} simulate ${OUT}/fox_tail.kinema --frames 0:40 --out ${OUT}/fox_tail_simulated.glb)
+  endif()
 else()
   message("note: ${SHARED_DATA} is absent; validating the project's own files only")
 endif()

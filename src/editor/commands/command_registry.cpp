@@ -48,13 +48,14 @@ const CommandRegistry& editorCommands() {
   static const CommandRegistry registry = [] {
     CommandRegistry r;
     std::vector<Command> all;
-    // Menu order: File, Edit, View, Pose, Clip, Animation, Teach, Help; commands without a menu anywhere.
+    // Menu order: File, Edit, View, Pose, Clip, Animation, Simulate, Teach, Help; commands without a menu anywhere.
     addFileCommands(all);
     addEditCommands(all);
     addViewCommands(all);
     addPoseCommands(all);
     addClipCommands(all);
     addMotionCommands(all);
+    addSimulateCommands(all);
     addTimelineCommands(all);
     addAnimationEditorCommands(all);
     addCompareCommands(all);

@@ -26,6 +26,10 @@ bool sameLimits(const std::vector<JointLimit>& a, const std::vector<JointLimit>&
   return true;
 }
 
+bool sameSimulation(const SimulationSettings& a, const SimulationSettings& b) {
+  return a.springChains == b.springChains && a.ragdolls == b.ragdolls;
+}
+
 bool sameTargets(const std::vector<PoseIkTarget>& a, const std::vector<PoseIkTarget>& b) {
   if (a.size() != b.size()) return false;
   for (size_t i = 0; i < a.size(); ++i)
@@ -149,7 +153,8 @@ void Document::markSaved() {
 void Document::markModified() { savedReachable_ = false; }
 
 Document::Snapshot Document::capture() const {
-  return Snapshot{scene_.skeleton.names, pose_.local, scene_.ik.limits, targets_, skinning_, scene_.clips, activeClip_};
+  return Snapshot{scene_.skeleton.names, pose_.local, scene_.ik.limits, targets_, skinning_, scene_.clips, activeClip_,
+                  scene_.simulation};
 }
 
 void Document::restore(const Snapshot& s) {
@@ -161,12 +166,13 @@ void Document::restore(const Snapshot& s) {
   skinning_ = s.skinning;
   scene_.clips = s.clips;
   activeClip_ = s.activeClip;
+  scene_.simulation = s.simulation;
   syncSkinning();
 }
 
 DocumentEdit Document::editView() {
   return DocumentEdit{scene_.skeleton, scene_.skeleton.names, pose_, scene_.ik.limits, targets_, skinning_,
-                      scene_.clips, activeClip_};
+                      scene_.clips, activeClip_, scene_.simulation};
 }
 
 std::string Document::runChange(const std::function<std::string(DocumentEdit&)>& change, bool /*driven*/) {
@@ -196,6 +202,8 @@ std::string Document::runChange(const std::function<std::string(DocumentEdit&)>&
     const std::string bad = scene_.clips[c].validate(scene_.skeleton);
     if (!bad.empty()) return "clip " + std::to_string(c) + ": " + bad;
   }
+  if (!scene_.simulation.empty())
+    if (std::string bad = scene_.simulation.validate(scene_.skeleton); !bad.empty()) return "simulation: " + bad;
   // A change that removed clips without choosing another leaves the last one active.
   activeClip_ = std::clamp(activeClip_, 0, std::max(static_cast<int>(scene_.clips.size()) - 1, 0));
   syncSkinning();
@@ -262,6 +270,11 @@ EditRecord Document::diff(const std::string& label, const Snapshot& before) cons
   }
   r.clipCountBefore = static_cast<int>(before.clips.size());
   r.clipCountAfter = static_cast<int>(scene_.clips.size());
+  if (!sameSimulation(before.simulation, scene_.simulation)) {
+    r.simulationChanged = true;
+    r.simulationBefore = std::make_shared<const SimulationSettings>(before.simulation);
+    r.simulationAfter = std::make_shared<const SimulationSettings>(scene_.simulation);
+  }
   if (before.activeClip != activeClip_) {
     r.activeClipChanged = true;
     r.activeClipBefore = before.activeClip;
@@ -367,6 +380,7 @@ void Document::apply(const EditRecord& r, bool forward) {
   for (const EditRecord::NameChange& c : r.names) scene_.skeleton.names[c.joint] = forward ? c.after : c.before;
   if (r.limitsChanged) scene_.ik.limits = forward ? r.limitsAfter : r.limitsBefore;
   if (r.targetsChanged) targets_ = forward ? r.targetsAfter : r.targetsBefore;
+  if (r.simulationChanged) scene_.simulation = forward ? *r.simulationAfter : *r.simulationBefore;
   if (r.meshesBefore && r.meshesAfter) {
     const SceneMeshes& m = forward ? *r.meshesAfter : *r.meshesBefore;
     scene_.meshes = m.meshes;

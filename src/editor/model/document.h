@@ -32,6 +32,7 @@ struct DocumentEdit {
   std::vector<SkinningMethod>& skinning;  // one per scene mesh instance (linear blend / dual quaternion)
   std::vector<Clip>& clips;            // the scene's clips: keys, ranges, names (validated after the change)
   int& activeClip;                     // the clip the timeline plays and edits (clamped into clips after the change)
+  SimulationSettings& simulation;      // dynamic chains and ragdolls (validated after the change)
 };
 
 // The scene being edited plus everything the editor adds to it: the working pose, the IK
@@ -165,6 +166,7 @@ class Document {
     std::vector<SkinningMethod> skinning;
     std::vector<Clip> clips;
     int activeClip = 0;
+    SimulationSettings simulation;
   };
   struct Drag {
     std::string label;

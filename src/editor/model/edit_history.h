@@ -9,6 +9,7 @@
 #include "editor/model/pose_ik_target.h"
 #include "deform/deformer_stack.h"
 #include "ik/joint_limits.h"
+#include "simulate/simulation_settings.h"
 
 namespace kinema {
 
@@ -52,9 +53,13 @@ struct EditRecord {
   // The active clip (Document::activeClip) before and after, when the edit chose another.
   bool activeClipChanged = false;
   int activeClipBefore = 0, activeClipAfter = 0;
+  // Dynamic chains and ragdolls (the scene's simulation settings), whole, when they changed.
+  bool simulationChanged = false;
+  std::shared_ptr<const SimulationSettings> simulationBefore, simulationAfter;
 
   bool empty() const { return pose.empty() && names.empty() && !limitsChanged && !targetsChanged && !skinningChanged &&
-                        !meshesBefore && clips.empty() && !activeClipChanged; }
+                        !meshesBefore && clips.empty() && !activeClipChanged &&
+                        !simulationChanged; }
 };
 
 // A linear undo history: entries [0, position) are applied, [position, size) can be redone.

@@ -16,6 +16,7 @@
 #include "editor/model/dope_sheet.h"
 #include "editor/model/foot_contact_edits.h"
 #include "editor/model/motion_cleanup_edit.h"
+#include "editor/model/simulation_edits.h"
 #include "editor/model/item_rects.h"
 #include "editor/model/editor_layout.h"
 #include "editor/model/message_log.h"
@@ -131,6 +132,14 @@ struct EditorState {
   Foot newContactFoot = Foot::Left;
   int newContactFirst = 0, newContactLast = 10;  // frames
   std::optional<CleanUpResult> lastCleanUp;
+  // Simulate menu (issue 23): the chains played live, the Simulation window, the last bake,
+  // and Teach > Stiff Springs (the time-step window: step as a fraction of explicit Euler's limit).
+  LiveSprings liveSprings;
+  bool simulationWindowOpen = false;
+  std::optional<SimulationBake> lastBake;
+  bool stiffSpringsWindowOpen = false;
+  float stiffSpringsStep = 0.9f;   // dt / (2 zeta / omega_max)
+  float stiffSpringsZeta = 0.05f;
 
   bool wasPlaying = false;  // playback stopped since the last evaluate: the document takes the frame
   // The playhead and document state the pose was last sampled at while playing: a second

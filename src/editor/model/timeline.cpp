@@ -35,6 +35,8 @@ void poseAtPlayhead(EditorState& s) {
   if (!s.playing || !samplePlayback(playbackClip(s, *clip, pose.size()), static_cast<float>(s.time), pose,
                                     s.playbackSampler.context))
     sampleClip(*clip, static_cast<float>(s.time), pose);
+  // Dynamic chains swing behind the clip, simulated frame by frame from the range's start.
+  applyLiveSprings(s.liveSprings, s.doc, s.clip, rangeStartFrame(s), currentFrame(s), pose);
   s.doc.setAnimatedPose(pose);
 }
 

@@ -213,6 +213,8 @@ void drawEditorPanels(CommandContext& ctx, float fps) {
   drawPreferencesWindow(ctx);
   drawLogWindow(state);
   drawCleanUpWindow(ctx);
+  drawSimulationWindow(ctx);
+  drawStiffSpringsWindow(ctx);
   drawSessionDialogs(ctx);
   closePopupsOnEscape(state);
 }

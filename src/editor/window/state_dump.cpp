@@ -215,6 +215,26 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
   for (const Clip& c : doc.scene().clips) clipNames.push_back(c.name);
   out["clips"] = clipNames;
   out["timeline"] = timelineJson(s);
+  {  // Simulate menu (issue 23): the dynamic parts, the live springs, the last bake
+    json chains = json::array(), ragdolls = json::array();
+    for (const SpringBoneChain& c : doc.scene().simulation.springChains) {
+      json joints = json::array();
+      for (int j : c.joints) joints.push_back(jointName(s, j));
+      chains.push_back({{"name", c.name}, {"joints", joints}, {"stiffness", c.stiffness}, {"damping", c.damping}});
+    }
+    for (const RagdollSettings& r : doc.scene().simulation.ragdolls)
+      ragdolls.push_back({{"name", r.name}, {"root", jointName(s, r.root)}, {"start_frame", r.startFrame}});
+    json sim = {{"spring_chains", chains}, {"ragdolls", ragdolls}, {"live", s.liveSprings.enabled},
+                {"live_frames_simulated", s.liveSprings.framesSimulated}, {"window", s.simulationWindowOpen},
+                {"stiff_springs_window", s.stiffSpringsWindowOpen}};
+    if (s.lastBake) {
+      json parts = json::array();
+      for (const SimulatedPart& p : s.lastBake->parts)
+        parts.push_back({{"kind", p.kind}, {"name", p.name}, {"steps", p.steps}, {"largest_limit_excess", p.largestLimitExcess}});
+      sim["last_bake"] = {{"parts", parts}, {"keys_before", s.lastBake->keysBefore}, {"keys_after", s.lastBake->keysAfter}};
+    }
+    out["simulation"] = sim;
+  }
   out["tool"] = modalToolName(s.tool.mode);
   out["compare"] = compareStateJson(s.compare);  // Teach > Compare Solvers (docs/cli.md)
   out["dope_sheet"] = dopeSheetJson(s);

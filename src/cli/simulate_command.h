@@ -1,0 +1,23 @@
+#pragma once
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace kinema::cli {
+
+struct SimulateOptions {
+  std::string file, out;
+  std::string frames;   // --frames A:B (default: the clip's frames)
+  int clip = 0;         // --clip I
+  std::string reduce;   // --reduce POS[,DEG]
+  bool everyFrame = false;  // --every-frame: keep a key per frame
+  bool json = false;
+  bool allowOutsidePaths = false;
+  CLI::Option* framesOption = nullptr;
+};
+
+CLI::App* addSimulateCommand(CLI::App& app, SimulateOptions& options);
+// Bakes FILE's dynamic chains and ragdolls (its .kinema "simulation") into its clip and
+// writes OUT (.kinema, .gltf, .glb or .bvh). Nothing is written unless every part succeeds.
+int runSimulate(const SimulateOptions& options);
+
+}  // namespace kinema::cli

@@ -1,0 +1,98 @@
+// The Simulate menu (issue 23): make the selected chain dynamic (spring bones), play the
+// chains live, ragdoll from the current frame, bake every dynamic part into the clip (one
+// undo step each; simulation_edits.h does the work), the Simulation window; and Teach >
+// Stiff Springs, the time-step window. The Simulation window's buttons run these commands.
+#include <algorithm>
+
+#include "editor/commands/animation_editor_commands.h"
+#include "editor/commands/command_sets.h"
+#include "editor/model/timeline.h"
+
+namespace kinema {
+
+namespace {
+
+bool idle(const CommandContext& c) {
+  return documentShown(c) && !c.state.doc.dragging() && c.state.tool.mode == ModalTool::None;
+}
+bool onClip(const CommandContext& c) { return idle(c) && c.state.hasMotion(); }
+
+std::string partsText(const SimulationBake& bake) {
+  std::string text;
+  for (const SimulatedPart& p : bake.parts) text += (text.empty() ? "" : ", ") + p.kind + " " + p.name;
+  return text + " (" + std::to_string(bake.keysBefore) + " -> " + std::to_string(bake.keysAfter) + " keys)";
+}
+
+}  // namespace
+
+void addSimulateCommands(std::vector<Command>& out) {
+  out.push_back(CommandDef("sim.make_chain_dynamic", "Make Chain Dynamic").menu("Simulate")
+                    .hint("spring bones: the selected joints (or one joint and the chain below it) swing behind the animation")
+                    .enabled([](const CommandContext& c) { return idle(c) && !c.state.doc.selection.empty(); })
+                    .run([](CommandContext& c) {
+                      EditorState& s = c.state;
+                      const Skeleton& sk = s.doc.skeleton();
+                      const std::vector<int> joints = dynamicChainFrom(sk, s.doc.selection.joints(), s.doc.selection.active());
+                      const SpringBoneChain chain = defaultSpringChain(sk, joints);
+                      const std::string error = addSpringChainEdit(s.doc, chain);
+                      if (error.empty()) s.simulationWindowOpen = true;
+                      reportDopeSheetEdit(s, error, "Made chain " + chain.name + " dynamic (" + std::to_string(joints.size()) + " joints)");
+                    }));
+  out.push_back(CommandDef("sim.remove_chain", "Remove Dynamic Chain").menu("Simulate")
+                    .hint("the dynamic chain holding the active joint goes back to its keys alone")
+                    .enabled([](const CommandContext& c) {
+                      return idle(c) && springChainOf(c.state.doc, c.state.doc.selection.active()) >= 0;
+                    })
+                    .run([](CommandContext& c) {
+                      EditorState& s = c.state;
+                      const std::string error = removeSpringChainEdit(s.doc, springChainOf(s.doc, s.doc.selection.active()));
+                      reportDopeSheetEdit(s, error, "Removed the dynamic chain");
+                    }));
+  out.push_back(CommandDef("sim.live_springs", "Play Spring Bones Live").menu("Simulate")
+                    .hint("dynamic chains swing during playback and scrubbing (simulated from the range's start)")
+                    .checked([](const CommandContext& c) { return c.state.liveSprings.enabled; })
+                    .run([](CommandContext& c) {
+                      c.state.liveSprings.enabled = !c.state.liveSprings.enabled;
+                      poseAtPlayhead(c.state);
+                    }));
+  out.push_back(CommandDef("sim.ragdoll_from_frame", "Ragdoll from Current Frame").menu("Simulate", true)
+                    .hint("the character (or the active joint and what hangs below it) falls from this frame, baked to keys")
+                    .enabled(onClip)
+                    .run([](CommandContext& c) {
+                      EditorState& s = c.state;
+                      const Skeleton& sk = s.doc.skeleton();
+                      const int active = s.doc.selection.active();
+                      bool hasChild = false;
+                      for (int j = active + 1; active >= 0 && j < sk.size() && !hasChild; ++j) hasChild = sk.parents[j] == active;
+                      const int root = hasChild ? active : characterRoot(sk);
+                      const long long frame = std::max(0LL, currentFrame(s));
+                      // At least three seconds of fall, past the range's end if need be.
+                      const long long last = std::max(rangeEndFrame(s), frame + static_cast<long long>(3.0 * timelineFps(s)));
+                      SimulationBake bake;
+                      const std::string error = ragdollFromFrameEdit(s.doc, s.clip, root, frame, last, &bake);
+                      if (error.empty()) s.lastBake = bake;
+                      reportDopeSheetEdit(s, error, "Ragdoll from frame " + std::to_string(frame) + " to " + std::to_string(last) +
+                                                        ": " + partsText(bake));
+                    }));
+  out.push_back(CommandDef("sim.bake", "Bake Simulation").menu("Simulate")
+                    .hint("every dynamic chain and ragdoll into keys over the playback range (one undo step)")
+                    .enabled([](const CommandContext& c) { return onClip(c) && !c.state.doc.scene().simulation.empty(); })
+                    .run([](CommandContext& c) {
+                      EditorState& s = c.state;
+                      SimulationBake bake;
+                      const std::string error = bakeSimulationEdit(s.doc, s.clip, rangeStartFrame(s), rangeEndFrame(s), &bake);
+                      if (error.empty()) s.lastBake = bake;
+                      reportDopeSheetEdit(s, error, "Baked " + partsText(bake));
+                    }));
+  out.push_back(CommandDef("sim.settings", "Simulation Settings...").menu("Simulate", true)
+                    .hint("the dynamic chains' and ragdolls' settings")
+                    .enabled(documentShown)
+                    .checked([](const CommandContext& c) { return c.state.simulationWindowOpen; })
+                    .run([](CommandContext& c) { c.state.simulationWindowOpen = !c.state.simulationWindowOpen; }));
+  out.push_back(CommandDef("teach.stiff_springs", "Stiff Springs (Time Steps)").menu("Teach")
+                    .hint("why a time step blows up: four integrators on a damped spring chain (kinema demo stiff-springs)")
+                    .checked([](const CommandContext& c) { return c.state.stiffSpringsWindowOpen; })
+                    .run([](CommandContext& c) { c.state.stiffSpringsWindowOpen = !c.state.stiffSpringsWindowOpen; }));
+}
+
+}  // namespace kinema

@@ -1,0 +1,64 @@
+#pragma once
+// The editor's physics (issue 23), window-free: marking a chain dynamic and editing its
+// settings, ragdolls, and baking them into the clip, each one undo step; and the spring
+// bones played live at the playhead. The simulations are simulate/'s (the ones `kinema
+// simulate` runs).
+#include <climits>
+#include <string>
+#include <vector>
+
+#include "simulate/simulation_bake.h"
+
+namespace kinema {
+
+class Document;
+
+// The chain "Make Chain Dynamic" takes from a selection: the selected joints when they run
+// parent to child; a single joint and its first children down to a leaf (a tail from its
+// root); otherwise the path from the topmost selected joint down to the active one. Empty
+// when nothing is selected.
+std::vector<int> dynamicChainFrom(const Skeleton& skeleton, const std::vector<int>& selected, int active);
+
+// Settings for a new chain or ragdoll scaled to the skeleton's units: gravity 9.81 m/s^2 in
+// them (a character taller than 20 units is read as centimetres), radii from its size.
+SpringBoneChain defaultSpringChain(const Skeleton& skeleton, const std::vector<int>& joints);
+RagdollSettings defaultRagdoll(const Skeleton& skeleton, int root, long long startFrame);
+// The joint a ragdoll of the whole character hangs from: the humanoid's hips, else the
+// first joint with children.
+int characterRoot(const Skeleton& skeleton);
+
+// "Make chain dynamic": adds the chain (its joints leave any chain they were in).
+std::string addSpringChainEdit(Document& doc, const SpringBoneChain& chain);
+std::string removeSpringChainEdit(Document& doc, int index);
+std::string setSpringChainEdit(Document& doc, int index, const SpringBoneChain& chain);
+std::string setRagdollEdit(Document& doc, int index, const RagdollSettings& ragdoll);
+std::string removeRagdollEdit(Document& doc, int index);
+// The chain holding `joint`, or -1.
+int springChainOf(const Document& doc, int joint);
+
+// Bakes the document's chains and ragdolls into clip `clip` over frames first..last, then
+// thins the baked keys: one undo step "Bake simulation". `result` gets the parts.
+std::string bakeSimulationEdit(Document& doc, int clip, long long first, long long last, SimulationBake* result = nullptr);
+// "Ragdoll from current frame": the subtree of `root` becomes a ragdoll at `frame` (replacing
+// a ragdoll it overlaps) and falls until `last`, baked into the clip: one undo step.
+std::string ragdollFromFrameEdit(Document& doc, int clip, int root, long long frame, long long last,
+                                 SimulationBake* result = nullptr);
+
+// Spring bones played live: the chains simulated frame by frame on the clip's grid from
+// the playback range's start, so a frame always shows the same pose at a given frame rate;
+// going backwards simulates again from the start. Owned by the editor state.
+struct LiveSprings {
+  bool enabled = true;
+  SpringBoneState state;
+  int clip = -1;
+  long long changeCount = -1, startFrame = LLONG_MIN, frame = LLONG_MIN;
+  std::vector<int> joints;          // the chains' joints
+  std::vector<glm::quat> rotations; // their simulated local rotations at `frame`
+  long long framesSimulated = 0;    // total, for tests and the state dump
+};
+
+// Poses the document's chains at whole frame `frame` of clip `clip` into `pose` (which holds
+// the clip's pose there); nothing without chains or when live springs are off.
+void applyLiveSprings(LiveSprings& live, const Document& doc, int clip, long long startFrame, long long frame, Pose& pose);
+
+}  // namespace kinema

@@ -1,0 +1,182 @@
+// Simulate > Simulation Settings…: each dynamic chain's settings (stiffness, damping, drag,
+// gravity, radius; its capsule colliders listed) and each ragdoll's, edited in place (one
+// undo step per change), with the Simulate menu's commands as buttons and the last bake's
+// parts. Teach > Stiff Springs: the four integrators on the damped spring chain at a step
+// chosen as a fraction of explicit Euler's limit, energy over time (kinema demo stiff-springs
+// draws the same runs into figures).
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "editor/commands/animation_editor_commands.h"
+#include "editor/panels/command_widgets.h"
+#include "editor/panels/editor_panels.h"
+#include "editor/panels/item_names.h"
+#include "editor/panels/panel_layout.h"
+#include "simulate/integrators.h"
+
+namespace kinema {
+
+namespace {
+
+constexpr const char* kWindow = "Simulation";
+constexpr const char* kTeachWindow = "Stiff Springs";
+
+void placeWindow(EditorState& state, float w, float h) {
+  const PanelRect& v = state.layout.viewport;
+  const ImVec2 size(std::min(scaled(state, w), v.w - scaled(state, 16.0f)), std::min(scaled(state, h), v.h - scaled(state, 16.0f)));
+  ImGui::SetNextWindowPos(ImVec2(v.x + scaled(state, 8.0f), v.y + scaled(state, 8.0f)), ImGuiCond_Appearing);
+  ImGui::SetNextWindowSize(ImVec2(std::max(size.x, 240.0f), std::max(size.y, 200.0f)), ImGuiCond_Appearing);
+}
+
+// A float field that commits on Enter or when it loses focus (one undo step then).
+bool floatField(EditorState& state, const std::string& id, const char* label, float& value, float lo) {
+  ImGui::SetNextItemWidth(scaled(state, 90.0f));
+  ImGui::InputFloat(label, &value, 0.0f, 0.0f, "%.4g");
+  recordItem(std::string(kWindow) + "/" + id);
+  if (!ImGui::IsItemDeactivatedAfterEdit()) return false;
+  if (!std::isfinite(value) || value < lo) value = lo;
+  return true;
+}
+
+void chainSection(EditorState& state, int index) {
+  SpringBoneChain chain = state.doc.scene().simulation.springChains[index];
+  const Skeleton& s = state.doc.skeleton();
+  const std::string id = "Chain " + std::to_string(index);
+  ImGui::PushID(index);
+  ImGui::Text("Dynamic chain '%s': %s .. %s (%d joints)", chain.name.c_str(), s.names[chain.joints.front()].c_str(),
+              s.names[chain.joints.back()].c_str(), static_cast<int>(chain.joints.size()));
+  bool changed = false;
+  changed |= floatField(state, id + "/Stiffness", "stiffness (1/s^2)", chain.stiffness, 0.0f);
+  changed |= floatField(state, id + "/Damping", "damping (1/s)", chain.damping, 0.0f);
+  changed |= floatField(state, id + "/Drag", "drag (1/unit)", chain.drag, 0.0f);
+  changed |= floatField(state, id + "/Radius", "radius (units)", chain.radius, 0.0f);
+  ImGui::SetNextItemWidth(scaled(state, 200.0f));
+  ImGui::InputFloat3("gravity (units/s^2)", &chain.gravity.x, "%.4g");
+  recordItem(std::string(kWindow) + "/" + id + "/Gravity");
+  changed |= ImGui::IsItemDeactivatedAfterEdit() && isFinite(chain.gravity);
+  ImGui::TextDisabled("%d collision capsule%s (saved in the .kinema file)", static_cast<int>(chain.colliders.size()),
+                      chain.colliders.size() == 1 ? "" : "s");
+  if (changed) reportDopeSheetEdit(state, setSpringChainEdit(state.doc, index, chain), "Set dynamic chain " + chain.name);
+  if (ImGui::Button("Remove chain")) reportDopeSheetEdit(state, removeSpringChainEdit(state.doc, index), "Removed the dynamic chain");
+  recordItem(std::string(kWindow) + "/" + id + "/Remove");
+  ImGui::PopID();
+  ImGui::Separator();
+}
+
+void ragdollSection(EditorState& state, int index) {
+  RagdollSettings r = state.doc.scene().simulation.ragdolls[index];
+  const std::string id = "Ragdoll " + std::to_string(index);
+  ImGui::PushID(1000 + index);
+  ImGui::Text("Ragdoll '%s' from joint %s", r.name.c_str(), state.doc.skeleton().names[r.root].c_str());
+  bool changed = false;
+  int start = static_cast<int>(r.startFrame);
+  ImGui::SetNextItemWidth(scaled(state, 90.0f));
+  ImGui::InputInt("start frame", &start, 0);
+  recordItem(std::string(kWindow) + "/" + id + "/Start frame");
+  if (ImGui::IsItemDeactivatedAfterEdit()) r.startFrame = std::max(start, 0), changed = true;
+  changed |= floatField(state, id + "/Mass", "mass (kg)", r.mass, 1e-3f);
+  changed |= floatField(state, id + "/Ground", "ground height", r.groundHeight, -1e9f);
+  changed |= floatField(state, id + "/Friction", "friction", r.friction, 0.0f);
+  changed |= floatField(state, id + "/Restitution", "restitution", r.restitution, 0.0f);
+  changed |= floatField(state, id + "/Damping", "damping", r.damping, 0.0f);
+  r.restitution = std::min(r.restitution, 1.0f);
+  r.damping = std::min(r.damping, 1.0f);
+  if (changed) reportDopeSheetEdit(state, setRagdollEdit(state.doc, index, r), "Set ragdoll " + r.name);
+  if (ImGui::Button("Remove ragdoll")) reportDopeSheetEdit(state, removeRagdollEdit(state.doc, index), "Removed the ragdoll");
+  recordItem(std::string(kWindow) + "/" + id + "/Remove");
+  ImGui::PopID();
+  ImGui::Separator();
+}
+
+}  // namespace
+
+void drawSimulationWindow(CommandContext& ctx) {
+  EditorState& state = ctx.state;
+  if (!state.simulationWindowOpen) return;
+  placeWindow(state, 420.0f, 520.0f);
+  if (!ImGui::Begin(kWindow, &state.simulationWindowOpen, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
+    ImGui::End();
+    return;
+  }
+  recordWindow(kWindow);
+  commandButton(ctx, "sim.make_chain_dynamic", kWindow, "Make selected chain dynamic");
+  ImGui::SameLine();
+  commandButton(ctx, "sim.live_springs", kWindow, "Live");
+  commandButton(ctx, "sim.ragdoll_from_frame", kWindow, "Ragdoll from current frame");
+  ImGui::SameLine();
+  commandButton(ctx, "sim.bake", kWindow, "Bake");
+  ImGui::Separator();
+  const SimulationSettings& sim = state.doc.scene().simulation;
+  if (sim.empty()) ImGui::TextWrapped("Nothing is dynamic yet: select a chain's first joint (a tail) and make it dynamic.");
+  for (int i = 0; i < static_cast<int>(sim.springChains.size()); ++i) chainSection(state, i);
+  // A section may have removed one: read the count again.
+  for (int i = 0; i < static_cast<int>(state.doc.scene().simulation.ragdolls.size()); ++i) ragdollSection(state, i);
+  if (state.lastBake) {
+    ImGui::TextDisabled("Last bake");
+    for (const SimulatedPart& p : state.lastBake->parts)
+      ImGui::Text("%s '%s': frames %lld-%lld, %lld steps, limit excess %.2f deg", p.kind.c_str(), p.name.c_str(), p.firstFrame,
+                  p.lastFrame, p.steps, p.largestLimitExcess / 0.01745329252);
+    ImGui::Text("keys %d -> %d", state.lastBake->keysBefore, state.lastBake->keysAfter);
+    recordItem(std::string(kWindow) + "/Last bake");
+  }
+  ImGui::End();
+}
+
+void drawStiffSpringsWindow(CommandContext& ctx) {
+  EditorState& state = ctx.state;
+  if (!state.stiffSpringsWindowOpen) return;
+  placeWindow(state, 560.0f, 520.0f);
+  if (!ImGui::Begin(kTeachWindow, &state.stiffSpringsWindowOpen, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
+    ImGui::End();
+    return;
+  }
+  recordWindow(kTeachWindow);
+  ImGui::TextWrapped("Ten 1 kg masses on 2,500 N/m springs, each with a dashpot giving the highest mode the damping "
+                     "ratio zeta; the last mass starts pulled down 1 cm. Explicit Euler is stable below dt = 2 zeta / "
+                     "w_max, symplectic Euler and Verlet below about 2 / w_max, backward Euler at every step.");
+  ImGui::SetNextItemWidth(scaled(state, 200.0f));
+  ImGui::SliderFloat("dt / explicit Euler's limit", &state.stiffSpringsStep, 0.1f, 12.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+  recordItem(std::string(kTeachWindow) + "/Step");
+  ImGui::SetNextItemWidth(scaled(state, 200.0f));
+  ImGui::SliderFloat("zeta", &state.stiffSpringsZeta, 0.01f, 1.0f, "%.2f");
+  recordItem(std::string(kTeachWindow) + "/Zeta");
+  SpringChain chain{10, 1.0, 2500.0, 0.0};
+  chain.beta = betaForHighestModeRatio(chain, state.stiffSpringsZeta);
+  const double explicitLimit = chainStabilityLimit(chain, Integrator::ExplicitEuler);
+  const double h = state.stiffSpringsStep * explicitLimit;
+  ImGui::Text("dt = %.3g ms (explicit Euler's limit %.3g ms)", h * 1e3, explicitLimit * 1e3);
+  ImGui::TextDisabled("energy / starting energy over 5 s (log10, clipped at 10^3)");
+  for (Integrator scheme : {Integrator::ExplicitEuler, Integrator::SymplecticEuler, Integrator::Verlet, Integrator::ImplicitEuler}) {
+    ChainState st;
+    st.x.assign(chain.masses, 0.0);
+    st.v.assign(chain.masses, 0.0);
+    st.x.back() = 0.01;
+    const double e0 = chainEnergy(chain, st);
+    const int steps = std::min(20000, static_cast<int>(std::ceil(5.0 / h)));
+    const int every = std::max(1, steps / 400);
+    std::vector<float> curve;
+    bool blew = false;
+    for (int i = 0; i < steps && !blew; ++i) {
+      stepChain(chain, scheme, h, st);
+      const double r = chainEnergy(chain, st) / e0;
+      blew = !(r < 1e3);
+      if (i % every == 0 || blew) curve.push_back(static_cast<float>(std::log10(std::max(std::min(r, 1e3), 1e-6))));
+    }
+    const double limit = chainStabilityLimit(chain, scheme);
+    char label[160];
+    if (std::isinf(limit)) std::snprintf(label, sizeof label, "%s (stable at every step)%s", toString(scheme), blew ? ": BLEW UP" : "");
+    else std::snprintf(label, sizeof label, "%s (limit %.3g ms)%s", toString(scheme), limit * 1e3, blew ? ": BLEW UP" : "");
+    ImGui::TextUnformatted(label);
+    ImGui::PlotLines((std::string("##") + toString(scheme)).c_str(), curve.data(), static_cast<int>(curve.size()), 0, nullptr,
+                     -6.0f, 3.0f, ImVec2(ImGui::GetContentRegionAvail().x, scaled(state, 60.0f)));
+    recordItem(std::string(kTeachWindow) + "/" + toString(scheme));
+  }
+  ImGui::End();
+}
+
+}  // namespace kinema
