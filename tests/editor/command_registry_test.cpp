@@ -83,7 +83,7 @@ TEST(CommandRegistry, TheMainMenusComeInBlendersOrder) {
     const std::string title = c.menu.substr(0, c.menu.find('/'));
     if (titles.empty() || titles.back() != title) titles.push_back(title);
   }
-  EXPECT_EQ(titles, (std::vector<std::string>{"File", "Edit", "View", "Pose", "Clip", "Animation", "Teach", "Help"}))
+  EXPECT_EQ(titles, (std::vector<std::string>{"File", "Edit", "View", "Pose", "Clip", "Animation", "Simulate", "Teach", "Help"}))
       << "each menu's commands are together, in this order";
 }
 

@@ -55,9 +55,9 @@ const CommandRegistry& editorCommands() {
     addPoseCommands(all);
     addClipCommands(all);
     addMotionCommands(all);
-    addSimulateCommands(all);
     addTimelineCommands(all);
     addAnimationEditorCommands(all);
+    addSimulateCommands(all);
     addCompareCommands(all);
     addHelpCommands(all);
     for (Command& c : all) {
