@@ -193,6 +193,7 @@ int runSimulate(const SimulateOptions& o) {
       pj["steps"] = p.steps;
       if (p.kind == "ragdoll") pj["bodies"] = p.bodies;
       pj["largestLimitExcessDegrees"] = jsonFloat(p.largestLimitExcess / kDegree);
+      if (p.worstJoint >= 0 && p.largestLimitExcess > 0.0f) pj["worstJoint"] = s.names[p.worstJoint];
       parts.push_back(std::move(pj));
       steps += p.steps;
       worst = std::max(worst, p.largestLimitExcess);

@@ -142,7 +142,9 @@ std::vector<JointLimit> ragdollJointLimits(const Skeleton& s, const IkRig& rig) 
     const glm::vec3 d = c >= 0 ? s.rest[c].translation : glm::vec3(0.0f);
     return glm::length(d) > 0.0f ? glm::normalize(d) : glm::vec3(0.0f, 1.0f, 0.0f);
   };
-  for (int j = 0; j < s.size(); ++j) limits[j] = JointLimit::cone(boneAxis(j), 45.0f * kDeg, -30.0f * kDeg, 30.0f * kDeg);
+  // Joints with neither a stored limit nor a human range (a tail, a prop) turn freely: an
+  // invented cone there would start broken whenever the animation (or a spring chain) has
+  // already bent the joint past it.
   if (Result<HumanoidReading> h = findHumanoid(s)) {
     const HumanoidMap& m = h->bones;
     // The body's forward: up x (right hip -> left hip), Y up.

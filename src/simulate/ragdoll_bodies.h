@@ -46,7 +46,8 @@ struct RagdollBodiesJob {
 // The limit each joint of `skeleton` is held to in a ragdoll: the rig's own where it has one;
 // else, when the skeleton reads as a humanoid, default human ranges (knees bend back and
 // elbows forward only, as hinges; hips, shoulders, spine, neck, wrists and ankles in
-// cones); else a 45 degree cone with +-30 degrees of twist, so no joint folds through.
+// cones); other joints (a tail, a non-humanoid's bones without stored limits) are free ball
+// joints, held only by their bodies' collisions with the ground.
 std::vector<JointLimit> ragdollJointLimits(const Skeleton& skeleton, const IkRig& rig);
 
 }  // namespace kinema

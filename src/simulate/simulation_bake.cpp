@@ -87,6 +87,7 @@ Result<SimulationBake> bakeSimulation(const SimulationBakeInput& in) {
     part.lastFrame = report.lastFrame;
     part.steps = report.steps;
     part.largestLimitExcess = report.largestLimitExcess;
+    part.worstJoint = report.worstJoint;
     keyed.insert(keyed.end(), part.joints.begin(), part.joints.end());
     out.parts.push_back(std::move(part));
   }

@@ -23,6 +23,7 @@ struct SimulatedPart {
   long long steps = 0;              // integration steps taken (substeps or physics steps)
   int bodies = 0;                   // ragdolls: rigid bodies
   float largestLimitExcess = 0.0f;  // radians: the furthest a keyed joint went past its limit
+  int worstJoint = -1;              // the joint that went furthest past its limit (-1: none did)
 };
 
 struct SimulationBakeInput {

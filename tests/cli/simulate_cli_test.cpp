@@ -155,7 +155,7 @@ TEST_F(SimulateCli, RagdollsAndChainsToEveryFormat) {
     EXPECT_EQ(j["parts"][1]["name"], "fall");
     EXPECT_EQ(j["parts"][1]["frames"], nlohmann::json::array({30, 100}));
     EXPECT_EQ(j["parts"][1]["steps"], 70 * 10);  // 70 frames of 1/24 s, 10 steps of 1/240 s each
-    EXPECT_LT(j["parts"][1]["largestLimitExcessDegrees"].get<double>(), 2.0);
+    EXPECT_LT(j["parts"][1]["largestLimitExcessDegrees"].get<double>(), 2.0) << out_;
     EXPECT_EQ(j["steps"], 101 * 4 + 70 * 10);
     Result<Scene> back = loadScene(out);
     ASSERT_TRUE(back) << back.error();
@@ -167,7 +167,12 @@ TEST_F(SimulateCli, RagdollsAndChainsToEveryFormat) {
     const int hips = back->skeleton.find("Hips");
     ASSERT_GE(hips, 0);
     EXPECT_LT(world[hips][3].y, 0.5f) << ext;
-    for (const glm::mat4& m : world) EXPECT_GT(m[3].y, -0.02f) << ext;
+    // The simulated joints only: a BVH adds End Sites a bone's length past each leaf, points
+    // no body carries.
+    for (int j = 0; j < back->skeleton.size(); ++j)
+      if (scene.skeleton.find(back->skeleton.names[j]) >= 0) {
+        EXPECT_GT(world[j][3].y, -0.02f) << ext << " " << back->skeleton.names[j];
+      }
   }
 }
 
