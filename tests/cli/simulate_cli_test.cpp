@@ -19,8 +19,6 @@
 namespace kinema::test {
 namespace {
 
-constexpr float kDeg = 0.01745329252f;
-
 // The default character turning its hips to and fro over 48 frames at 24 fps, with a tail:
 // five 0.12 m bones behind the hips, and a ragdoll of the whole body from frame 30.
 Scene tailedCharacter(bool withRagdoll) {
