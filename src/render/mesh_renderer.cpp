@@ -65,6 +65,25 @@ void unbindMeshDrawState() {
   glUseProgram(0);
 }
 
+// Interleaves positions and normals (one per vertex) with the primitive's texcoords (zero
+// where it has none) in the layout the shader reads.
+std::vector<PackedVertex> packVertices(const std::vector<glm::vec3>& positions, const std::vector<glm::vec3>& normals,
+                                       const MeshPrimitive& src) {
+  std::vector<PackedVertex> vertices(positions.size());
+  const bool uvs = src.texcoords.size() == positions.size();
+  for (size_t v = 0; v < positions.size(); ++v) {
+    PackedVertex& out = vertices[v];
+    for (int c = 0; c < 3; ++c) {
+      out.position[c] = positions[v][c];
+      out.normal[c] = normals[v][c];
+    }
+    const glm::vec2 uv = uvs ? src.texcoords[v] : glm::vec2(0.0f);
+    out.texcoord[0] = uv.x;
+    out.texcoord[1] = uv.y;
+  }
+  return vertices;
+}
+
 }  // namespace
 
 void packJointTexels(const glm::mat4& m, float* out) {
@@ -190,17 +209,7 @@ std::string MeshRenderer::upload(const Scene& scene) {
       p.hasNormals = src.normals.size() == src.positions.size();
       p.skinned = src.skinned();
       const std::vector<glm::vec3> normals = p.hasNormals ? src.normals : displayNormals(src);
-      std::vector<PackedVertex> vertices(static_cast<size_t>(p.vertexCount));
-      for (int v = 0; v < p.vertexCount; ++v) {
-        PackedVertex& out = vertices[v];
-        for (int c = 0; c < 3; ++c) {
-          out.position[c] = src.positions[v][c];
-          out.normal[c] = normals[v][c];
-        }
-        const glm::vec2 uv = src.texcoords.size() == src.positions.size() ? src.texcoords[v] : glm::vec2(0.0f);
-        out.texcoord[0] = uv.x;
-        out.texcoord[1] = uv.y;
-      }
+      const std::vector<PackedVertex> vertices = packVertices(src.positions, normals, src);
       glGenVertexArrays(1, &p.vao);
       glBindVertexArray(p.vao);
       glGenBuffers(1, &p.vertices);
@@ -542,17 +551,7 @@ void MeshRenderer::bindCpuDeformed(GpuPrimitive& p, const DeformedPrimitive& d) 
   std::vector<glm::vec3> shading;
   if (d.normals.size() != d.positions.size()) computeVertexNormals(d.positions, src.indices, shading);
   const std::vector<glm::vec3>& normals = d.normals.size() == d.positions.size() ? d.normals : shading;
-  std::vector<PackedVertex> vertices(static_cast<size_t>(p.vertexCount));
-  for (int v = 0; v < p.vertexCount; ++v) {
-    PackedVertex& out = vertices[v];
-    for (int c = 0; c < 3; ++c) {
-      out.position[c] = d.positions[v][c];
-      out.normal[c] = normals[v][c];
-    }
-    const glm::vec2 uv = src.texcoords.size() == src.positions.size() ? src.texcoords[v] : glm::vec2(0.0f);
-    out.texcoord[0] = uv.x;
-    out.texcoord[1] = uv.y;
-  }
+  const std::vector<PackedVertex> vertices = packVertices(d.positions, normals, src);
   if (!p.deformedVao) {
     glGenVertexArrays(1, &p.deformedVao);
     glBindVertexArray(p.deformedVao);
