@@ -16,8 +16,8 @@
 #include "anim/sampling.h"
 #include "core/default_character.h"
 #include "core/forward_kinematics.h"
-#include "procedural/boids.h"
-#include "procedural/particles.h"
+#include "sim/boids.h"
+#include "sim/particles.h"
 #include "core/random.h"
 
 namespace {

@@ -7,8 +7,8 @@
 
 #include <cmath>
 
-#include "simulate/ragdoll.h"
-#include "simulate/spring_bones.h"
+#include "sim/ragdoll.h"
+#include "sim/spring_bones.h"
 
 namespace {
 

@@ -12,7 +12,7 @@
 #include "cli/command_line.h"
 #include "io/atomic_write.h"
 #include "io/image.h"
-#include "procedural/boids.h"
+#include "sim/boids.h"
 #include "core/random.h"
 #include "render/raster_draw.h"
 

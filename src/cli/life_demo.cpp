@@ -10,7 +10,7 @@
 #include "cli/command_line.h"
 #include "io/atomic_write.h"
 #include "io/image.h"
-#include "procedural/game_of_life.h"
+#include "sim/game_of_life.h"
 #include "render/raster_draw.h"
 
 namespace kinema::cli {

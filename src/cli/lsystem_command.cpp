@@ -8,8 +8,8 @@
 #include "cli/command_line.h"
 #include "io/gltf_writer.h"
 #include "io/kinema_file.h"
-#include "procedural/lsystem_derivation.h"
-#include "procedural/lsystem_skeleton.h"
+#include "sim/lsystem_derivation.h"
+#include "sim/lsystem_skeleton.h"
 
 namespace kinema::cli {
 

@@ -8,8 +8,8 @@ namespace kinema::cli {
 
 // `kinema lsystem GRAMMAR_FILE --generations N --out OUT [--seed S] [--choices LIST]
 //  [--segment-length L] [--radius R] [--json]`: derives the grammar's string N times
-// (procedural/lsystem_derivation.h), grows the plant skeleton with skinned tube geometry from
-// the last string (procedural/lsystem_skeleton.h) and writes it as .kinema, .gltf or .glb.
+// (sim/lsystem_derivation.h), grows the plant skeleton with skinned tube geometry from
+// the last string (sim/lsystem_skeleton.h) and writes it as .kinema, .gltf or .glb.
 struct LSystemOptions {
   std::string grammar;
   std::string out;

@@ -12,8 +12,8 @@
 #include "io/gltf_writer.h"
 #include "io/json_number.h"
 #include "io/kinema_file.h"
-#include "simulate/baked_keys.h"
-#include "simulate/simulation_bake.h"
+#include "sim/baked_keys.h"
+#include "sim/simulation_bake.h"
 
 namespace kinema::cli {
 

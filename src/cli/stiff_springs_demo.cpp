@@ -12,7 +12,7 @@
 #include "io/atomic_write.h"
 #include "io/image.h"
 #include "render/curve_plot.h"
-#include "simulate/stability_sweep.h"
+#include "sim/stability_sweep.h"
 
 namespace kinema::cli {
 namespace {

@@ -12,7 +12,7 @@
 #include "ik/ik_rig.h"
 #include "io/input_limits.h"
 #include "io/up_axis.h"
-#include "simulate/simulation_settings.h"
+#include "sim/simulation_settings.h"
 
 namespace kinema {
 

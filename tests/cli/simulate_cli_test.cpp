@@ -13,7 +13,7 @@
 #include "core/forward_kinematics.h"
 #include "io/kinema_file.h"
 #include "io/scene.h"
-#include "simulate/spring_bones.h"
+#include "sim/spring_bones.h"
 #include "test_support.h"
 
 namespace kinema::test {

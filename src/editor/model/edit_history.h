@@ -9,7 +9,7 @@
 #include "editor/model/pose_ik_target.h"
 #include "deform/deformer_stack.h"
 #include "ik/joint_limits.h"
-#include "simulate/simulation_settings.h"
+#include "sim/simulation_settings.h"
 
 namespace kinema {
 

@@ -7,7 +7,7 @@
 #include "core/forward_kinematics.h"
 #include "editor/model/document.h"
 #include "retarget/bone_map.h"
-#include "simulate/baked_keys.h"
+#include "sim/baked_keys.h"
 
 namespace kinema {
 

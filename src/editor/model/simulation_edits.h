@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "simulate/simulation_bake.h"
+#include "sim/simulation_bake.h"
 
 namespace kinema {
 

@@ -17,7 +17,7 @@
 #include "editor/panels/editor_panels.h"
 #include "editor/panels/item_names.h"
 #include "editor/panels/panel_layout.h"
-#include "simulate/integrators.h"
+#include "sim/integrators.h"
 
 namespace kinema {
 
