@@ -43,6 +43,7 @@ TEST_F(SimulationE2e, FoxsTailMadeDynamicPlayedBakedUndoneRedoneExported) {
   EXPECT_GT(sim["live_frames_simulated"].get<long long>(), 10) << "the tail swung during playback";
   ASSERT_TRUE(sim.contains("last_bake"));
   EXPECT_EQ(sim["last_bake"]["parts"][0]["kind"], "spring-chain");
+  EXPECT_FALSE(sim["live"].get<bool>()) << "after the bake the keys play, not a second simulation on top";
   EXPECT_EQ(d["undo_depth"], 2) << "make dynamic, bake";
   EXPECT_EQ(d["redo_depth"], 0);
   EXPECT_TRUE(d["errors"].empty()) << d["errors"].dump();

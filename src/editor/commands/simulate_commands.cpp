@@ -97,8 +97,14 @@ void addSimulateCommands(std::vector<Command>& out) {
                       EditorState& s = c.state;
                       SimulationBake bake;
                       const std::string error = bakeSimulationEdit(s.doc, s.clip, rangeStartFrame(s), rangeEndFrame(s), &bake);
-                      if (error.empty()) s.lastBake = bake;
-                      reportDopeSheetEdit(s, error, "Baked " + partsText(bake));
+                      if (error.empty()) {
+                        s.lastBake = bake;
+                        // Live springs on top of the baked keys would lag them a second time:
+                        // the view shows the keys (the menu item turns live springs back on).
+                        s.liveSprings.enabled = false;
+                      }
+                      reportDopeSheetEdit(s, error, "Baked " + partsText(bake) +
+                                                        (error.empty() ? "; live spring bones off, the keys play" : ""));
                     }));
   out.push_back(CommandDef("sim.settings", "Simulation Settings...").menu("Simulate", true)
                     .hint("the dynamic chains' and ragdolls' settings")
