@@ -210,3 +210,37 @@ TEST(SimulationEdits, ACollisionCapsuleIsOneUndoStepAndKeepsTheTailOut) {
 
 }  // namespace
 }  // namespace kinema
+
+namespace kinema {
+namespace {
+
+TEST(SimulationEdits, ARagdollWithoutAClipFallsFromThePoseOnScreenIntoANewAction) {
+  Scene scene = tailed();
+  scene.clips.clear();
+  Document doc(scene);
+  const Skeleton& s = doc.skeleton();
+  ASSERT_TRUE(doc.scene().clips.empty());
+  SimulationBake bake;
+  ASSERT_EQ(ragdollFromFrameEdit(doc, -1, characterRoot(s), 1, 1 + 72, &bake), "");
+  ASSERT_EQ(doc.scene().clips.size(), 1u) << "a new Action holds the fall";
+  EXPECT_EQ(doc.scene().clips[0].name, "Action");
+  EXPECT_EQ(doc.activeClip(), 0);
+  EXPECT_EQ(doc.historyLabels().size(), 1u) << "one undo step";
+  // At the start frame the keys are the pose on screen (the rest pose here), up to the lift
+  // the ground gives the foot bodies that reach below it (under 2 cm); three seconds later
+  // the hips have fallen (lower than they stood).
+  const Clip& clip = doc.scene().clips[0];
+  Pose start = Pose::rest(s), end = Pose::rest(s);
+  sampleClip(clip, clip.frameToTime(1), start);
+  sampleClip(clip, clip.frameToTime(73), end);
+  const int hips = s.find("Hips");
+  const float standing = glm::vec3(computeWorld(s, Pose::rest(s))[hips][3]).y;
+  EXPECT_NEAR(glm::vec3(computeWorld(s, start)[hips][3]).y, standing, 0.02f);
+  EXPECT_LT(glm::vec3(computeWorld(s, end)[hips][3]).y, standing - 0.3f);
+  ASSERT_TRUE(doc.undo());
+  EXPECT_TRUE(doc.scene().clips.empty());
+  EXPECT_TRUE(doc.scene().simulation.ragdolls.empty());
+}
+
+}  // namespace
+}  // namespace kinema

@@ -72,8 +72,9 @@ void addSimulateCommands(std::vector<Command>& out) {
                       poseAtPlayhead(c.state);
                     }));
   out.push_back(CommandDef("sim.ragdoll_from_frame", "Ragdoll from Current Frame").menu("Simulate", true)
-                    .hint("the character (or the active joint and what hangs below it) falls from this frame, baked to keys")
-                    .enabled(onClip)
+                    .hint("the character (or the active joint and what hangs below it) falls from this frame, baked to keys "
+                          "(without a clip, from the pose on screen into a new Action)")
+                    .enabled([](const CommandContext& c) { return idle(c) && c.state.doc.skeleton().size() > 1; })
                     .run([](CommandContext& c) {
                       EditorState& s = c.state;
                       const Skeleton& sk = s.doc.skeleton();

@@ -7,6 +7,7 @@
 #include "anim/sampling.h"
 #include "core/forward_kinematics.h"
 #include "editor/model/document.h"
+#include "editor/model/keying.h"
 #include "retarget/bone_map.h"
 #include "sim/baked_keys.h"
 
@@ -224,7 +225,19 @@ std::string bakeSimulationEdit(Document& doc, int clip, long long first, long lo
 
 std::string ragdollFromFrameEdit(Document& doc, int clip, int root, long long frame, long long last, SimulationBake* result) {
   const Scene& scene = doc.scene();
-  if (clip < 0 || clip >= static_cast<int>(scene.clips.size())) return "Ragdoll: the document has no clip (key a pose first)";
+  // A character with no clip yet falls from the pose on screen: every joint keyed at the
+  // start frame into a new "Action" (as a first key makes one), in the same undo step.
+  const bool newClip = clip < 0 || clip >= static_cast<int>(scene.clips.size());
+  std::vector<Clip> withAction;
+  if (newClip) {
+    int created = -1;
+    std::vector<int> all(static_cast<size_t>(scene.skeleton.size()));
+    for (int j = 0; j < scene.skeleton.size(); ++j) all[static_cast<size_t>(j)] = j;
+    keyJoints(withAction, created, scene.skeleton, doc.pose(), all,
+              static_cast<float>(newActionClip().frameToTime(std::max(0LL, frame))), KeyPreferences{});
+    clip = static_cast<int>(scene.clips.size());
+  }
+  const Clip& source = newClip ? withAction.front() : scene.clips[clip];
   const Skeleton& s = scene.skeleton;
   if (root < 0 || root >= s.size() || firstChild(s, root) < 0) return "Ragdoll: the chosen joint has no bones below it";
   SimulationSettings settings = scene.simulation;
@@ -236,10 +249,15 @@ std::string ragdollFromFrameEdit(Document& doc, int clip, int root, long long fr
   settings.ragdolls.push_back(defaultRagdoll(s, root, frame));
   SimulationSettings only;
   only.ragdolls = {settings.ragdolls.back()};
-  Result<SimulationBake> baked = bake(doc, scene.clips[clip], only, frame, last);
+  Result<SimulationBake> baked = bake(doc, source, only, frame, last);
   if (!baked) return "Ragdoll: " + baked.error();
   const std::string error = doc.edit("Ragdoll from frame " + std::to_string(frame), [&](DocumentEdit& e) {
-    e.clips[clip] = baked->clip;
+    if (newClip) {
+      e.clips.push_back(baked->clip);
+      e.activeClip = clip;  // the new "Action" plays
+    } else {
+      e.clips[clip] = baked->clip;
+    }
     e.simulation = settings;
     return std::string();
   });

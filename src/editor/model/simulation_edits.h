@@ -49,7 +49,9 @@ int springChainOf(const Document& doc, int joint);
 // thins the baked keys: one undo step "Bake simulation". `result` gets the parts.
 std::string bakeSimulationEdit(Document& doc, int clip, long long first, long long last, SimulationBake* result = nullptr);
 // "Ragdoll from current frame": the subtree of `root` becomes a ragdoll at `frame` (replacing
-// a ragdoll it overlaps) and falls until `last`, baked into the clip: one undo step.
+// a ragdoll it overlaps) and falls until `last`, baked into the clip: one undo step. Without
+// a clip (`clip` names none) the pose on screen is keyed at `frame` into a new "Action",
+// which the fall is baked into and which becomes the active clip.
 std::string ragdollFromFrameEdit(Document& doc, int clip, int root, long long frame, long long last,
                                  SimulationBake* result = nullptr);
 
