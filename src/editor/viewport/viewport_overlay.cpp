@@ -1,6 +1,7 @@
 #include "editor/viewport/viewport_overlay.h"
 
 #include "editor/model/active_ik_target.h"
+#include "editor/viewport/lattice_cage.h"
 #include "editor/viewport/limit_shapes.h"
 #include "editor/viewport/overlay_builder.h"
 
@@ -50,6 +51,9 @@ void buildViewportOverlay(const EditorState& state, const ViewportView& view, co
       if (job.run(shape)) addLimitShape(out, shape);
     }
   }
+  if (state.lattice.active)
+    if (const Deformer* lattice = editedLattice(state))
+      addLatticeCage(out, latticeWorldPoints(state), latticeEdges(lattice->lattice), state.lattice);
   // Screen shapes are drawn in the viewport's own pixels; the tools work in window pixels.
   if (mode == ModalTool::BoxSelect)
     addBoxSelectRectangle(out, state.tool.startMouse - view.origin, state.tool.mouse - view.origin);

@@ -388,6 +388,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       if (!o.emptyFrame) drawEditorPanels(commands, io.Framerate);
       ImGui::Render();
       evaluateEditorPose(state);  // the panels may have edited the document
+      keepLatticeEditValid(state);  // an undo or a panel may have removed the edited lattice
       mark("ImGui: build the panels");
 
       const bool scriptDone = o.replay && o.frameCount <= 0 && nextScripted >= o.script.size() && live.queue.empty() &&
@@ -424,8 +425,9 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         // reference path), drawn as they come out.
         std::vector<DeformedPrimitive> cpuDeformed;
         if (!meshes.empty() && !state.doc.scene().deformers.empty()) {
-          const std::vector<DeformerStack> stacks =
+          std::vector<DeformerStack> stacks =
               sampleDeformerStacks(state.doc.scene(), state.hasMotion() ? state.clip : -1, state.time);
+          previewLatticeMove(state, state.world(), stacks);  // a running G on lattice points
           if (anyDeformerActive(stacks)) {
             SceneDeformationJob deformJob;
             deformJob.scene = &state.doc.scene();
