@@ -36,8 +36,8 @@ void addLatticeCommands(std::vector<Command>& out) {
                       }
                       const std::string error = enterLatticeEdit(c.state);
                       if (!error.empty()) return showEditorError(c.state, error);
-                      c.state.statusMessage = "Editing lattice " + editedLattice(c.state)->name +
-                                              ": click or box-select points, G moves, I keys, Tab leaves";
+                      c.state.statusMessage = "Editing '" + editedLattice(c.state)->name +
+                                              "': click or box-select points, G moves, I keys, Tab leaves";
                     }));
   out.push_back(CommandDef("lattice.grab", "Move Lattice Points").key(keys::G).scope(CommandScope::LatticeEdit)
                     .hint("move the selected points with the mouse (then X/Y/Z; auto-key or animated points: keyed)")
