@@ -72,7 +72,9 @@ if e.get("selected") != [23]:
     sys.exit(f"lattice_frame_times.sh: the click missed point 23 (selected {e.get('selected')})")
 PY
 echo "$size empty ImGui frame:"
-run "$tmp/drag.jsonl" --report-frame-times --empty-frame | tee "$tmp/empty.txt"
+# The same frames and mouse moves; without panels there is no button to name.
+grep -v '"item"' "$tmp/drag.jsonl" > "$tmp/empty.jsonl"
+run "$tmp/empty.jsonl" --report-frame-times --empty-frame | tee "$tmp/empty.txt"
 python3 - "$tmp/drag.txt" "$tmp/empty.txt" "$size lattice drag / empty frame" <<'PY'
 import re, sys
 def median(path):
