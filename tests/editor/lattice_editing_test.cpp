@@ -38,9 +38,14 @@ TEST_F(LatticeFixture, EntersOnTheScenesLatticeAndLeavesWhenItIsGone) {
   const std::vector<glm::vec3> points = latticeWorldPoints(state);
   ASSERT_EQ(points.size(), 27u);
   EXPECT_EQ(points[saved().index(2, 1, 0)], saved().restPoint(2, 1, 0));
+  clickLatticePoint(state.lattice, 3, false);
+  ASSERT_EQ(beginLatticeMove(state), "");
+  state.tool.mode = ModalTool::LatticeGrab;  // as the viewport's G sets it
   state.doc.undo();  // the lattice's Add
   keepLatticeEditValid(state);
   EXPECT_FALSE(state.lattice.active);
+  EXPECT_FALSE(state.lattice.moving);
+  EXPECT_EQ(state.tool.mode, ModalTool::None) << "the move ends with the mode";
   EXPECT_NE(enterLatticeEdit(state), "") << "no lattice left to edit";
 }
 

@@ -5,6 +5,8 @@
 // down -Z, so a point projects to pixel (100 + 100 x / (10 - z), 100 - 100 y / (10 - z)).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "editor/commands/command_registry.h"
 #include "editor/commands/editor_input.h"
 #include "editor/model/deformer_edits.h"

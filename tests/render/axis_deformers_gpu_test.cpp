@@ -4,6 +4,9 @@
 // by transform feedback (MeshRenderer::deform). Positions agree to 1e-4 m; the shader's
 // normals (central differences of the same map) point as the CPU's area-weighted ones.
 // llvmpipe on EGL, as every render test.
+#include <gtest/gtest.h>
+
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>

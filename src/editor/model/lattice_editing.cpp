@@ -107,17 +107,23 @@ void exitLatticeEdit(EditorState& state) {
 
 void keepLatticeEditValid(EditorState& state) {
   LatticeEditState& e = state.lattice;
+  // A G whose move was dropped (the mode left, the points gone) ends with it.
+  if (state.tool.mode == ModalTool::LatticeGrab && (!e.active || !e.moving)) state.tool = ToolState{};
   if (!e.active) return;
   const Deformer* d = editedLattice(state);
   if (!d) {
     exitLatticeEdit(state);
+    if (state.tool.mode == ModalTool::LatticeGrab) state.tool = ToolState{};
     return;
   }
   const int count = d->lattice.pointCount();
   e.selected.erase(std::remove_if(e.selected.begin(), e.selected.end(), [&](int p) { return p < 0 || p >= count; }),
                    e.selected.end());
   if (e.hovered >= count) e.hovered = -1;
-  if (e.moving && e.selected.empty()) cancelLatticeMove(state);
+  if (e.moving && e.selected.empty()) {
+    cancelLatticeMove(state);
+    if (state.tool.mode == ModalTool::LatticeGrab) state.tool = ToolState{};
+  }
 }
 
 std::vector<glm::vec3> latticeWorldPoints(const EditorState& state) {
