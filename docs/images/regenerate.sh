@@ -52,6 +52,12 @@ for shot in editor_fk_gizmo editor_ik_drag; do
     --script "$root/docs/images/$shot.jsonl" --frame-count 40 --screenshot "$root/docs/images/$shot.png"
 done
 rm -rf "$tmp"
+# Lattice edit mode (issue 22): a lattice added to the default character, the top layer's
+# middle column box-selected and moved up with G, Y (the head follows), the view orbited.
+tmp=$(mktemp -d)
+XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp sh "$root/tests/tools/xvfb_run.sh" 1280x800x24 "$kinema" edit --size 1280x800 \
+  --script "$root/docs/images/lattice_edit.jsonl" --frame-count 56 --screenshot "$root/docs/images/lattice_edit.png"
+rm -rf "$tmp"
 # The timeline with the keyframe diamonds of the selected joint (issue 9).
 tmp=$(mktemp -d)
 XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp xvfb-run -a -s "-screen 0 1280x800x24" "$kinema" edit \

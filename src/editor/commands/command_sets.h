@@ -11,6 +11,7 @@ void addFileCommands(std::vector<Command>& out);             // File menu (file_
 void addEditCommands(std::vector<Command>& out);             // Edit menu (edit_commands.cpp)
 void addViewCommands(std::vector<Command>& out);             // View menu (view_commands.cpp)
 void addPoseCommands(std::vector<Command>& out);             // Pose menu, selection, R / G (pose_commands.cpp)
+void addLatticeCommands(std::vector<Command>& out);          // Pose menu: lattice edit mode (lattice_commands.cpp)
 void addClipCommands(std::vector<Command>& out);             // Clip menu: the clip list (clip_commands.cpp)
 void addMotionCommands(std::vector<Command>& out);           // Animation menu: contacts, clean up (motion_commands.cpp)
 void addSimulateCommands(std::vector<Command>& out);         // Simulate menu, Teach > Stiff Springs (simulate_commands.cpp)

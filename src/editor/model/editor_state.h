@@ -18,6 +18,8 @@
 #include "editor/model/motion_cleanup_edit.h"
 #include "editor/model/simulation_edits.h"
 #include "editor/model/item_rects.h"
+#include "editor/model/lattice_editing.h"
+#include "editor/model/property_keying.h"
 #include "editor/model/editor_layout.h"
 #include "editor/model/message_log.h"
 #include "editor/model/user_preferences.h"
@@ -38,6 +40,7 @@ enum class ModalTool {
   IkDrag,      // dragging an IK target handle (or a joint with auto-IK)
   GizmoDrag,   // dragging a ring of the rotate gizmo
   Navigate,    // orbit / pan with the mouse
+  LatticeGrab, // G in lattice edit mode: move the selected lattice points (lattice_editing.h)
 };
 
 // An axis a modal tool is constrained to (X/Y/Z pressed during R, G or an IK drag).
@@ -100,6 +103,8 @@ struct EditorState {
   int hoveredJoint = -1;   // under the mouse (drawn highlighted)
   int hoveredIkTarget = -1;
   AnimationEditorKind animationEditor = AnimationEditorKind::None;
+  HoveredProperty hoveredProperty;  // the keyable Properties field under the mouse (I keys it)
+  LatticeEditState lattice;  // lattice edit mode (Tab): the edited lattice, its point selection, a running G
   CompareMode compare;     // Teach > Compare Solvers: replaces the 3D view and the side panels while active
   CurveEditorState curveEditor;  // the curve editor's view, channel toggles and key selection
   DopeSheetState dopeSheet;  // the dope sheet's selection, view, clipboard and mouse gesture

@@ -4,6 +4,7 @@
 
 #include "editor/model/active_ik_target.h"
 #include "editor/viewport/capsule_shape.h"
+#include "editor/viewport/lattice_cage.h"
 #include "editor/viewport/limit_shapes.h"
 #include "editor/viewport/overlay_builder.h"
 
@@ -67,6 +68,9 @@ void buildViewportOverlay(const EditorState& state, const ViewportView& view, co
       for (const std::vector<glm::vec3>& line : wire.polylines)
         out.addPolyline(line, false, glm::vec4(1.0f, 0.55f, 0.15f, 0.8f), 1.5f, OverlayDrawList::Layer::OnTop);
     }
+  if (state.lattice.active)
+    if (const Deformer* lattice = editedLattice(state))
+      addLatticeCage(out, latticeWorldPoints(state), latticeEdges(lattice->lattice), state.lattice);
   // Screen shapes are drawn in the viewport's own pixels; the tools work in window pixels.
   if (mode == ModalTool::BoxSelect)
     addBoxSelectRectangle(out, state.tool.startMouse - view.origin, state.tool.mouse - view.origin);

@@ -388,6 +388,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       if (!o.emptyFrame) drawEditorPanels(commands, io.Framerate);
       ImGui::Render();
       evaluateEditorPose(state);  // the panels may have edited the document
+      keepLatticeEditValid(state);  // an undo or a panel may have removed the edited lattice
       mark("ImGui: build the panels");
 
       const bool scriptDone = o.replay && o.frameCount <= 0 && nextScripted >= o.script.size() && live.queue.empty() &&
@@ -423,9 +424,18 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         // Meshes with an active deformer stack: morphs, skin and deformers on the CPU (the
         // reference path), drawn as they come out.
         std::vector<DeformedPrimitive> cpuDeformed;
+        std::vector<DeformerStack> gpuStacks;  // per instance: what the vertex shader deforms
         if (!meshes.empty() && !state.doc.scene().deformers.empty()) {
-          const std::vector<DeformerStack> stacks =
+          std::vector<DeformerStack> stacks =
               sampleDeformerStacks(state.doc.scene(), state.hasMotion() ? state.clip : -1, state.time);
+          previewLatticeMove(state, state.world(), stacks);  // a running G on lattice points
+          // With the shader deforming (a hardware GPU), bend / twist / taper stacks run in
+          // the vertex shader; the rest, and everything on llvmpipe, on the CPU.
+          if (!meshes.cpuDeformation() && !state.view.showWeights) {
+            gpuStacks.assign(stacks.size(), DeformerStack());
+            for (size_t i = 0; i < stacks.size(); ++i)
+              if (axisStackOnGpu(stacks[i])) std::swap(gpuStacks[i], stacks[i]);
+          }
           if (anyDeformerActive(stacks)) {
             SceneDeformationJob deformJob;
             deformJob.scene = &state.doc.scene();
@@ -438,6 +448,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
           }
         }
         meshDraw.frame.deformed = &cpuDeformed;
+        meshDraw.frame.gpuDeformers = gpuStacks.empty() ? nullptr : &gpuStacks;
         meshDraw.frame.weightJoint = state.view.showWeights ? state.doc.selection.active() : -1;
         colorSelection(state, list);
         state.camera.fitClipPlanes(bounds.radius());

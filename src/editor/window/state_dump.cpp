@@ -240,6 +240,27 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
     out["simulation"] = sim;
   }
   out["tool"] = modalToolName(s.tool.mode);
+  {  // lattice edit mode (docs/cli.md): the edited lattice, its selected points where they are shown
+    json lattice = {{"active", s.lattice.active}, {"moving", s.lattice.moving}};
+    if (const Deformer* d = s.lattice.active ? editedLattice(s) : nullptr) {
+      const std::vector<glm::vec3> points = latticeWorldPoints(s);
+      json selected = json::array(), positions = json::array();
+      for (int p : s.lattice.selected) {
+        selected.push_back(p);
+        positions.push_back({points[p].x, points[p].y, points[p].z});
+      }
+      lattice["instance"] = s.lattice.instance;
+      lattice["deformer"] = d->name;
+      lattice["points"] = d->lattice.pointCount();
+      lattice["selected"] = selected;
+      lattice["selected_positions"] = positions;  // world metres at the playhead
+    }
+    out["lattice_edit"] = lattice;
+  }
+  out["hovered_property"] = s.hoveredProperty.kind == HoveredProperty::Kind::ShapeWeight ? "shape"
+                            : s.hoveredProperty.kind == HoveredProperty::Kind::DeformerParameter
+                                ? "deformer:" + s.hoveredProperty.parameter
+                                : "";
   out["compare"] = compareStateJson(s.compare);  // Teach > Compare Solvers (docs/cli.md)
   out["dope_sheet"] = dopeSheetJson(s);
   json selection = json::array();
