@@ -260,6 +260,7 @@ bool ParticleStepJob::run() {
       s.ages.push_back(0.0f);
       s.lifetimes.push_back(draw(em.lifetime, random));
       s.emitterOf.push_back(static_cast<uint32_t>(e));
+      ++s.emitted;
     }
   }
   s.random = random.state;
