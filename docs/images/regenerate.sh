@@ -113,3 +113,5 @@ convert "$tmp"/c_face_{neutral,jaw_open,smile,brow_raise,blink}.png +append "$ro
 rm -rf "$tmp"
 # Issue 23: Fox's swinging tail and a ragdoll fall, baked by `kinema simulate` and rendered.
 "$root/docs/images/physics_strips.sh" "$kinema"
+# Issue 24: particles from a joint, the L-system plant growing and swaying (strips and GIFs).
+"$root/docs/images/procedural_figures.sh" "$kinema"
