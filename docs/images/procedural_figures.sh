@@ -89,3 +89,21 @@ montage $(ls "$tmp"/sway/frame_*.png | awk 'NR % 20 == 11') -tile x1 -geometry +
 mkdir -p "$tmp/sway_gif"
 for f in $(ls "$tmp"/sway/frame_*.png | awk 'NR % 2 == 1'); do cp "$f" "$tmp/sway_gif/"; done
 gif "$tmp/sway_gif" 15 "$out/lsystem_sway.gif"
+
+# The editor: Hand.R selected, Simulate > Add Particle Emitter, 40 frames on (the Particles
+# window open on the new system).
+python3 - "$tmp/sparks.kinema" "$tmp/wave.kinema" "$tmp/particles.jsonl" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+del d["simulation"]
+json.dump(d, open(sys.argv[2], "w"))
+events = [{"type": "key", "key": "KP_1"}, {"type": "key", "key": "HOME"},
+          {"type": "mouse_move", "item": "Outliner/Hand.R"}, {"type": "button_down", "button": "left"},
+          {"type": "button_up", "button": "left"}, {"type": "command", "id": "sim.add_particle_emitter"}]
+events += [{"type": "command", "id": "timeline.step_forward"}] * 40
+with open(sys.argv[3], "w") as f:
+    for i, e in enumerate(events):
+        f.write(json.dumps(dict(e, frame=i + 1)) + "\n")
+PY
+XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp sh "$root/tests/tools/xvfb_run.sh" 1600x1000x24 "$kinema" edit "$tmp/wave.kinema" \
+  --size 1400x900 --script "$tmp/particles.jsonl" --frame-count 52 --screenshot "$out/editor_particles.png" >/dev/null 2>&1
