@@ -1,7 +1,8 @@
 // End-to-end: particles in the editor (issue 24). The real `kinema edit` under xvfb-run on
 // the default character waving its right arm: Hand.R selected in the outliner, Simulate >
-// Add Particle Emitter (its command), 20 frames stepped; the dump shows the system and its
-// live counts, the screenshot shows sparks in the system's colour; Ctrl+Z removes it.
+// Add Particle Emitter (its command), its restitution typed into the Particles window, 20
+// frames stepped; the dump shows the system and its live counts, the screenshot shows sparks
+// in the system's colour; Ctrl+Z twice undoes the edit and the emitter.
 #include <algorithm>
 #include <cmath>
 
@@ -30,7 +31,7 @@ int sparks(const std::string& png, const json& d) {
   return n;
 }
 
-TEST(ParticlesE2e, AnEmitterOnTheActiveJointPlaysLiveAndCtrlZRemovesIt) {
+TEST(ParticlesE2e, AnEmitterOnTheActiveJointIsEditedPlaysLiveAndCtrlZRemovesIt) {
   if (runCommand("command -v xvfb-run") != 0) GTEST_SKIP() << "SKIPPED: xvfb-run is not installed";
   const std::string dir = makeTempDir(), file = dir + "/wave.kinema";
   // The default character, its right upper arm turning about z from 1.1 rad down to 0.7 up
@@ -49,8 +50,11 @@ TEST(ParticlesE2e, AnEmitterOnTheActiveJointPlaysLiveAndCtrlZRemovesIt) {
   runCommand("mkdir -p '" + shots + "'");
 
   Script added;
-  // The Particles window opens on the new system; closed again so the viewport shows whole.
-  added.select("Hand.R").command("sim.add_particle_emitter").wait(3).command("sim.particle_settings").wait(1);
+  // The Particles window opens on the new system: its restitution typed in (one more undo
+  // step), then the window closed so the viewport shows whole.
+  added.select("Hand.R").command("sim.add_particle_emitter").wait(3);
+  added.clickItem("Particles/Restitution").wait(1).type("0.9").key("ENTER").wait(2);
+  added.command("sim.particle_settings").wait(1);
   for (int i = 0; i < 20; ++i) added.command("timeline.step_forward");
   added.wait(3);
   const json d = runEditor(dir, shots, added, "particles_added", file);
@@ -66,11 +70,12 @@ TEST(ParticlesE2e, AnEmitterOnTheActiveJointPlaysLiveAndCtrlZRemovesIt) {
   EXPECT_EQ(p["systems"][0]["alive"], 40);
   EXPECT_TRUE(d["items"].contains("Particles/Emitter")) << "the Particles window was drawn";
   EXPECT_EQ(p["window"], false);
-  EXPECT_EQ(d["undo_depth"], 1);
+  EXPECT_NEAR(double(p["systems"][0]["restitution"]), 0.9, 1e-6);
+  EXPECT_EQ(d["undo_depth"], 2) << "adding, then the restitution: one step each";
   EXPECT_GT(sparks(shots + "/particles_added.png", d), 20) << "sparks drawn in the viewport";
 
   Script undone = added;
-  undone.chord("Z", {"ctrl"}).wait(3);
+  undone.chord("Z", {"ctrl"}).wait(2).chord("Z", {"ctrl"}).wait(3);
   const json u = runEditor(dir, shots, undone, "particles_undone", file);
   ASSERT_TRUE(u.is_object());
   EXPECT_EQ(u["particles"]["systems"].size(), 0u);
