@@ -113,5 +113,11 @@ convert "$tmp"/c_face_{neutral,jaw_open,smile,brow_raise,blink}.png +append "$ro
 rm -rf "$tmp"
 # Issue 23: Fox's swinging tail and a ragdoll fall, baked by `kinema simulate` and rendered.
 "$root/docs/images/physics_strips.sh" "$kinema"
+# Issue 23: a collision capsule on Fox's left thigh for its dynamic tail (Simulate > Add
+# Collision Capsule), drawn in the 3D view.
+tmp=$(mktemp -d)
+XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp sh "$root/tests/tools/xvfb_run.sh" 1280x800x24 "$kinema" edit ../shared/data/gltf/Fox.glb \
+  --size 1280x720 --script "$root/docs/images/fox_capsule.jsonl" --screenshot "$root/docs/images/fox_capsule.png"
+rm -rf "$tmp"
 # Issue 24: particles from a joint, the L-system plant growing and swaying (strips and GIFs).
 "$root/docs/images/procedural_figures.sh" "$kinema"

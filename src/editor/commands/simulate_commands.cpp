@@ -48,6 +48,22 @@ void addSimulateCommands(std::vector<Command>& out) {
                       const std::string error = removeSpringChainEdit(s.doc, springChainOf(s.doc, s.doc.selection.active()));
                       reportDopeSheetEdit(s, error, "Removed the dynamic chain");
                     }));
+  out.push_back(CommandDef("sim.add_collider", "Add Collision Capsule").menu("Simulate")
+                    .hint("a capsule along the active joint's bone that the dynamic chains' tails stay out of (sized in Simulation Settings)")
+                    .enabled([](const CommandContext& c) {
+                      const int active = c.state.doc.selection.active();
+                      if (!idle(c) || active < 0) return false;
+                      for (const SpringBoneChain& chain : c.state.doc.scene().simulation.springChains)
+                        if (std::find(chain.joints.begin(), chain.joints.end(), active) == chain.joints.end()) return true;
+                      return false;
+                    })
+                    .run([](CommandContext& c) {
+                      EditorState& s = c.state;
+                      const int active = s.doc.selection.active();
+                      const std::string error = addColliderEdit(s.doc, defaultCollider(s.doc.skeleton(), active));
+                      if (error.empty()) s.simulationWindowOpen = true;
+                      reportDopeSheetEdit(s, error, "Added a collision capsule on " + s.doc.skeleton().names[active]);
+                    }));
   out.push_back(CommandDef("sim.live_springs", "Play Spring Bones Live").menu("Simulate")
                     .hint("dynamic chains swing during playback and scrubbing (simulated from the range's start)")
                     .checked([](const CommandContext& c) { return c.state.liveSprings.enabled; })

@@ -2,6 +2,7 @@
 #include "editor/model/simulation_edits.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "anim/sampling.h"
 #include "core/forward_kinematics.h"
@@ -119,6 +120,51 @@ std::string setSpringChainEdit(Document& doc, int index, const SpringBoneChain& 
   if (index < 0 || index >= static_cast<int>(doc.scene().simulation.springChains.size())) return "no such chain";
   return doc.edit("Set dynamic chain " + chain.name, [&](DocumentEdit& e) {
     e.simulation.springChains[index] = chain;
+    return std::string();
+  });
+}
+
+SpringCollider defaultCollider(const Skeleton& s, int joint) {
+  SpringCollider c;
+  c.joint = joint;
+  const int child = joint >= 0 && joint < s.size() ? firstChild(s, joint) : -1;
+  const float length = child >= 0 ? glm::length(s.rest[child].translation) : 0.0f;
+  if (child >= 0 && length > 0.0f) {
+    c.b = s.rest[child].translation;
+    c.radius = 0.25f * length;
+  } else {
+    c.radius = 0.03f * restSize(s);
+  }
+  return c;
+}
+
+std::string addColliderEdit(Document& doc, const SpringCollider& collider) {
+  const Skeleton& s = doc.skeleton();
+  if (collider.joint < -1 || collider.joint >= s.size()) return "Add collision capsule: no such joint";
+  if (!(collider.radius > 0.0f) || !std::isfinite(collider.radius) || !isFinite(collider.a) || !isFinite(collider.b))
+    return "Add collision capsule: the radius must be positive and the ends finite";
+  const std::vector<SpringBoneChain>& chains = doc.scene().simulation.springChains;
+  if (chains.empty()) return "Add collision capsule: make a chain dynamic first (Simulate > Make Chain Dynamic)";
+  bool any = false;
+  for (const SpringBoneChain& c : chains)
+    any |= std::find(c.joints.begin(), c.joints.end(), collider.joint) == c.joints.end();
+  if (!any) return "Add collision capsule: the joint belongs to the only dynamic chain (a chain does not collide with itself)";
+  const std::string where = collider.joint >= 0 ? s.names[collider.joint] : std::string("the world");
+  return doc.edit("Add collision capsule on " + where, [&](DocumentEdit& e) {
+    for (SpringBoneChain& c : e.simulation.springChains)
+      if (std::find(c.joints.begin(), c.joints.end(), collider.joint) == c.joints.end()) c.colliders.push_back(collider);
+    return std::string();
+  });
+}
+
+std::string removeColliderEdit(Document& doc, int chain, int collider) {
+  const std::vector<SpringBoneChain>& chains = doc.scene().simulation.springChains;
+  if (chain < 0 || chain >= static_cast<int>(chains.size()) || collider < 0 ||
+      collider >= static_cast<int>(chains[chain].colliders.size()))
+    return "Remove collision capsule: no such capsule";
+  return doc.edit("Remove collision capsule", [&](DocumentEdit& e) {
+    std::vector<SpringCollider>& list = e.simulation.springChains[chain].colliders;
+    list.erase(list.begin() + collider);
     return std::string();
   });
 }

@@ -33,6 +33,15 @@ std::string removeSpringChainEdit(Document& doc, int index);
 std::string setSpringChainEdit(Document& doc, int index, const SpringBoneChain& chain);
 std::string setRagdollEdit(Document& doc, int index, const RagdollSettings& ragdoll);
 std::string removeRagdollEdit(Document& doc, int index);
+// A collision capsule on `joint` (joint space): along its bone, from the joint to its first
+// child, radius a quarter of that bone's length; a leaf gets a sphere of 3 % of the
+// character's rest size at the joint.
+SpringCollider defaultCollider(const Skeleton& skeleton, int joint);
+// "Add collision capsule": `collider` joins every dynamic chain that does not hold its joint
+// (a chain does not collide with itself): one undo step; an error when no chain can take it.
+std::string addColliderEdit(Document& doc, const SpringCollider& collider);
+// Removes capsule `collider` of chain `chain`: one undo step.
+std::string removeColliderEdit(Document& doc, int chain, int collider);
 // The chain holding `joint`, or -1.
 int springChainOf(const Document& doc, int joint);
 

@@ -59,9 +59,31 @@ void chainSection(EditorState& state, int index) {
   ImGui::InputFloat3("gravity (units/s^2)", &chain.gravity.x, "%.4g");
   recordItem(std::string(kWindow) + "/" + id + "/Gravity");
   changed |= ImGui::IsItemDeactivatedAfterEdit() && isFinite(chain.gravity);
-  ImGui::TextDisabled("%d collision capsule%s (saved in the .kinema file)", static_cast<int>(chain.colliders.size()),
-                      chain.colliders.size() == 1 ? "" : "s");
+  ImGui::TextDisabled("%d collision capsule%s (Simulate > Add Collision Capsule on the active joint)",
+                      static_cast<int>(chain.colliders.size()), chain.colliders.size() == 1 ? "" : "s");
+  int removeCollider = -1;
+  for (int k = 0; k < static_cast<int>(chain.colliders.size()); ++k) {
+    SpringCollider& c = chain.colliders[k];
+    const std::string cid = id + "/Capsule " + std::to_string(k);
+    ImGui::PushID(k);
+    ImGui::Text("Capsule %d on %s (ends in its space)", k, c.joint >= 0 ? s.names[c.joint].c_str() : "the world");
+    ImGui::SetNextItemWidth(scaled(state, 200.0f));
+    ImGui::InputFloat3("end a", &c.a.x, "%.4g");
+    recordItem(std::string(kWindow) + "/" + cid + "/A");
+    changed |= ImGui::IsItemDeactivatedAfterEdit() && isFinite(c.a);
+    ImGui::SetNextItemWidth(scaled(state, 200.0f));
+    ImGui::InputFloat3("end b", &c.b.x, "%.4g");
+    recordItem(std::string(kWindow) + "/" + cid + "/B");
+    changed |= ImGui::IsItemDeactivatedAfterEdit() && isFinite(c.b);
+    changed |= floatField(state, cid + "/Radius", "capsule radius", c.radius, 1e-6f);
+    ImGui::SameLine();
+    if (ImGui::Button("Remove")) removeCollider = k;
+    recordItem(std::string(kWindow) + "/" + cid + "/Remove");
+    ImGui::PopID();
+  }
   if (changed) reportDopeSheetEdit(state, setSpringChainEdit(state.doc, index, chain), "Set dynamic chain " + chain.name);
+  else if (removeCollider >= 0)
+    reportDopeSheetEdit(state, removeColliderEdit(state.doc, index, removeCollider), "Removed the collision capsule");
   if (ImGui::Button("Remove chain")) reportDopeSheetEdit(state, removeSpringChainEdit(state.doc, index), "Removed the dynamic chain");
   recordItem(std::string(kWindow) + "/" + id + "/Remove");
   ImGui::PopID();
@@ -110,6 +132,7 @@ void drawSimulationWindow(CommandContext& ctx) {
   commandButton(ctx, "sim.ragdoll_from_frame", kWindow, "Ragdoll from current frame");
   ImGui::SameLine();
   commandButton(ctx, "sim.bake", kWindow, "Bake");
+  commandButton(ctx, "sim.add_collider", kWindow, "Add collision capsule on the active joint");
   ImGui::Separator();
   const SimulationSettings& sim = state.doc.scene().simulation;
   if (sim.empty()) ImGui::TextWrapped("Nothing is dynamic yet: select a chain's first joint (a tail) and make it dynamic.");

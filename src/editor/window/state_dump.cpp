@@ -221,7 +221,11 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
     for (const SpringBoneChain& c : doc.scene().simulation.springChains) {
       json joints = json::array();
       for (int j : c.joints) joints.push_back(jointName(s, j));
-      chains.push_back({{"name", c.name}, {"joints", joints}, {"stiffness", c.stiffness}, {"damping", c.damping}});
+      json colliders = json::array();
+      for (const SpringCollider& k : c.colliders)
+        colliders.push_back({{"joint", jointName(s, k.joint)}, {"a", vec(k.a)}, {"b", vec(k.b)}, {"radius", k.radius}});
+      chains.push_back({{"name", c.name}, {"joints", joints}, {"stiffness", c.stiffness}, {"damping", c.damping},
+                        {"colliders", colliders}});
     }
     for (const RagdollSettings& r : doc.scene().simulation.ragdolls)
       ragdolls.push_back({{"name", r.name}, {"root", jointName(s, r.root)}, {"start_frame", r.startFrame}});
