@@ -127,3 +127,5 @@ XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp sh "$root/tests/tools/xvfb_run.sh" 1280
 XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp sh "$root/tests/tools/xvfb_run.sh" 1280x800x24 "$kinema" edit \
   --size 1280x720 --script "$root/docs/images/stiff_springs_window.jsonl" --screenshot "$root/docs/images/stiff_springs_window.png"
 rm -rf "$tmp"
+# Issue 24: particles from a joint, the L-system plant growing and swaying (strips and GIFs).
+"$root/docs/images/procedural_figures.sh" "$kinema"

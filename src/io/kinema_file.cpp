@@ -18,6 +18,7 @@
 #include "io/image.h"
 #include "io/json_document.h"
 #include "io/json_number.h"
+#include "io/kinema_particles.h"
 #include "io/message_text.h"
 #include "io/text_file.h"
 
@@ -461,6 +462,10 @@ bool readSimulation(Reader& r, const Json& root, Scene& scene) {
       }
     }
   }
+  if (const Json* list = r.member(*sim, "simulation", "particles", false)) {
+    std::string where, what;
+    if (!readParticleSystems(*list, "simulation.particles", s, out.particles, where, what)) return r.fail(where, what);
+  }
   // What one part cannot see: a joint in two chains, ragdolls that overlap.
   if (std::string e = out.validate(s); !e.empty()) return r.fail("simulation", e);
   scene.simulation = std::move(out);
@@ -510,6 +515,7 @@ Json simulationToJson(const Scene& scene) {
   Json sim;
   sim["spring_chains"] = std::move(chains);
   sim["ragdolls"] = std::move(ragdolls);
+  if (!scene.simulation.particles.empty()) sim["particles"] = particleSystemsToJson(scene.simulation.particles, s);
   return sim;
 }
 

@@ -63,6 +63,7 @@ const CommandRegistry& editorCommands() {
     addTimelineCommands(all);
     addAnimationEditorCommands(all);
     addSimulateCommands(all);
+    addParticleCommands(all);  // after the Simulate menu's first commands (issue 24)
     addCompareCommands(all);
     addHelpCommands(all);
     for (Command& c : all) {

@@ -16,6 +16,7 @@
 #include "editor/model/dope_sheet.h"
 #include "editor/model/foot_contact_edits.h"
 #include "editor/model/motion_cleanup_edit.h"
+#include "editor/model/particle_edits.h"
 #include "editor/model/simulation_edits.h"
 #include "editor/model/item_rects.h"
 #include "editor/model/lattice_editing.h"
@@ -147,8 +148,16 @@ struct EditorState {
   // still under symplectic Euler's and Verlet's 2 / omega_max).
   float stiffSpringsStep = 1.5f;   // dt / (2 zeta / omega_max)
   float stiffSpringsZeta = 0.3f;
+  // Particle systems (issue 24; particle_edits.h): played live in the viewport, the Particles
+  // window and the system it shows.
+  LiveParticles liveParticles;
+  bool particlesWindowOpen = false;
+  int particleSystem = 0;
 
   bool wasPlaying = false;  // playback stopped since the last evaluate: the document takes the frame
+  // The document's pose revision right after the last poseAtPlayhead: equal while the pose
+  // shows the clip at the playhead, so undoing a clip edit (a modifier) shows the clip again.
+  long long animatedPoseRevision = -1;
   // The playhead and document state the pose was last sampled at while playing: a second
   // evaluate of the same frame samples nothing.
   struct SampledAt {

@@ -24,6 +24,7 @@
 #include "editor/panels/panel_layout.h"
 #include "editor/window/state_dump.h"
 #include "editor/window/ui_style.h"
+#include "editor/viewport/particle_display.h"
 #include "editor/viewport/viewport_overlay.h"
 #include "editor/viewport/animation_display.h"
 #include "editor/viewport/viewport_controller.h"
@@ -465,6 +466,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         buildViewportOverlay(state, ViewportView::of(state.camera, glm::vec2(vw, vh), glm::vec2(vp.x * sx, vp.y * sy)),
                              tools, overlay);
         buildAnimationDisplay(state, skinJoints, animationDisplay, overlay);  // onion skin, motion path
+        buildParticleDisplay(state, static_cast<float>(vh), overlay);         // live particles (issue 24)
         // Body ghosts go to the mesh renderer; bones stand in where the meshes failed to upload.
         std::vector<MeshGhost> meshGhosts;
         if (animationDisplay.ghostBodies && meshes.empty())

@@ -118,6 +118,7 @@ json curveEditorJson(const EditorState& s) {
                           {"unit", displayUnitName(ch, ce.rotationView)},
                           {"visible", !ce.isHidden({c, i})},
                           {"value_now", curveValueAt(ch, i, ce.rotationView, ce.eulerOrder, p, float(s.time))},
+                          {"modifiers", ch.modifiers.size()},
                           {"keys", keys}});
       }
     }
@@ -238,6 +239,21 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
       sim["last_bake"] = {{"parts", parts}, {"keys_before", s.lastBake->keysBefore}, {"keys_after", s.lastBake->keysAfter}};
     }
     out["simulation"] = sim;
+  }
+  {  // Particle systems (issue 24): names, emitters, the live counts at the frame last shown
+    json systems = json::array();
+    for (size_t i = 0; i < doc.scene().simulation.particles.size(); ++i) {
+      const ParticleSystemSettings& p = doc.scene().simulation.particles[i];
+      json emitters = json::array();
+      for (const ParticleEmitter& e : p.emitters)
+        emitters.push_back({{"kind", toString(e.shape)}, {"joint", jointName(s, e.joint)}, {"rate", e.rate.mean}});
+      json one = {{"name", p.name}, {"emitters", emitters}, {"restitution", p.forces.restitution}, {"size", p.size}};
+      if (i < s.liveParticles.alive.size())
+        one["alive"] = s.liveParticles.alive[i], one["emitted"] = s.liveParticles.emitted[i];
+      systems.push_back(one);
+    }
+    out["particles"] = {{"systems", systems}, {"live", s.liveParticles.enabled}, {"frame", s.liveParticles.frame},
+                        {"window", s.particlesWindowOpen}};
   }
   out["tool"] = modalToolName(s.tool.mode);
   {  // lattice edit mode (docs/cli.md): the edited lattice, its selected points where they are shown
