@@ -64,6 +64,7 @@ const CommandRegistry& editorCommands() {
     addAnimationEditorCommands(all);
     addSimulateCommands(all);
     addParticleCommands(all);  // after the Simulate menu's first commands (issue 24)
+    addStiffSpringsCommand(all);  // the Teach menu starts after the last Simulate command
     addCompareCommands(all);
     addHelpCommands(all);
     for (Command& c : all) {

@@ -112,6 +112,9 @@ void addSimulateCommands(std::vector<Command>& out) {
                     .enabled(documentShown)
                     .checked([](const CommandContext& c) { return c.state.simulationWindowOpen; })
                     .run([](CommandContext& c) { c.state.simulationWindowOpen = !c.state.simulationWindowOpen; }));
+}
+
+void addStiffSpringsCommand(std::vector<Command>& out) {
   out.push_back(CommandDef("teach.stiff_springs", "Stiff Springs (Time Steps)").menu("Teach")
                     .hint("why a time step blows up: four integrators on a damped spring chain (kinema demo stiff-springs)")
                     .checked([](const CommandContext& c) { return c.state.stiffSpringsWindowOpen; })
