@@ -16,6 +16,8 @@ struct SimulationSettings {
   std::vector<ParticleSystemSettings> particles;  // played, not baked (sim/particle_system.h)
 
   bool empty() const { return springChains.empty() && ragdolls.empty() && particles.empty(); }
+  // Parts a bake turns into joint keys (particles are played, not baked).
+  bool hasBakedParts() const { return !springChains.empty() || !ragdolls.empty(); }
   // Empty when every part fits `skeleton` and no joint is driven by two parts; otherwise
   // one sentence naming the first problem.
   std::string validate(const Skeleton& skeleton) const;

@@ -93,7 +93,7 @@ void addSimulateCommands(std::vector<Command>& out) {
                     }));
   out.push_back(CommandDef("sim.bake", "Bake Simulation").menu("Simulate")
                     .hint("every dynamic chain and ragdoll into keys over the playback range (one undo step)")
-                    .enabled([](const CommandContext& c) { return onClip(c) && !c.state.doc.scene().simulation.empty(); })
+                    .enabled([](const CommandContext& c) { return onClip(c) && c.state.doc.scene().simulation.hasBakedParts(); })
                     .run([](CommandContext& c) {
                       EditorState& s = c.state;
                       SimulationBake bake;

@@ -212,7 +212,8 @@ Result<SimulationBake> bake(const Document& doc, const Clip& clip, const Simulat
 std::string bakeSimulationEdit(Document& doc, int clip, long long first, long long last, SimulationBake* result) {
   const Scene& scene = doc.scene();
   if (clip < 0 || clip >= static_cast<int>(scene.clips.size())) return "Bake simulation: the document has no clip (key a pose first)";
-  if (scene.simulation.empty()) return "Bake simulation: nothing to simulate (make a chain dynamic or add a ragdoll first)";
+  if (!scene.simulation.hasBakedParts())
+    return "Bake simulation: nothing to bake into keys (make a chain dynamic or add a ragdoll first)";
   Result<SimulationBake> baked = bake(doc, scene.clips[clip], scene.simulation, first, last);
   if (!baked) return "Bake simulation: " + baked.error();
   const std::string error = doc.edit("Bake simulation", [&](DocumentEdit& e) {
