@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "cli/command_line.h"
+#include "cli/simulate_crowds.h"
 #include "io/bvh_writer.h"
 #include "io/gltf_writer.h"
 #include "io/json_number.h"
@@ -56,7 +57,7 @@ bool parseReduce(const std::string& text, double& pos, double& deg) {
 
 CLI::App* addSimulateCommand(CLI::App& app, SimulateOptions& o) {
   CLI::App* cmd = app.add_subcommand(
-      "simulate", "Bake a file's dynamic chains (spring bones) and ragdolls into keys on its clip");
+      "simulate", "Bake a file's dynamic chains (spring bones) and ragdolls into keys on its clip, and run its crowds");
   cmd->add_option("file", o.file, "A .kinema file with simulation settings (docs/kinema-format.md)")->required();
   o.framesOption = cmd->add_option("--frames", o.frames, "Frame range A:B (inclusive) to simulate (default: the clip's frames)");
   cmd->add_option("--out", o.out, "The file to write: .kinema, .gltf, .glb or .bvh (replaced only on success)")->required();
@@ -102,8 +103,12 @@ int runSimulate(const SimulateOptions& o) {
   if (!loaded) return badInput(loaded.error());
   Scene scene = std::move(loaded.value());
   if (scene.simulation.empty())
-    return badInput(o.file + ": has nothing to simulate (no simulation.spring_chains or simulation.ragdolls; "
-                    "see docs/kinema-format.md)");
+    return badInput(o.file + ": has nothing to simulate (no simulation.spring_chains, simulation.ragdolls or "
+                    "simulation.crowds; see docs/kinema-format.md)");
+  const bool crowds = !scene.simulation.crowds.empty();
+  if (crowds && ext == ".bvh")
+    return badInput(o.file + ": has crowds, and a BVH file holds one skeleton, not a crowd of characters; write "
+                    ".kinema (a clip per member) or .gltf/.glb (a character per member)");
   if (std::string e = clipIndexError(scene, o.clip); !e.empty()) return badInput(e);
   if (scene.clips.empty()) {  // a still character: one clip to hold the keys, at 30 fps
     Clip clip;
@@ -152,10 +157,17 @@ int runSimulate(const SimulateOptions& o) {
       lastShown = done;
     }
   };
-  Result<SimulationBake> bake = bakeSimulation(in);
+  const bool bodies = !scene.simulation.springChains.empty() || !scene.simulation.ragdolls.empty();
+  Result<SimulationBake> bake = bodies ? bakeSimulation(in) : Result<SimulationBake>(SimulationBake{});
   if (!bake) return badInput(o.file + ": " + bake.error());
 
-  scene.clips[o.clip] = std::move(bake->clip);
+  if (bodies) scene.clips[o.clip] = std::move(bake->clip);
+  CrowdSimulation crowdRun;  // the crowds, after the chains and ragdolls: a crowd of this file's character moves with them
+  if (crowds) {
+    if (std::string e = simulateCrowds(scene, o.file, ext, framesGiven, first, last, inputLimits(o.allowOutsidePaths), crowdRun);
+        !e.empty())
+      return badInput(o.file + ": " + e);
+  }
   std::string error;
   std::vector<std::string> report;
   if (ext == ".bvh") {
@@ -164,7 +176,8 @@ int runSimulate(const SimulateOptions& o) {
   } else if (ext == ".gltf" || ext == ".glb") {
     GltfWriteOptions options;
     options.binary = ext == ".glb";
-    error = saveGltf(o.out, scene, options, &report);
+    if (crowds && bodies) report.push_back("the file's own character is left out: a crowd's glTF holds its members");
+    error = saveGltf(o.out, crowds ? crowdRun.characters : scene, options, &report);
   } else {
     error = saveKinemaFile(o.out, scene);
   }
@@ -198,6 +211,7 @@ int runSimulate(const SimulateOptions& o) {
       steps += p.steps;
       worst = std::max(worst, p.largestLimitExcess);
     }
+    for (nlohmann::ordered_json& part : crowdRun.parts) parts.push_back(std::move(part));
     j["parts"] = std::move(parts);
     j["steps"] = steps;
     j["largestLimitExcessDegrees"] = jsonFloat(worst / kDegree);

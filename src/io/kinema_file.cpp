@@ -17,6 +17,7 @@
 #include "io/json_depth.h"
 #include "io/image.h"
 #include "io/json_document.h"
+#include "io/kinema_crowds.h"
 #include "io/json_number.h"
 #include "io/message_text.h"
 #include "io/text_file.h"
@@ -461,6 +462,10 @@ bool readSimulation(Reader& r, const Json& root, Scene& scene) {
       }
     }
   }
+  if (const Json* crowds = r.member(*sim, "simulation", "crowds", false)) {  // io/kinema_crowds.h
+    std::string path, what;
+    if (!readCrowdsJson(*crowds, "simulation.crowds", out.crowds, path, what)) return r.fail(path, what);
+  }
   // What one part cannot see: a joint in two chains, ragdolls that overlap.
   if (std::string e = out.validate(s); !e.empty()) return r.fail("simulation", e);
   scene.simulation = std::move(out);
@@ -510,6 +515,7 @@ Json simulationToJson(const Scene& scene) {
   Json sim;
   sim["spring_chains"] = std::move(chains);
   sim["ragdolls"] = std::move(ragdolls);
+  if (!scene.simulation.crowds.empty()) sim["crowds"] = crowdsToJson(scene.simulation.crowds);
   return sim;
 }
 

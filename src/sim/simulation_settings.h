@@ -2,6 +2,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/crowd_settings.h"
 #include "sim/ragdoll_settings.h"
 #include "sim/spring_bones.h"
 
@@ -12,8 +13,9 @@ namespace kinema {
 struct SimulationSettings {
   std::vector<SpringBoneChain> springChains;
   std::vector<RagdollSettings> ragdolls;
+  std::vector<CrowdSettings> crowds;  // flocks of animated characters (sim/crowd.h)
 
-  bool empty() const { return springChains.empty() && ragdolls.empty(); }
+  bool empty() const { return springChains.empty() && ragdolls.empty() && crowds.empty(); }
   // Empty when every part fits `skeleton` and no joint is driven by two parts; otherwise
   // one sentence naming the first problem.
   std::string validate(const Skeleton& skeleton) const;

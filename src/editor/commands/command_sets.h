@@ -14,6 +14,7 @@ void addPoseCommands(std::vector<Command>& out);             // Pose menu, selec
 void addClipCommands(std::vector<Command>& out);             // Clip menu: the clip list (clip_commands.cpp)
 void addMotionCommands(std::vector<Command>& out);           // Animation menu: contacts, clean up (motion_commands.cpp)
 void addSimulateCommands(std::vector<Command>& out);         // Simulate menu, Teach > Stiff Springs (simulate_commands.cpp)
+void addCrowdCommands(std::vector<Command>& out);            // Simulate menu: crowds (crowd_commands.cpp)
 void addTimelineCommands(std::vector<Command>& out);         // play, step, jump (timeline_commands.cpp)
 void addAnimationEditorCommands(std::vector<Command>& out);  // dope sheet, curve editor keys
 void addCompareCommands(std::vector<Command>& out);          // Teach menu, compare mode keys

@@ -17,6 +17,7 @@
 #include "editor/model/foot_contact_edits.h"
 #include "editor/model/motion_cleanup_edit.h"
 #include "editor/model/simulation_edits.h"
+#include "editor/model/crowd_edits.h"
 #include "editor/model/item_rects.h"
 #include "editor/model/editor_layout.h"
 #include "editor/model/message_log.h"
@@ -137,6 +138,7 @@ struct EditorState {
   LiveSprings liveSprings;
   bool simulationWindowOpen = false;
   std::optional<SimulationBake> lastBake;
+  CrowdEditorState crowds;  // Simulate > crowds (issue 24): the Crowd panel, the live flock
   bool stiffSpringsWindowOpen = false;
   float stiffSpringsStep = 0.9f;   // dt / (2 zeta / omega_max)
   float stiffSpringsZeta = 0.05f;

@@ -214,6 +214,7 @@ void drawEditorPanels(CommandContext& ctx, float fps) {
   drawLogWindow(state);
   drawCleanUpWindow(ctx);
   drawSimulationWindow(ctx);
+  drawCrowdWindow(ctx);
   drawStiffSpringsWindow(ctx);
   drawSessionDialogs(ctx);
   closePopupsOnEscape(state);

@@ -235,6 +235,17 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
     }
     out["simulation"] = sim;
   }
+  {  // Simulate menu, crowds (issue 24): the settings in short, the live drawing
+    json crowds = json::array();
+    for (const CrowdSettings& c : doc.scene().simulation.crowds)
+      crowds.push_back({{"name", c.name}, {"character", c.character}, {"members", c.members}, {"seed", c.seed},
+                        {"allocation", c.boids.allocation == AccelerationAllocation::Priority ? "priority" : "average"},
+                        {"spheres", c.boids.spheres.size()}, {"boxes", c.boids.boxes.size()}});
+    const CrowdPreview& p = s.crowds.preview;
+    out["crowds"] = {{"crowds", crowds}, {"active", s.crowds.active}, {"window", s.crowds.windowOpen},
+                     {"live", s.crowds.live}, {"runs", p.runs}, {"frame", p.frame},
+                     {"members_drawn", p.world.size()}, {"debug_vectors", p.vectors.size()}, {"error", p.error}};
+  }
   out["tool"] = modalToolName(s.tool.mode);
   out["compare"] = compareStateJson(s.compare);  // Teach > Compare Solvers (docs/cli.md)
   out["dope_sheet"] = dopeSheetJson(s);
