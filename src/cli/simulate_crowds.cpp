@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "io/json_number.h"
 #include "sim/crowd_scene.h"
 
 namespace kinema::cli {
@@ -35,6 +36,9 @@ std::string simulateCrowds(Scene& scene, const std::string& file, const std::str
     part["members"] = crowd.members;
     part["frames"] = {a, b};
     part["steps"] = bake->run.frames;
+    // What the crowd read from the clip: the ground speed of rate 1 and the way the character faces.
+    part["strideSpeed"] = jsonFloat(bake->motion.naturalSpeed);
+    part["forwardDegrees"] = jsonFloat(glm::degrees(bake->motion.forwardYaw));
     nlohmann::ordered_json names = nlohmann::ordered_json::array();
     for (const Clip& c : bake->clips) names.push_back(c.name);
     part[kinemaOut ? "clips" : "characters"] = std::move(names);
@@ -43,6 +47,7 @@ std::string simulateCrowds(Scene& scene, const std::string& file, const std::str
       for (Clip& c : bake->clips) scene.clips.push_back(std::move(c));
     } else {
       appendCrowdCharacters(result.characters, crowd, character.value(), bake.value());
+      appendCrowdObstacles(result.characters, crowd);
     }
   }
   return "";

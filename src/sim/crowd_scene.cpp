@@ -1,5 +1,6 @@
 #include "sim/crowd_scene.h"
 
+#include <cmath>
 #include <filesystem>
 
 namespace kinema {
@@ -87,6 +88,66 @@ void appendCrowdCharacters(Scene& out, const CrowdSettings& crowd, const Scene& 
       out.clips[0].channels.push_back(std::move(c));
     }
   }
+}
+
+void appendCrowdObstacles(Scene& out, const CrowdSettings& crowd) {
+  const BoidsSettings& b = crowd.boids;
+  if (b.spheres.empty() && b.boxes.empty()) return;
+  MeshPrimitive p;
+  auto vertex = [&](const glm::vec3& position, const glm::vec3& normal) {
+    p.positions.push_back(position);
+    p.normals.push_back(normal);
+    return static_cast<uint32_t>(p.positions.size() - 1);
+  };
+  constexpr int kRings = 16, kSegments = 32;
+  for (const BoidSphere& s : b.spheres) {
+    const uint32_t base = static_cast<uint32_t>(p.positions.size());
+    for (int r = 0; r <= kRings; ++r) {
+      const float theta = 3.14159265f * static_cast<float>(r) / kRings;
+      for (int k = 0; k <= kSegments; ++k) {
+        const float phi = 6.28318531f * static_cast<float>(k) / kSegments;
+        const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+        vertex(s.centre + s.radius * n, n);
+      }
+    }
+    for (int r = 0; r < kRings; ++r)
+      for (int k = 0; k < kSegments; ++k) {
+        const uint32_t a = base + static_cast<uint32_t>(r * (kSegments + 1) + k), c = a + kSegments + 1;
+        p.indices.insert(p.indices.end(), {a, a + 1, c, a + 1, c + 1, c});
+      }
+  }
+  for (const BoidBox& x : b.boxes) {
+    for (int axis = 0; axis < 3; ++axis)
+      for (int side = 0; side < 2; ++side) {  // a face of 4 vertices with its own normal
+        glm::vec3 n(0.0f);
+        n[axis] = side ? 1.0f : -1.0f;
+        const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+        uint32_t q[4];
+        for (int corner = 0; corner < 4; ++corner) {
+          glm::vec3 at;
+          at[axis] = side ? x.max[axis] : x.min[axis];
+          at[u] = (corner == 1 || corner == 2) ? x.max[u] : x.min[u];
+          at[v] = corner >= 2 ? x.max[v] : x.min[v];
+          q[corner] = vertex(at, n);
+        }
+        // Counter-clockwise seen from outside: flip the winding on the negative sides.
+        if (side) p.indices.insert(p.indices.end(), {q[0], q[1], q[2], q[0], q[2], q[3]});
+        else p.indices.insert(p.indices.end(), {q[0], q[2], q[1], q[0], q[3], q[2]});
+      }
+  }
+  Material sand;
+  sand.name = crowd.name + "_obstacles";
+  sand.baseColor = glm::vec4(0.85f, 0.72f, 0.35f, 1.0f);
+  p.material = static_cast<int>(out.materials.size());
+  out.materials.push_back(sand);
+  Mesh mesh;
+  mesh.name = crowd.name + "_obstacles";
+  mesh.primitives.push_back(std::move(p));
+  out.meshes.push_back(std::move(mesh));
+  MeshInstance instance;
+  instance.joint = out.skeleton.addJoint(crowd.name + "_obstacles", -1, Transform::identity());
+  instance.mesh = static_cast<int>(out.meshes.size()) - 1;
+  out.meshInstances.push_back(instance);
 }
 
 }  // namespace kinema

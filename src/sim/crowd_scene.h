@@ -30,4 +30,10 @@ Result<CrowdBake> bakeCrowd(const CrowdSettings& crowd, const Scene& character, 
 // `out` has no clip), retargeted to its joints.
 void appendCrowdCharacters(Scene& out, const CrowdSettings& crowd, const Scene& character, const CrowdBake& bake);
 
+// Appends the crowd's obstacles to `out` as plain geometry on a joint of their own,
+// "<crowd name>_obstacles" at the origin: each sphere a UV sphere, each box a box, in one
+// mesh with one material (sand yellow), so the exported crowd shows what it walks around.
+// Nothing when the crowd has no obstacle.
+void appendCrowdObstacles(Scene& out, const CrowdSettings& crowd);
+
 }  // namespace kinema

@@ -110,11 +110,12 @@ TEST_F(CrowdCli, AGlbOutHasASkinnedCharacterPerMember) {
   Result<Scene> back = loadScene(out);
   ASSERT_TRUE(back) << back.error();
   const int joints = scene.skeleton.size();
-  EXPECT_EQ(back->skeleton.size(), 6 * joints);
+  EXPECT_EQ(back->skeleton.size(), 6 * joints + 1) << "six characters and the obstacles' joint";
   EXPECT_GE(back->skeleton.find("crowd_0005/Hips"), 0);
+  EXPECT_GE(back->skeleton.find("crowd_obstacles"), 0);
   EXPECT_EQ(back->skins.size(), 6 * scene.skins.size());
-  EXPECT_EQ(back->meshInstances.size(), 6 * scene.meshInstances.size());
-  EXPECT_EQ(back->meshes.size(), scene.meshes.size()) << "the body is written once, shown six times";
+  EXPECT_EQ(back->meshInstances.size(), 6 * scene.meshInstances.size() + 1);
+  EXPECT_EQ(back->meshes.size(), scene.meshes.size() + 1) << "the body is written once, shown six times; the sphere";
   ASSERT_EQ(back->clips.size(), 1u);
   // Every member's hips move: the glTF clip carries each member's keys.
   for (int m = 0; m < 6; ++m) {

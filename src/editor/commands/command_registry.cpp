@@ -58,7 +58,6 @@ const CommandRegistry& editorCommands() {
     addTimelineCommands(all);
     addAnimationEditorCommands(all);
     addSimulateCommands(all);
-    addCrowdCommands(all);
     addCompareCommands(all);
     addHelpCommands(all);
     for (Command& c : all) {

@@ -66,6 +66,23 @@ void addCrowdCommands(std::vector<Command>& out) {
                       reportDopeSheetEdit(s, error, "Baked the crowd: " + std::to_string(clips) + " clips, frames " +
                                                         std::to_string(first) + " to " + std::to_string(last));
                     }));
+  out.push_back(CommandDef("sim.frame_crowd_member", "Frame Crowd Debug Member").menu("Simulate")
+                    .hint("the view centres on the member whose impulse vectors are drawn, close up")
+                    .enabled([](const CommandContext& c) { return hasCrowd(c) && !c.state.crowds.preview.world.empty(); })
+                    .run([](CommandContext& c) {
+                      EditorState& s = c.state;
+                      const CrowdSettings& crowd = s.doc.scene().simulation.crowds[activeCrowd(c)];
+                      const CrowdPreview& p = s.crowds.preview;
+                      const std::vector<glm::mat4>& w = p.world[std::min(static_cast<size_t>(crowd.debugMember), p.world.size() - 1)];
+                      glm::vec3 lo(1e30f), hi(-1e30f);
+                      for (const glm::mat4& m : w) lo = glm::min(lo, glm::vec3(m[3])), hi = glm::max(hi, glm::vec3(m[3]));
+                      // The member and its impulse vectors in view, in the middle.
+                      for (const CrowdDebugVector& v : p.vectors) lo = glm::min(lo, v.to), hi = glm::max(hi, v.to);
+                      s.camera.target = 0.5f * (lo + hi);
+                      s.camera.distance = std::max(2.5f * glm::length(hi - lo), 1e-3f);
+                      s.camera.elevationDeg = 35.0f;
+                      s.statusMessage = "Framed crowd member " + std::to_string(crowd.debugMember);
+                    }));
   out.push_back(CommandDef("sim.remove_crowd", "Remove Crowd").menu("Simulate")
                     .hint("the crowd the Crowd panel shows goes (its baked clips stay)")
                     .enabled(hasCrowd)

@@ -89,6 +89,7 @@ void addSimulateCommands(std::vector<Command>& out) {
                     .enabled(documentShown)
                     .checked([](const CommandContext& c) { return c.state.simulationWindowOpen; })
                     .run([](CommandContext& c) { c.state.simulationWindowOpen = !c.state.simulationWindowOpen; }));
+  addCrowdCommands(out);  // the crowd commands, after the physics ones (crowd_commands.cpp)
   out.push_back(CommandDef("teach.stiff_springs", "Stiff Springs (Time Steps)").menu("Teach")
                     .hint("why a time step blows up: four integrators on a damped spring chain (kinema demo stiff-springs)")
                     .checked([](const CommandContext& c) { return c.state.stiffSpringsWindowOpen; })

@@ -169,6 +169,11 @@ bool updateCrowdPreview(CrowdPreview& p, const Document& doc, int index, double 
   }
   p.vectors.clear();
   const BoidDebug& d = p.run.debug[static_cast<size_t>(frame)];
+  if (height < 0.0f) {  // the member's middle: the mean height of its joints
+    height = 0.0f;
+    for (const glm::mat4& m : p.world[static_cast<size_t>(crowd.debugMember)]) height += m[3].y;
+    height /= static_cast<float>(std::max(1, s.size()));
+  }
   const glm::vec3 from = p.run.at(frame, crowd.debugMember).position + glm::vec3(0.0f, height, 0.0f);
   for (int k = 0; k < kBoidImpulseCount; ++k)
     if (glm::length(d.desired[k]) > 0.0f)

@@ -60,7 +60,8 @@ struct CrowdPreview {
 
 // Brings `preview` to crowd `index` of the document at time `time` seconds (the frame of the
 // crowd clip's grid nearest it). Returns false (preview.error says why) when there is no crowd
-// to show. The debug vectors start at the debug member's position raised by `height` and
+// to show. The debug vectors start at the debug member's position raised by `height` (< 0: by
+// the mean height of its joints) and
 // show each desired acceleration scaled by `seconds` (m/s^2 * s = m).
 bool updateCrowdPreview(CrowdPreview& preview, const Document& doc, int index, double time, float height = 0.0f,
                         float seconds = 0.25f);

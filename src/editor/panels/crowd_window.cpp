@@ -40,7 +40,7 @@ bool intField(EditorState& state, const char* label, int& value, int lo, int hi)
 }
 
 bool vec3Field(EditorState& state, const std::string& label, glm::vec3& value) {
-  ImGui::SetNextItemWidth(scaled(state, 200.0f));
+  ImGui::SetNextItemWidth(scaled(state, 160.0f));
   ImGui::InputFloat3(label.c_str(), &value.x, "%.3g");
   recordItem(std::string(kWindow) + "/" + label);
   if (!ImGui::IsItemDeactivatedAfterEdit()) return false;
@@ -55,8 +55,9 @@ void drawCrowdWindow(CommandContext& ctx) {
   EditorState& state = ctx.state;
   if (!state.crowds.windowOpen) return;
   const PanelRect& v = state.layout.viewport;
-  ImGui::SetNextWindowPos(ImVec2(v.x + v.w - scaled(state, 388.0f), v.y + scaled(state, 8.0f)), ImGuiCond_Appearing);
-  ImGui::SetNextWindowSize(ImVec2(scaled(state, 380.0f), std::min(scaled(state, 640.0f), v.h - scaled(state, 16.0f))),
+  // At the viewport's right edge, narrow: the flock and the debug member stay in view.
+  ImGui::SetNextWindowPos(ImVec2(v.x + v.w - scaled(state, 318.0f), v.y + scaled(state, 8.0f)), ImGuiCond_Appearing);
+  ImGui::SetNextWindowSize(ImVec2(scaled(state, 310.0f), std::min(scaled(state, 640.0f), v.h - scaled(state, 16.0f))),
                            ImGuiCond_Appearing);
   if (!ImGui::Begin(kWindow, &state.crowds.windowOpen, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
@@ -133,7 +134,7 @@ void drawCrowdWindow(CommandContext& ctx) {
   recordItem(std::string(kWindow) + "/Add box");
   if (changed) reportDopeSheetEdit(state, setCrowdEdit(state.doc, state.crowds.active, c), "Crowd settings changed");
   ImGui::Separator();
-  ImGui::TextDisabled("Member %d's impulses (desired accelerations x 0.25 s)", c.debugMember);
+  ImGui::TextDisabled("Member %d's impulses (desired accelerations x 0.15 s)", c.debugMember);
   const char* names[] = {"avoidance", "separation", "alignment", "cohesion", "goal", "acceleration"};
   for (int k = 0; k <= kBoidImpulseCount; ++k) {
     const glm::vec4& col = crowdImpulseColor(k);

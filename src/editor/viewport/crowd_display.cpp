@@ -26,20 +26,24 @@ void buildCrowdDisplay(EditorState& state, const std::vector<char>& shownJoints,
   const int index = std::clamp(state.crowds.active, 0, static_cast<int>(state.doc.scene().simulation.crowds.size()) - 1);
   CrowdPreview& p = state.crowds.preview;
   // The debug vectors start at the member's middle: half its character's rest height.
-  if (!updateCrowdPreview(p, state.doc, index, state.time, 0.0f, 0.1f)) return;
-  float height = 0.0f;
-  const std::vector<glm::mat4>& debugWorld = p.world[static_cast<size_t>(crowd->debugMember)];
-  for (const glm::mat4& m : debugWorld) height += m[3].y;
-  height = debugWorld.empty() ? 0.0f : height / static_cast<float>(debugWorld.size());
-  for (CrowdDebugVector& v : p.vectors) v.from.y += height, v.to.y += height;
+  if (!updateCrowdPreview(p, state.doc, index, state.time, -1.0f, 0.15f)) return;
   for (const std::vector<glm::mat4>& w : p.world)
     for (const glm::mat4& m : w) d.radius = std::max(d.radius, glm::length(glm::vec3(m[3])));
   for (const BoidSphere& s : crowd->boids.spheres) d.radius = std::max(d.radius, glm::length(s.centre) + s.radius);
   std::vector<std::vector<glm::mat4>> asBones;
   const bool bodies = crowd->character.empty() && meshesOnGpu;
   if (bodies) d.noMorphs.assign(state.doc.scene().meshInstances.size(), {});
+  // Bodies for the members nearest the debug member (the one the view is usually on).
+  std::vector<float> distance(p.world.size());
+  const glm::vec3 centre = p.run.at(p.frame, crowd->debugMember).position;
+  for (size_t m = 0; m < p.world.size(); ++m) distance[m] = glm::distance(p.run.at(p.frame, static_cast<int>(m)).position, centre);
+  std::vector<float> sorted = distance;
+  const size_t budget = std::min(sorted.size(), static_cast<size_t>(std::max(state.crowds.bodyBudget, 1)));
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(budget - 1), sorted.end());
+  const float reach = sorted[budget - 1];
+  int shown = 0;
   for (size_t m = 0; m < p.world.size(); ++m) {
-    if (bodies && (static_cast<int>(m) < state.crowds.bodyBudget || static_cast<int>(m) == crowd->debugMember))
+    if (bodies && distance[m] <= reach && shown++ < static_cast<int>(budget))
       d.bodies.push_back(&p.world[m]);
     else
       asBones.push_back(p.world[m]);

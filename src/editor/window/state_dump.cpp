@@ -242,9 +242,14 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
                         {"allocation", c.boids.allocation == AccelerationAllocation::Priority ? "priority" : "average"},
                         {"spheres", c.boids.spheres.size()}, {"boxes", c.boids.boxes.size()}});
     const CrowdPreview& p = s.crowds.preview;
+    json impulses = json::object();  // the debug member's desired accelerations at the frame shown (m/s^2)
+    if (p.frame >= 0 && p.frame < static_cast<long long>(p.run.debug.size()))
+      for (int k = 0; k < kBoidImpulseCount; ++k)
+        impulses[toString(static_cast<BoidImpulse>(k))] = glm::length(p.run.debug[static_cast<size_t>(p.frame)].desired[k]);
     out["crowds"] = {{"crowds", crowds}, {"active", s.crowds.active}, {"window", s.crowds.windowOpen},
                      {"live", s.crowds.live}, {"runs", p.runs}, {"frame", p.frame},
-                     {"members_drawn", p.world.size()}, {"debug_vectors", p.vectors.size()}, {"error", p.error}};
+                     {"members_drawn", p.world.size()}, {"debug_vectors", p.vectors.size()}, {"debug_impulses", impulses},
+                     {"error", p.error}};
   }
   out["tool"] = modalToolName(s.tool.mode);
   out["compare"] = compareStateJson(s.compare);  // Teach > Compare Solvers (docs/cli.md)
