@@ -29,6 +29,18 @@ uniform float uMorphWeights[32];
 uniform int uWeightJoint;              // heat colours: this skin joint's weight; -1 = off
 uniform mat4 uViewProjection;
 uniform mat4 uView;
+// Barr's bend / twist / taper (deform/axis_deformers.h, issue 22) after skinning, in world
+// space, for instances whose whole stack is such deformers (MeshFrame::gpuDeformers): each
+// is taken into its own space (uAxisToLocal), deformed by the closed forms the CPU uses and
+// brought back (uAxisToWorld). Normals: the deformed cross product of two tangents, by
+// central differences of the same map (the CPU recomputes area-weighted ones instead).
+const int kMaxAxisDeformers = 4;
+uniform int uAxisCount;                         // 0: no deformers
+uniform ivec2 uAxisKind[kMaxAxisDeformers];     // x: 0 bend, 1 twist, 2 taper; y: axis 0 X, 1 Y, 2 Z
+uniform vec3 uAxisOrigin[kMaxAxisDeformers];
+uniform vec3 uAxisRange[kMaxAxisDeformers];     // low, high, amount
+uniform mat4 uAxisToLocal[kMaxAxisDeformers];
+uniform mat4 uAxisToWorld[kMaxAxisDeformers];
 
 out vec3 vWorldPosition;
 out vec3 vWorldNormal;
@@ -45,6 +57,47 @@ mat3 skinNormalMatrix(int j) { return mat3(texel(j, 4).xyz, texel(j, 5).xyz, tex
 mat3 scaleMatrix(int j) { return mat3(texel(j, 9).xyz, texel(j, 10).xyz, texel(j, 11).xyz); }
 
 vec3 rotateByQuat(vec4 q, vec3 v) { return v + 2.0 * cross(q.xyz, cross(q.xyz, v) + q.w * v); }
+
+vec3 axisDeform(int i, vec3 p) {
+  int ia = uAxisKind[i].y, ib = (ia + 1) % 3, ic = (ia + 2) % 3;
+  vec3 q = p - uAxisOrigin[i];
+  float a = q[ia], b = q[ib], c = q[ic];
+  float low = uAxisRange[i].x, range = uAxisRange[i].y - uAxisRange[i].x, amount = uAxisRange[i].z;
+  float h = clamp(a - low, 0.0, range);
+  float f = h / range;
+  float a2 = a, b2 = b, c2 = c;
+  if (uAxisKind[i].x == 1) {  // twist: b turns towards c
+    float angle = amount * f;
+    float cs = cos(angle), sn = sin(angle);
+    b2 = cs * b - sn * c;
+    c2 = sn * b + cs * c;
+  } else if (uAxisKind[i].x == 2) {  // taper
+    float scale = 1.0 + (amount - 1.0) * f;
+    b2 = b * scale;
+    c2 = c * scale;
+  } else if (a > low) {  // bend: an arc of curvature amount / range, the rest along its end tangent
+    float k = amount / range;
+    float theta = k * h;
+    float cs = cos(theta), sn = sin(theta);
+    float sinOverK = abs(theta) < 1e-4 ? h * (1.0 - theta * theta / 6.0) : sn / k;
+    float halfSin = sin(0.5 * theta);
+    float versOverK = abs(theta) < 1e-4 ? h * theta * 0.5 : 2.0 * halfSin * halfSin / k;
+    float beyond = a - low - h;
+    a2 = low + sinOverK - b * sn + beyond * cs;
+    b2 = versOverK + b * cs + beyond * sn;
+  }
+  vec3 out3;
+  out3[ia] = a2;
+  out3[ib] = b2;
+  out3[ic] = c2;
+  return out3 + uAxisOrigin[i];
+}
+
+vec3 axisStack(vec3 world) {
+  for (int i = 0; i < uAxisCount && i < kMaxAxisDeformers; ++i)
+    world = (uAxisToWorld[i] * vec4(axisDeform(i, (uAxisToLocal[i] * vec4(world, 1.0)).xyz), 1.0)).xyz;
+  return world;
+}
 
 void main() {
   vec3 position = aPosition;
@@ -109,6 +162,18 @@ void main() {
   }
   float nl = length(worldNormal);
   worldNormal = nl > 0.0 ? worldNormal / nl : vec3(0.0);
+  if (uAxisCount > 0) {
+    // Two tangents t1, t2 with t1 x t2 = n, mapped by central differences (1 mm).
+    vec3 t1 = normalize(abs(worldNormal.x) < 0.9 ? cross(worldNormal, vec3(1.0, 0.0, 0.0))
+                                                 : cross(worldNormal, vec3(0.0, 1.0, 0.0)));
+    vec3 t2 = cross(worldNormal, t1);
+    const float e = 1e-3;
+    vec3 d1 = axisStack(world + e * t1) - axisStack(world - e * t1);
+    vec3 d2 = axisStack(world + e * t2) - axisStack(world - e * t2);
+    vec3 n = cross(d1, d2);
+    world = axisStack(world);
+    worldNormal = length(n) > 0.0 && nl > 0.0 ? normalize(n) : worldNormal;
+  }
 
   vWorldPosition = world;
   vWorldNormal = worldNormal;

@@ -52,6 +52,12 @@ for shot in editor_fk_gizmo editor_ik_drag; do
     --script "$root/docs/images/$shot.jsonl" --frame-count 40 --screenshot "$root/docs/images/$shot.png"
 done
 rm -rf "$tmp"
+# Lattice edit mode (issue 22): a lattice added to the default character, the top layer's
+# middle column box-selected and moved up with G, Y (the head follows), the view orbited.
+tmp=$(mktemp -d)
+XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp sh "$root/tests/tools/xvfb_run.sh" 1280x800x24 "$kinema" edit --size 1280x800 \
+  --script "$root/docs/images/lattice_edit.jsonl" --frame-count 56 --screenshot "$root/docs/images/lattice_edit.png"
+rm -rf "$tmp"
 # The timeline with the keyframe diamonds of the selected joint (issue 9).
 tmp=$(mktemp -d)
 XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp xvfb-run -a -s "-screen 0 1280x800x24" "$kinema" edit \
@@ -116,3 +122,13 @@ rm -rf "$tmp"
 "$root/docs/images/crowd_pictures.sh" "$kinema"
 # Issue 23: Fox's swinging tail and a ragdoll fall, baked by `kinema simulate` and rendered.
 "$root/docs/images/physics_strips.sh" "$kinema"
+# Issue 23: a collision capsule on Fox's left thigh for its dynamic tail (Simulate > Add
+# Collision Capsule), drawn in the 3D view; Teach > Stiff Springs as it opens.
+tmp=$(mktemp -d)
+XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp sh "$root/tests/tools/xvfb_run.sh" 1280x800x24 "$kinema" edit ../shared/data/gltf/Fox.glb \
+  --size 1280x720 --script "$root/docs/images/fox_capsule.jsonl" --screenshot "$root/docs/images/fox_capsule.png"
+XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp sh "$root/tests/tools/xvfb_run.sh" 1280x800x24 "$kinema" edit \
+  --size 1280x720 --script "$root/docs/images/stiff_springs_window.jsonl" --screenshot "$root/docs/images/stiff_springs_window.png"
+rm -rf "$tmp"
+# Issue 24: particles from a joint, the L-system plant growing and swaying (strips and GIFs).
+"$root/docs/images/procedural_figures.sh" "$kinema"

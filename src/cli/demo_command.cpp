@@ -287,11 +287,24 @@ CLI::App* addDemoCommand(CLI::App& app, DemoOptions& o) {
 
 int runDemo(const DemoOptions& o) {
   if (o.name == "list") {
+    // Figure demos draw teaching figures but are not IK cases: `kinema edit --compare` takes
+    // only the presets, so the JSON says which is which (`kind`).
+    struct FigureDemo {
+      const char* name;
+      const char* title;
+    };
+    static const FigureDemo kFigureDemos[] = {
+        {"solver-table", "The FABRIK paper's comparison of every solver (kinema demo solver-table --out DIR)"},
+        {"stiff-springs", "Why a time step blows up: four integrators on a damped spring chain (kinema demo stiff-springs --out DIR)"},
+        {"boids", "Priority acceleration allocation vs the naive average: a flock past obstacles (kinema demo boids --out DIR)"},
+        {"life", "Conway's Game of Life, the seed's rules: a glider gun and still lifes (kinema demo life --out DIR)"},
+    };
     if (o.json) {
       nlohmann::ordered_json list = nlohmann::ordered_json::array();
       for (const TeachingCase& c : teachingPresets()) {
         nlohmann::ordered_json j;
         j["name"] = c.name;
+        j["kind"] = "ik-preset";
         j["title"] = c.title;
         j["description"] = c.description;
         nlohmann::ordered_json s = nlohmann::ordered_json::array();
@@ -299,13 +312,17 @@ int runDemo(const DemoOptions& o) {
         j["solvers"] = std::move(s);
         list.push_back(std::move(j));
       }
+      for (const FigureDemo& d : kFigureDemos) {
+        nlohmann::ordered_json j;
+        j["name"] = d.name;
+        j["kind"] = "figure";
+        j["title"] = d.title;
+        list.push_back(std::move(j));
+      }
       std::cout << list.dump(-1) << "\n";
     } else {
       for (const TeachingCase& c : teachingPresets()) std::printf("%-24s %s\n", c.name.c_str(), c.title.c_str());
-      std::printf("%-24s %s\n", "solver-table", "The FABRIK paper's comparison of every solver (kinema demo solver-table --out DIR)");
-      std::printf("%-24s %s\n", "stiff-springs", "Why a time step blows up: four integrators on a damped spring chain (kinema demo stiff-springs --out DIR)");
-      std::printf("%-24s %s\n", "boids", "Priority acceleration allocation vs the naive average: a flock past obstacles (kinema demo boids --out DIR)");
-      std::printf("%-24s %s\n", "life", "Conway's Game of Life, the seed's rules: a glider gun and still lifes (kinema demo life --out DIR)");
+      for (const FigureDemo& d : kFigureDemos) std::printf("%-24s %s\n", d.name, d.title);
     }
     return kExitOk;
   }

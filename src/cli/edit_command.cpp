@@ -87,7 +87,7 @@ int runEdit(const EditOptions& o) {
   openDocumentInEditor(state, Document(std::move(loaded.value()), o.file));  // as File > Open does
   if (!o.compare.empty()) {
     if (!findTeachingPreset(o.compare)) {
-      std::cerr << "kinema edit: --compare '" << o.compare << "' is not a preset (kinema demo list); see --help\n";
+      std::cerr << "kinema edit: --compare '" << o.compare << "' is not an IK preset (the entries of `kinema demo list --json` whose kind is ik-preset; figure demos such as stiff-springs are not solver comparisons); see --help\n";
       return kExitUsage;
     }
     state.compare.active = true;

@@ -13,6 +13,7 @@
 #include "core/forward_kinematics.h"
 #include "render/headless_renderer.h"
 #include "render/loose_joints.h"
+#include "render/particle_overlay.h"
 #include "render/skeleton_view.h"
 #include "skin/scene_deformation.h"
 
@@ -147,7 +148,12 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& o) {
   return cmd;
 }
 
-int runRender(const RenderOptions& o) {
+int runRender(const RenderOptions& o) { return runRenderOn(o, nullptr); }
+
+int runRenderOn(const RenderOptions& o, const Scene* given) {
+  // Options set by a caller rather than parsed have no handles: a range then means a sequence.
+  const bool framesGiven = o.framesOption ? o.framesOption->count() > 0 : !o.frames.empty();
+  const bool frameGiven = o.frameOption && o.frameOption->count() > 0;
   // Syntax first (exit 2), then values (exit 1).
   std::vector<double> size, cam;
   if (!parseNumbers(o.size, 'x', size) || size.size() != 2) {
@@ -159,7 +165,7 @@ int runRender(const RenderOptions& o) {
     return kExitUsage;
   }
   long long first = 0, last = 0;
-  if (o.framesOption->count()) {
+  if (framesGiven) {
     const size_t colon = o.frames.find(':');
     try {
       size_t a = 0, b = 0;
@@ -182,13 +188,13 @@ int runRender(const RenderOptions& o) {
   if (cam.size() == 3 && !(cam[2] > 0)) return badInput("--camera " + o.camera + ": the distance must be positive");
   if (!std::isfinite(o.time)) return badInput("--time must be a finite number");
   if (first > last) return badInput("--frames " + o.frames + ": the first frame comes after the last");
-  const bool sequence = o.framesOption->count() > 0;
+  const bool sequence = framesGiven;
   if (sequence && expandFramePattern(o.out, first).empty())
     return badInput("--out " + o.out + ": a sequence needs one frame number in the name, e.g. dir/frame_%04d.png");
 
-  Result<Scene> loaded = loadSceneOrDefault(o.file, inputLimits(o.allowOutsidePaths), upAxisOf(o.up));
+  Result<Scene> loaded = given ? Result<Scene>(Scene{}) : loadSceneOrDefault(o.file, inputLimits(o.allowOutsidePaths), upAxisOf(o.up));
   if (!loaded) return badInput(loaded.error());
-  const Scene& scene = loaded.value();
+  const Scene& scene = given ? *given : loaded.value();
   if (const std::string bad = clipIndexError(scene, o.clip); !bad.empty()) return badInput(bad);
   int selected = -1;
   if (!o.select.empty()) {
@@ -206,18 +212,36 @@ int runRender(const RenderOptions& o) {
   const double frameTime = frameTimeOf(scene, o.clip);
   if (sequence) {
     const long long end = lastFrameOf(scene, o.clip, frameTime);
-    if (first > end)
+    // Particles go on after the clip's last key (which the pose holds): no end then.
+    const bool particles = !scene.simulation.particles.empty();
+    if (first > end && !particles)
       return badInput(scene.source + ": --frames " + o.frames + " starts after the clip's last frame, " + std::to_string(end));
-    if (last > end) {
+    if (last > end && !particles) {
       std::fprintf(stderr, "kinema render: warning: %s: --frames %s runs past the clip's end; stopping at its last frame, %lld\n",
                    scene.source.c_str(), o.frames.c_str(), end);
       last = end;
     }
     for (long long f = first; f <= last; ++f) samples.push_back({f, static_cast<double>(f) * frameTime});
   } else {
-    samples.push_back({o.frame, o.frameOption->count() ? static_cast<double>(o.frame) * frameTime : o.time});
+    samples.push_back({o.frame, frameGiven ? static_cast<double>(o.frame) * frameTime : o.time});
   }
 
+  // Particles: each system simulated from frame 0 on the clip's frame grid up to the frame
+  // shown (--time T shows the frame nearest T), joint emitters following the posed joints.
+  std::vector<std::vector<ParticleState>> particles(samples.size());
+  if (!scene.simulation.particles.empty()) {
+    ParticlePlayback playback;
+    const auto jointsAt = [&](long long f, std::vector<glm::mat4>& world) {
+      world = posedWorld(scene, o.clip, static_cast<double>(f) * frameTime);
+    };
+    for (size_t k = 0; k < samples.size(); ++k) {
+      const double shown = sequence ? static_cast<double>(samples[k].frame) : std::round(samples[k].time / frameTime);
+      if (!(shown <= 1000000.0))
+        return badInput(scene.source + ": particles are simulated up to frame 1,000,000 (asked for frame " +
+                        std::to_string(static_cast<long long>(std::min(shown, 1e18))) + ")");
+      particles[k] = playback.at(scene.simulation.particles, frameTime, static_cast<long long>(std::max(0.0, shown)), jointsAt);
+    }
+  }
   const HeadlessBackend backend = o.backend == "osmesa" ? HeadlessBackend::OsMesa : HeadlessBackend::Egl;
   // Poses first (a non-finite one is the file's fault, whatever the GL), then the GL.
   std::vector<std::vector<glm::mat4>> worlds;
@@ -249,6 +273,8 @@ int runRender(const RenderOptions& o) {
   Bounds bounds;
   for (size_t k = 0; k < samples.size(); ++k) {
     for (const glm::mat4& m : worlds[k]) bounds.add(glm::vec3(m[3]));
+    for (const ParticleState& p : particles[k])
+      for (const glm::vec3& q : p.positions) bounds.add(q);
     if (!meshes) continue;
     const int clip = scene.clips.empty() ? -1 : o.clip;
     morphWeights.push_back(sampleMorphWeights(scene, clip, samples[k].time));
@@ -313,6 +339,10 @@ int runRender(const RenderOptions& o) {
     frame.bones = o.bones == "none" ? BoneDisplay::None : o.bones == "xray" ? BoneDisplay::XRay : BoneDisplay::On;
     frame.camera = camera;
     frame.sceneRadius = bounds.radius();
+    OverlayDrawList overlay;
+    for (size_t i = 0; i < particles[k].size(); ++i)
+      appendParticles(scene.simulation.particles[i], particles[k][i], camera, static_cast<float>(h), overlay);
+    if (!overlay.empty()) frame.overlay = &overlay;
     const Image image = renderer.render(frame);
     std::string error;
     if (!ensureParentFolder(path, error)) return badInput(error);

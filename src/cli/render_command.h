@@ -1,6 +1,8 @@
 #pragma once
 #include <CLI/CLI.hpp>
 
+#include "io/scene.h"
+
 namespace kinema::cli {
 
 // `kinema render [FILE] [--clip I] [--time T | --frame N | --frames A:B] [--size WxH]
@@ -29,6 +31,10 @@ struct RenderOptions {
 
 CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options);
 int runRender(const RenderOptions& options);
+// The same for a scene already in memory (`options.file` is then only named in messages):
+// `kinema simulate --render` draws the simulated scene with it. Scenes with particles
+// (.kinema "simulation.particles") show them at each frame.
+int runRenderOn(const RenderOptions& options, const Scene* scene);
 
 // Plain `kinema` without a display: renders the default character to `path` with EGL,
 // prints where, and returns the exit code.

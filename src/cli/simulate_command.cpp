@@ -9,6 +9,8 @@
 
 #include "cli/command_line.h"
 #include "cli/simulate_crowds.h"
+#include "cli/render_command.h"
+#include "cli/simulate_particles.h"
 #include "io/bvh_writer.h"
 #include "io/gltf_writer.h"
 #include "io/json_number.h"
@@ -60,7 +62,7 @@ CLI::App* addSimulateCommand(CLI::App& app, SimulateOptions& o) {
       "simulate", "Bake a file's dynamic chains (spring bones) and ragdolls into keys on its clip, and run its crowds");
   cmd->add_option("file", o.file, "A .kinema file with simulation settings (docs/kinema-format.md)")->required();
   o.framesOption = cmd->add_option("--frames", o.frames, "Frame range A:B (inclusive) to simulate (default: the clip's frames)");
-  cmd->add_option("--out", o.out, "The file to write: .kinema, .gltf, .glb or .bvh (replaced only on success)")->required();
+  cmd->add_option("--out", o.out, "The file to write: .kinema, .gltf, .glb or .bvh (replaced only on success)");
   cmd->add_option("--clip", o.clip, "The clip to bake into, by index (default 0; a file without clips gets one)");
   cmd->add_option("--reduce", o.reduce,
                   "POS[,DEG]: thin the baked keys, keeping every joint within POS file units and every rotation within "
@@ -68,15 +70,21 @@ CLI::App* addSimulateCommand(CLI::App& app, SimulateOptions& o) {
   cmd->add_flag("--every-frame", o.everyFrame, "Keep a key per frame on the simulated joints (no key reduction)");
   cmd->add_flag("--json", o.json, "Print the report as JSON (each simulated part, steps, largest joint-limit excess)");
   addAllowOutsidePathsFlag(cmd, o.allowOutsidePaths);
+  addSimulateRenderOptions(cmd, o);
   return cmd;
 }
 
 int runSimulate(const SimulateOptions& o) {
+  if (o.out.empty() && o.render.empty()) {
+    std::cerr << "kinema simulate: give --out FILE, --render DIR or both; see --help\n";
+    return kExitUsage;
+  }
   const std::string ext = lowerExtension(o.out);
-  if (!writable(ext)) {
+  if (!o.out.empty() && !writable(ext)) {
     std::cerr << "kinema simulate: cannot write '" << ext << "' files (use .kinema, .gltf, .glb or .bvh); see --help\n";
     return kExitUsage;
   }
+  if (!o.render.empty() && !simulateRenderSyntaxOk(o)) return kExitUsage;
   long long first = 0, last = 0;
   const bool framesGiven = o.framesOption && o.framesOption->count() > 0;
   if (framesGiven && !parseFrames(o.frames, first, last)) {
@@ -104,12 +112,17 @@ int runSimulate(const SimulateOptions& o) {
   Scene scene = std::move(loaded.value());
   if (scene.simulation.empty())
     return badInput(o.file + ": has nothing to simulate (no simulation.spring_chains, simulation.ragdolls or "
-                    "simulation.crowds; see docs/kinema-format.md)");
+                    "simulation.crowds or simulation.particles; see docs/kinema-format.md)");
   const bool crowds = !scene.simulation.crowds.empty();
   if (crowds && ext == ".bvh")
     return badInput(o.file + ": has crowds, and a BVH file holds one skeleton, not a crowd of characters; write "
                     ".kinema (a clip per member) or .gltf/.glb (a character per member)");
   if (std::string e = clipIndexError(scene, o.clip); !e.empty()) return badInput(e);
+  const bool bakes = !scene.simulation.springChains.empty() || !scene.simulation.ragdolls.empty();
+  if (!bakes && !crowds) {  // particles alone: played, nothing baked
+    if (!framesGiven) defaultParticleFrames(scene, o.clip, first, last);
+    return runParticlesOnly(o, scene, first, last);
+  }
   if (scene.clips.empty()) {  // a still character: one clip to hold the keys, at 30 fps
     Clip clip;
     clip.name = "simulation";
@@ -170,7 +183,8 @@ int runSimulate(const SimulateOptions& o) {
   }
   std::string error;
   std::vector<std::string> report;
-  if (ext == ".bvh") {
+  if (o.out.empty()) {
+  } else if (ext == ".bvh") {
     if (!scene.meshes.empty()) report.push_back("meshes and skins dropped (BVH holds a skeleton and one motion)");
     error = saveBvh(o.out, scene.skeleton, &scene.clips[o.clip], BvhWriteOptions{}, &report);
   } else if (ext == ".gltf" || ext == ".glb") {
@@ -183,12 +197,13 @@ int runSimulate(const SimulateOptions& o) {
   }
   for (const std::string& line : report) std::cerr << "kinema simulate: warning: " << line << "\n";
   if (!error.empty()) return badInput(error);
+  if (const int code = renderSimulatedFrames(o, scene, first, last); code != kExitOk) return code;
 
   if (o.json) {
     const Skeleton& s = scene.skeleton;
     nlohmann::ordered_json j;
     j["file"] = o.file;
-    j["out"] = o.out;
+    if (!o.out.empty()) j["out"] = o.out;
     j["clip"] = o.clip;
     j["frames"] = {first, last};
     nlohmann::ordered_json parts = nlohmann::ordered_json::array();
@@ -212,10 +227,16 @@ int runSimulate(const SimulateOptions& o) {
       worst = std::max(worst, p.largestLimitExcess);
     }
     for (nlohmann::ordered_json& part : crowdRun.parts) parts.push_back(std::move(part));
+    if (!scene.simulation.particles.empty())
+      for (nlohmann::ordered_json& pj : particleReport(scene, o.clip, first, last)) {
+        steps += pj["steps"].get<long long>();
+        parts.push_back(std::move(pj));
+      }
     j["parts"] = std::move(parts);
     j["steps"] = steps;
     j["largestLimitExcessDegrees"] = jsonFloat(worst / kDegree);
     j["keys"] = {{"before", bake->keysBefore}, {"after", bake->keysAfter}};
+    if (!o.render.empty()) j["render"] = o.render;
     std::cout << j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
   }
   return kExitOk;

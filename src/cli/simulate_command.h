@@ -12,12 +12,15 @@ struct SimulateOptions {
   bool everyFrame = false;  // --every-frame: keep a key per frame
   bool json = false;
   bool allowOutsidePaths = false;
+  // --render DIR: one PNG a frame (DIR/frame_NNNN.png), drawn as `kinema render` draws.
+  std::string render, size = "1280x720", camera, backend = "egl";
   CLI::Option* framesOption = nullptr;
 };
 
 CLI::App* addSimulateCommand(CLI::App& app, SimulateOptions& options);
 // Bakes FILE's dynamic chains and ragdolls (its .kinema "simulation") into its clip and
 // writes OUT (.kinema, .gltf, .glb or .bvh). Nothing is written unless every part succeeds.
+// Its particle systems are played over the frames (reported; drawn with --render DIR).
 int runSimulate(const SimulateOptions& options);
 
 }  // namespace kinema::cli

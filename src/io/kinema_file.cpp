@@ -19,6 +19,7 @@
 #include "io/json_document.h"
 #include "io/kinema_crowds.h"
 #include "io/json_number.h"
+#include "io/kinema_particles.h"
 #include "io/message_text.h"
 #include "io/text_file.h"
 
@@ -466,6 +467,10 @@ bool readSimulation(Reader& r, const Json& root, Scene& scene) {
     std::string path, what;
     if (!readCrowdsJson(*crowds, "simulation.crowds", out.crowds, path, what)) return r.fail(path, what);
   }
+  if (const Json* list = r.member(*sim, "simulation", "particles", false)) {
+    std::string where, what;
+    if (!readParticleSystems(*list, "simulation.particles", s, out.particles, where, what)) return r.fail(where, what);
+  }
   // What one part cannot see: a joint in two chains, ragdolls that overlap.
   if (std::string e = out.validate(s); !e.empty()) return r.fail("simulation", e);
   scene.simulation = std::move(out);
@@ -516,6 +521,7 @@ Json simulationToJson(const Scene& scene) {
   sim["spring_chains"] = std::move(chains);
   sim["ragdolls"] = std::move(ragdolls);
   if (!scene.simulation.crowds.empty()) sim["crowds"] = crowdsToJson(scene.simulation.crowds);
+  if (!scene.simulation.particles.empty()) sim["particles"] = particleSystemsToJson(scene.simulation.particles, s);
   return sim;
 }
 

@@ -380,8 +380,48 @@ bool MeshRenderer::uploadedMesh(int mesh) const {
   return mesh >= 0 && mesh < static_cast<int>(primitivesOfMesh_.size()) && mesh < static_cast<int>(scene_->meshes.size());
 }
 
+bool axisStackOnGpu(const DeformerStack& stack) {
+  int enabled = 0;
+  for (const Deformer& d : stack.deformers) {
+    if (!d.enabled) continue;
+    if (d.type != DeformerType::Bend && d.type != DeformerType::Twist && d.type != DeformerType::Taper) return false;
+    for (const std::vector<float>& w : d.weights)
+      if (!w.empty()) return false;
+    ++enabled;
+  }
+  return enabled >= 1 && enabled <= kMaxGpuAxisDeformers;
+}
+
+void MeshRenderer::bindAxisDeformers(const MeshFrame& frame, int instance) {
+  int count = 0;
+  if (frame.gpuDeformers && instance < static_cast<int>(frame.gpuDeformers->size()) &&
+      axisStackOnGpu((*frame.gpuDeformers)[instance])) {
+    glm::ivec2 kind[kMaxGpuAxisDeformers];
+    glm::vec3 origin[kMaxGpuAxisDeformers], range[kMaxGpuAxisDeformers];
+    glm::mat4 toLocal[kMaxGpuAxisDeformers], toWorld[kMaxGpuAxisDeformers];
+    for (const Deformer& d : (*frame.gpuDeformers)[instance].deformers) {
+      if (!d.enabled) continue;
+      const AxisDeformer& a = d.axis;
+      kind[count] = glm::ivec2(a.kind == AxisDeformerKind::Bend ? 0 : a.kind == AxisDeformerKind::Twist ? 1 : 2,
+                               static_cast<int>(a.axis));
+      origin[count] = a.origin;
+      range[count] = glm::vec3(a.low, a.high, a.amount);
+      toWorld[count] = deformerFrame(d, frame.world);
+      toLocal[count] = glm::inverse(toWorld[count]);  // the CPU's DeformerStackJob does the same
+      ++count;
+    }
+    glUniform2iv(program_.uniform("uAxisKind"), count, glm::value_ptr(kind[0]));
+    glUniform3fv(program_.uniform("uAxisOrigin"), count, glm::value_ptr(origin[0]));
+    glUniform3fv(program_.uniform("uAxisRange"), count, glm::value_ptr(range[0]));
+    glUniformMatrix4fv(program_.uniform("uAxisToLocal"), count, GL_FALSE, glm::value_ptr(toLocal[0]));
+    glUniformMatrix4fv(program_.uniform("uAxisToWorld"), count, GL_FALSE, glm::value_ptr(toWorld[0]));
+  }
+  glUniform1i(program_.uniform("uAxisCount"), count);
+}
+
 void MeshRenderer::bindInstance(const MeshFrame& frame, int instance, const GpuPrimitive& p, bool weightsView) {
   const MeshInstance& inst = scene_->meshInstances[instance];
+  bindAxisDeformers(frame, instance);
   const bool skinned = p.skinned && inst.skin >= 0 && inst.skin < static_cast<int>(skinOffset_.size()) &&
                        inst.skin < static_cast<int>(scene_->skins.size());
   const int method = !skinned ? 0 : inst.skinning == SkinningMethod::DualQuaternion ? 2 : 1;
@@ -496,6 +536,7 @@ void MeshRenderer::drawInstancesCpu(const MeshFrame& frame, const CpuPose& pose)
       glUniformMatrix4fv(program_.uniform("uModel"), 1, GL_FALSE, glm::value_ptr(identity));
       glUniformMatrix3fv(program_.uniform("uModelNormal"), 1, GL_FALSE, glm::value_ptr(identity3));
       glUniform1i(program_.uniform("uMorphCount"), 0);
+      glUniform1i(program_.uniform("uAxisCount"), 0);
       glBindVertexArray(p.cpuVao);
       glBindBuffer(GL_ARRAY_BUFFER, cpuBuffer_);
       const size_t bytes = static_cast<size_t>(pose[i][p.primitive]) * sizeof(float);
@@ -595,6 +636,7 @@ void MeshRenderer::bindCpuDeformed(GpuPrimitive& p, const DeformedPrimitive& d) 
   glUniformMatrix4fv(program_.uniform("uModel"), 1, GL_FALSE, glm::value_ptr(identity));
   glUniformMatrix3fv(program_.uniform("uModelNormal"), 1, GL_FALSE, glm::value_ptr(identity3));
   glUniform1i(program_.uniform("uMorphCount"), 0);
+  glUniform1i(program_.uniform("uAxisCount"), 0);
 }
 
 void MeshRenderer::drawInstances(const MeshFrame& frame, bool weightsView) {

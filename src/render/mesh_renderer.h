@@ -22,6 +22,10 @@ struct MeshFrame {
   // instances whose deformer stack is active), world space. Those are drawn from these
   // positions and normals, streamed each frame, instead of being morphed and skinned here.
   const std::vector<DeformedPrimitive>* deformed = nullptr;
+  // Optional, per instance (sampleDeformerStacks): stacks the vertex shader runs after
+  // skinning, those for which axisStackOnGpu holds (others are ignored here: deform them on
+  // the CPU, `deformed`). The CPU's SceneDeformationJob is the reference (1e-4 m).
+  const std::vector<DeformerStack>* gpuDeformers = nullptr;
   // Skeleton joint whose skin weights are shown as heat colours (blue 0 -> red 1) instead of
   // the shaded material; -1 shows the materials.
   int weightJoint = -1;
@@ -36,6 +40,12 @@ struct MeshGhost {
   glm::vec4 color{1.0f};
   const std::vector<DeformedPrimitive>* deformed = nullptr;  // as MeshFrame::deformed
 };
+
+// Whether the vertex shader can run `stack` (issue 22): one to four enabled deformers, every
+// enabled one a bend, twist or taper without vertex-group weights. Lattices and soft pulls
+// stay on the CPU.
+constexpr int kMaxGpuAxisDeformers = 4;  // shaders/mesh.vert kMaxAxisDeformers
+bool axisStackOnGpu(const DeformerStack& stack);
 
 // Draws a Scene's meshes with OpenGL 3.3 core, skinned in the vertex shader
 // (shaders/mesh.vert): the scene's vertex data and textures are uploaded once by upload(),
@@ -109,6 +119,9 @@ class MeshRenderer {
     bool hasNormals = false, morphNormals = false, skinned = false;
   };
   void bindInstance(const MeshFrame& frame, int instance, const GpuPrimitive& p, bool weightsView);
+  // The instance's stack of frame.gpuDeformers as the shader's uAxis* uniforms (uAxisCount 0
+  // when it has none the shader runs).
+  void bindAxisDeformers(const MeshFrame& frame, int instance);
   void uploadJointMatrices(const MeshFrame& frame);
   void appendJointTexels(const std::vector<glm::mat4>& world);  // one pose's texels onto jointScratch_
   void drawInstances(const MeshFrame& frame, bool weightsView);

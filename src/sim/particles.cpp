@@ -42,16 +42,40 @@ struct Motion {
   }
 };
 
-// The last time in [0, hi] still outside (distance >= 0) before the first found contact, by
-// bisection on the exact path.
+// The last time in [0, hi] still outside (distance >= 0) before the first found contact, on
+// the exact path (distance(hi) < 0). Starting outside, the Illinois variant of false position
+// keeps a bracket [lo, hi] around the contact and shrinks both ends (a handful of path
+// evaluations instead of bisection's 40); starting on the surface, where false position
+// cannot move, bisection. Either stops once the bracket is a float step of the whole span.
 template <class Distance>
 float contactTime(const Motion& m, const glm::vec3& p0, const glm::vec3& v0, float hi, Distance distance) {
   float lo = 0.0f;
+  const float span = hi, tolerance = span * 1.2e-7f;  // about one float step at `span`
   glm::vec3 p, v;
-  for (int i = 0; i < 40; ++i) {
-    const float mid = 0.5f * (lo + hi);
-    m.at(p0, v0, mid, p, v);
-    (distance(p) >= 0.0f ? lo : hi) = mid;
+  float fLo = distance(p0), fHi = 0.0f;
+  if (fLo > 0.0f) {
+    m.at(p0, v0, hi, p, v);
+    fHi = distance(p);
+  }
+  int side = 0;  // which end moved last (Illinois halves the other end's value when one end repeats)
+  for (int i = 0; i < 40 && hi - lo > tolerance; ++i) {
+    float t = 0.5f * (lo + hi);
+    if (fLo > 0.0f && fHi < 0.0f) {
+      const float secant = lo + (hi - lo) * (fLo / (fLo - fHi));
+      if (secant > lo && secant < hi) t = secant;
+    }
+    if (t <= lo || t >= hi) break;  // lo and hi adjacent floats
+    m.at(p0, v0, t, p, v);
+    const float f = distance(p);
+    if (f >= 0.0f) {
+      lo = t, fLo = f;
+      if (side > 0) fHi *= 0.5f;
+      side = 1;
+    } else {
+      hi = t, fHi = f;
+      if (side < 0) fLo *= 0.5f;
+      side = -1;
+    }
   }
   return lo;
 }
@@ -158,7 +182,9 @@ bool ParticleStepJob::run() {
       float when = left;
       glm::vec3 normal(0.0f);
       if (f.ground && pe.y < f.groundHeight) {
-        when = contactTime(motion, p, v, left, [&](const glm::vec3& q) { return q.y - f.groundHeight; });
+        // Resting on the ground (on it, not rising, pulled down): the contact is now, no search.
+        const bool resting = p.y == f.groundHeight && v.y <= 0.0f && f.gravity.y + f.drag * (f.wind.y - v.y) <= 0.0f;
+        when = resting ? 0.0f : contactTime(motion, p, v, left, [&](const glm::vec3& q) { return q.y - f.groundHeight; });
         normal = up;
       }
       for (const ParticleSphere& sphere : f.spheres) {
@@ -260,6 +286,7 @@ bool ParticleStepJob::run() {
       s.ages.push_back(0.0f);
       s.lifetimes.push_back(draw(em.lifetime, random));
       s.emitterOf.push_back(static_cast<uint32_t>(e));
+      ++s.emitted;
     }
   }
   s.random = random.state;

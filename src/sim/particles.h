@@ -68,6 +68,7 @@ struct ParticleState {
   std::vector<float> emitCarry;        // per emitter: the fraction of a particle owed
   uint64_t random = 1;                 // the generator's state; set it to the seed to start
   double time = 0.0;
+  uint64_t emitted = 0;                // particles born so far (alive or dead)
   int size() const { return static_cast<int>(positions.size()); }
 };
 

@@ -21,6 +21,8 @@ std::string SimulationSettings::validate(const Skeleton& s) const {
   }
   for (const CrowdSettings& c : crowds)
     if (std::string e = c.validate(); !e.empty()) return e;
+  for (const ParticleSystemSettings& p : particles)
+    if (std::string e = p.validate(s); !e.empty()) return e;
   return "";
 }
 

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "sim/crowd_settings.h"
+#include "sim/particle_system.h"
 #include "sim/ragdoll_settings.h"
 #include "sim/spring_bones.h"
 
@@ -14,8 +15,9 @@ struct SimulationSettings {
   std::vector<SpringBoneChain> springChains;
   std::vector<RagdollSettings> ragdolls;
   std::vector<CrowdSettings> crowds;  // flocks of animated characters (sim/crowd.h)
+  std::vector<ParticleSystemSettings> particles;  // played, not baked (sim/particle_system.h)
 
-  bool empty() const { return springChains.empty() && ragdolls.empty() && crowds.empty(); }
+  bool empty() const { return springChains.empty() && ragdolls.empty() && crowds.empty() && particles.empty(); }
   // Empty when every part fits `skeleton` and no joint is driven by two parts; otherwise
   // one sentence naming the first problem.
   std::string validate(const Skeleton& skeleton) const;

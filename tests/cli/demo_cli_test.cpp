@@ -26,9 +26,29 @@ TEST(DemoCommand, ListsThePresets) {
   for (const TeachingCase& c : teachingPresets()) EXPECT_NE(out.find(c.name), std::string::npos) << c.name;
   ASSERT_EQ(kinema("demo list --json", &out), 0);
   const Json list = Json::parse(out);
-  ASSERT_EQ(list.size(), teachingPresets().size());
+  // Every IK preset first, then the four figure demos, each saying which kind it is.
+  ASSERT_EQ(list.size(), teachingPresets().size() + 4);
   EXPECT_EQ(list[0]["name"], teachingPresets()[0].name);
   EXPECT_EQ(list[0]["title"], teachingPresets()[0].title);
+  std::vector<std::string> figures;
+  for (size_t i = 0; i < list.size(); ++i) {
+    if (i < teachingPresets().size()) {
+      EXPECT_EQ(list[i]["kind"], "ik-preset") << i;
+    } else {
+      EXPECT_EQ(list[i]["kind"], "figure") << i;
+      figures.push_back(list[i]["name"]);
+    }
+  }
+  EXPECT_EQ(figures, (std::vector<std::string>{"solver-table", "stiff-springs", "boids", "life"}));
+  for (const std::string& f : figures) EXPECT_NE(out.find(f), std::string::npos) << f;
+}
+
+TEST(DemoCommand, EditCompareTakesTheIkPresetsAndRefusesFigureDemos) {
+  std::string out, err;
+  // A figure demo is listed by `demo list` but is no solver comparison: usage error, one line.
+  EXPECT_EQ(kinema("edit --compare stiff-springs --frame-count 1", &out, &err), 2);
+  EXPECT_NE(err.find("stiff-springs"), std::string::npos) << err;
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
 }
 
 TEST(DemoCommand, UnknownPresetIsBadInputAndBadFlagsAreUsage) {

@@ -43,6 +43,7 @@ TEST_F(SimulationE2e, FoxsTailMadeDynamicPlayedBakedUndoneRedoneExported) {
   EXPECT_GT(sim["live_frames_simulated"].get<long long>(), 10) << "the tail swung during playback";
   ASSERT_TRUE(sim.contains("last_bake"));
   EXPECT_EQ(sim["last_bake"]["parts"][0]["kind"], "spring-chain");
+  EXPECT_FALSE(sim["live"].get<bool>()) << "after the bake the keys play, not a second simulation on top";
   EXPECT_EQ(d["undo_depth"], 2) << "make dynamic, bake";
   EXPECT_EQ(d["redo_depth"], 0);
   EXPECT_TRUE(d["errors"].empty()) << d["errors"].dump();
@@ -78,6 +79,41 @@ TEST_F(SimulationE2e, FoxsTailMadeDynamicPlayedBakedUndoneRedoneExported) {
     for (const auto& [je, jb] : pairs)
       EXPECT_GT(std::abs(glm::dot(pe.local[je].rotation, pb.local[jb].rotation)), 1.0f - 1e-6f) << "frame " << f;
   }
+}
+
+// A collision capsule for the tail: on Fox the script makes the tail dynamic, selects the
+// left thigh, Simulate > Add Collision Capsule, types a new radius in the Simulation window,
+// then undoes that edit: the capsule stays with its first radius (a quarter of the thigh's
+// bone) and is drawn in the 3D view.
+TEST_F(SimulationE2e, ACollisionCapsuleAddedOnALegSizedAndTheSizeUndone) {
+  KINEMA_REQUIRE_SHARED_DATA();
+  const std::string fox = sharedDataDir() + "/gltf/Fox.glb";
+  Script s(Script::Start::AsOpened);
+  s.wait(2);
+  s.clickItem("Outliner/Search").wait(1).type("Tail01").wait(2).clickItem("Outliner/b_Tail01_012").wait(1);
+  s.menu("Simulate", "Make Chain Dynamic");
+  s.clickItem("Outliner/Search").wait(1).chord("A", {"ctrl"}).type("LeftLeg01").wait(2);
+  s.clickItem("Outliner/b_LeftLeg01_015").wait(1);
+  s.menu("Simulate", "Add Collision Capsule").wait(2);
+  s.clickItem("Simulation/Chain 0/Capsule 0/Radius", {0.2, 0.5}).wait(1).chord("A", {"ctrl"}).type("9").key("ENTER").wait(2);
+  s.chord("Z", {"ctrl"}).wait(3);  // the radius edit undone
+  const json d = runEditor(dir_, shotDir(), s, "fox_capsule", fox);
+  ASSERT_TRUE(d.is_object());
+  const json& chains = d["simulation"]["spring_chains"];
+  ASSERT_EQ(chains.size(), 1u) << d["simulation"].dump();
+  ASSERT_EQ(chains[0]["colliders"].size(), 1u) << chains.dump() << d["log"].dump();
+  const json& capsule = chains[0]["colliders"][0];
+  EXPECT_EQ(capsule["joint"], "b_LeftLeg01_015");
+  // The default: from the thigh's joint to its child, radius a quarter of that bone.
+  Result<Scene> loaded = loadScene(fox);
+  ASSERT_TRUE(loaded);
+  const Skeleton& sk = loaded->skeleton;
+  const glm::vec3 bone = sk.rest[sk.find("b_LeftLeg02_016")].translation;
+  EXPECT_NEAR(capsule["radius"].get<double>(), 0.25 * glm::length(bone), 1e-4 * glm::length(bone));
+  EXPECT_NEAR(capsule["b"][1].get<double>(), bone.y, 1e-4 * glm::length(bone));
+  EXPECT_EQ(d["undo_depth"], 2) << "make dynamic, add capsule (the radius edit undone)";
+  EXPECT_EQ(d["redo_depth"], 1);
+  EXPECT_TRUE(d["errors"].empty()) << d["errors"].dump();
 }
 
 }  // namespace

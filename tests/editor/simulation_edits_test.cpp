@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "anim/sampling.h"
+#include "core/forward_kinematics.h"
 #include "core/default_character.h"
 #include "editor/model/document.h"
 #include "editor/model/simulation_edits.h"
@@ -137,6 +138,108 @@ TEST(SimulationEdits, RagdollFromAFrameFallsAndIsOneStep) {
   EXPECT_EQ(doc.historyLabels().size(), 1u);
   ASSERT_TRUE(doc.undo());
   EXPECT_TRUE(doc.scene().simulation.empty());
+}
+
+}  // namespace
+}  // namespace kinema
+
+namespace kinema {
+namespace {
+
+// Distance from p to the segment a-b.
+float segmentDistance(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b) {
+  const glm::vec3 d = b - a;
+  const float t = glm::clamp(glm::dot(p - a, d) / glm::dot(d, d), 0.0f, 1.0f);
+  return glm::length(p - (a + t * d));
+}
+
+TEST(SimulationEdits, ACollisionCapsuleIsOneUndoStepAndKeepsTheTailOut) {
+  Document doc(tailed());
+  const Skeleton& s = doc.skeleton();
+  const int hips = s.find("Hips"), tail0 = s.find("Tail0");
+  SpringCollider onHips = defaultCollider(s, hips);
+  EXPECT_EQ(onHips.joint, hips);
+  int firstChild = -1;
+  for (int c = hips + 1; c < s.size() && firstChild < 0; ++c)
+    if (s.parents[c] == hips) firstChild = c;
+  EXPECT_EQ(onHips.b, s.rest[firstChild].translation) << "along the bone to the first child";
+  EXPECT_FLOAT_EQ(onHips.radius, 0.25f * glm::length(s.rest[firstChild].translation));
+  EXPECT_NE(addColliderEdit(doc, onHips), "") << "no dynamic chain yet";
+
+  SpringBoneChain chain = defaultSpringChain(s, dynamicChainFrom(s, {tail0}, tail0));
+  ASSERT_EQ(addSpringChainEdit(doc, chain), "");
+  EXPECT_NE(addColliderEdit(doc, defaultCollider(s, tail0)), "") << "the chain's own joint";
+  // A bar under the tail, in the hips' space (it turns with them): the tail rests on it.
+  SpringCollider bar;
+  bar.joint = hips;
+  bar.a = {0.0f, -0.12f, -0.05f};
+  bar.b = {0.0f, -0.12f, -0.6f};
+  bar.radius = 0.07f;
+  const size_t steps = doc.historyLabels().size();
+  ASSERT_EQ(addColliderEdit(doc, bar), "");
+  EXPECT_EQ(doc.historyLabels().size(), steps + 1);
+  ASSERT_EQ(doc.scene().simulation.springChains[0].colliders.size(), 1u);
+  EXPECT_TRUE(doc.sceneForSaving().simulation.springChains[0].colliders[0] == bar) << "saved with the file";
+
+  // Baked with and without the bar: with it no tail point enters the bar (the point's own
+  // radius aside, up to a millimetre); without it the sagging tail passes through it.
+  const Clip& clip = doc.scene().clips[0];
+  auto closest = [&](const std::vector<SpringBoneChain>& chains) {
+    Result<Clip> baked = bakeSpringBones(s, clip, chains, 0, 48);
+    EXPECT_TRUE(baked);
+    float nearest = 1e9f;
+    for (long long f = 0; baked && f <= 48; ++f) {
+      Pose pose = Pose::rest(s);
+      sampleClip(baked.value(), clip.frameToTime(f), pose);
+      const std::vector<glm::mat4> world = computeWorld(s, pose);
+      const glm::vec3 a = glm::vec3(world[hips] * glm::vec4(bar.a, 1.0f)), b = glm::vec3(world[hips] * glm::vec4(bar.b, 1.0f));
+      for (int k = 1; k <= 3; ++k) nearest = std::min(nearest, segmentDistance(glm::vec3(world[s.find("Tail" + std::to_string(k))][3]), a, b));
+    }
+    return nearest;
+  };
+  EXPECT_GE(closest(doc.scene().simulation.springChains), bar.radius - 1e-3f);
+  EXPECT_LT(closest({chain}), bar.radius - 0.02f);
+
+  ASSERT_TRUE(doc.undo());
+  EXPECT_TRUE(doc.scene().simulation.springChains[0].colliders.empty());
+  ASSERT_TRUE(doc.redo());
+  ASSERT_EQ(removeColliderEdit(doc, 0, 0), "");
+  EXPECT_TRUE(doc.scene().simulation.springChains[0].colliders.empty());
+  EXPECT_NE(removeColliderEdit(doc, 0, 0), "");
+}
+
+}  // namespace
+}  // namespace kinema
+
+namespace kinema {
+namespace {
+
+TEST(SimulationEdits, ARagdollWithoutAClipFallsFromThePoseOnScreenIntoANewAction) {
+  Scene scene = tailed();
+  scene.clips.clear();
+  Document doc(scene);
+  const Skeleton& s = doc.skeleton();
+  ASSERT_TRUE(doc.scene().clips.empty());
+  SimulationBake bake;
+  ASSERT_EQ(ragdollFromFrameEdit(doc, -1, characterRoot(s), 1, 1 + 72, &bake), "");
+  ASSERT_EQ(doc.scene().clips.size(), 1u) << "a new Action holds the fall";
+  EXPECT_EQ(doc.scene().clips[0].name, "Action");
+  EXPECT_EQ(doc.activeClip(), 0);
+  EXPECT_EQ(doc.historyLabels().size(), 1u) << "one undo step";
+  // At the start frame the keys are the pose on screen (the rest pose here), up to the lift
+  // the ground gives the foot bodies that reach below it (under 2 cm); three seconds later
+  // the hips have fallen (lower than they stood).
+  const Clip& clip = doc.scene().clips[0];
+  Pose start = Pose::rest(s), end = Pose::rest(s);
+  sampleClip(clip, clip.frameToTime(1), start);
+  sampleClip(clip, clip.frameToTime(73), end);
+  const int hips = s.find("Hips");
+  const float standing = glm::vec3(computeWorld(s, Pose::rest(s))[hips][3]).y;
+  EXPECT_NEAR(glm::vec3(computeWorld(s, start)[hips][3]).y, standing, 0.02f);
+  EXPECT_LT(glm::vec3(computeWorld(s, end)[hips][3]).y, standing - 0.3f);
+  ASSERT_TRUE(doc.undo());
+  EXPECT_TRUE(doc.scene().clips.empty());
+  EXPECT_TRUE(doc.scene().simulation.ragdolls.empty());
 }
 
 }  // namespace

@@ -14,6 +14,8 @@ const char* toString(CommandScope scope) {
     case CommandScope::DopeSheet: return "dope-sheet";
     case CommandScope::CurveEditor: return "curve-editor";
     case CommandScope::Compare: return "compare";
+    case CommandScope::LatticeEdit: return "lattice-edit";
+    case CommandScope::Property: return "property";
   }
   return "global";
 }
@@ -25,6 +27,8 @@ const char* scopeTitle(CommandScope scope) {
     case CommandScope::DopeSheet: return "Dope sheet (mouse over it)";
     case CommandScope::CurveEditor: return "Curve editor (mouse over it)";
     case CommandScope::Compare: return "Teach > Compare Solvers";
+    case CommandScope::LatticeEdit: return "Lattice edit mode (3D view, Tab)";
+    case CommandScope::Property: return "Over a keyable field of the Properties panel";
   }
   return "Everywhere";
 }
@@ -53,6 +57,7 @@ const CommandRegistry& editorCommands() {
     addEditCommands(all);
     addViewCommands(all);
     addPoseCommands(all);
+    addLatticeCommands(all);
     addClipCommands(all);
     addMotionCommands(all);
     addTimelineCommands(all);

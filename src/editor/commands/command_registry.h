@@ -11,8 +11,11 @@ namespace kinema {
 // Where a command's keys apply. A key pressed over the dope sheet or the curve editor goes
 // to that editor's commands first, over the 3D view to the viewport's; Global commands
 // apply everywhere after those. While Teach > Compare Solvers is open, its commands take
-// the keys and then the Global ones (editor_input.h keyScopes).
-enum class CommandScope { Global, Viewport, DopeSheet, CurveEditor, Compare };
+// the keys and then the Global ones (editor_input.h keyScopes). In lattice edit mode (Tab)
+// the 3D view's keys go to LatticeEdit first, so G, I and A act on the lattice's points, not
+// on the joints. A Property command takes its key while the mouse is over a keyable field
+// of the Properties panel (I keys that property, as in Blender).
+enum class CommandScope { Global, Viewport, DopeSheet, CurveEditor, Compare, LatticeEdit, Property };
 const char* toString(CommandScope scope);      // "global", "viewport", ...
 const char* scopeTitle(CommandScope scope);    // "Everywhere", "3D view", "Dope sheet", ...
 

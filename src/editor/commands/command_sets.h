@@ -11,10 +11,12 @@ void addFileCommands(std::vector<Command>& out);             // File menu (file_
 void addEditCommands(std::vector<Command>& out);             // Edit menu (edit_commands.cpp)
 void addViewCommands(std::vector<Command>& out);             // View menu (view_commands.cpp)
 void addPoseCommands(std::vector<Command>& out);             // Pose menu, selection, R / G (pose_commands.cpp)
+void addLatticeCommands(std::vector<Command>& out);          // Pose menu: lattice edit mode (lattice_commands.cpp)
 void addClipCommands(std::vector<Command>& out);             // Clip menu: the clip list (clip_commands.cpp)
 void addMotionCommands(std::vector<Command>& out);           // Animation menu: contacts, clean up (motion_commands.cpp)
 void addSimulateCommands(std::vector<Command>& out);         // Simulate menu, Teach > Stiff Springs (simulate_commands.cpp)
 void addCrowdCommands(std::vector<Command>& out);            // Simulate menu: crowds (crowd_commands.cpp)
+void addParticleCommands(std::vector<Command>& out);         // Simulate menu: particles (particle_commands.cpp)
 void addTimelineCommands(std::vector<Command>& out);         // play, step, jump (timeline_commands.cpp)
 void addAnimationEditorCommands(std::vector<Command>& out);  // dope sheet, curve editor keys
 void addCompareCommands(std::vector<Command>& out);          // Teach menu, compare mode keys

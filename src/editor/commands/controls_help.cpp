@@ -27,6 +27,8 @@ const Gesture kGestures[] = {
     {CommandScope::Viewport, "Wheel", "zoom"},
     {CommandScope::Viewport, "Drag a ring of the gizmo", "rotate about that axis"},
     {CommandScope::Viewport, "Drag an IK target handle", "move the target, the chain follows"},
+    {CommandScope::LatticeEdit, "Left click", "select a lattice point (Shift: toggle)"},
+    {CommandScope::LatticeEdit, "Left drag on empty space", "box select points (Shift adds, Ctrl removes)"},
     {CommandScope::DopeSheet, "Click / drag keys", "select (Shift: toggle) / move, snapped to frames"},
     {CommandScope::DopeSheet, "Drag on empty space", "box select"},
     {CommandScope::DopeSheet, "Click in the ruler / a joint's name", "set the current frame / select the joint"},
@@ -59,8 +61,9 @@ std::string modalKeyLine(bool rotate) {
   return out;
 }
 
-const CommandScope kScopes[] = {CommandScope::Global, CommandScope::Viewport, CommandScope::DopeSheet,
-                                CommandScope::CurveEditor, CommandScope::Compare};
+const CommandScope kScopes[] = {CommandScope::Global,      CommandScope::Viewport,    CommandScope::LatticeEdit,
+                                CommandScope::Property,    CommandScope::DopeSheet,   CommandScope::CurveEditor,
+                                CommandScope::Compare};
 
 std::string menuPath(const Command& c) {
   if (c.menu.empty()) return "";
@@ -135,8 +138,12 @@ std::string statusHint(const EditorState& state, const Keymap& keymap) {
     case ModalTool::IkDrag: return "IK drag: the chain follows; " + modalKeyLine(false);
     case ModalTool::GizmoDrag: return "Gizmo: drag a ring to rotate about its axis, Esc cancels";
     case ModalTool::Navigate: return "View: orbit / pan";
+    case ModalTool::LatticeGrab: return "Move lattice points: move the mouse; " + modalKeyLine(false);
     case ModalTool::None: break;
   }
+  if (state.lattice.active)
+    return "Lattice edit: click / box-select points, " +
+           keyList(keymap, {"lattice.grab", "lattice.insert_keyframe", "lattice.select_all", "lattice.edit"});
   if (state.doc.selection.active() >= 0)
     return keyList(keymap, {"tool.rotate", "tool.grab", "edit.clear_rotation", "pose.add_ik_target", "anim.insert_keyframe"}) +
            ", Shift+click add";

@@ -27,16 +27,21 @@ void addEditCommands(std::vector<Command>& out) {
   out.push_back(CommandDef("edit.undo", "Undo").menu("Edit").key(keys::Z, kModCtrl)
                     .enabled([](const CommandContext& c) { return idle(c) && c.state.doc.canUndo(); })
                     .run([](CommandContext& c) {
+                      const bool showedClip = c.state.doc.poseRevision() == c.state.animatedPoseRevision;
                       if (!c.state.doc.undo()) return;
                       c.state.statusMessage = "Undo";
                       followDocumentClip(c.state);  // an undone clip list change: its active clip again
+                      // The pose showed the clip (not an unkeyed pose of the user's): show the clip as it is now.
+                      if (showedClip && !c.state.playing) poseAtPlayhead(c.state);
                     }));
   out.push_back(CommandDef("edit.redo", "Redo").menu("Edit").key(keys::Z, kModCtrl | kModShift).key(keys::Y, kModCtrl)
                     .enabled([](const CommandContext& c) { return idle(c) && c.state.doc.canRedo(); })
                     .run([](CommandContext& c) {
+                      const bool showedClip = c.state.doc.poseRevision() == c.state.animatedPoseRevision;
                       if (!c.state.doc.redo()) return;
                       c.state.statusMessage = "Redo";
                       followDocumentClip(c.state);
+                      if (showedClip && !c.state.playing) poseAtPlayhead(c.state);
                     }));
   out.push_back(CommandDef("edit.copy_pose", "Copy Pose").menu("Edit", true).key(keys::C, kModCtrl)
                     .hint("copy the selected joints' pose").enabled(hasSelection)

@@ -21,7 +21,12 @@ std::vector<CommandScope> keyScopes(const EditorState& state, glm::vec2 mouse) {
   if (state.animationEditorContains(mouse))
     return {state.animationEditor == AnimationEditorKind::DopeSheet ? CommandScope::DopeSheet : CommandScope::CurveEditor,
             CommandScope::Global};
-  return {CommandScope::Viewport, CommandScope::Global};
+  std::vector<CommandScope> scopes;
+  if (state.hoveredProperty.valid()) scopes.push_back(CommandScope::Property);
+  if (state.lattice.active) scopes.push_back(CommandScope::LatticeEdit);
+  scopes.push_back(CommandScope::Viewport);
+  scopes.push_back(CommandScope::Global);
+  return scopes;
 }
 
 const Command* runChord(const Keymap& keymap, CommandContext& ctx, KeyChord chord, const std::vector<CommandScope>& scopes) {

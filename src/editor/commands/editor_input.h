@@ -10,7 +10,9 @@ namespace kinema {
 
 // Where a key-down is looked up, in order: the scope under the mouse (the dope sheet or
 // curve editor when over them, else the 3D view), then Global; Teach > Compare Solvers'
-// own keys, then Global, while that mode is open. None while a dope-sheet or curve-editor
+// own keys, then Global, while that mode is open. Over the 3D view, lattice edit mode's
+// keys come before the viewport's, and before those the Properties field under the mouse
+// (I keys it) when there is one. None while a dope-sheet or curve-editor
 // mouse gesture runs (its Esc / Enter are the panel's).
 std::vector<CommandScope> keyScopes(const EditorState& state, glm::vec2 mouse);
 

@@ -113,7 +113,9 @@ void addPoseCommands(std::vector<Command>& out) {
                     .run([](CommandContext& c) { c.state.doc.selection.clear(); }));
   out.push_back(CommandDef("tool.rotate", "Rotate").key(keys::R).scope(CommandScope::Viewport)
                     .hint("rotate the selection with the mouse (then X/Y/Z, typed degrees)")
-                    .enabled([](const CommandContext& c) { return idleTool(c) && !c.state.doc.selection.empty(); })
+                    .enabled([](const CommandContext& c) {
+                      return idleTool(c) && !c.state.doc.selection.empty() && !c.state.lattice.active;
+                    })
                     .run([](CommandContext& c) { c.tools->startRotate(c.state, c.view); }));
   out.push_back(CommandDef("tool.grab", "Move Root").key(keys::G).scope(CommandScope::Viewport)
                     .hint("move the root joint with the mouse (then X/Y/Z)")

@@ -48,6 +48,22 @@ void addSimulateCommands(std::vector<Command>& out) {
                       const std::string error = removeSpringChainEdit(s.doc, springChainOf(s.doc, s.doc.selection.active()));
                       reportDopeSheetEdit(s, error, "Removed the dynamic chain");
                     }));
+  out.push_back(CommandDef("sim.add_collider", "Add Collision Capsule").menu("Simulate")
+                    .hint("a capsule along the active joint's bone that the dynamic chains' tails stay out of (sized in Simulation Settings)")
+                    .enabled([](const CommandContext& c) {
+                      const int active = c.state.doc.selection.active();
+                      if (!idle(c) || active < 0) return false;
+                      for (const SpringBoneChain& chain : c.state.doc.scene().simulation.springChains)
+                        if (std::find(chain.joints.begin(), chain.joints.end(), active) == chain.joints.end()) return true;
+                      return false;
+                    })
+                    .run([](CommandContext& c) {
+                      EditorState& s = c.state;
+                      const int active = s.doc.selection.active();
+                      const std::string error = addColliderEdit(s.doc, defaultCollider(s.doc.skeleton(), active));
+                      if (error.empty()) s.simulationWindowOpen = true;
+                      reportDopeSheetEdit(s, error, "Added a collision capsule on " + s.doc.skeleton().names[active]);
+                    }));
   out.push_back(CommandDef("sim.live_springs", "Play Spring Bones Live").menu("Simulate")
                     .hint("dynamic chains swing during playback and scrubbing (simulated from the range's start)")
                     .checked([](const CommandContext& c) { return c.state.liveSprings.enabled; })
@@ -56,8 +72,9 @@ void addSimulateCommands(std::vector<Command>& out) {
                       poseAtPlayhead(c.state);
                     }));
   out.push_back(CommandDef("sim.ragdoll_from_frame", "Ragdoll from Current Frame").menu("Simulate", true)
-                    .hint("the character (or the active joint and what hangs below it) falls from this frame, baked to keys")
-                    .enabled(onClip)
+                    .hint("the character (or the active joint and what hangs below it) falls from this frame, baked to keys "
+                          "(without a clip, from the pose on screen into a new Action)")
+                    .enabled([](const CommandContext& c) { return idle(c) && c.state.doc.skeleton().size() > 1; })
                     .run([](CommandContext& c) {
                       EditorState& s = c.state;
                       const Skeleton& sk = s.doc.skeleton();
@@ -81,15 +98,23 @@ void addSimulateCommands(std::vector<Command>& out) {
                       EditorState& s = c.state;
                       SimulationBake bake;
                       const std::string error = bakeSimulationEdit(s.doc, s.clip, rangeStartFrame(s), rangeEndFrame(s), &bake);
-                      if (error.empty()) s.lastBake = bake;
-                      reportDopeSheetEdit(s, error, "Baked " + partsText(bake));
+                      if (error.empty()) {
+                        s.lastBake = bake;
+                        // Live springs on top of the baked keys would lag them a second time:
+                        // the view shows the keys (the menu item turns live springs back on).
+                        s.liveSprings.enabled = false;
+                      }
+                      reportDopeSheetEdit(s, error, "Baked " + partsText(bake) +
+                                                        (error.empty() ? "; live spring bones off, the keys play" : ""));
                     }));
   out.push_back(CommandDef("sim.settings", "Simulation Settings...").menu("Simulate", true)
                     .hint("the dynamic chains' and ragdolls' settings")
                     .enabled(documentShown)
                     .checked([](const CommandContext& c) { return c.state.simulationWindowOpen; })
                     .run([](CommandContext& c) { c.state.simulationWindowOpen = !c.state.simulationWindowOpen; }));
-  addCrowdCommands(out);  // the crowd commands, after the physics ones (crowd_commands.cpp)
+  // Issue 24's Simulate commands, after the physics ones and before Teach (the menus stay together).
+  addCrowdCommands(out);     // crowd_commands.cpp
+  addParticleCommands(out);  // particle_commands.cpp
   out.push_back(CommandDef("teach.stiff_springs", "Stiff Springs (Time Steps)").menu("Teach")
                     .hint("why a time step blows up: four integrators on a damped spring chain (kinema demo stiff-springs)")
                     .checked([](const CommandContext& c) { return c.state.stiffSpringsWindowOpen; })

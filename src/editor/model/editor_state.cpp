@@ -18,6 +18,7 @@ const char* modalToolName(ModalTool tool) {
     case ModalTool::IkDrag: return "ik-drag";
     case ModalTool::GizmoDrag: return "gizmo-drag";
     case ModalTool::Navigate: return "navigate";
+    case ModalTool::LatticeGrab: return "lattice-grab";
   }
   return "none";
 }

@@ -154,7 +154,14 @@ std::string deleteKeys(Document& doc, int clip, float time, const std::vector<in
 
 std::string keyScalarProperty(Document& doc, int& clip, int joint, const std::string& property, float time, float value,
                               const KeyPreferences& preferences, const std::string& label) {
-  if (!std::isfinite(value)) return "the value to key is not a finite number";
+  return keyScalarProperties(doc, clip, joint, {{property, value}}, time, preferences, label);
+}
+
+std::string keyScalarProperties(Document& doc, int& clip, int joint,
+                                const std::vector<std::pair<std::string, float>>& values, float time,
+                                const KeyPreferences& preferences, const std::string& label) {
+  for (const auto& [property, value] : values)
+    if (!std::isfinite(value)) return "the value to key is not a finite number";
   if (!std::isfinite(time)) return "the key time is not a finite number";
   if (joint < -1 || joint >= doc.skeleton().size()) return "joint " + std::to_string(joint) + " does not exist";
   int keyed = clip;
@@ -165,18 +172,20 @@ std::string keyScalarProperty(Document& doc, int& clip, int joint, const std::st
       e.activeClip = keyed;
     }
     Clip& c = e.clips[keyed];
-    Channel* channel = nullptr;
-    for (Channel& ch : c.channels)
-      if (ch.target == ChannelTarget::Scalar && ch.joint == joint && ch.property == property) channel = &ch;
-    if (!channel) {
-      Channel ch;
-      ch.joint = joint;
-      ch.target = ChannelTarget::Scalar;
-      ch.property = property;
-      c.channels.push_back(std::move(ch));
-      channel = &c.channels.back();
+    for (const auto& [property, value] : values) {
+      Channel* channel = nullptr;
+      for (Channel& ch : c.channels)
+        if (ch.target == ChannelTarget::Scalar && ch.joint == joint && ch.property == property) channel = &ch;
+      if (!channel) {
+        Channel ch;
+        ch.joint = joint;
+        ch.target = ChannelTarget::Scalar;
+        ch.property = property;
+        c.channels.push_back(std::move(ch));
+        channel = &c.channels.back();
+      }
+      insertKey(*channel, time, glm::vec4(value, 0.0f, 0.0f, 0.0f), keySettingsFor(preferences, ChannelTarget::Scalar));
     }
-    insertKey(*channel, time, glm::vec4(value, 0.0f, 0.0f, 0.0f), keySettingsFor(preferences, ChannelTarget::Scalar));
     return std::string();
   });
   if (error.empty()) clip = keyed;

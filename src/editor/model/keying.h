@@ -1,5 +1,6 @@
 #pragma once
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "anim/clip.h"
@@ -48,5 +49,10 @@ std::string deleteKeys(Document& doc, int clip, float time, const std::vector<in
 // naming no clip yet creates "Action" (the active clip) and is set to it.
 std::string keyScalarProperty(Document& doc, int& clip, int joint, const std::string& property, float time, float value,
                               const KeyPreferences& preferences, const std::string& label);
+// Several Scalar properties of one joint keyed at `time` in one undo step (each pair: the
+// property and its value), as keyScalarProperty does for one.
+std::string keyScalarProperties(Document& doc, int& clip, int joint,
+                                const std::vector<std::pair<std::string, float>>& values, float time,
+                                const KeyPreferences& preferences, const std::string& label);
 
 }  // namespace kinema

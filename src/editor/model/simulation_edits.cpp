@@ -2,10 +2,12 @@
 #include "editor/model/simulation_edits.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "anim/sampling.h"
 #include "core/forward_kinematics.h"
 #include "editor/model/document.h"
+#include "editor/model/keying.h"
 #include "retarget/bone_map.h"
 #include "sim/baked_keys.h"
 
@@ -123,6 +125,51 @@ std::string setSpringChainEdit(Document& doc, int index, const SpringBoneChain& 
   });
 }
 
+SpringCollider defaultCollider(const Skeleton& s, int joint) {
+  SpringCollider c;
+  c.joint = joint;
+  const int child = joint >= 0 && joint < s.size() ? firstChild(s, joint) : -1;
+  const float length = child >= 0 ? glm::length(s.rest[child].translation) : 0.0f;
+  if (child >= 0 && length > 0.0f) {
+    c.b = s.rest[child].translation;
+    c.radius = 0.25f * length;
+  } else {
+    c.radius = 0.03f * restSize(s);
+  }
+  return c;
+}
+
+std::string addColliderEdit(Document& doc, const SpringCollider& collider) {
+  const Skeleton& s = doc.skeleton();
+  if (collider.joint < -1 || collider.joint >= s.size()) return "Add collision capsule: no such joint";
+  if (!(collider.radius > 0.0f) || !std::isfinite(collider.radius) || !isFinite(collider.a) || !isFinite(collider.b))
+    return "Add collision capsule: the radius must be positive and the ends finite";
+  const std::vector<SpringBoneChain>& chains = doc.scene().simulation.springChains;
+  if (chains.empty()) return "Add collision capsule: make a chain dynamic first (Simulate > Make Chain Dynamic)";
+  bool any = false;
+  for (const SpringBoneChain& c : chains)
+    any |= std::find(c.joints.begin(), c.joints.end(), collider.joint) == c.joints.end();
+  if (!any) return "Add collision capsule: the joint belongs to the only dynamic chain (a chain does not collide with itself)";
+  const std::string where = collider.joint >= 0 ? s.names[collider.joint] : std::string("the world");
+  return doc.edit("Add collision capsule on " + where, [&](DocumentEdit& e) {
+    for (SpringBoneChain& c : e.simulation.springChains)
+      if (std::find(c.joints.begin(), c.joints.end(), collider.joint) == c.joints.end()) c.colliders.push_back(collider);
+    return std::string();
+  });
+}
+
+std::string removeColliderEdit(Document& doc, int chain, int collider) {
+  const std::vector<SpringBoneChain>& chains = doc.scene().simulation.springChains;
+  if (chain < 0 || chain >= static_cast<int>(chains.size()) || collider < 0 ||
+      collider >= static_cast<int>(chains[chain].colliders.size()))
+    return "Remove collision capsule: no such capsule";
+  return doc.edit("Remove collision capsule", [&](DocumentEdit& e) {
+    std::vector<SpringCollider>& list = e.simulation.springChains[chain].colliders;
+    list.erase(list.begin() + collider);
+    return std::string();
+  });
+}
+
 std::string setRagdollEdit(Document& doc, int index, const RagdollSettings& ragdoll) {
   if (index < 0 || index >= static_cast<int>(doc.scene().simulation.ragdolls.size())) return "no such ragdoll";
   return doc.edit("Set ragdoll " + ragdoll.name, [&](DocumentEdit& e) {
@@ -178,7 +225,19 @@ std::string bakeSimulationEdit(Document& doc, int clip, long long first, long lo
 
 std::string ragdollFromFrameEdit(Document& doc, int clip, int root, long long frame, long long last, SimulationBake* result) {
   const Scene& scene = doc.scene();
-  if (clip < 0 || clip >= static_cast<int>(scene.clips.size())) return "Ragdoll: the document has no clip (key a pose first)";
+  // A character with no clip yet falls from the pose on screen: every joint keyed at the
+  // start frame into a new "Action" (as a first key makes one), in the same undo step.
+  const bool newClip = clip < 0 || clip >= static_cast<int>(scene.clips.size());
+  std::vector<Clip> withAction;
+  if (newClip) {
+    int created = -1;
+    std::vector<int> all(static_cast<size_t>(scene.skeleton.size()));
+    for (int j = 0; j < scene.skeleton.size(); ++j) all[static_cast<size_t>(j)] = j;
+    keyJoints(withAction, created, scene.skeleton, doc.pose(), all,
+              static_cast<float>(newActionClip().frameToTime(std::max(0LL, frame))), KeyPreferences{});
+    clip = static_cast<int>(scene.clips.size());
+  }
+  const Clip& source = newClip ? withAction.front() : scene.clips[clip];
   const Skeleton& s = scene.skeleton;
   if (root < 0 || root >= s.size() || firstChild(s, root) < 0) return "Ragdoll: the chosen joint has no bones below it";
   SimulationSettings settings = scene.simulation;
@@ -190,10 +249,15 @@ std::string ragdollFromFrameEdit(Document& doc, int clip, int root, long long fr
   settings.ragdolls.push_back(defaultRagdoll(s, root, frame));
   SimulationSettings only;
   only.ragdolls = {settings.ragdolls.back()};
-  Result<SimulationBake> baked = bake(doc, scene.clips[clip], only, frame, last);
+  Result<SimulationBake> baked = bake(doc, source, only, frame, last);
   if (!baked) return "Ragdoll: " + baked.error();
   const std::string error = doc.edit("Ragdoll from frame " + std::to_string(frame), [&](DocumentEdit& e) {
-    e.clips[clip] = baked->clip;
+    if (newClip) {
+      e.clips.push_back(baked->clip);
+      e.activeClip = clip;  // the new "Action" plays
+    } else {
+      e.clips[clip] = baked->clip;
+    }
     e.simulation = settings;
     return std::string();
   });

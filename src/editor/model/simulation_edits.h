@@ -33,6 +33,15 @@ std::string removeSpringChainEdit(Document& doc, int index);
 std::string setSpringChainEdit(Document& doc, int index, const SpringBoneChain& chain);
 std::string setRagdollEdit(Document& doc, int index, const RagdollSettings& ragdoll);
 std::string removeRagdollEdit(Document& doc, int index);
+// A collision capsule on `joint` (joint space): along its bone, from the joint to its first
+// child, radius a quarter of that bone's length; a leaf gets a sphere of 3 % of the
+// character's rest size at the joint.
+SpringCollider defaultCollider(const Skeleton& skeleton, int joint);
+// "Add collision capsule": `collider` joins every dynamic chain that does not hold its joint
+// (a chain does not collide with itself): one undo step; an error when no chain can take it.
+std::string addColliderEdit(Document& doc, const SpringCollider& collider);
+// Removes capsule `collider` of chain `chain`: one undo step.
+std::string removeColliderEdit(Document& doc, int chain, int collider);
 // The chain holding `joint`, or -1.
 int springChainOf(const Document& doc, int joint);
 
@@ -40,7 +49,9 @@ int springChainOf(const Document& doc, int joint);
 // thins the baked keys: one undo step "Bake simulation". `result` gets the parts.
 std::string bakeSimulationEdit(Document& doc, int clip, long long first, long long last, SimulationBake* result = nullptr);
 // "Ragdoll from current frame": the subtree of `root` becomes a ragdoll at `frame` (replacing
-// a ragdoll it overlaps) and falls until `last`, baked into the clip: one undo step.
+// a ragdoll it overlaps) and falls until `last`, baked into the clip: one undo step. Without
+// a clip (`clip` names none) the pose on screen is keyed at `frame` into a new "Action",
+// which the fall is baked into and which becomes the active clip.
 std::string ragdollFromFrameEdit(Document& doc, int clip, int root, long long frame, long long last,
                                  SimulationBake* result = nullptr);
 

@@ -38,6 +38,7 @@ void poseAtPlayhead(EditorState& s) {
   // Dynamic chains swing behind the clip, simulated frame by frame from the range's start.
   applyLiveSprings(s.liveSprings, s.doc, s.clip, rangeStartFrame(s), currentFrame(s), pose);
   s.doc.setAnimatedPose(pose);
+  s.animatedPoseRevision = s.doc.poseRevision();
 }
 
 // The edited clip's frame grid (Clip::secondsPerFrame); without a clip, the grid of the

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <string>
 
+#include "editor/commands/command_registry.h"
 #include "editor/model/deformer_edits.h"
 #include "editor/model/shape_keys.h"
 #include "editor/model/timeline.h"
@@ -38,6 +39,12 @@ void parameterRow(EditorState& state, int instance, int index, const Deformer& d
     }
   }
   recordItem(item);
+  if (ImGui::IsItemHovered()) {  // I keys it (anim.key_hovered_property)
+    state.hoveredProperty.kind = HoveredProperty::Kind::DeformerParameter;
+    state.hoveredProperty.instance = instance;
+    state.hoveredProperty.deformer = index;
+    state.hoveredProperty.parameter = parameter;
+  }
   ImGui::SameLine();
   if (ImGui::SmallButton(("Key" + id).c_str())) {
     showEditorError(state, keyDeformerValue(doc, state.clip, instance, index, parameter, static_cast<float>(state.time),
@@ -63,7 +70,13 @@ void drawDeformersSection(CommandContext& ctx) {
     ImGui::TextDisabled("Add to mesh %d:", i);
     for (int k = 0; k < 5; ++k) {
       ImGui::SameLine();
-      if (ImGui::SmallButton(labels[k])) showEditorError(state, addDeformer(doc, i, kinds[k]));
+      if (ImGui::SmallButton(labels[k])) {
+        showEditorError(state, addDeformer(doc, i, kinds[k]));
+        if (kinds[k] == DeformerType::Lattice && !state.lattice.active) {  // the new lattice is the active one (Tab edits it)
+          state.lattice.instance = i;
+          state.lattice.deformer = static_cast<int>(doc.scene().deformers[i].deformers.size()) - 1;
+        }
+      }
       recordItem(std::string("Properties/Deformers/Add ") + labels[k]);
     }
     const DeformerStack* stack = doc.scene().deformerStack(static_cast<size_t>(i));
@@ -94,6 +107,18 @@ void drawDeformersSection(CommandContext& ctx) {
           break;
         case DeformerType::Lattice: {
           ImGui::TextDisabled("%d x %d x %d points", d.lattice.counts[0], d.lattice.counts[1], d.lattice.counts[2]);
+          // Edit / Done: lattice edit mode on this lattice (the command Tab runs).
+          const bool editing = state.lattice.active && state.lattice.instance == i && state.lattice.deformer == k;
+          ImGui::SameLine();
+          if (ImGui::SmallButton(editing ? "Done" : "Edit")) {
+            if (state.lattice.active) exitLatticeEdit(state);
+            if (!editing) {
+              state.lattice.instance = i;
+              state.lattice.deformer = k;
+            }
+            if (!editing) showEditorError(state, runCommand(editorCommands(), "lattice.edit", ctx));
+          }
+          recordItem("Properties/Deformers/" + d.name + "/Edit");
           int& point = state.panels.latticePoint;
           point = std::clamp(point, 0, d.lattice.pointCount() - 1);
           ImGui::SliderInt("point", &point, 0, d.lattice.pointCount() - 1);

@@ -48,6 +48,11 @@ void drawMeshSection(CommandContext& ctx) {
       if (ImGui::SliderFloat(label.c_str(), &w, 0.0f, 1.0f, "%.3f"))
         showEditorError(state, moveShapeSlider(state, i, t, w));
       recordItem("Properties/Shapes/" + name);
+      if (ImGui::IsItemHovered()) {  // I keys it (anim.key_hovered_property)
+        state.hoveredProperty.kind = HoveredProperty::Kind::ShapeWeight;
+        state.hoveredProperty.instance = i;
+        state.hoveredProperty.target = t;
+      }
     }
   if (anyShapes) commandButton(ctx, "anim.insert_shape_keys", "Properties");
 }

@@ -187,6 +187,7 @@ void drawSessionDialogs(CommandContext& ctx) {
 void drawEditorPanels(CommandContext& ctx, float fps) {
   EditorState& state = ctx.state;
   tickEditorSession(state, ImGui::GetTime());
+  if (state.compare.active) state.hoveredProperty = HoveredProperty{};
   if (state.compare.active) {  // Teach > Compare Solvers covers the side panels and the 3D view
     drawMainMenuBar(ctx);
     drawComparePanel(ctx);
@@ -199,6 +200,7 @@ void drawEditorPanels(CommandContext& ctx, float fps) {
   }
   drawMainMenuBar(ctx);
   relayoutPanels(state);
+  state.hoveredProperty = HoveredProperty{};  // the Properties panel sets it again while a field is hovered
   drawOutlinerPanel(ctx);
   drawHistoryPanel(state);
   drawPropertiesPanel(ctx);
@@ -215,6 +217,7 @@ void drawEditorPanels(CommandContext& ctx, float fps) {
   drawCleanUpWindow(ctx);
   drawSimulationWindow(ctx);
   drawCrowdWindow(ctx);
+  drawParticlesWindow(ctx);
   drawStiffSpringsWindow(ctx);
   drawSessionDialogs(ctx);
   closePopupsOnEscape(state);

@@ -59,9 +59,31 @@ void chainSection(EditorState& state, int index) {
   ImGui::InputFloat3("gravity (units/s^2)", &chain.gravity.x, "%.4g");
   recordItem(std::string(kWindow) + "/" + id + "/Gravity");
   changed |= ImGui::IsItemDeactivatedAfterEdit() && isFinite(chain.gravity);
-  ImGui::TextDisabled("%d collision capsule%s (saved in the .kinema file)", static_cast<int>(chain.colliders.size()),
-                      chain.colliders.size() == 1 ? "" : "s");
+  ImGui::TextDisabled("%d collision capsule%s (Simulate > Add Collision Capsule on the active joint)",
+                      static_cast<int>(chain.colliders.size()), chain.colliders.size() == 1 ? "" : "s");
+  int removeCollider = -1;
+  for (int k = 0; k < static_cast<int>(chain.colliders.size()); ++k) {
+    SpringCollider& c = chain.colliders[k];
+    const std::string cid = id + "/Capsule " + std::to_string(k);
+    ImGui::PushID(k);
+    ImGui::Text("Capsule %d on %s (ends in its space)", k, c.joint >= 0 ? s.names[c.joint].c_str() : "the world");
+    ImGui::SetNextItemWidth(scaled(state, 200.0f));
+    ImGui::InputFloat3("end a", &c.a.x, "%.4g");
+    recordItem(std::string(kWindow) + "/" + cid + "/A");
+    changed |= ImGui::IsItemDeactivatedAfterEdit() && isFinite(c.a);
+    ImGui::SetNextItemWidth(scaled(state, 200.0f));
+    ImGui::InputFloat3("end b", &c.b.x, "%.4g");
+    recordItem(std::string(kWindow) + "/" + cid + "/B");
+    changed |= ImGui::IsItemDeactivatedAfterEdit() && isFinite(c.b);
+    changed |= floatField(state, cid + "/Radius", "capsule radius", c.radius, 1e-6f);
+    ImGui::SameLine();
+    if (ImGui::Button("Remove")) removeCollider = k;
+    recordItem(std::string(kWindow) + "/" + cid + "/Remove");
+    ImGui::PopID();
+  }
   if (changed) reportDopeSheetEdit(state, setSpringChainEdit(state.doc, index, chain), "Set dynamic chain " + chain.name);
+  else if (removeCollider >= 0)
+    reportDopeSheetEdit(state, removeColliderEdit(state.doc, index, removeCollider), "Removed the collision capsule");
   if (ImGui::Button("Remove chain")) reportDopeSheetEdit(state, removeSpringChainEdit(state.doc, index), "Removed the dynamic chain");
   recordItem(std::string(kWindow) + "/" + id + "/Remove");
   ImGui::PopID();
@@ -110,6 +132,7 @@ void drawSimulationWindow(CommandContext& ctx) {
   commandButton(ctx, "sim.ragdoll_from_frame", kWindow, "Ragdoll from current frame");
   ImGui::SameLine();
   commandButton(ctx, "sim.bake", kWindow, "Bake");
+  commandButton(ctx, "sim.add_collider", kWindow, "Add collision capsule on the active joint");
   ImGui::Separator();
   const SimulationSettings& sim = state.doc.scene().simulation;
   if (sim.empty()) ImGui::TextWrapped("Nothing is dynamic yet: select a chain's first joint (a tail) and make it dynamic.");
@@ -150,31 +173,86 @@ void drawStiffSpringsWindow(CommandContext& ctx) {
   const double explicitLimit = chainStabilityLimit(chain, Integrator::ExplicitEuler);
   const double h = state.stiffSpringsStep * explicitLimit;
   ImGui::Text("dt = %.3g ms (explicit Euler's limit %.3g ms)", h * 1e3, explicitLimit * 1e3);
-  ImGui::TextDisabled("energy / starting energy over 5 s (log10, clipped at 10^3)");
-  for (Integrator scheme : {Integrator::ExplicitEuler, Integrator::SymplecticEuler, Integrator::Verlet, Integrator::ImplicitEuler}) {
+  // One chart, the four schemes on the same axes (as docs/teaching.md's figure): energy over
+  // the starting energy, log scale from 10^-6 to 10^3 (a run stops once it passes 10^3).
+  struct Run {
+    Integrator scheme;
+    ImU32 color;
+    std::vector<ImVec2> points;  // (seconds, log10 ratio)
+    bool blew = false;
+  };
+  std::vector<Run> runs = {{Integrator::ExplicitEuler, IM_COL32(235, 80, 70, 255), {}, false},
+                           {Integrator::SymplecticEuler, IM_COL32(90, 170, 250, 255), {}, false},
+                           {Integrator::Verlet, IM_COL32(120, 215, 110, 255), {}, false},
+                           {Integrator::ImplicitEuler, IM_COL32(245, 200, 80, 255), {}, false}};
+  constexpr double kSeconds = 5.0;
+  constexpr float kLogMin = -6.0f, kLogMax = 3.0f;
+  for (Run& run : runs) {
     ChainState st;
     st.x.assign(chain.masses, 0.0);
     st.v.assign(chain.masses, 0.0);
     st.x.back() = 0.01;
     const double e0 = chainEnergy(chain, st);
-    const int steps = std::min(20000, static_cast<int>(std::ceil(5.0 / h)));
+    const int steps = std::min(20000, static_cast<int>(std::ceil(kSeconds / h)));
     const int every = std::max(1, steps / 400);
-    std::vector<float> curve;
-    bool blew = false;
-    for (int i = 0; i < steps && !blew; ++i) {
-      stepChain(chain, scheme, h, st);
+    run.points.push_back(ImVec2(0.0f, 0.0f));
+    for (int i = 0; i < steps && !run.blew; ++i) {
+      stepChain(chain, run.scheme, h, st);
       const double r = chainEnergy(chain, st) / e0;
-      blew = !(r < 1e3);
-      if (i % every == 0 || blew) curve.push_back(static_cast<float>(std::log10(std::max(std::min(r, 1e3), 1e-6))));
+      run.blew = !(r < 1e3);
+      if (i % every == 0 || run.blew)
+        run.points.push_back(ImVec2(static_cast<float>((i + 1) * h),
+                                    static_cast<float>(std::log10(std::max(std::min(r, 1e3), 1e-6)))));
     }
-    const double limit = chainStabilityLimit(chain, scheme);
+  }
+  ImGui::Text("Energy / starting energy over %.0f s (log scale)", kSeconds);
+  const float labelWidth = ImGui::CalcTextSize("1e-6").x + scaled(state, 6.0f);
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  const ImVec2 size(std::max(ImGui::GetContentRegionAvail().x, scaled(state, 200.0f)), scaled(state, 220.0f));
+  ImGui::InvisibleButton("##energy", size);
+  recordItem(std::string(kTeachWindow) + "/Energy");
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const ImVec2 lo(origin.x + labelWidth, origin.y + 4.0f), hi(origin.x + size.x - 4.0f, origin.y + size.y - ImGui::GetTextLineHeight() - 6.0f);
+  auto toScreen = [&](const ImVec2& p) {
+    const float fx = p.x / static_cast<float>(kSeconds), fy = (p.y - kLogMin) / (kLogMax - kLogMin);
+    return ImVec2(lo.x + fx * (hi.x - lo.x), hi.y - fy * (hi.y - lo.y));
+  };
+  draw->AddRectFilled(lo, hi, IM_COL32(30, 36, 48, 255));
+  const ImU32 grid = IM_COL32(80, 88, 104, 255), text = ImGui::GetColorU32(ImGuiCol_TextDisabled);
+  for (int e = static_cast<int>(kLogMin); e <= static_cast<int>(kLogMax); e += 3) {
+    const ImVec2 a = toScreen(ImVec2(0.0f, static_cast<float>(e))), b = toScreen(ImVec2(static_cast<float>(kSeconds), static_cast<float>(e)));
+    draw->AddLine(a, b, e == 0 ? IM_COL32(150, 150, 150, 255) : grid);
+    char tick[16];
+    std::snprintf(tick, sizeof tick, e == 0 ? "1" : "1e%d", e);
+    draw->AddText(ImVec2(origin.x, a.y - ImGui::GetTextLineHeight() * 0.5f), text, tick);
+  }
+  for (int t = 0; t <= static_cast<int>(kSeconds); ++t) {
+    const ImVec2 a = toScreen(ImVec2(static_cast<float>(t), kLogMin));
+    draw->AddLine(a, toScreen(ImVec2(static_cast<float>(t), kLogMax)), grid);
+    char tick[16];
+    std::snprintf(tick, sizeof tick, "%d s", t);
+    draw->AddText(ImVec2(a.x - ImGui::CalcTextSize(tick).x * 0.5f, hi.y + 3.0f), text, tick);
+  }
+  for (const Run& run : runs) {
+    std::vector<ImVec2> pts;
+    pts.reserve(run.points.size());
+    for (const ImVec2& p : run.points) pts.push_back(toScreen(p));
+    draw->AddPolyline(pts.data(), static_cast<int>(pts.size()), run.color, ImDrawFlags_None, 2.0f);
+    if (run.blew) draw->AddCircleFilled(pts.back(), 4.0f, run.color);
+  }
+  // The legend: each scheme's colour, its stability limit and whether it blew up.
+  for (const Run& run : runs) {
+    const double limit = chainStabilityLimit(chain, run.scheme);
     char label[160];
-    if (std::isinf(limit)) std::snprintf(label, sizeof label, "%s (stable at every step)%s", toString(scheme), blew ? ": BLEW UP" : "");
-    else std::snprintf(label, sizeof label, "%s (limit %.3g ms)%s", toString(scheme), limit * 1e3, blew ? ": BLEW UP" : "");
+    if (std::isinf(limit)) std::snprintf(label, sizeof label, "%s: stable at every step%s", toString(run.scheme), run.blew ? ", BLEW UP" : "");
+    else std::snprintf(label, sizeof label, "%s: limit %.3g ms%s", toString(run.scheme), limit * 1e3, run.blew ? ", BLEW UP" : "");
+    const ImVec2 p = ImGui::GetCursorScreenPos();
+    const float line = ImGui::GetTextLineHeight();
+    ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(p.x, p.y + line * 0.35f), ImVec2(p.x + line * 1.2f, p.y + line * 0.65f), run.color);
+    ImGui::Dummy(ImVec2(line * 1.4f, line));
+    ImGui::SameLine();
     ImGui::TextUnformatted(label);
-    ImGui::PlotLines((std::string("##") + toString(scheme)).c_str(), curve.data(), static_cast<int>(curve.size()), 0, nullptr,
-                     -6.0f, 3.0f, ImVec2(ImGui::GetContentRegionAvail().x, scaled(state, 60.0f)));
-    recordItem(std::string(kTeachWindow) + "/" + toString(scheme));
+    recordItem(std::string(kTeachWindow) + "/" + toString(run.scheme));
   }
   ImGui::End();
 }

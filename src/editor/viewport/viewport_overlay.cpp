@@ -1,6 +1,10 @@
 #include "editor/viewport/viewport_overlay.h"
 
+#include <algorithm>
+
 #include "editor/model/active_ik_target.h"
+#include "editor/viewport/capsule_shape.h"
+#include "editor/viewport/lattice_cage.h"
 #include "editor/viewport/limit_shapes.h"
 #include "editor/viewport/overlay_builder.h"
 
@@ -50,6 +54,23 @@ void buildViewportOverlay(const EditorState& state, const ViewportView& view, co
       if (job.run(shape)) addLimitShape(out, shape);
     }
   }
+  // Spring-bone collision capsules (issue 23), on top (most sit inside the body): where the
+  // dynamic chains' tails cannot go. A capsule added to several chains is drawn once.
+  std::vector<SpringCollider> drawn;
+  for (const SpringBoneChain& chain : doc.scene().simulation.springChains)
+    for (const SpringCollider& c : chain.colliders) {
+      if (std::find(drawn.begin(), drawn.end(), c) != drawn.end()) continue;
+      drawn.push_back(c);
+      const bool onJoint = c.joint >= 0 && c.joint < static_cast<int>(state.world().size());
+      const glm::mat4 m = onJoint ? state.world()[c.joint] : glm::mat4(1.0f);
+      const float scale = glm::length(glm::vec3(m[0]));
+      const CapsuleWire wire = capsuleWire(glm::vec3(m * glm::vec4(c.a, 1.0f)), glm::vec3(m * glm::vec4(c.b, 1.0f)), c.radius * scale);
+      for (const std::vector<glm::vec3>& line : wire.polylines)
+        out.addPolyline(line, false, glm::vec4(1.0f, 0.55f, 0.15f, 0.8f), 1.5f, OverlayDrawList::Layer::OnTop);
+    }
+  if (state.lattice.active)
+    if (const Deformer* lattice = editedLattice(state))
+      addLatticeCage(out, latticeWorldPoints(state), latticeEdges(lattice->lattice), state.lattice);
   // Screen shapes are drawn in the viewport's own pixels; the tools work in window pixels.
   if (mode == ModalTool::BoxSelect)
     addBoxSelectRectangle(out, state.tool.startMouse - view.origin, state.tool.mouse - view.origin);

@@ -8,7 +8,8 @@ namespace kinema {
 
 // What the viewport draws over the skeleton this frame (editor-viewport's overlay builder):
 // the rotate gizmo on the active joint, IK target handles, the selected joints' limit
-// shapes, the box being dragged and the R-mode line from the pivot to the mouse.
+// shapes, the box being dragged, the R-mode line from the pivot to the mouse, and in lattice
+// edit mode the lattice's cage.
 void buildViewportOverlay(const EditorState& state, const ViewportView& view, const ViewportTools& tools,
                           OverlayDrawList& out);
 

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "editor/viewport/box_select.h"
+#include "editor/viewport/lattice_cage.h"
 #include "editor/model/edit_labels.h"
 #include "editor/model/ik_posing.h"
 #include "editor/viewport/mesh_picking.h"
@@ -21,6 +22,7 @@ namespace {
 
 constexpr float kBoxThresholdPixels = 4.0f;
 constexpr float kHandlePickPixels = 9.0f;
+constexpr float kLatticePickPixels = 10.0f;
 
 bool hasSelectedAncestor(const Document& doc, int joint) {
   for (int j = doc.skeleton().parents[joint]; j >= 0; j = doc.skeleton().parents[j])
@@ -56,7 +58,7 @@ glm::vec3 ViewportTools::jointPosition(const EditorState& state, int joint) cons
 
 bool ViewportTools::gizmo(const EditorState& state, const ViewportView& view, RotateGizmo& out) const {
   const int j = state.doc.selection.active();
-  if (!state.view.showGizmo || j < 0 || j >= static_cast<int>(state.world().size())) return false;
+  if (!state.view.showGizmo || state.lattice.active || j < 0 || j >= static_cast<int>(state.world().size())) return false;
   out = RotateGizmo{};
   out.pivot = jointPosition(state, j);
   out.ringRadiusPixels =
@@ -81,12 +83,18 @@ bool ViewportTools::beginModal(EditorState& state, ModalTool tool, const char* l
 }
 
 void ViewportTools::confirm(EditorState& state) {
+  if (state.tool.mode == ModalTool::LatticeGrab) {
+    state.tool = ToolState{};
+    state.statusMessage = confirmLatticeMove(state);
+    return;
+  }
   if (state.doc.dragging()) state.doc.commitDrag();
   state.tool = ToolState{};
   state.statusMessage.clear();
 }
 
 void ViewportTools::cancel(EditorState& state) {
+  if (state.tool.mode == ModalTool::LatticeGrab) cancelLatticeMove(state);
   if (state.doc.dragging()) state.doc.cancelDrag();
   state.tool = ToolState{};
   state.statusMessage.clear();
@@ -188,7 +196,57 @@ void ViewportTools::applyMove(EditorState& state, const ViewportView& view) {
   }
 }
 
+void ViewportTools::applyLatticeMove(EditorState& state, const ViewportView& view) {
+  glm::vec3 p;
+  if (state.tool.axis == AxisConstraint::None) {
+    p = dragInViewPlane(view, state.tool.startPoint, state.tool.startMouse, mouse_);
+  } else {
+    glm::vec3 axis(0.0f);
+    axis[static_cast<int>(state.tool.axis) - 1] = 1.0f;
+    p = dragAlongAxis(view, state.tool.startPoint, axis, state.tool.startMouse, mouse_);
+  }
+  setLatticeMoveOffset(state, p - state.tool.startPoint);
+  const glm::vec3 d = state.lattice.offset;
+  char line[128];
+  std::snprintf(line, sizeof line, "Move lattice points D: %.3f %.3f %.3f m%s", d.x, d.y, d.z,
+                state.tool.axis == AxisConstraint::X   ? " along X"
+                : state.tool.axis == AxisConstraint::Y ? " along Y"
+                : state.tool.axis == AxisConstraint::Z ? " along Z"
+                                                       : "");
+  state.statusMessage = line;
+}
+
+void ViewportTools::latticePress(EditorState& state, const ViewportView& view) {
+  const int point = pickLatticePoint(latticeWorldPoints(state), view, mouse_,
+                                     kLatticePickPixels * std::max(state.preferences.lineScale, 1.0f));
+  if (point >= 0) {
+    clickLatticePoint(state.lattice, point, mods_ & kModShift);
+    return;
+  }
+  pressedOnEmpty_ = true;
+  state.tool.startMouse = mouse_;
+}
+
+bool ViewportTools::startLatticeGrab(EditorState& state) {
+  if (state.tool.mode != ModalTool::None) return false;
+  if (const std::string error = beginLatticeMove(state); !error.empty()) {
+    state.statusMessage = error;
+    return false;
+  }
+  // The grab point: the selected points' centre, where the mouse's motion is measured.
+  const std::vector<glm::vec3> points = latticeWorldPoints(state);
+  glm::vec3 centre(0.0f);
+  for (int p : state.lattice.selected) centre += points[p];
+  centre /= static_cast<float>(state.lattice.selected.size());
+  state.tool = ToolState{};
+  state.tool.mode = ModalTool::LatticeGrab;
+  state.tool.startMouse = state.tool.mouse = mouse_;
+  state.tool.startPoint = centre;
+  return true;
+}
+
 void ViewportTools::leftPress(EditorState& state, const ViewportView& view, const SkeletonDrawList& list) {
+  if (state.lattice.active) return latticePress(state, view);
   Document& doc = state.doc;
   const bool shift = mods_ & kModShift;
   // IK target handles first (small, explicit), then the gizmo's rings, then joints and
@@ -267,6 +325,7 @@ void ViewportTools::mouseMove(EditorState& state, const ViewportView& view, cons
     case ModalTool::GizmoDrag: applyGizmo(state, view); return;
     case ModalTool::Grab:
     case ModalTool::IkDrag: applyMove(state, view); return;
+    case ModalTool::LatticeGrab: applyLatticeMove(state, view); return;
     default: break;
   }
   if (pressedOnEmpty_ && glm::length(mouse_ - state.tool.startMouse) > kBoxThresholdPixels) {
@@ -277,7 +336,13 @@ void ViewportTools::mouseMove(EditorState& state, const ViewportView& view, cons
     state.tool.mouse = mouse_;
     pressedOnEmpty_ = false;
   }
-  if (state.tool.mode == ModalTool::None) {
+  if (state.tool.mode == ModalTool::None && state.lattice.active) {
+    state.hoveredIkTarget = -1;
+    state.hoveredJoint = -1;
+    hoveredPart_ = GizmoPart::None;
+    state.lattice.hovered = pickLatticePoint(latticeWorldPoints(state), view, mouse_,
+                                             kLatticePickPixels * std::max(state.preferences.lineScale, 1.0f));
+  } else if (state.tool.mode == ModalTool::None) {
     state.hoveredIkTarget = ikHandleUnder(state, view, mouse_);
     hoveredPart_ = gizmo(state, view, gizmo_) ? hitTestRotateGizmo(gizmo_, view, mouse_) : GizmoPart::None;
     state.hoveredJoint = pickAt(state, view, list).joint;
@@ -329,7 +394,7 @@ bool ViewportTools::startGrab(EditorState& state) {
 // The keys a running tool takes (every other key is a command: commands/editor_input.h).
 void ViewportTools::modalKey(EditorState& state, const ViewportView& view, int key) {
   const ModalTool mode = state.tool.mode;
-  if (mode == ModalTool::Rotate || mode == ModalTool::Grab || mode == ModalTool::IkDrag) {
+  if (mode == ModalTool::Rotate || mode == ModalTool::Grab || mode == ModalTool::IkDrag || mode == ModalTool::LatticeGrab) {
     if (key == keys::ESCAPE) return cancel(state);
     if (key == keys::ENTER || key == keys::KP_ENTER) return confirm(state);
     if (key == keys::X || key == keys::Y || key == keys::Z) {
@@ -348,6 +413,7 @@ void ViewportTools::modalKey(EditorState& state, const ViewportView& view, int k
       else if (key == keys::BACKSPACE && !t.empty()) t.pop_back();
     }
     if (mode == ModalTool::Rotate) applyRotate(state, view);
+    else if (mode == ModalTool::LatticeGrab) applyLatticeMove(state, view);
     else applyMove(state, view);
     return;
   }
@@ -368,7 +434,7 @@ void ViewportTools::handle(EditorState& state, const InputEvent& e, const Viewpo
     }
     case InputEventType::ButtonDown: {
       const ModalTool mode = state.tool.mode;
-      if (mode == ModalTool::Rotate || mode == ModalTool::Grab) {
+      if (mode == ModalTool::Rotate || mode == ModalTool::Grab || mode == ModalTool::LatticeGrab) {
         if (e.button == 0) confirm(state);
         else if (e.button == 1) cancel(state);
         break;
@@ -394,12 +460,21 @@ void ViewportTools::handle(EditorState& state, const InputEvent& e, const Viewpo
       if (e.button != 0) break;
       if (state.tool.mode == ModalTool::GizmoDrag || state.tool.mode == ModalTool::IkDrag) {
         confirm(state);
+      } else if (state.tool.mode == ModalTool::BoxSelect && state.lattice.active) {
+        const std::vector<int> inside =
+            boxSelectLatticePointsOnScreen(latticeWorldPoints(state), view, state.tool.startMouse, mouse_);
+        state.tool = ToolState{};
+        boxSelectLatticePoints(state.lattice, inside, (mods_ & kModShift)  ? BoxSelectMode::Extend
+                                                      : (mods_ & kModCtrl) ? BoxSelectMode::Subtract
+                                                                           : BoxSelectMode::Replace);
       } else if (state.tool.mode == ModalTool::BoxSelect) {
         const std::vector<int> inside = boxSelectJoints(state.world(), view, state.tool.startMouse, mouse_);
         state.tool = ToolState{};
         state.doc.selection.box(inside, (mods_ & kModShift)  ? BoxSelectMode::Extend
                                         : (mods_ & kModCtrl) ? BoxSelectMode::Subtract
                                                              : BoxSelectMode::Replace);
+      } else if (pressedOnEmpty_ && !(mods_ & kModShift) && state.lattice.active) {
+        selectNoLatticePoints(state.lattice);  // a click on nothing deselects the points
       } else if (pressedOnEmpty_ && !(mods_ & kModShift)) {
         state.doc.selection.clear();  // a click on nothing deselects, as in Blender
       }

@@ -31,6 +31,9 @@ class ViewportTools {
   bool startRotate(EditorState& state, const ViewportView& view);
   // G: moves the root joint with the mouse. False as startRotate.
   bool startGrab(EditorState& state);
+  // G in lattice edit mode: moves the selected lattice points with the mouse
+  // (model/lattice_editing.h; confirmed as one undo step). False as startRotate.
+  bool startLatticeGrab(EditorState& state);
   // The rotate gizmo on the active joint, as drawn and hit-tested (valid = false: none).
   bool gizmo(const EditorState& state, const ViewportView& view, RotateGizmo& out) const;
   GizmoPart hoveredGizmoPart() const { return hoveredPart_; }
@@ -47,6 +50,8 @@ class ViewportTools {
   SkeletonPick pickAt(const EditorState& state, const ViewportView& view, const SkeletonDrawList& list) const;
   void applyGizmo(EditorState& state, const ViewportView& view);
   void applyMove(EditorState& state, const ViewportView& view);  // Grab and IK drags
+  void applyLatticeMove(EditorState& state, const ViewportView& view);
+  void latticePress(EditorState& state, const ViewportView& view);
   glm::vec3 jointPosition(const EditorState& state, int joint) const;
 
   glm::vec2 mouse_{0.0f};

@@ -24,6 +24,7 @@
 #include "editor/panels/panel_layout.h"
 #include "editor/window/state_dump.h"
 #include "editor/window/ui_style.h"
+#include "editor/viewport/particle_display.h"
 #include "editor/viewport/viewport_overlay.h"
 #include "editor/viewport/crowd_display.h"
 #include "editor/viewport/animation_display.h"
@@ -390,6 +391,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       if (!o.emptyFrame) drawEditorPanels(commands, io.Framerate);
       ImGui::Render();
       evaluateEditorPose(state);  // the panels may have edited the document
+      keepLatticeEditValid(state);  // an undo or a panel may have removed the edited lattice
       mark("ImGui: build the panels");
 
       const bool scriptDone = o.replay && o.frameCount <= 0 && nextScripted >= o.script.size() && live.queue.empty() &&
@@ -425,9 +427,18 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         // Meshes with an active deformer stack: morphs, skin and deformers on the CPU (the
         // reference path), drawn as they come out.
         std::vector<DeformedPrimitive> cpuDeformed;
+        std::vector<DeformerStack> gpuStacks;  // per instance: what the vertex shader deforms
         if (!meshes.empty() && !state.doc.scene().deformers.empty()) {
-          const std::vector<DeformerStack> stacks =
+          std::vector<DeformerStack> stacks =
               sampleDeformerStacks(state.doc.scene(), state.hasMotion() ? state.clip : -1, state.time);
+          previewLatticeMove(state, state.world(), stacks);  // a running G on lattice points
+          // With the shader deforming (a hardware GPU), bend / twist / taper stacks run in
+          // the vertex shader; the rest, and everything on llvmpipe, on the CPU.
+          if (!meshes.cpuDeformation() && !state.view.showWeights) {
+            gpuStacks.assign(stacks.size(), DeformerStack());
+            for (size_t i = 0; i < stacks.size(); ++i)
+              if (axisStackOnGpu(stacks[i])) std::swap(gpuStacks[i], stacks[i]);
+          }
           if (anyDeformerActive(stacks)) {
             SceneDeformationJob deformJob;
             deformJob.scene = &state.doc.scene();
@@ -440,6 +451,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
           }
         }
         meshDraw.frame.deformed = &cpuDeformed;
+        meshDraw.frame.gpuDeformers = gpuStacks.empty() ? nullptr : &gpuStacks;
         meshDraw.frame.weightJoint = state.view.showWeights ? state.doc.selection.active() : -1;
         colorSelection(state, list);
         buildCrowdDisplay(state, skinJoints, !meshes.empty(), crowdDisplay);
@@ -458,6 +470,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         buildViewportOverlay(state, ViewportView::of(state.camera, glm::vec2(vw, vh), glm::vec2(vp.x * sx, vp.y * sy)),
                              tools, overlay);
         buildAnimationDisplay(state, skinJoints, animationDisplay, overlay);  // onion skin, motion path
+        buildParticleDisplay(state, static_cast<float>(vh), overlay);         // live particles (issue 24)
         // Body ghosts go to the mesh renderer; bones stand in where the meshes failed to upload.
         std::vector<MeshGhost> meshGhosts;
         if (animationDisplay.ghostBodies && meshes.empty())

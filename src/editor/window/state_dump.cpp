@@ -118,6 +118,7 @@ json curveEditorJson(const EditorState& s) {
                           {"unit", displayUnitName(ch, ce.rotationView)},
                           {"visible", !ce.isHidden({c, i})},
                           {"value_now", curveValueAt(ch, i, ce.rotationView, ce.eulerOrder, p, float(s.time))},
+                          {"modifiers", ch.modifiers.size()},
                           {"keys", keys}});
       }
     }
@@ -220,7 +221,11 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
     for (const SpringBoneChain& c : doc.scene().simulation.springChains) {
       json joints = json::array();
       for (int j : c.joints) joints.push_back(jointName(s, j));
-      chains.push_back({{"name", c.name}, {"joints", joints}, {"stiffness", c.stiffness}, {"damping", c.damping}});
+      json colliders = json::array();
+      for (const SpringCollider& k : c.colliders)
+        colliders.push_back({{"joint", jointName(s, k.joint)}, {"a", vec(k.a)}, {"b", vec(k.b)}, {"radius", k.radius}});
+      chains.push_back({{"name", c.name}, {"joints", joints}, {"stiffness", c.stiffness}, {"damping", c.damping},
+                        {"colliders", colliders}});
     }
     for (const RagdollSettings& r : doc.scene().simulation.ragdolls)
       ragdolls.push_back({{"name", r.name}, {"root", jointName(s, r.root)}, {"start_frame", r.startFrame}});
@@ -251,7 +256,43 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
                      {"members_drawn", p.world.size()}, {"debug_vectors", p.vectors.size()}, {"debug_impulses", impulses},
                      {"error", p.error}};
   }
+  {  // Particle systems (issue 24): names, emitters, the live counts at the frame last shown
+    json systems = json::array();
+    for (size_t i = 0; i < doc.scene().simulation.particles.size(); ++i) {
+      const ParticleSystemSettings& p = doc.scene().simulation.particles[i];
+      json emitters = json::array();
+      for (const ParticleEmitter& e : p.emitters)
+        emitters.push_back({{"kind", toString(e.shape)}, {"joint", jointName(s, e.joint)}, {"rate", e.rate.mean}});
+      json one = {{"name", p.name}, {"emitters", emitters}, {"restitution", p.forces.restitution}, {"size", p.size}};
+      if (i < s.liveParticles.alive.size())
+        one["alive"] = s.liveParticles.alive[i], one["emitted"] = s.liveParticles.emitted[i];
+      systems.push_back(one);
+    }
+    out["particles"] = {{"systems", systems}, {"live", s.liveParticles.enabled}, {"frame", s.liveParticles.frame},
+                        {"window", s.particlesWindowOpen}};
+  }
   out["tool"] = modalToolName(s.tool.mode);
+  {  // lattice edit mode (docs/cli.md): the edited lattice, its selected points where they are shown
+    json lattice = {{"active", s.lattice.active}, {"moving", s.lattice.moving}};
+    if (const Deformer* d = s.lattice.active ? editedLattice(s) : nullptr) {
+      const std::vector<glm::vec3> points = latticeWorldPoints(s);
+      json selected = json::array(), positions = json::array();
+      for (int p : s.lattice.selected) {
+        selected.push_back(p);
+        positions.push_back({points[p].x, points[p].y, points[p].z});
+      }
+      lattice["instance"] = s.lattice.instance;
+      lattice["deformer"] = d->name;
+      lattice["points"] = d->lattice.pointCount();
+      lattice["selected"] = selected;
+      lattice["selected_positions"] = positions;  // world metres at the playhead
+    }
+    out["lattice_edit"] = lattice;
+  }
+  out["hovered_property"] = s.hoveredProperty.kind == HoveredProperty::Kind::ShapeWeight ? "shape"
+                            : s.hoveredProperty.kind == HoveredProperty::Kind::DeformerParameter
+                                ? "deformer:" + s.hoveredProperty.parameter
+                                : "";
   out["compare"] = compareStateJson(s.compare);  // Teach > Compare Solvers (docs/cli.md)
   out["dope_sheet"] = dopeSheetJson(s);
   json selection = json::array();

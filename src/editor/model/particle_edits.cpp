@@ -1,0 +1,92 @@
+// Particle systems in the editor (particle_edits.h).
+#include "editor/model/particle_edits.h"
+
+#include <algorithm>
+
+#include "anim/sampling.h"
+#include "core/forward_kinematics.h"
+#include "editor/model/document.h"
+
+namespace kinema {
+
+namespace {
+
+// The height of the box around the rest joints (what the default system scales to).
+float restHeight(const Skeleton& s) {
+  float lo = 1e30f, hi = -1e30f;
+  for (const glm::mat4& m : computeWorld(s, Pose::rest(s))) lo = std::min(lo, m[3].y), hi = std::max(hi, m[3].y);
+  return s.size() > 1 && hi > lo ? hi - lo : 1.8f;
+}
+
+std::string uniqueName(const std::vector<ParticleSystemSettings>& systems, const std::string& base) {
+  auto taken = [&](const std::string& name) {
+    return std::any_of(systems.begin(), systems.end(), [&](const ParticleSystemSettings& s) { return s.name == name; });
+  };
+  if (!taken(base)) return base;
+  for (int k = 2;; ++k)
+    if (!taken(base + "." + std::to_string(k))) return base + "." + std::to_string(k);
+}
+
+}  // namespace
+
+std::string addParticleEmitterEdit(Document& doc, int joint, int* index) {
+  const Skeleton& s = doc.skeleton();
+  if (joint >= s.size()) joint = -1;
+  ParticleSystemSettings settings = defaultParticleSystem(joint, restHeight(s));
+  settings.name = uniqueName(doc.scene().simulation.particles, joint >= 0 ? s.names[joint] + " sparks" : "fountain");
+  const std::string error = doc.edit("Add particle emitter", [&](DocumentEdit& e) {
+    e.simulation.particles.push_back(settings);
+    return std::string();
+  });
+  if (error.empty() && index) *index = static_cast<int>(doc.scene().simulation.particles.size()) - 1;
+  return error;
+}
+
+std::string setParticleSystemEdit(Document& doc, int index, const ParticleSystemSettings& settings) {
+  if (index < 0 || index >= static_cast<int>(doc.scene().simulation.particles.size())) return "no such particle system";
+  if (std::string bad = settings.validate(doc.skeleton()); !bad.empty()) return bad;
+  return doc.edit("Set particle system " + settings.name, [&](DocumentEdit& e) {
+    e.simulation.particles[index] = settings;
+    return std::string();
+  });
+}
+
+std::string removeParticleSystemEdit(Document& doc, int index) {
+  if (index < 0 || index >= static_cast<int>(doc.scene().simulation.particles.size())) return "no such particle system";
+  return doc.edit("Remove particle system " + doc.scene().simulation.particles[index].name, [&](DocumentEdit& e) {
+    e.simulation.particles.erase(e.simulation.particles.begin() + index);
+    return std::string();
+  });
+}
+
+const std::vector<ParticleState>* liveParticlesAt(LiveParticles& live, const Document& doc, int clipIndex, long long frame) {
+  const Scene& scene = doc.scene();
+  if (!live.enabled || scene.simulation.particles.empty()) {
+    live.frame = -1;
+    live.alive.clear();
+    live.emitted.clear();
+    return nullptr;
+  }
+  const Clip* clip = clipIndex >= 0 && clipIndex < static_cast<int>(scene.clips.size()) ? &scene.clips[clipIndex] : nullptr;
+  const double frameTime = clip ? clip->secondsPerFrame() : 1.0 / 30.0;
+  // Without a clip the joints stand in the working pose, whose revision then is an input.
+  const long long key = clip ? doc.changeCount() * 1024 + clipIndex : doc.changeCount() ^ (doc.poseRevision() << 20);
+  SamplingCache cache;
+  const auto jointsAt = [&](long long f, std::vector<glm::mat4>& world) {
+    if (!clip) {
+      world = doc.worldTransforms();
+      return;
+    }
+    Pose pose = Pose::rest(scene.skeleton);
+    sampleClip(*clip, clip->frameToTime(f), pose, cache);
+    world = computeWorld(scene.skeleton, pose);
+  };
+  live.frame = std::max(0LL, frame);
+  const std::vector<ParticleState>& states = live.playback.at(scene.simulation.particles, frameTime, live.frame, jointsAt, key);
+  live.alive.clear();
+  live.emitted.clear();
+  for (const ParticleState& p : states) live.alive.push_back(p.size()), live.emitted.push_back(p.emitted);
+  return &states;
+}
+
+}  // namespace kinema
