@@ -25,8 +25,6 @@ mkdir -p "$tmp/strip"
 "$kinema" render "$tmp/crowd.glb" --frames 0:240 --size 400x300 --camera 0,60,30 --bones none --out "$tmp/strip/frame_%04d.png" 2>/dev/null
 montage $(ls "$tmp"/strip/frame_*.png | awk 'NR % 48 == 1') -tile x1 -geometry +0+0 "$root/docs/images/crowd_walk_strip.png"
 
-exit_after_strip=${CROWD_STRIP_ONLY:-0}
-[ "$exit_after_strip" = 1 ] && exit 0
 mkdir -p "$tmp/home"
 XDG_STATE_HOME="$tmp/home" XDG_CONFIG_HOME="$tmp/home" sh "$root/tests/tools/xvfb_run.sh" 1920x1200x24 "$kinema" edit \
   "$tmp/crowd.kinema" --size 1600x900 --script "$root/docs/images/crowd_editor.jsonl" --frame-count 40 \

@@ -28,7 +28,7 @@ TEST_F(CrowdE2e, TwoHundredCesiumMenWalkAroundAnObstacleBakedSavedReopened) {
   s.wait(2);
   s.menu("Simulate", "Add Crowd...").wait(2);
   s.clickItem("Crowd/members").wait(1).chord("A", {"ctrl"}).type("200").key("ENTER").wait(2);
-  s.clickItem("Timeline/Play").wait(20);
+  s.clickItem("Timeline/Play").wait(10);
   s.clickItem("Timeline/Play").wait(2);
   s.menu("Simulate", "Bake Crowd").wait(3);
   s.saveAs(saved);
