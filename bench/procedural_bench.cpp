@@ -7,6 +7,10 @@
 //                    time (a phase offset) of a 2 s clip on the default character's 27 joints
 //                    (a rotation channel per joint, 30 keys per second, and the root's
 //                    translation) through its own SamplingCache, then runs forward kinematics
+//  BM_CrowdFrame/N   one frame of an N-member crowd as kinema simulate and the editor run it
+//                    (sim/crowd.h): the boids step of the whole flock (grid, planar), then each
+//                    member's clip advanced by its ground speed, its pose sampled and turned to
+//                    its heading (crowdMemberPose), and forward kinematics
 //   ./build/bench/procedural_bench --benchmark_min_time=0.5
 #include <benchmark/benchmark.h>
 
@@ -17,6 +21,7 @@
 #include "core/default_character.h"
 #include "core/forward_kinematics.h"
 #include "sim/boids.h"
+#include "sim/crowd.h"
 #include "sim/particles.h"
 #include "core/random.h"
 
@@ -150,7 +155,46 @@ void BM_CrowdFkAndSampling(benchmark::State& state) {
   countNsPerMember(state, static_cast<size_t>(n));
   state.counters["joints"] = skeleton.size();
 }
-BENCHMARK(BM_CrowdFkAndSampling)->Arg(1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_CrowdFkAndSampling)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+
+void BM_CrowdFrame(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const Skeleton skeleton = makeDefaultCharacter();
+  const Clip clip = walkLikeClip(skeleton);
+  CrowdSettings crowd;
+  crowd.members = n;
+  crowd.boids.spheres.push_back({glm::vec3(0.0f), 3.0f});
+  const CrowdClipMotion motion = analyseCrowdClip(skeleton, clip, crowd);
+  std::vector<CrowdMemberState> members = crowdStartLayout(crowd, motion);
+  BoidsSettings boids = crowd.boids;
+  boids.planar = true;
+  std::vector<glm::vec3> p(n), v(n);
+  BoidsStepJob step;
+  step.settings = &boids;
+  step.positions = &p;
+  step.velocities = &v;
+  step.dt = 1.0f / 30.0f;
+  std::vector<Pose> poses(n);
+  std::vector<std::vector<glm::mat4>> world(n);
+  for (auto _ : state) {
+    for (int i = 0; i < n; ++i) p[i] = members[i].position, v[i] = members[i].velocity;
+    step.run();
+    for (int i = 0; i < n; ++i) {
+      CrowdMemberState& m = members[i];
+      m.position = step.outPositions[i];
+      m.velocity = step.outVelocities[i];
+      const float speed = glm::length(m.velocity);
+      if (speed > 1e-4f) m.yaw = std::atan2(m.velocity.x, m.velocity.z);
+      m.clipTime = advanceCrowdClipTime(m.clipTime, step.dt, speed, motion);
+      crowdMemberPose(skeleton, clip, motion, m, poses[i]);
+      computeWorld(skeleton, poses[i], world[i]);
+    }
+    benchmark::DoNotOptimize(world.data());
+  }
+  countNsPerMember(state, static_cast<size_t>(n));
+  state.counters["joints"] = skeleton.size();
+}
+BENCHMARK(BM_CrowdFrame)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -117,6 +117,9 @@ for n in neutral jaw_open smile brow_raise blink; do
 done
 convert "$tmp"/c_face_{neutral,jaw_open,smile,brow_raise,blink}.png +append "$root/docs/images/face_shapes.png"
 rm -rf "$tmp"
+# Issue 24: a crowd of CesiumMen round an obstacle (kinema simulate + render) and the editor's
+# Crowd panel with one member's impulse vectors.
+"$root/docs/images/crowd_pictures.sh" "$kinema"
 # Issue 23: Fox's swinging tail and a ragdoll fall, baked by `kinema simulate` and rendered.
 "$root/docs/images/physics_strips.sh" "$kinema"
 # Issue 23: a collision capsule on Fox's left thigh for its dynamic tail (Simulate > Add

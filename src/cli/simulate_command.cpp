@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "cli/command_line.h"
+#include "cli/simulate_crowds.h"
 #include "cli/render_command.h"
 #include "cli/simulate_particles.h"
 #include "io/bvh_writer.h"
@@ -58,7 +59,7 @@ bool parseReduce(const std::string& text, double& pos, double& deg) {
 
 CLI::App* addSimulateCommand(CLI::App& app, SimulateOptions& o) {
   CLI::App* cmd = app.add_subcommand(
-      "simulate", "Bake a file's dynamic chains (spring bones) and ragdolls into keys on its clip");
+      "simulate", "Bake a file's dynamic chains (spring bones) and ragdolls into keys on its clip, and run its crowds");
   cmd->add_option("file", o.file, "A .kinema file with simulation settings (docs/kinema-format.md)")->required();
   o.framesOption = cmd->add_option("--frames", o.frames, "Frame range A:B (inclusive) to simulate (default: the clip's frames)");
   cmd->add_option("--out", o.out, "The file to write: .kinema, .gltf, .glb or .bvh (replaced only on success)");
@@ -111,10 +112,14 @@ int runSimulate(const SimulateOptions& o) {
   Scene scene = std::move(loaded.value());
   if (scene.simulation.empty())
     return badInput(o.file + ": has nothing to simulate (no simulation.spring_chains, simulation.ragdolls or "
-                    "simulation.particles; see docs/kinema-format.md)");
+                    "simulation.crowds or simulation.particles; see docs/kinema-format.md)");
+  const bool crowds = !scene.simulation.crowds.empty();
+  if (crowds && ext == ".bvh")
+    return badInput(o.file + ": has crowds, and a BVH file holds one skeleton, not a crowd of characters; write "
+                    ".kinema (a clip per member) or .gltf/.glb (a character per member)");
   if (std::string e = clipIndexError(scene, o.clip); !e.empty()) return badInput(e);
   const bool bakes = !scene.simulation.springChains.empty() || !scene.simulation.ragdolls.empty();
-  if (!bakes) {  // particles alone: played, nothing baked
+  if (!bakes && !crowds) {  // particles alone: played, nothing baked
     if (!framesGiven) defaultParticleFrames(scene, o.clip, first, last);
     return runParticlesOnly(o, scene, first, last);
   }
@@ -165,10 +170,17 @@ int runSimulate(const SimulateOptions& o) {
       lastShown = done;
     }
   };
-  Result<SimulationBake> bake = bakeSimulation(in);
+  const bool bodies = !scene.simulation.springChains.empty() || !scene.simulation.ragdolls.empty();
+  Result<SimulationBake> bake = bodies ? bakeSimulation(in) : Result<SimulationBake>(SimulationBake{});
   if (!bake) return badInput(o.file + ": " + bake.error());
 
-  scene.clips[o.clip] = std::move(bake->clip);
+  if (bodies) scene.clips[o.clip] = std::move(bake->clip);
+  CrowdSimulation crowdRun;  // the crowds, after the chains and ragdolls: a crowd of this file's character moves with them
+  if (crowds) {
+    if (std::string e = simulateCrowds(scene, o.file, ext, framesGiven, first, last, inputLimits(o.allowOutsidePaths), crowdRun);
+        !e.empty())
+      return badInput(o.file + ": " + e);
+  }
   std::string error;
   std::vector<std::string> report;
   if (o.out.empty()) {
@@ -178,7 +190,8 @@ int runSimulate(const SimulateOptions& o) {
   } else if (ext == ".gltf" || ext == ".glb") {
     GltfWriteOptions options;
     options.binary = ext == ".glb";
-    error = saveGltf(o.out, scene, options, &report);
+    if (crowds && bodies) report.push_back("the file's own character is left out: a crowd's glTF holds its members");
+    error = saveGltf(o.out, crowds ? crowdRun.characters : scene, options, &report);
   } else {
     error = saveKinemaFile(o.out, scene);
   }
@@ -213,6 +226,7 @@ int runSimulate(const SimulateOptions& o) {
       steps += p.steps;
       worst = std::max(worst, p.largestLimitExcess);
     }
+    for (nlohmann::ordered_json& part : crowdRun.parts) parts.push_back(std::move(part));
     if (!scene.simulation.particles.empty())
       for (nlohmann::ordered_json& pj : particleReport(scene, o.clip, first, last)) {
         steps += pj["steps"].get<long long>();

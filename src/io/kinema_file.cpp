@@ -17,6 +17,7 @@
 #include "io/json_depth.h"
 #include "io/image.h"
 #include "io/json_document.h"
+#include "io/kinema_crowds.h"
 #include "io/json_number.h"
 #include "io/kinema_particles.h"
 #include "io/message_text.h"
@@ -462,6 +463,10 @@ bool readSimulation(Reader& r, const Json& root, Scene& scene) {
       }
     }
   }
+  if (const Json* crowds = r.member(*sim, "simulation", "crowds", false)) {  // io/kinema_crowds.h
+    std::string path, what;
+    if (!readCrowdsJson(*crowds, "simulation.crowds", out.crowds, path, what)) return r.fail(path, what);
+  }
   if (const Json* list = r.member(*sim, "simulation", "particles", false)) {
     std::string where, what;
     if (!readParticleSystems(*list, "simulation.particles", s, out.particles, where, what)) return r.fail(where, what);
@@ -515,6 +520,7 @@ Json simulationToJson(const Scene& scene) {
   Json sim;
   sim["spring_chains"] = std::move(chains);
   sim["ragdolls"] = std::move(ragdolls);
+  if (!scene.simulation.crowds.empty()) sim["crowds"] = crowdsToJson(scene.simulation.crowds);
   if (!scene.simulation.particles.empty()) sim["particles"] = particleSystemsToJson(scene.simulation.particles, s);
   return sim;
 }

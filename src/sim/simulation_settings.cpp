@@ -19,6 +19,8 @@ std::string SimulationSettings::validate(const Skeleton& s) const {
       if (s.isInSubtree(ragdolls[r].root, ragdolls[o].root) || s.isInSubtree(ragdolls[o].root, ragdolls[r].root))
         return "ragdoll '" + ragdolls[r].name + "': its joints overlap ragdoll '" + ragdolls[o].name + "'";
   }
+  for (const CrowdSettings& c : crowds)
+    if (std::string e = c.validate(); !e.empty()) return e;
   for (const ParticleSystemSettings& p : particles)
     if (std::string e = p.validate(s); !e.empty()) return e;
   return "";

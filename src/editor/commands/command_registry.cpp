@@ -63,7 +63,8 @@ const CommandRegistry& editorCommands() {
     addTimelineCommands(all);
     addAnimationEditorCommands(all);
     addSimulateCommands(all);
-    addParticleCommands(all);  // after the Simulate menu's first commands (issue 24)
+    addParticleCommands(all);     // issue 24's Simulate commands after the physics ones
+    addCrowdCommands(all);
     addStiffSpringsCommand(all);  // the Teach menu starts after the last Simulate command
     addCompareCommands(all);
     addHelpCommands(all);

@@ -15,6 +15,7 @@ void addLatticeCommands(std::vector<Command>& out);          // Pose menu: latti
 void addClipCommands(std::vector<Command>& out);             // Clip menu: the clip list (clip_commands.cpp)
 void addMotionCommands(std::vector<Command>& out);           // Animation menu: contacts, clean up (motion_commands.cpp)
 void addSimulateCommands(std::vector<Command>& out);         // Simulate menu (simulate_commands.cpp)
+void addCrowdCommands(std::vector<Command>& out);            // Simulate menu: crowds (crowd_commands.cpp)
 void addParticleCommands(std::vector<Command>& out);         // Simulate menu: particles (particle_commands.cpp)
 void addStiffSpringsCommand(std::vector<Command>& out);      // Teach > Stiff Springs, after every Simulate command (simulate_commands.cpp)
 void addTimelineCommands(std::vector<Command>& out);         // play, step, jump (timeline_commands.cpp)

@@ -27,7 +27,8 @@ bool sameLimits(const std::vector<JointLimit>& a, const std::vector<JointLimit>&
 }
 
 bool sameSimulation(const SimulationSettings& a, const SimulationSettings& b) {
-  return a.springChains == b.springChains && a.ragdolls == b.ragdolls && a.particles == b.particles;
+  return a.springChains == b.springChains && a.ragdolls == b.ragdolls && a.crowds == b.crowds &&
+         a.particles == b.particles;
 }
 
 bool sameTargets(const std::vector<PoseIkTarget>& a, const std::vector<PoseIkTarget>& b) {

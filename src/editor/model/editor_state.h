@@ -18,6 +18,7 @@
 #include "editor/model/motion_cleanup_edit.h"
 #include "editor/model/particle_edits.h"
 #include "editor/model/simulation_edits.h"
+#include "editor/model/crowd_edits.h"
 #include "editor/model/item_rects.h"
 #include "editor/model/lattice_editing.h"
 #include "editor/model/property_keying.h"
@@ -143,6 +144,7 @@ struct EditorState {
   LiveSprings liveSprings;
   bool simulationWindowOpen = false;
   std::optional<SimulationBake> lastBake;
+  CrowdEditorState crowds;  // Simulate > crowds (issue 24): the Crowd panel, the live flock
   bool stiffSpringsWindowOpen = false;
   // Opens where explicit Euler blows up and the other three hold (1.5x its limit, zeta 0.3:
   // still under symplectic Euler's and Verlet's 2 / omega_max).

@@ -47,6 +47,7 @@ void drawTimelinePanel(CommandContext& ctx);
 void drawContactLanesPanel(CommandContext& ctx);  // the foot contact strip over the timeline (drag to edit)
 void drawParticlesWindow(CommandContext& ctx);    // Simulate > Particle Settings…: the shown particle system
 void drawSimulationWindow(CommandContext& ctx);   // Simulate > Simulation Settings…: chains, ragdolls, bake
+void drawCrowdWindow(CommandContext& ctx);        // Simulate > Show Crowd Panel: the crowd's settings (crowd_window.cpp)
 void drawStiffSpringsWindow(CommandContext& ctx); // Teach > Stiff Springs: the integrators' energy at a chosen step
 void drawCleanUpWindow(CommandContext& ctx);      // Animation > Clean Up Motion…: contacts, locking, reduction, figures
 void drawCurveEditorPanel(CommandContext& ctx);  // curve editor in the animation editor area (Shift+F6)

@@ -216,6 +216,7 @@ void drawEditorPanels(CommandContext& ctx, float fps) {
   drawLogWindow(state);
   drawCleanUpWindow(ctx);
   drawSimulationWindow(ctx);
+  drawCrowdWindow(ctx);
   drawParticlesWindow(ctx);
   drawStiffSpringsWindow(ctx);
   drawSessionDialogs(ctx);

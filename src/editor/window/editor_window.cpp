@@ -26,6 +26,7 @@
 #include "editor/window/ui_style.h"
 #include "editor/viewport/particle_display.h"
 #include "editor/viewport/viewport_overlay.h"
+#include "editor/viewport/crowd_display.h"
 #include "editor/viewport/animation_display.h"
 #include "editor/viewport/viewport_controller.h"
 #include "editor/viewport/viewport_tools.h"
@@ -299,6 +300,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     std::optional<uint64_t> drawnSignature;  // frameSignature of the 3D view drawn last frame
     bool viewportTargetFailed = false;
     AnimationDisplay animationDisplay;  // onion-skin ghosts, motion path (kept: the path is cached)
+    CrowdDisplay crowdDisplay;          // the crowd's members at the playhead (issue 24)
     evaluateEditorPose(state);
     int fbw = 0, fbh = 0, ww = 0, wh = 0;
     glfwGetFramebufferSize(window, &fbw, &fbh);
@@ -452,7 +454,9 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         meshDraw.frame.gpuDeformers = gpuStacks.empty() ? nullptr : &gpuStacks;
         meshDraw.frame.weightJoint = state.view.showWeights ? state.doc.selection.active() : -1;
         colorSelection(state, list);
-        state.camera.fitClipPlanes(bounds.radius());
+        buildCrowdDisplay(state, skinJoints, !meshes.empty(), crowdDisplay);
+        const float sceneRadius = std::max(bounds.radius(), crowdDisplay.radius);  // the crowd too
+        state.camera.fitClipPlanes(sceneRadius);
         // The viewport in framebuffer pixels (GL counts rows from the bottom); the panels
         // cover the rest, which is cleared to the background behind them.
         const float sx = ww > 0 ? float(fbw) / ww : 1.0f, sy = wh > 0 ? float(fbh) / wh : 1.0f;
@@ -476,6 +480,11 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
           for (size_t g = 0; g < animationDisplay.ghosts.size(); ++g)
             meshGhosts.push_back({&animationDisplay.ghostPoses[g], &animationDisplay.ghostMorphWeights[g],
                                   animationDisplay.ghosts[g].color});
+        addCrowdOverlay(state, overlay);
+        for (const std::vector<glm::mat4>* member : crowdDisplay.bodies)
+          meshGhosts.push_back({member, &crowdDisplay.noMorphs, crowdDisplay.tint});
+        std::vector<SkeletonDrawList> ghostLists = animationDisplay.ghostLists;
+        ghostLists.insert(ghostLists.end(), crowdDisplay.bones.begin(), crowdDisplay.bones.end());
         FrameDescription description;
         description.skeleton = &list;
         description.overlay = &overlay;
@@ -484,11 +493,11 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         description.y = vy;
         description.width = vw;
         description.height = vh;
-        description.sceneRadius = bounds.radius();
+        description.sceneRadius = sceneRadius;
         description.showGrid = state.view.showGrid;
         description.lineScale = state.preferences.lineScale;  // thicker for a projector (Edit > Preferences)
         description.meshes = meshes.empty() ? nullptr : &meshDraw;
-        description.ghosts = &animationDisplay.ghostLists;
+        description.ghosts = &ghostLists;
         description.meshGhosts = &meshGhosts;
         description.timer = timer;
         description.bones = !state.view.showBones ? BoneDisplay::None

@@ -240,6 +240,22 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
     }
     out["simulation"] = sim;
   }
+  {  // Simulate menu, crowds (issue 24): the settings in short, the live drawing
+    json crowds = json::array();
+    for (const CrowdSettings& c : doc.scene().simulation.crowds)
+      crowds.push_back({{"name", c.name}, {"character", c.character}, {"members", c.members}, {"seed", c.seed},
+                        {"allocation", c.boids.allocation == AccelerationAllocation::Priority ? "priority" : "average"},
+                        {"spheres", c.boids.spheres.size()}, {"boxes", c.boids.boxes.size()}});
+    const CrowdPreview& p = s.crowds.preview;
+    json impulses = json::object();  // the debug member's desired accelerations at the frame shown (m/s^2)
+    if (p.frame >= 0 && p.frame < static_cast<long long>(p.run.debug.size()))
+      for (int k = 0; k < kBoidImpulseCount; ++k)
+        impulses[toString(static_cast<BoidImpulse>(k))] = glm::length(p.run.debug[static_cast<size_t>(p.frame)].desired[k]);
+    out["crowds"] = {{"crowds", crowds}, {"active", s.crowds.active}, {"window", s.crowds.windowOpen},
+                     {"live", s.crowds.live}, {"runs", p.runs}, {"frame", p.frame},
+                     {"members_drawn", p.world.size()}, {"debug_vectors", p.vectors.size()}, {"debug_impulses", impulses},
+                     {"error", p.error}};
+  }
   {  // Particle systems (issue 24): names, emitters, the live counts at the frame last shown
     json systems = json::array();
     for (size_t i = 0; i < doc.scene().simulation.particles.size(); ++i) {

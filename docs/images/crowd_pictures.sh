@@ -1,0 +1,31 @@
+#!/bin/sh
+# Issue 24's crowd pictures, made by Kinema: 40 CesiumMen walking round a sphere to a goal,
+# run by `kinema simulate` into a glTF of 40 skinned characters and the obstacle, rendered as a
+# frame strip (docs/images/crowd_walk_strip.png: frames 0, 48, ... 240: ten seconds); and the editor on the
+# same crowd with the Crowd panel and one member's impulse vectors close up
+# (docs/images/crowd_editor.png). Usage: crowd_pictures.sh BUILD/src/kinema
+set -eu
+kinema=$1
+root=$(cd "$(dirname "$0")/../.." && pwd)
+data="$root/../shared/data"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+"$kinema" convert "$data/gltf/CesiumMan.glb" "$tmp/cesium.kinema"
+python3 - "$tmp/cesium.kinema" "$tmp/crowd.kinema" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+d["simulation"] = {"crowds": [{"name": "crowd", "members": 40, "seed": 4, "spawn_centre": [-8, 0, 6],
+                               "goal": [14, 0, 6], "debug_member": 11,
+                               "obstacles": {"spheres": [{"centre": [2.5, 0, 6], "radius": 2.5}]}}]}
+json.dump(d, open(sys.argv[2], "w"))
+PY
+"$kinema" simulate "$tmp/crowd.kinema" --frames 0:240 --out "$tmp/crowd.glb" 2>/dev/null
+mkdir -p "$tmp/strip"
+"$kinema" render "$tmp/crowd.glb" --frames 0:240 --size 400x300 --camera 0,60,30 --bones none --out "$tmp/strip/frame_%04d.png" 2>/dev/null
+montage $(ls "$tmp"/strip/frame_*.png | awk 'NR % 48 == 1') -tile x1 -geometry +0+0 "$root/docs/images/crowd_walk_strip.png"
+
+mkdir -p "$tmp/home"
+XDG_STATE_HOME="$tmp/home" XDG_CONFIG_HOME="$tmp/home" sh "$root/tests/tools/xvfb_run.sh" 1920x1200x24 "$kinema" edit \
+  "$tmp/crowd.kinema" --size 1600x900 --script "$root/docs/images/crowd_editor.jsonl" --frame-count 40 \
+  --screenshot "$root/docs/images/crowd_editor.png"
