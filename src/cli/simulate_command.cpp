@@ -74,6 +74,21 @@ CLI::App* addSimulateCommand(CLI::App& app, SimulateOptions& o) {
   return cmd;
 }
 
+std::string saveSimulatedScene(const std::string& out, const Scene& scene, int clip, std::vector<std::string>& report) {
+  const std::string ext = lowerExtension(out);
+  if (ext == ".bvh") {
+    if (!scene.meshes.empty()) report.push_back("meshes and skins dropped (BVH holds a skeleton and one motion)");
+    const bool hasClip = clip >= 0 && clip < static_cast<int>(scene.clips.size());
+    return saveBvh(out, scene.skeleton, hasClip ? &scene.clips[clip] : nullptr, BvhWriteOptions{}, &report);
+  }
+  if (ext == ".gltf" || ext == ".glb") {
+    GltfWriteOptions options;
+    options.binary = ext == ".glb";
+    return saveGltf(out, scene, options, &report);
+  }
+  return saveKinemaFile(out, scene);
+}
+
 int runSimulate(const SimulateOptions& o) {
   if (o.out.empty() && o.render.empty()) {
     std::cerr << "kinema simulate: give --out FILE, --render DIR or both; see --help\n";
@@ -181,20 +196,11 @@ int runSimulate(const SimulateOptions& o) {
         !e.empty())
       return badInput(o.file + ": " + e);
   }
-  std::string error;
   std::vector<std::string> report;
-  if (o.out.empty()) {
-  } else if (ext == ".bvh") {
-    if (!scene.meshes.empty()) report.push_back("meshes and skins dropped (BVH holds a skeleton and one motion)");
-    error = saveBvh(o.out, scene.skeleton, &scene.clips[o.clip], BvhWriteOptions{}, &report);
-  } else if (ext == ".gltf" || ext == ".glb") {
-    GltfWriteOptions options;
-    options.binary = ext == ".glb";
-    if (crowds && bodies) report.push_back("the file's own character is left out: a crowd's glTF holds its members");
-    error = saveGltf(o.out, crowds ? crowdRun.characters : scene, options, &report);
-  } else {
-    error = saveKinemaFile(o.out, scene);
-  }
+  const bool gltf = ext == ".gltf" || ext == ".glb";
+  if (gltf && crowds && bodies) report.push_back("the file's own character is left out: a crowd's glTF holds its members");
+  const std::string error =
+      o.out.empty() ? std::string() : saveSimulatedScene(o.out, gltf && crowds ? crowdRun.characters : scene, o.clip, report);
   for (const std::string& line : report) std::cerr << "kinema simulate: warning: " << line << "\n";
   if (!error.empty()) return badInput(error);
   if (const int code = renderSimulatedFrames(o, scene, first, last); code != kExitOk) return code;

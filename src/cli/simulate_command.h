@@ -1,6 +1,9 @@
 #pragma once
 #include <CLI/CLI.hpp>
 #include <string>
+#include <vector>
+
+#include "io/scene.h"
 
 namespace kinema::cli {
 
@@ -22,5 +25,8 @@ CLI::App* addSimulateCommand(CLI::App& app, SimulateOptions& options);
 // writes OUT (.kinema, .gltf, .glb or .bvh). Nothing is written unless every part succeeds.
 // Its particle systems are played over the frames (reported; drawn with --render DIR).
 int runSimulate(const SimulateOptions& options);
+// Writes `scene` to `out` by its extension: .bvh (the skeleton and clip `clip`), .gltf /
+// .glb, else .kinema; warnings go to `report`. Empty on success, else the error.
+std::string saveSimulatedScene(const std::string& out, const Scene& scene, int clip, std::vector<std::string>& report);
 
 }  // namespace kinema::cli

@@ -98,18 +98,8 @@ int renderSimulatedFrames(const SimulateOptions& o, const Scene& scene, long lon
 
 int runParticlesOnly(const SimulateOptions& o, const Scene& scene, long long first, long long last) {
   if (!o.out.empty()) {
-    const std::string ext = lowerExtension(o.out);
     std::vector<std::string> report;
-    std::string error;
-    if (ext == ".bvh") {
-      error = saveBvh(o.out, scene.skeleton, scene.clips.empty() ? nullptr : &scene.clips[o.clip], BvhWriteOptions{}, &report);
-    } else if (ext == ".gltf" || ext == ".glb") {
-      GltfWriteOptions options;
-      options.binary = ext == ".glb";
-      error = saveGltf(o.out, scene, options, &report);
-    } else {
-      error = saveKinemaFile(o.out, scene);
-    }
+    const std::string error = saveSimulatedScene(o.out, scene, o.clip, report);
     for (const std::string& line : report) std::cerr << "kinema simulate: warning: " << line << "\n";
     if (!error.empty()) return badInput(error);
   }

@@ -178,15 +178,19 @@ void ViewportTools::applyGizmo(EditorState& state, const ViewportView& view) {
   updateRotateDrag(state.doc, j, localRotationAfterWorldTurn(parentWorld_[0], startLocal_[0], delta));
 }
 
+namespace {
+// Where a G move puts its start point with the mouse at `mouse`: in the view plane, or along
+// the constrained world axis.
+glm::vec3 movedPoint(const EditorState& state, const ViewportView& view, glm::vec2 mouse) {
+  if (state.tool.axis == AxisConstraint::None) return dragInViewPlane(view, state.tool.startPoint, state.tool.startMouse, mouse);
+  glm::vec3 axis(0.0f);
+  axis[static_cast<int>(state.tool.axis) - 1] = 1.0f;
+  return dragAlongAxis(view, state.tool.startPoint, axis, state.tool.startMouse, mouse);
+}
+}  // namespace
+
 void ViewportTools::applyMove(EditorState& state, const ViewportView& view) {
-  glm::vec3 p;
-  if (state.tool.axis == AxisConstraint::None) {
-    p = dragInViewPlane(view, state.tool.startPoint, state.tool.startMouse, mouse_);
-  } else {
-    glm::vec3 axis(0.0f);
-    axis[static_cast<int>(state.tool.axis) - 1] = 1.0f;
-    p = dragAlongAxis(view, state.tool.startPoint, axis, state.tool.startMouse, mouse_);
-  }
+  const glm::vec3 p = movedPoint(state, view, mouse_);
   if (state.tool.mode == ModalTool::Grab) {
     updateTranslateDrag(state.doc, 0, startTranslation_ + (p - state.tool.startPoint));
   } else if (state.tool.ikTarget >= 0) {
@@ -197,14 +201,7 @@ void ViewportTools::applyMove(EditorState& state, const ViewportView& view) {
 }
 
 void ViewportTools::applyLatticeMove(EditorState& state, const ViewportView& view) {
-  glm::vec3 p;
-  if (state.tool.axis == AxisConstraint::None) {
-    p = dragInViewPlane(view, state.tool.startPoint, state.tool.startMouse, mouse_);
-  } else {
-    glm::vec3 axis(0.0f);
-    axis[static_cast<int>(state.tool.axis) - 1] = 1.0f;
-    p = dragAlongAxis(view, state.tool.startPoint, axis, state.tool.startMouse, mouse_);
-  }
+  const glm::vec3 p = movedPoint(state, view, mouse_);
   setLatticeMoveOffset(state, p - state.tool.startPoint);
   const glm::vec3 d = state.lattice.offset;
   char line[128];
