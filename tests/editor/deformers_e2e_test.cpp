@@ -9,6 +9,7 @@
 #include "editor/e2e_harness.h"
 
 #include "anim/scalar_property.h"
+#include "core/forward_kinematics.h"
 #include "editor/model/deformer_edits.h"
 #include "editor/model/document.h"
 #include "io/scene.h"
@@ -136,6 +137,44 @@ TEST_F(DeformersE2e, LatticePointAndSmileKeyedPlayedSavedReopenedExported) {
   ASSERT_FALSE(weights.empty());
   ASSERT_GE(weights[0].size(), 2u);
   EXPECT_NEAR(weights[0][1], 0.5 * (w0 + w1), 1e-4);
+}
+
+// A soft pull centred by picking: Properties > Deformers > Soft pull, Pick centre, a click on
+// the chest in the front view, then a typed radius. The saved centre lies on the camera ray
+// through the clicked pixel, in front of the chest joint (on the body's surface), and the
+// pick and the radius are one undo step each.
+TEST_F(DeformersE2e, ASoftPullIsCentredWhereTheBodyIsClicked) {
+  const Document model(makeDefaultCharacterScene());
+  const Skeleton& sk = model.skeleton();
+  const glm::dvec3 chest(computeWorld(sk, Pose::rest(sk))[sk.find("Chest")][3]);
+  const DumpCamera camera(front_);
+  const glm::dvec2 at = camera.pixel(chest);
+  ASSERT_TRUE(viewportRect(front_).contains(at));
+  const std::string saved = dir_ + "/pull.kinema";
+  Script s;
+  s.clickItem("Properties/Deformers/Add Soft pull").wait(2);
+  s.clickItem("Properties/Deformers/soft_pull/Pick centre").wait(2);
+  s.click(at).wait(2);
+  s.scrollPanel("Properties", -4);  // the radius row is below the panel's fold
+  s.clickItem("Properties/Deformers/soft_pull/radius", {0.2, 0.5}).wait(1).chord("A", {"ctrl"}).type("0.15").key("ENTER").wait(2);
+  s.saveAs(saved);
+  const json d = run(s, "soft_pull_picked");
+  ASSERT_TRUE(d.is_object());
+  EXPECT_TRUE(d["errors"].empty()) << d["errors"].dump();
+  EXPECT_EQ(d["undo_depth"], 3) << "add, pick, radius";
+  Result<Scene> file = loadScene(saved);
+  ASSERT_TRUE(file) << file.error();
+  ASSERT_FALSE(file->deformers.empty());
+  ASSERT_EQ(file->deformers[0].deformers.size(), 1u);
+  const SoftPull& pull = file->deformers[0].deformers[0].pull;
+  EXPECT_FLOAT_EQ(pull.radius, 0.15f);
+  glm::dvec3 origin, direction;
+  camera.ray(at, origin, direction);
+  const glm::dvec3 c(pull.center);
+  const glm::dvec3 off = (c - origin) - direction * glm::dot(c - origin, direction);
+  EXPECT_LT(glm::length(off), 2.0 * camera.unitsPerPixel(c)) << "on the ray through the clicked pixel";
+  EXPECT_LT(camera.depth(c), camera.depth(chest)) << "on the body's front, before the chest joint";
+  EXPECT_GT(camera.depth(c), camera.depth(chest) - 0.3) << "and not far in front of it";
 }
 
 }  // namespace

@@ -104,3 +104,34 @@ TEST(DocumentDeformers, KeyedParametersAreInterpolatedChannels) {
 
 }  // namespace
 }  // namespace kinema
+
+namespace kinema {
+namespace {
+
+TEST(DocumentDeformers, ASoftPullsCentreRadiusAndFalloffAreOneUndoStepAndKeepItsOffset) {
+  Document doc(makeDefaultCharacterScene());
+  ASSERT_EQ(addDeformer(doc, 0, DeformerType::SoftPull), "");
+  ASSERT_EQ(setDeformerValue(doc, 0, 0, "offset.y", 0.05f), "");
+  const size_t steps = doc.historyLabels().size();
+  const SoftPull before = doc.scene().deformers[0].deformers[0].pull;
+  ASSERT_EQ(setSoftPullShape(doc, 0, 0, glm::vec3(0.1f, 1.2f, 0.1f), 0.2f, Falloff::Linear), "");
+  EXPECT_EQ(doc.historyLabels().size(), steps + 1);
+  const SoftPull& pull = doc.scene().deformers[0].deformers[0].pull;
+  EXPECT_EQ(pull.center, glm::vec3(0.1f, 1.2f, 0.1f));
+  EXPECT_EQ(pull.radius, 0.2f);
+  EXPECT_EQ(pull.falloff, Falloff::Linear);
+  EXPECT_EQ(pull.offset, glm::vec3(0.0f, 0.05f, 0.0f)) << "the keyable offset stays";
+  EXPECT_NE(setSoftPullShape(doc, 0, 0, glm::vec3(0.0f), -1.0f, Falloff::Smooth), "") << "a radius must be positive";
+  EXPECT_EQ(doc.historyLabels().size(), steps + 1);
+  ASSERT_EQ(addDeformer(doc, 0, DeformerType::Bend), "");
+  EXPECT_NE(setSoftPullShape(doc, 0, 1, glm::vec3(0.0f), 0.1f, Falloff::Smooth), "") << "not a soft pull";
+  ASSERT_TRUE(doc.undo());  // the bend
+  ASSERT_TRUE(doc.undo());  // the centre, radius and falloff
+  const SoftPull& undone = doc.scene().deformers[0].deformers[0].pull;
+  EXPECT_EQ(undone.center, before.center);
+  EXPECT_EQ(undone.radius, before.radius);
+  EXPECT_EQ(undone.falloff, before.falloff);
+}
+
+}  // namespace
+}  // namespace kinema

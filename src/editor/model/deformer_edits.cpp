@@ -92,6 +92,22 @@ std::string addDeformer(Document& doc, int instance, DeformerType type) {
   });
 }
 
+std::string setSoftPullShape(Document& doc, int instance, int deformer, const glm::vec3& center, float radius,
+                             Falloff falloff) {
+  if (std::string e = stackError(doc, instance, deformer); !e.empty()) return e;
+  const Deformer& d = doc.scene().deformers[instance].deformers[deformer];
+  if (d.type != DeformerType::SoftPull) return d.name + " is not a soft pull";
+  SoftPull pull = d.pull;
+  pull.center = center;
+  pull.radius = radius;
+  pull.falloff = falloff;
+  if (std::string e = pull.validate(); !e.empty()) return d.name + ": " + e;
+  return doc.editMeshes("Set " + d.name, [&](Scene& s) {
+    s.deformers[instance].deformers[deformer].pull = pull;
+    return std::string();
+  });
+}
+
 std::string removeDeformer(Document& doc, int instance, int deformer) {
   if (std::string e = stackError(doc, instance, deformer); !e.empty()) return e;
   const std::string name = doc.scene().deformers[instance].deformers[deformer].name;

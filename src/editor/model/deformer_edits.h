@@ -20,6 +20,10 @@ std::string removeDeformer(Document& doc, int instance, int deformer);
 // Moves deformer `deformer` one place up (-1) or down (+1) the stack.
 std::string moveDeformer(Document& doc, int instance, int deformer, int step);
 std::string setDeformerEnabled(Document& doc, int instance, int deformer, bool enabled);
+// A soft pull's centre (world space, metres: the point picked on the body), radius (> 0) and
+// falloff; its offset (the keyable displacement) stays. One undo step.
+std::string setSoftPullShape(Document& doc, int instance, int deformer, const glm::vec3& center, float radius,
+                             Falloff falloff);
 // Sets a keyable parameter by name (deformerParameters: "angle", "factor", "offset.y",
 // "point.12.x"...).
 std::string setDeformerValue(Document& doc, int instance, int deformer, const std::string& parameter, float value);

@@ -20,6 +20,9 @@ struct PanelState {
   // Properties > Deformers: the lattice control point whose x, y, z the fields edit and key
   // (the flat index FfdLattice::index; clamped to the lattice shown).
   int latticePoint = 0;
+  // Properties > Deformers > Pick centre: the soft pull (mesh instance, deformer) whose centre
+  // the next left click on the body in the 3D view sets; -1: no pick pending.
+  int softPullPickInstance = -1, softPullPickDeformer = -1;
   // Outliner
   char search[128] = {};
   std::vector<bool> collapsed;  // by joint

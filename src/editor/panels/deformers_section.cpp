@@ -54,6 +54,38 @@ void parameterRow(EditorState& state, int instance, int index, const Deformer& d
   recordItem(item + "/Key");
 }
 
+// A soft pull's centre, radius and falloff (not keyable: its offset is): Pick centre waits for
+// a click on the body in the 3D view (viewport_tools.cpp), radius and falloff edit in place.
+void softPullShapeRows(EditorState& state, int instance, int index, const Deformer& d) {
+  PanelState& panels = state.panels;
+  const bool picking = panels.softPullPickInstance == instance && panels.softPullPickDeformer == index;
+  if (ImGui::SmallButton(picking ? "Cancel pick" : "Pick centre")) {
+    panels.softPullPickInstance = picking ? -1 : instance;
+    panels.softPullPickDeformer = picking ? -1 : index;
+    state.statusMessage = picking ? std::string() : "Soft pull: click the body in the 3D view where the pull is centred";
+  }
+  recordItem("Properties/Deformers/" + d.name + "/Pick centre");
+  ImGui::SameLine();
+  ImGui::TextDisabled("centre %.3f %.3f %.3f", d.pull.center.x, d.pull.center.y, d.pull.center.z);
+  float radius = d.pull.radius;
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6.0f);
+  ImGui::InputFloat(("radius##" + d.name).c_str(), &radius, 0.0f, 0.0f, "%.4g");
+  recordItem("Properties/Deformers/" + d.name + "/radius");
+  if (ImGui::IsItemDeactivatedAfterEdit())
+    showEditorError(state, setSoftPullShape(state.doc, instance, index, d.pull.center, radius, d.pull.falloff));
+  ImGui::SameLine();
+  static const Falloff kFalloffs[] = {Falloff::Smooth, Falloff::Sphere, Falloff::Root,
+                                      Falloff::Sharp,  Falloff::Linear, Falloff::Constant};
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6.0f);
+  if (ImGui::BeginCombo(("falloff##" + d.name).c_str(), toString(d.pull.falloff))) {
+    for (Falloff f : kFalloffs)
+      if (ImGui::Selectable(toString(f), f == d.pull.falloff) && f != d.pull.falloff)
+        showEditorError(state, setSoftPullShape(state.doc, instance, index, d.pull.center, d.pull.radius, f));
+    ImGui::EndCombo();
+  }
+  recordItem("Properties/Deformers/" + d.name + "/falloff");
+}
+
 }  // namespace
 
 void drawDeformersSection(CommandContext& ctx) {
@@ -69,7 +101,12 @@ void drawDeformersSection(CommandContext& ctx) {
     static const char* labels[] = {"Lattice", "Bend", "Twist", "Taper", "Soft pull"};
     ImGui::TextDisabled("Add to mesh %d:", i);
     for (int k = 0; k < 5; ++k) {
-      ImGui::SameLine();
+      // On the same line while the button fits the panel, else on the next (a narrow panel
+      // would clip "Soft pull" off its edge).
+      const ImGuiStyle& style = ImGui::GetStyle();
+      const float width = ImGui::CalcTextSize(labels[k]).x + 2.0f * style.FramePadding.x;
+      const float right = ImGui::GetItemRectMax().x + style.ItemSpacing.x + width;
+      if (right <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) ImGui::SameLine();
       if (ImGui::SmallButton(labels[k])) {
         showEditorError(state, addDeformer(doc, i, kinds[k]));
         if (kinds[k] == DeformerType::Lattice && !state.lattice.active) {  // the new lattice is the active one (Tab edits it)
@@ -101,6 +138,7 @@ void drawDeformersSection(CommandContext& ctx) {
         case DeformerType::Twist: parameterRow(state, i, k, d, "angle", "angle (rad)", 0.01f); break;
         case DeformerType::Taper: parameterRow(state, i, k, d, "factor", "factor", 0.01f); break;
         case DeformerType::SoftPull:
+          softPullShapeRows(state, i, k, d);
           parameterRow(state, i, k, d, "offset.x", "offset x", 0.002f);
           parameterRow(state, i, k, d, "offset.y", "offset y", 0.002f);
           parameterRow(state, i, k, d, "offset.z", "offset z", 0.002f);

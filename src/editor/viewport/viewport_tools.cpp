@@ -1,5 +1,7 @@
 #include "editor/viewport/viewport_tools.h"
 
+#include "editor/model/deformer_edits.h"
+
 #include "editor/model/key_codes.h"
 
 #include <algorithm>
@@ -100,15 +102,26 @@ void ViewportTools::cancel(EditorState& state) {
   state.statusMessage.clear();
 }
 
-SkeletonPick ViewportTools::pickAt(const EditorState& state, const ViewportView& view,
-                                   const SkeletonDrawList& list) const {
-  SkeletonPick pick = pickSkeletonAt(list, view, mouse_);
-  // Shown bones (solid or x-ray) are picked through the body, as in Blender's pose mode with
-  // x-ray; a click on the body away from any bone, or any click while the bones are hidden,
-  // takes the joint weighing most at the hit vertex.
-  if (pick.hit() && state.view.showBones) return pick;
+void ViewportTools::softPullPickPress(EditorState& state, const ViewportView& view) {
+  PanelState& panels = state.panels;
+  const int instance = panels.softPullPickInstance, deformer = panels.softPullPickDeformer;
+  const PickRay ray = view.rayThrough(mouse_);
+  refreshDeformed(state);
+  const MeshPick m = pickMeshJoint(state.doc.scene(), deformed_, ray);
+  if (!m.hit()) {
+    state.statusMessage = "Soft pull: click on the body (the pick is still waiting; Cancel pick in Properties ends it)";
+    return;
+  }
+  const DeformerStack* stack = state.doc.scene().deformerStack(static_cast<size_t>(instance));
+  panels.softPullPickInstance = panels.softPullPickDeformer = -1;
+  if (!stack || deformer < 0 || deformer >= static_cast<int>(stack->deformers.size())) return;
+  const SoftPull& pull = stack->deformers[deformer].pull;
+  const std::string error = setSoftPullShape(state.doc, instance, deformer, ray.at(m.distance), pull.radius, pull.falloff);
+  state.statusMessage = error.empty() ? "Soft pull centred where the body was clicked" : error;
+}
+
+void ViewportTools::refreshDeformed(const EditorState& state) const {
   const Scene& scene = state.doc.scene();
-  if (scene.meshInstances.empty()) return pick;
   if (deformedScene_ != &scene || deformedRevision_ != state.doc.meshRevision() ||
       deformedChange_ != state.doc.changeCount() || deformedPose_ != state.doc.poseRevision()) {
     deformed_.clear();
@@ -122,6 +135,18 @@ SkeletonPick ViewportTools::pickAt(const EditorState& state, const ViewportView&
     deformedChange_ = state.doc.changeCount();
     deformedPose_ = state.doc.poseRevision();
   }
+}
+
+SkeletonPick ViewportTools::pickAt(const EditorState& state, const ViewportView& view,
+                                   const SkeletonDrawList& list) const {
+  SkeletonPick pick = pickSkeletonAt(list, view, mouse_);
+  // Shown bones (solid or x-ray) are picked through the body, as in Blender's pose mode with
+  // x-ray; a click on the body away from any bone, or any click while the bones are hidden,
+  // takes the joint weighing most at the hit vertex.
+  if (pick.hit() && state.view.showBones) return pick;
+  const Scene& scene = state.doc.scene();
+  if (scene.meshInstances.empty()) return pick;
+  refreshDeformed(state);
   const MeshPick m = pickMeshJoint(scene, deformed_, view.rayThrough(mouse_));
   if (m.hit()) {
     pick.joint = m.joint;
@@ -243,6 +268,7 @@ bool ViewportTools::startLatticeGrab(EditorState& state) {
 }
 
 void ViewportTools::leftPress(EditorState& state, const ViewportView& view, const SkeletonDrawList& list) {
+  if (state.panels.softPullPickInstance >= 0) return softPullPickPress(state, view);
   if (state.lattice.active) return latticePress(state, view);
   Document& doc = state.doc;
   const bool shift = mods_ & kModShift;

@@ -48,6 +48,10 @@ class ViewportTools {
   void applyRotate(EditorState& state, const ViewportView& view);
   // The joint under the mouse: shown bones and joints first, else the body (mesh_picking.h).
   SkeletonPick pickAt(const EditorState& state, const ViewportView& view, const SkeletonDrawList& list) const;
+  // Properties > Deformers > Pick centre is waiting: a click on the body centres the soft pull there.
+  void softPullPickPress(EditorState& state, const ViewportView& view);
+  // deformed_ as the document shows now (the meshes deformed at the current pose).
+  void refreshDeformed(const EditorState& state) const;
   void applyGizmo(EditorState& state, const ViewportView& view);
   void applyMove(EditorState& state, const ViewportView& view);  // Grab and IK drags
   void applyLatticeMove(EditorState& state, const ViewportView& view);
