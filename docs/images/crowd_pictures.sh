@@ -1,7 +1,8 @@
 #!/bin/sh
 # Issue 24's crowd pictures, made by Kinema: 40 CesiumMen walking round a sphere to a goal,
 # run by `kinema simulate` into a glTF of 40 skinned characters and the obstacle, rendered as a
-# frame strip (docs/images/crowd_walk_strip.png: frames 0, 48, ... 240: ten seconds); and the editor on the
+# frame strip (docs/images/crowd_walk_strip.png: frames 0, 48, ... 240: ten seconds) and a GIF
+# (docs/images/crowd_walk.gif); and the editor on the
 # same crowd with the Crowd panel and one member's impulse vectors close up
 # (docs/images/crowd_editor.png). Usage: crowd_pictures.sh BUILD/src/kinema
 set -eu
@@ -24,6 +25,15 @@ PY
 mkdir -p "$tmp/strip"
 "$kinema" render "$tmp/crowd.glb" --frames 0:240 --size 400x300 --camera 0,60,30 --bones none --out "$tmp/strip/frame_%04d.png" 2>/dev/null
 montage $(ls "$tmp"/strip/frame_*.png | awk 'NR % 48 == 1') -tile x1 -geometry +0+0 "$root/docs/images/crowd_walk_strip.png"
+# The GIF (docs/images/crowd_walk.gif): every third frame at 8 fps, ten seconds, when ffmpeg is there.
+if command -v ffmpeg >/dev/null 2>&1; then
+  mkdir -p "$tmp/gif"
+  for f in $(ls "$tmp"/strip/frame_*.png | awk 'NR % 3 == 1'); do cp "$f" "$tmp/gif/"; done
+  ffmpeg -y -loglevel error -framerate 8 -pattern_type glob -i "$tmp/gif/frame_*.png" \
+    -vf "split[a][b];[a]palettegen=reserve_transparent=0[p];[b][p]paletteuse" "$root/docs/images/crowd_walk.gif"
+else
+  echo "crowd_pictures.sh: ffmpeg is not installed (apt-get install ffmpeg): no crowd_walk.gif" >&2
+fi
 
 mkdir -p "$tmp/home"
 XDG_STATE_HOME="$tmp/home" XDG_CONFIG_HOME="$tmp/home" sh "$root/tests/tools/xvfb_run.sh" 1920x1200x24 "$kinema" edit \

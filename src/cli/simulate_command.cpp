@@ -192,7 +192,8 @@ int runSimulate(const SimulateOptions& o) {
   if (bodies) scene.clips[o.clip] = std::move(bake->clip);
   CrowdSimulation crowdRun;  // the crowds, after the chains and ragdolls: a crowd of this file's character moves with them
   if (crowds) {
-    if (std::string e = simulateCrowds(scene, o.file, ext, framesGiven, first, last, inputLimits(o.allowOutsidePaths), crowdRun);
+    if (std::string e = simulateCrowds(scene, o.file, ext, framesGiven, first, last, inputLimits(o.allowOutsidePaths), crowdRun,
+                                       !o.render.empty());
         !e.empty())
       return badInput(o.file + ": " + e);
   }
@@ -203,7 +204,9 @@ int runSimulate(const SimulateOptions& o) {
       o.out.empty() ? std::string() : saveSimulatedScene(o.out, gltf && crowds ? crowdRun.characters : scene, o.clip, report);
   for (const std::string& line : report) std::cerr << "kinema simulate: warning: " << line << "\n";
   if (!error.empty()) return badInput(error);
-  if (const int code = renderSimulatedFrames(o, scene, first, last); code != kExitOk) return code;
+  // --render draws the crowd's members (and its obstacles) where the file has crowds.
+  if (const int code = renderSimulatedFrames(o, crowds ? crowdRun.characters : scene, first, last); code != kExitOk)
+    return code;
 
   if (o.json) {
     const Skeleton& s = scene.skeleton;

@@ -9,7 +9,8 @@
 namespace kinema::cli {
 
 std::string simulateCrowds(Scene& scene, const std::string& file, const std::string& ext, bool framesGiven,
-                           long long first, long long last, const InputLimits& limits, CrowdSimulation& result) {
+                           long long first, long long last, const InputLimits& limits, CrowdSimulation& result,
+                           bool drawn) {
   const bool kinemaOut = ext == ".kinema";
   const std::vector<CrowdSettings> crowds = scene.simulation.crowds;
   for (const CrowdSettings& crowd : crowds) {
@@ -43,12 +44,12 @@ std::string simulateCrowds(Scene& scene, const std::string& file, const std::str
     for (const Clip& c : bake->clips) names.push_back(c.name);
     part[kinemaOut ? "clips" : "characters"] = std::move(names);
     result.parts.push_back(std::move(part));
-    if (kinemaOut) {
-      for (Clip& c : bake->clips) scene.clips.push_back(std::move(c));
-    } else {
+    if (!kinemaOut || drawn) {
       appendCrowdCharacters(result.characters, crowd, character.value(), bake.value());
       appendCrowdObstacles(result.characters, crowd);
     }
+    if (kinemaOut)
+      for (Clip& c : bake->clips) scene.clips.push_back(std::move(c));
   }
   return "";
 }

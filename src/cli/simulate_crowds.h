@@ -16,8 +16,10 @@ struct CrowdSimulation {
 // Runs and bakes every crowd of `scene` (read from `file`): frames first..last when
 // `framesGiven`, else each crowd's clip's own frames. For a .kinema OUT each member's clip is
 // appended to scene.clips (the crowd's character must then be the file's own); for glTF the
-// members go into `result.characters`. Returns "" or the one-line reason it failed.
+// members go into `result.characters`, also when `drawn` (--render draws that scene).
+// Returns "" or the one-line reason it failed.
 std::string simulateCrowds(Scene& scene, const std::string& file, const std::string& outExtension, bool framesGiven,
-                           long long first, long long last, const InputLimits& limits, CrowdSimulation& result);
+                           long long first, long long last, const InputLimits& limits, CrowdSimulation& result,
+                           bool drawn = false);
 
 }  // namespace kinema::cli

@@ -6,10 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "anim/sampling.h"
+#include "io/image.h"
 #include "io/kinema_file.h"
 #include "io/scene.h"
 #include "skin/default_character_scene.h"
@@ -152,6 +155,37 @@ TEST_F(CrowdCli, BvhAndOtherFilesCharactersInAKinemaOutAreRefused) {
   EXPECT_NE(kinema("'" + missing + "' --out '" + dir_ + "/z.glb'"), 0);
   EXPECT_NE(err_.find("crowd 'crowd': character:"), std::string::npos) << err_;
   EXPECT_FALSE(exists(dir_ + "/z.glb"));
+}
+
+}  // namespace
+}  // namespace kinema::test
+
+namespace kinema::test {
+namespace {
+
+// --render draws the crowd: the members and the sphere, where `kinema render` of the same file
+// draws the file's own character alone; so the two pictures of frame 1 differ in many pixels.
+TEST_F(CrowdCli, RenderDrawsTheMembers) {
+  const Scene scene = crowdFile(4);
+  const std::string in = save(scene, "crowd.kinema");
+  ASSERT_EQ(kinema("'" + in + "' --frames 0:1 --render '" + dir_ + "/frames' --size 200x150 --camera 0,60,20"), 0) << err_;
+  for (int f = 0; f <= 1; ++f) {
+    char name[32];
+    std::snprintf(name, sizeof name, "/frames/frame_%04d.png", f);
+    EXPECT_TRUE(exists(dir_ + name)) << name;
+  }
+  ASSERT_EQ(runCommand(std::string(KINEMA_BINARY) + " render '" + in + "' --frame 1 --size 200x150 --camera 0,60,20 --out '" +
+                           dir_ + "/alone.png'",
+                       &out_, &err_),
+            0)
+      << err_;
+  Result<Image> crowd = loadPng(dir_ + "/frames/frame_0001.png"), alone = loadPng(dir_ + "/alone.png");
+  ASSERT_TRUE(crowd && alone);
+  ASSERT_EQ(crowd->rgba.size(), alone->rgba.size());
+  size_t differing = 0;
+  for (size_t i = 0; i + 3 < crowd->rgba.size(); i += 4)
+    differing += std::abs(int(crowd->rgba[i]) - int(alone->rgba[i])) + std::abs(int(crowd->rgba[i + 1]) - int(alone->rgba[i + 1])) > 40;
+  EXPECT_GT(differing, 200u) << "four members and a sphere are drawn, not the file's one character";
 }
 
 }  // namespace
