@@ -1,4 +1,5 @@
-// Sanitizer builds only: keeps Mesa's software DRI driver loaded for the whole test process.
+// Sanitizer builds only: keeps Mesa's software DRI driver loaded for the whole process (the
+// test programs and the kinema binary they start).
 // EGL dlopens it and dlcloses it at eglTerminate; once its pages are unmapped, LeakSanitizer
 // cannot see what the driver's globals still point to and reports the driver's own
 // allocations as leaks from an "<unknown module>" that no suppression can name. With the
