@@ -153,9 +153,9 @@ TEST_F(DeformersE2e, ASoftPullIsCentredWhereTheBodyIsClicked) {
   const std::string saved = dir_ + "/pull.kinema";
   Script s;
   s.clickItem("Properties/Deformers/Add Soft pull").wait(2);
+  s.scrollPanel("Properties", -20);  // the soft pull's rows are below the panel's fold
   s.clickItem("Properties/Deformers/soft_pull/Pick centre").wait(2);
   s.click(at).wait(2);
-  s.scrollPanel("Properties", -4);  // the radius row is below the panel's fold
   s.clickItem("Properties/Deformers/soft_pull/radius", {0.2, 0.5}).wait(1).chord("A", {"ctrl"}).type("0.15").key("ENTER").wait(2);
   s.saveAs(saved);
   const json d = run(s, "soft_pull_picked");

@@ -2,6 +2,7 @@
 // meshes may change them as one undo step, invalid stacks are refused, and a save keeps them.
 #include <gtest/gtest.h>
 
+#include "core/forward_kinematics.h"
 #include "editor/model/deformer_edits.h"
 #include "editor/model/document.h"
 #include "skin/default_character_scene.h"
@@ -131,6 +132,79 @@ TEST(DocumentDeformers, ASoftPullsCentreRadiusAndFalloffAreOneUndoStepAndKeepIts
   EXPECT_EQ(undone.center, before.center);
   EXPECT_EQ(undone.radius, before.radius);
   EXPECT_EQ(undone.falloff, before.falloff);
+}
+
+}  // namespace
+}  // namespace kinema
+
+namespace kinema {
+namespace {
+
+TEST(DocumentDeformers, PlacementAndScopeEditsAreUndoStepsThatChangeWhatTheyName) {
+  Document doc(makeDefaultCharacterScene());
+  const Skeleton& sk = doc.skeleton();
+  ASSERT_EQ(addDeformer(doc, 0, DeformerType::Lattice), "");
+  const FfdLattice before = doc.scene().deformers[0].deformers[0].lattice;
+  const size_t steps = doc.historyLabels().size();
+
+  // Resolution: a 4x2x3 grid over the same rest box, every point at rest.
+  const int counts[3] = {4, 2, 3};
+  ASSERT_EQ(setLatticeResolution(doc, 0, 0, counts), "");
+  const FfdLattice& res = doc.scene().deformers[0].deformers[0].lattice;
+  EXPECT_EQ(res.pointCount(), 24);
+  EXPECT_EQ(res.origin, before.origin);
+  EXPECT_EQ(res.points[static_cast<size_t>(res.index(3, 1, 2))], before.origin + before.axes[0] + before.axes[1] + before.axes[2]);
+  const int tooMany[3] = {9, 2, 2};
+  EXPECT_NE(setLatticeResolution(doc, 0, 0, tooMany), "");
+  EXPECT_EQ(doc.historyLabels().size(), steps + 1);
+
+  // Fitted around the head: the box holds the head's vertices and is far shorter than the body's.
+  const int head = sk.find("Head");
+  ASSERT_EQ(fitLatticeToJoints(doc, 0, 0, {head}), "");
+  const FfdLattice& fitted = doc.scene().deformers[0].deformers[0].lattice;
+  EXPECT_LT(glm::length(fitted.axes[1]), 0.5f * glm::length(before.axes[1]));
+  EXPECT_GT(fitted.origin.y, before.origin.y + 1.0f) << "up at the head";
+
+  // Parented to the chest: its rest matrix is the chest's at the rest pose.
+  const int chest = sk.find("Chest");
+  ASSERT_EQ(setDeformerParent(doc, 0, 0, chest), "");
+  EXPECT_EQ(doc.scene().deformers[0].deformers[0].parentJoint, chest);
+  EXPECT_EQ(doc.scene().deformers[0].deformers[0].parentRest, computeWorld(sk, Pose::rest(sk))[chest]);
+
+  // Limited to the head's skin weights: each vertex's weight is the sum of its head influences.
+  ASSERT_EQ(limitDeformerToJoint(doc, 0, 0, head), "");
+  const Scene& scene = doc.scene();
+  const Deformer& limited = scene.deformers[0].deformers[0];
+  const MeshInstance& mi = scene.meshInstances[0];
+  const std::vector<MeshPrimitive>& prims = scene.meshes[static_cast<size_t>(mi.mesh)].primitives;
+  ASSERT_EQ(limited.weights.size(), prims.size());
+  int weighted = 0;
+  for (size_t p = 0; p < prims.size(); ++p)
+    for (int v = 0; v < prims[p].vertexCount(); ++v) {
+      float expected = 0.0f;
+      for (int k = 0; k < kMaxInfluences; ++k) {
+        const size_t at = static_cast<size_t>(v) * kMaxInfluences + static_cast<size_t>(k);
+        if (scene.skins[static_cast<size_t>(mi.skin)].joints[prims[p].influenceJoints[at]] == head)
+          expected += prims[p].influenceWeights[at];
+      }
+      EXPECT_FLOAT_EQ(limited.weights[p][static_cast<size_t>(v)], expected);
+      weighted += expected > 0.0f;
+    }
+  EXPECT_GT(weighted, 10);
+  ASSERT_EQ(limitDeformerToJoint(doc, 0, 0, -1), "");
+  EXPECT_TRUE(doc.scene().deformers[0].deformers[0].weights.empty());
+
+  // A twist's axis and range; a range that is empty is refused.
+  ASSERT_EQ(addDeformer(doc, 0, DeformerType::Twist), "");
+  ASSERT_EQ(setAxisRange(doc, 0, 1, DeformAxis::X, -0.2f, 0.3f), "");
+  EXPECT_EQ(doc.scene().deformers[0].deformers[1].axis.axis, DeformAxis::X);
+  EXPECT_EQ(doc.scene().deformers[0].deformers[1].axis.high, 0.3f);
+  EXPECT_NE(setAxisRange(doc, 0, 1, DeformAxis::Y, 0.5f, 0.1f), "");
+  EXPECT_NE(setAxisRange(doc, 0, 0, DeformAxis::Y, 0.0f, 1.0f), "") << "a lattice has no axis";
+  // Every accepted change was one step: resolution, fit, parent, limit, unlimit, add, axis.
+  EXPECT_EQ(doc.historyLabels().size(), steps + 7);
+  ASSERT_TRUE(doc.undo());
+  EXPECT_EQ(doc.scene().deformers[0].deformers[1].axis.axis, DeformAxis::Y);
 }
 
 }  // namespace

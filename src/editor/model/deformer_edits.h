@@ -17,6 +17,21 @@ namespace kinema {
 // Named after the type, made unique ("twist", "twist.001"...), as Blender names modifiers.
 std::string addDeformer(Document& doc, int instance, DeformerType type);
 std::string removeDeformer(Document& doc, int instance, int deformer);
+// A deformer's placement and scope (not keyable), each one undo step:
+// - a lattice of `counts` points (2..8 each way) over the same rest box, every point back at
+//   rest (as Blender resets a lattice whose resolution changes);
+std::string setLatticeResolution(Document& doc, int instance, int deformer, const int counts[3]);
+// - the lattice refitted at rest, same resolution, around the rest-pose vertices whose
+//   heaviest joint is one of `joints` (all the mesh's vertices when `joints` is empty);
+std::string fitLatticeToJoints(Document& doc, int instance, int deformer, const std::vector<int>& joints);
+// - parented to skeleton joint `joint` (-1: the world): placed at the rest pose, it then
+//   follows that joint's motion;
+std::string setDeformerParent(Document& doc, int instance, int deformer, int joint);
+// - limited to the vertices `joint` weighs, each moved by that skin weight (a vertex group
+//   from the skin; -1: every vertex in full);
+std::string limitDeformerToJoint(Document& doc, int instance, int deformer, int joint);
+// - a bend, twist or taper's axis and its range along it (metres from its origin, low < high).
+std::string setAxisRange(Document& doc, int instance, int deformer, DeformAxis axis, float low, float high);
 // Moves deformer `deformer` one place up (-1) or down (+1) the stack.
 std::string moveDeformer(Document& doc, int instance, int deformer, int step);
 std::string setDeformerEnabled(Document& doc, int instance, int deformer, bool enabled);

@@ -54,6 +54,15 @@ void parameterRow(EditorState& state, int instance, int index, const Deformer& d
   recordItem(item + "/Key");
 }
 
+// SameLine when a small button labelled `label` still fits the panel's width, else a new line
+// (a narrow panel would clip it off its edge).
+void sameLineIfFits(const char* label) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float width = ImGui::CalcTextSize(label).x + 2.0f * style.FramePadding.x;
+  if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + width <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x)
+    ImGui::SameLine();
+}
+
 // A soft pull's centre, radius and falloff (not keyable: its offset is): Pick centre waits for
 // a click on the body in the 3D view (viewport_tools.cpp), radius and falloff edit in place.
 void softPullShapeRows(EditorState& state, int instance, int index, const Deformer& d) {
@@ -86,6 +95,54 @@ void softPullShapeRows(EditorState& state, int instance, int index, const Deform
   recordItem("Properties/Deformers/" + d.name + "/falloff");
 }
 
+// Where a deformer hangs and what it moves: parent (the world or a joint it follows), scope (every
+// vertex or the active joint's skin weights); a lattice's resolution and fit; a bend / twist /
+// taper's axis and range. Each change is one undo step (deformer_edits.h).
+void placementRows(EditorState& state, int instance, int index, const Deformer& d) {
+  Document& doc = state.doc;
+  const int active = doc.selection.active();
+  const std::string item = "Properties/Deformers/" + d.name + "/";
+  ImGui::TextDisabled("follows %s", d.parentJoint >= 0 ? doc.skeleton().names[d.parentJoint].c_str() : "the world");
+  sameLineIfFits("Parent to active");
+  if (ImGui::SmallButton("Parent to active") && active >= 0) showEditorError(state, setDeformerParent(doc, instance, index, active));
+  recordItem(item + "Parent to active");
+  sameLineIfFits("World");
+  if (ImGui::SmallButton("World")) showEditorError(state, setDeformerParent(doc, instance, index, -1));
+  recordItem(item + "Parent to world");
+  ImGui::TextDisabled("%s", d.weights.empty() ? "moves every vertex" : "moves a vertex group");
+  sameLineIfFits("Limit to active's weights");
+  if (ImGui::SmallButton("Limit to active's weights") && active >= 0)
+    showEditorError(state, limitDeformerToJoint(doc, instance, index, active));
+  recordItem(item + "Limit to active");
+  sameLineIfFits("All");
+  if (ImGui::SmallButton("All")) showEditorError(state, limitDeformerToJoint(doc, instance, index, -1));
+  recordItem(item + "Limit to all");
+  if (d.type == DeformerType::Lattice) {
+    int counts[3] = {d.lattice.counts[0], d.lattice.counts[1], d.lattice.counts[2]};
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
+    ImGui::InputInt3(("points##res" + d.name).c_str(), counts);
+    recordItem(item + "resolution");
+    if (ImGui::IsItemDeactivatedAfterEdit()) showEditorError(state, setLatticeResolution(doc, instance, index, counts));
+    sameLineIfFits("Fit to selected");
+    if (ImGui::SmallButton("Fit to selected")) showEditorError(state, fitLatticeToJoints(doc, instance, index, doc.selection.joints()));
+    recordItem(item + "Fit to selected");
+  } else if (d.type != DeformerType::SoftPull) {
+    static const char* kAxes[] = {"X", "Y", "Z"};
+    int axis = static_cast<int>(d.axis.axis);
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 3.0f);
+    if (ImGui::Combo(("axis##" + d.name).c_str(), &axis, kAxes, 3))
+      showEditorError(state, setAxisRange(doc, instance, index, static_cast<DeformAxis>(axis), d.axis.low, d.axis.high));
+    recordItem(item + "axis");
+    ImGui::SameLine();
+    float range[2] = {d.axis.low, d.axis.high};
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8.0f);
+    ImGui::InputFloat2(("range (m)##" + d.name).c_str(), range, "%.3g");
+    recordItem(item + "range");
+    if (ImGui::IsItemDeactivatedAfterEdit())
+      showEditorError(state, setAxisRange(doc, instance, index, d.axis.axis, range[0], range[1]));
+  }
+}
+
 }  // namespace
 
 void drawDeformersSection(CommandContext& ctx) {
@@ -101,12 +158,7 @@ void drawDeformersSection(CommandContext& ctx) {
     static const char* labels[] = {"Lattice", "Bend", "Twist", "Taper", "Soft pull"};
     ImGui::TextDisabled("Add to mesh %d:", i);
     for (int k = 0; k < 5; ++k) {
-      // On the same line while the button fits the panel, else on the next (a narrow panel
-      // would clip "Soft pull" off its edge).
-      const ImGuiStyle& style = ImGui::GetStyle();
-      const float width = ImGui::CalcTextSize(labels[k]).x + 2.0f * style.FramePadding.x;
-      const float right = ImGui::GetItemRectMax().x + style.ItemSpacing.x + width;
-      if (right <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) ImGui::SameLine();
+      sameLineIfFits(labels[k]);
       if (ImGui::SmallButton(labels[k])) {
         showEditorError(state, addDeformer(doc, i, kinds[k]));
         if (kinds[k] == DeformerType::Lattice && !state.lattice.active) {  // the new lattice is the active one (Tab edits it)
@@ -131,8 +183,9 @@ void drawDeformersSection(CommandContext& ctx) {
       ImGui::SameLine();
       if (ImGui::SmallButton("Apply as shape")) showEditorError(state, applyDeformerAsShape(doc, i, k));
       recordItem("Properties/Deformers/" + d.name + "/Apply as shape");
-      ImGui::SameLine();
+      sameLineIfFits("Remove");
       if (ImGui::SmallButton("Remove")) showEditorError(state, removeDeformer(doc, i, k));
+      placementRows(state, i, k, d);
       switch (d.type) {
         case DeformerType::Bend:
         case DeformerType::Twist: parameterRow(state, i, k, d, "angle", "angle (rad)", 0.01f); break;
