@@ -198,6 +198,13 @@ void computeWorld(const Skeleton& skeleton, const Pose& pose, std::vector<glm::m
   job.run();
 }
 
+float restJointHeight(const Skeleton& skeleton) {
+  if (skeleton.size() < 2) return 0.0f;
+  float lo = 1e30f, hi = -1e30f;
+  for (const glm::mat4& m : computeWorld(skeleton, Pose::rest(skeleton))) lo = std::min(lo, m[3].y), hi = std::max(hi, m[3].y);
+  return hi > lo ? hi - lo : 0.0f;
+}
+
 std::vector<glm::mat4> computeWorld(const Skeleton& skeleton, const Pose& pose) {
   std::vector<glm::mat4> world;
   computeWorld(skeleton, pose, world);

@@ -28,6 +28,9 @@ struct LocalToWorldJob {
 // Convenience wrappers over LocalToWorldJob for whole skeletons.
 std::vector<glm::mat4> computeWorld(const Skeleton& skeleton, const Pose& pose);
 void computeWorld(const Skeleton& skeleton, const Pose& pose, std::vector<glm::mat4>& world);
+// The vertical (Y) extent of the joints at the rest pose, file units: how tall a character
+// stands. 0 for a skeleton of fewer than two joints or a flat one.
+float restJointHeight(const Skeleton& skeleton);
 // Recomputes world[] for `joint` and everything below it (IK changes one sub-tree).
 void updateSubtree(const Skeleton& skeleton, const Pose& pose, int joint,
                    std::vector<glm::mat4>& world);

@@ -12,11 +12,10 @@ namespace kinema {
 
 namespace {
 
-// The height of the character's rest joints (file units): how big a crowd of it should be.
+// How big a crowd of the character should be: its rest height (file units), 1 when flat.
 float restHeight(const Skeleton& s) {
-  float lo = 1e30f, hi = -1e30f;
-  for (const glm::mat4& m : computeWorld(s, Pose::rest(s))) lo = std::min(lo, m[3].y), hi = std::max(hi, m[3].y);
-  return s.size() > 0 && hi > lo ? hi - lo : 1.0f;
+  const float h = restJointHeight(s);
+  return h > 0.0f ? h : 1.0f;
 }
 
 std::string checkIndex(const Document& doc, int index, const char* what) {

@@ -11,11 +11,10 @@ namespace kinema {
 
 namespace {
 
-// The height of the box around the rest joints (what the default system scales to).
+// What the default system scales to: the character's rest height, 1.8 (a person) when flat.
 float restHeight(const Skeleton& s) {
-  float lo = 1e30f, hi = -1e30f;
-  for (const glm::mat4& m : computeWorld(s, Pose::rest(s))) lo = std::min(lo, m[3].y), hi = std::max(hi, m[3].y);
-  return s.size() > 1 && hi > lo ? hi - lo : 1.8f;
+  const float h = restJointHeight(s);
+  return h > 0.0f ? h : 1.8f;
 }
 
 std::string uniqueName(const std::vector<ParticleSystemSettings>& systems, const std::string& base) {
