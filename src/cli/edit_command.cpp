@@ -32,6 +32,10 @@ CLI::App* addEditCommand(CLI::App& app, EditOptions& o) {
   cmd->add_flag("--report-frame-passes", o.reportFramePasses,
                 "Time each pass of every frame (with glFinish between them) and print the medians on stderr at exit");
   cmd->add_flag("--empty-frame", o.emptyFrame, "Draw only an empty ImGui frame (baseline for --report-frame-times)");
+  cmd->add_option("--redraw", o.redraw,
+                  "How each frame is drawn: changed (only what differs from the previous frame), whole, or auto "
+                  "(changed on software rasterisers such as llvmpipe; the default)")
+      ->check(CLI::IsMember({"auto", "whole", "changed"}));
   addUpOption(cmd, o.up);
   cmd->add_option("--compare", o.compare, "Open in Teach > Compare Solvers with this preset (kinema demo list)");
   cmd->add_flag("--list-commands", o.listCommands,
@@ -55,6 +59,7 @@ int runEdit(const EditOptions& o) {
   }
   if (o.maxFps != -1 && (o.maxFps < 1 || o.maxFps > 1000)) return badInput("--max-fps must be a whole number from 1 to 1000");
   EditorWindowOptions options;
+  options.redraw = o.redraw == "whole" ? WindowRedraw::Whole : o.redraw == "changed" ? WindowRedraw::Changed : WindowRedraw::Auto;
   options.width = o.width;
   options.height = o.height;
   options.uiScale = std::isnan(o.uiScale) ? 0.0f : o.uiScale;

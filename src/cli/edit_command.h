@@ -6,7 +6,8 @@
 namespace kinema::cli {
 
 // `kinema edit [FILE] [--frame-count N] [--screenshot PATH] [--script FILE] [--dump-state FILE]
-//  [--size WxH] [--ui-scale S] [--max-fps N] [--report-frame-times] [--empty-frame] [--compare PRESET] [--list-commands]`
+//  [--size WxH] [--ui-scale S] [--max-fps N] [--redraw MODE] [--report-frame-times] [--empty-frame] [--compare PRESET]
+//  [--list-commands]`
 struct EditOptions {
   std::string file;
   bool allowOutsidePaths = false;  // --allow-outside-paths: glTF uris may leave the file's folder
@@ -19,6 +20,7 @@ struct EditOptions {
   bool reportFrameTimes = false;
   bool reportFramePasses = false;
   bool emptyFrame = false;
+  std::string redraw = "auto";  // --redraw: auto, whole or changed (window_redraw.h)
   std::string compare;  // open straight into Teach > Compare Solvers with this preset
   bool listCommands = false;  // print every command and its keys as markdown, open no window
   std::string up = "y";  // --up: BVH files' up axis

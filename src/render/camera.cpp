@@ -86,6 +86,12 @@ std::string OrbitCamera::validate() const {
   return {};
 }
 
+float steadySceneRadius(float radius) {
+  if (!(radius > 1e-3f) || !std::isfinite(radius)) return 1e-3f;
+  const double step = std::log(1.25);
+  return static_cast<float>(std::exp(std::ceil(std::log(double(radius)) / step) * step));
+}
+
 float gridCellSize(float sceneRadius) {
   if (!(sceneRadius > 0.0f) || !std::isfinite(sceneRadius)) return 1.0f;
   const float raw = sceneRadius / 4.0f;  // a diameter of about eight cells

@@ -50,6 +50,12 @@ struct OrbitCamera {
   std::string validate() const;
 };
 
+// A scene radius rounded up to the next power of 1.25 (at least 1e-3): the editor sizes its
+// grid and clip planes with it, so a pose that moves a little (an IK drag, a played clip)
+// keeps the same grid and depth range, and the view outside what moved stays the same
+// picture (SceneDamageJob redraws only the moved part). Non-finite or non-positive: 1e-3.
+float steadySceneRadius(float radius);
+
 // The ground grid's cell size for a scene of this size: a 1-2.5-5 step chosen so that the
 // scene spans roughly eight cells, whatever the file's units (metres, centimetres, inches).
 float gridCellSize(float sceneRadius);

@@ -34,6 +34,8 @@ struct Digest {
     array(s.boneColors);
     array(s.jointMatrices);
     array(s.jointColors);
+    value(s.relationships.size());
+    for (const auto& r : s.relationships) value(r.from), value(r.to), value(r.color);
   }
   void overlay(const OverlayDrawList& o) {
     value(o.lines.size());
@@ -55,31 +57,18 @@ struct Digest {
   }
 };
 
-}  // namespace
-
-uint64_t frameSignature(const FrameDescription& f) {
-  Digest d;
+// The settings (camera, viewport, switches) and the ghosts, which both digests hold.
+void settingsAndGhosts(Digest& d, const FrameDescription& f) {
   const OrbitCamera& c = f.camera;
   d.value(c.azimuthDeg), d.value(c.elevationDeg), d.value(c.distance), d.value(c.target), d.value(c.fovYDeg);
   d.value(c.nearPlane), d.value(c.farPlane), d.value(c.orthographic);
   d.value(f.x), d.value(f.y), d.value(f.width), d.value(f.height);
   d.value(f.sceneRadius), d.value(f.showGrid), d.value(f.background), d.value(f.bones), d.value(f.lineScale);
   d.value(f.skeleton != nullptr);
-  if (f.skeleton) d.skeleton(*f.skeleton);
   d.value(f.overlay != nullptr);
-  if (f.overlay) d.overlay(*f.overlay);
   d.value(f.ghosts ? f.ghosts->size() : size_t(0));
   if (f.ghosts)
     for (const SkeletonDrawList& g : *f.ghosts) d.skeleton(g);
-  const bool meshes = f.meshes && f.meshes->renderer;
-  d.value(meshes);
-  if (meshes) {
-    d.value(f.meshes->renderer);
-    d.value(f.meshes->frame.weightJoint);
-    d.value(f.meshes->frame.world != nullptr);
-    if (f.meshes->frame.world) d.array(*f.meshes->frame.world);
-    d.weights(f.meshes->frame.morphWeights);
-  }
   d.value(f.meshGhosts ? f.meshGhosts->size() : size_t(0));
   if (f.meshGhosts)
     for (const MeshGhost& g : *f.meshGhosts) {
@@ -88,6 +77,45 @@ uint64_t frameSignature(const FrameDescription& f) {
       if (g.world) d.array(*g.world);
       d.weights(g.morphWeights);
     }
+}
+
+}  // namespace
+
+uint64_t frameSettingsSignature(const FrameDescription& f) {
+  Digest d;
+  settingsAndGhosts(d, f);
+  if (f.skeleton) d.array(f.skeleton->boneParents), d.array(f.skeleton->joints);
+  const bool meshes = f.meshes && f.meshes->renderer;
+  d.value(meshes);
+  if (!meshes) return d.h;
+  const MeshFrame& m = f.meshes->frame;
+  d.value(f.meshes->renderer), d.value(m.weightJoint), d.value(m.posed != nullptr), d.value(m.gpuDeformers != nullptr);
+  if (!m.posed) {
+    d.value(m.world != nullptr);
+    if (m.world) d.array(*m.world);
+    d.weights(m.morphWeights);
+  }
+  d.value(m.deformed ? m.deformed->size() : size_t(0));
+  if (m.deformed)
+    for (const DeformedPrimitive& p : *m.deformed) {
+      d.value(p.instance), d.value(p.primitive);
+      d.array(p.positions), d.array(p.normals);
+    }
+  return d.h;
+}
+
+uint64_t frameSignature(const FrameDescription& f) {
+  // The settings digest plus every element it leaves out.
+  Digest d;
+  d.value(frameSettingsSignature(f));
+  if (f.skeleton) d.skeleton(*f.skeleton);
+  if (f.overlay) d.overlay(*f.overlay);
+  if (f.meshes && f.meshes->renderer) {
+    const MeshFrame& m = f.meshes->frame;
+    d.value(m.world != nullptr);
+    if (m.world) d.array(*m.world);
+    d.weights(m.morphWeights);
+  }
   return d.h;
 }
 

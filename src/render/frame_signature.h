@@ -12,4 +12,11 @@ struct FrameDescription;
 // collision), so the editor can show the kept one instead of drawing it again.
 uint64_t frameSignature(const FrameDescription& frame);
 
+// The same digest of everything apart from the elements SceneDamageJob compares one by one
+// (the skeleton's bones, joints and relationship lines, the overlay, and the vertices of
+// meshes posed on the CPU, MeshFrame::posed): camera, viewport, switches, grid, ghosts, the
+// meshes' joints and morph weights when they are not posed on the CPU, and the vertices of
+// meshes deformed on the CPU (MeshFrame::deformed).
+uint64_t frameSettingsSignature(const FrameDescription& frame);
+
 }  // namespace kinema

@@ -10,6 +10,12 @@ std::string HeadlessContext::description() const {
   return std::string(renderer ? renderer : "?") + " | " + (version ? version : "?");
 }
 
+bool softwareRasterizer() {
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const std::string name = renderer ? renderer : "";
+  return name.find("llvmpipe") != std::string::npos || name.find("softpipe") != std::string::npos;
+}
+
 Result<std::unique_ptr<HeadlessContext>> createHeadlessContext(HeadlessBackend backend) {
   return backend == HeadlessBackend::Egl ? createEglContext() : createOsMesaContext();
 }

@@ -18,6 +18,10 @@ class HeadlessContext {
 
 enum class HeadlessBackend { Egl, OsMesa };
 
+// Whether the current context rasterises on the CPU (Mesa's llvmpipe or softpipe, by
+// GL_RENDERER): where the editor deforms meshes on the CPU and redraws only what changed.
+bool softwareRasterizer();
+
 // EGL on Mesa's surfaceless platform (falling back to the device platform): no display,
 // no window system, no GPU needed.
 Result<std::unique_ptr<HeadlessContext>> createEglContext();

@@ -4,8 +4,9 @@
 #include <cstddef>
 #include <cstring>
 
-#include "render/shader_sources.h"
 #include "deform/deformer_stack.h"
+#include "render/gl_context.h"
+#include "render/shader_sources.h"
 #include "skin/skinning_decomposition.h"
 #include "skin/skinning_matrices.h"
 
@@ -139,6 +140,7 @@ void MeshRenderer::release() {
 std::string MeshRenderer::init() {
   // The world position and normal are also captured by transform feedback (deform()).
   std::string error = program_.build("mesh", shaders::mesh_vert, shaders::mesh_frag, {"vWorldPosition", "vWorldNormal"});
+  if (error.empty()) error = posedProgram_.build("mesh_posed", shaders::mesh_posed_vert, shaders::mesh_frag);
   if (!error.empty()) return error;
   glGenBuffers(1, &jointBuffer_);
   glBindBuffer(GL_TEXTURE_BUFFER, jointBuffer_);
@@ -157,9 +159,7 @@ std::string MeshRenderer::init() {
   glBindBuffer(GL_TEXTURE_BUFFER, 0);
   glGenBuffers(1, &feedbackBuffer_);
   glGenBuffers(1, &cpuBuffer_);
-  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  const std::string name = renderer ? renderer : "";
-  cpuDeformation_ = name.find("llvmpipe") != std::string::npos || name.find("softpipe") != std::string::npos;
+  cpuDeformation_ = softwareRasterizer();
   // Draws need a complete framebuffer even with the rasterizer off, and a headless context
   // has none of its own: deform() binds this 1x1 one.
   glGenRenderbuffers(1, &feedbackColor_);
@@ -173,6 +173,8 @@ std::string MeshRenderer::init() {
   glUniform1i(program_.uniform("uJoints"), 0);
   glUniform1i(program_.uniform("uMorphDeltas"), 1);
   glUniform1i(program_.uniform("uBaseColorTexture"), 2);
+  glUseProgram(posedProgram_.id());
+  glUniform1i(posedProgram_.uniform("uBaseColorTexture"), 2);
   glUseProgram(0);
   const GLenum status = glGetError();
   if (status != GL_NO_ERROR) return "OpenGL error " + std::to_string(status) + " while creating the mesh renderer";
@@ -410,13 +412,13 @@ void MeshRenderer::bindAxisDeformers(const MeshFrame& frame, int instance) {
       toLocal[count] = glm::inverse(toWorld[count]);  // the CPU's DeformerStackJob does the same
       ++count;
     }
-    glUniform2iv(program_.uniform("uAxisKind"), count, glm::value_ptr(kind[0]));
-    glUniform3fv(program_.uniform("uAxisOrigin"), count, glm::value_ptr(origin[0]));
-    glUniform3fv(program_.uniform("uAxisRange"), count, glm::value_ptr(range[0]));
-    glUniformMatrix4fv(program_.uniform("uAxisToLocal"), count, GL_FALSE, glm::value_ptr(toLocal[0]));
-    glUniformMatrix4fv(program_.uniform("uAxisToWorld"), count, GL_FALSE, glm::value_ptr(toWorld[0]));
+    glUniform2iv(shading_->uniform("uAxisKind"), count, glm::value_ptr(kind[0]));
+    glUniform3fv(shading_->uniform("uAxisOrigin"), count, glm::value_ptr(origin[0]));
+    glUniform3fv(shading_->uniform("uAxisRange"), count, glm::value_ptr(range[0]));
+    glUniformMatrix4fv(shading_->uniform("uAxisToLocal"), count, GL_FALSE, glm::value_ptr(toLocal[0]));
+    glUniformMatrix4fv(shading_->uniform("uAxisToWorld"), count, GL_FALSE, glm::value_ptr(toWorld[0]));
   }
-  glUniform1i(program_.uniform("uAxisCount"), count);
+  glUniform1i(shading_->uniform("uAxisCount"), count);
 }
 
 void MeshRenderer::bindInstance(const MeshFrame& frame, int instance, const GpuPrimitive& p, bool weightsView) {
@@ -425,16 +427,16 @@ void MeshRenderer::bindInstance(const MeshFrame& frame, int instance, const GpuP
   const bool skinned = p.skinned && inst.skin >= 0 && inst.skin < static_cast<int>(skinOffset_.size()) &&
                        inst.skin < static_cast<int>(scene_->skins.size());
   const int method = !skinned ? 0 : inst.skinning == SkinningMethod::DualQuaternion ? 2 : 1;
-  glUniform1i(program_.uniform("uSkinning"), method);
+  glUniform1i(shading_->uniform("uSkinning"), method);
   // The skin's joints start at its offset in the joint buffer: a buffer texture view per
   // skin would need GL 4.3, so the texel offset goes in through the joint numbers instead.
   const glm::mat4 model = inst.joint >= 0 && inst.joint < static_cast<int>(frame.world->size())
                               ? (*frame.world)[inst.joint]
                               : glm::mat4(1.0f);
-  glUniformMatrix4fv(program_.uniform("uModel"), 1, GL_FALSE, glm::value_ptr(model));
+  glUniformMatrix4fv(shading_->uniform("uModel"), 1, GL_FALSE, glm::value_ptr(model));
   const glm::mat3 normal = inverseTranspose3(glm::mat3(model));
-  glUniformMatrix3fv(program_.uniform("uModelNormal"), 1, GL_FALSE, glm::value_ptr(normal));
-  glUniform1i(program_.uniform("uJointOffset"), skinned ? jointSlotBase_ + skinOffset_[inst.skin] : 0);
+  glUniformMatrix3fv(shading_->uniform("uModelNormal"), 1, GL_FALSE, glm::value_ptr(normal));
+  glUniform1i(shading_->uniform("uJointOffset"), skinned ? jointSlotBase_ + skinOffset_[inst.skin] : 0);
 
   int weightJoint = -1;
   if (weightsView && frame.weightJoint >= 0) {
@@ -446,8 +448,8 @@ void MeshRenderer::bindInstance(const MeshFrame& frame, int instance, const GpuP
       weightJoint = inst.joint == frame.weightJoint ? 0 : -2;  // rigid: all or nothing
     }
   }
-  glUniform1i(program_.uniform("uWeightJoint"), weightJoint);
-  glUniform1i(program_.uniform("uShowWeights"), weightsView && frame.weightJoint >= 0);
+  glUniform1i(shading_->uniform("uWeightJoint"), weightJoint);
+  glUniform1i(shading_->uniform("uShowWeights"), weightsView && frame.weightJoint >= 0);
 
   // Morph weights: the frame's, else the instance's, else the mesh's defaults (glTF order).
   const Mesh& mesh = scene_->meshes[inst.mesh];
@@ -458,10 +460,10 @@ void MeshRenderer::bindInstance(const MeshFrame& frame, int instance, const GpuP
     weights = &(*frame.morphWeights)[instance];
   float w[kMaxMorphTargets] = {};
   for (int k = 0; k < p.morphCount && k < static_cast<int>(weights->size()); ++k) w[k] = (*weights)[k];
-  glUniform1fv(program_.uniform("uMorphWeights"), kMaxMorphTargets, w);
-  glUniform1i(program_.uniform("uMorphCount"), p.morphCount);
-  glUniform1i(program_.uniform("uVertexCount"), p.vertexCount);
-  glUniform1i(program_.uniform("uMorphHasNormals"), p.morphNormals);
+  glUniform1fv(shading_->uniform("uMorphWeights"), kMaxMorphTargets, w);
+  glUniform1i(shading_->uniform("uMorphCount"), p.morphCount);
+  glUniform1i(shading_->uniform("uVertexCount"), p.vertexCount);
+  glUniform1i(shading_->uniform("uMorphHasNormals"), p.morphNormals);
   glActiveTexture(GL_TEXTURE1);
   glBindTexture(GL_TEXTURE_BUFFER, p.morphTexture ? p.morphTexture : emptyTexture_);
 
@@ -470,11 +472,11 @@ void MeshRenderer::bindInstance(const MeshFrame& frame, int instance, const GpuP
                                  ? &scene_->materials[mesh.primitives[p.primitive].material]
                                  : nullptr;
   const glm::vec4 base = material ? material->baseColor : glm::vec4(0.8f, 0.8f, 0.8f, 1.0f);
-  glUniform4fv(program_.uniform("uBaseColor"), 1, glm::value_ptr(base));
+  glUniform4fv(shading_->uniform("uBaseColor"), 1, glm::value_ptr(base));
   const int image = material ? material->baseColorImage : -1;
   const bool textured = image >= 0 && image < static_cast<int>(textures_.size()) &&
                         !mesh.primitives[p.primitive].texcoords.empty();
-  glUniform1i(program_.uniform("uHasTexture"), textured);
+  glUniform1i(shading_->uniform("uHasTexture"), textured);
   glActiveTexture(GL_TEXTURE2);
   glBindTexture(GL_TEXTURE_2D, textured ? textures_[image] : 0);
   glActiveTexture(GL_TEXTURE0);
@@ -488,9 +490,9 @@ bool MeshRenderer::appendCpuPose(const MeshFrame& frame, CpuPose& pose) {
   job.world = frame.world;
   job.morphWeights = frame.morphWeights;
   job.out = &cpuDeformed_;
-  if (!job.validate().empty() || !job.run()) return false;
+  if (!frame.posed && (!job.validate().empty() || !job.run())) return false;
   pose.assign(scene_->meshInstances.size(), {});
-  for (const DeformedPrimitive& d : cpuDeformed_) {
+  for (const DeformedPrimitive& d : frame.posed ? *frame.posed : cpuDeformed_) {
     if (d.instance < 0 || d.instance >= static_cast<int>(pose.size()) || d.normals.size() != d.positions.size())
       return false;
     std::vector<long long>& offsets = pose[d.instance];
@@ -532,11 +534,11 @@ void MeshRenderer::drawInstancesCpu(const MeshFrame& frame, const CpuPose& pose)
         continue;
       bindInstance(frame, static_cast<int>(i), p, false);
       // Already in world space, morphed and skinned: the shader's unskinned path, identity model.
-      glUniform1i(program_.uniform("uSkinning"), 0);
-      glUniformMatrix4fv(program_.uniform("uModel"), 1, GL_FALSE, glm::value_ptr(identity));
-      glUniformMatrix3fv(program_.uniform("uModelNormal"), 1, GL_FALSE, glm::value_ptr(identity3));
-      glUniform1i(program_.uniform("uMorphCount"), 0);
-      glUniform1i(program_.uniform("uAxisCount"), 0);
+      glUniform1i(shading_->uniform("uSkinning"), 0);
+      glUniformMatrix4fv(shading_->uniform("uModel"), 1, GL_FALSE, glm::value_ptr(identity));
+      glUniformMatrix3fv(shading_->uniform("uModelNormal"), 1, GL_FALSE, glm::value_ptr(identity3));
+      glUniform1i(shading_->uniform("uMorphCount"), 0);
+      glUniform1i(shading_->uniform("uAxisCount"), 0);
       glBindVertexArray(p.cpuVao);
       glBindBuffer(GL_ARRAY_BUFFER, cpuBuffer_);
       const size_t bytes = static_cast<size_t>(pose[i][p.primitive]) * sizeof(float);
@@ -555,10 +557,10 @@ void MeshRenderer::draw(const MeshFrame& frame, const glm::mat4& viewProjection,
     cpuScratch_.clear();
     if (appendCpuPose(frame, cpuPose_)) {
       uploadCpuScratch();
-      glUseProgram(program_.id());
-      glUniformMatrix4fv(program_.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
-      glUniformMatrix4fv(program_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
-      glUniform1i(program_.uniform("uGhost"), 0);
+      useProgram(posedProgram_);
+      glUniformMatrix4fv(shading_->uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
+      glUniformMatrix4fv(shading_->uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
+      glUniform1i(shading_->uniform("uGhost"), 0);
       glEnable(GL_DEPTH_TEST);
       glDisable(GL_CULL_FACE);
       drawInstancesCpu(frame, cpuPose_);
@@ -567,12 +569,12 @@ void MeshRenderer::draw(const MeshFrame& frame, const glm::mat4& viewProjection,
     }
   }
   uploadJointMatrices(frame);
-  glUseProgram(program_.id());
-  glUniformMatrix4fv(program_.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
-  glUniformMatrix4fv(program_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
+  useProgram(program_);
+  glUniformMatrix4fv(shading_->uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
+  glUniformMatrix4fv(shading_->uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_BUFFER, jointTexture_);
-  glUniform1i(program_.uniform("uGhost"), 0);
+  glUniform1i(shading_->uniform("uGhost"), 0);
   glEnable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);  // double-sided: the fragment shader lights back faces too
   drawInstances(frame, true);
@@ -632,11 +634,11 @@ void MeshRenderer::bindCpuDeformed(GpuPrimitive& p, const DeformedPrimitive& d) 
   // Already world space, already morphed: no skinning, identity model, no morph targets.
   const glm::mat4 identity(1.0f);
   const glm::mat3 identity3(1.0f);
-  glUniform1i(program_.uniform("uSkinning"), 0);
-  glUniformMatrix4fv(program_.uniform("uModel"), 1, GL_FALSE, glm::value_ptr(identity));
-  glUniformMatrix3fv(program_.uniform("uModelNormal"), 1, GL_FALSE, glm::value_ptr(identity3));
-  glUniform1i(program_.uniform("uMorphCount"), 0);
-  glUniform1i(program_.uniform("uAxisCount"), 0);
+  glUniform1i(shading_->uniform("uSkinning"), 0);
+  glUniformMatrix4fv(shading_->uniform("uModel"), 1, GL_FALSE, glm::value_ptr(identity));
+  glUniformMatrix3fv(shading_->uniform("uModelNormal"), 1, GL_FALSE, glm::value_ptr(identity3));
+  glUniform1i(shading_->uniform("uMorphCount"), 0);
+  glUniform1i(shading_->uniform("uAxisCount"), 0);
 }
 
 void MeshRenderer::drawInstances(const MeshFrame& frame, bool weightsView) {
@@ -693,9 +695,9 @@ void MeshRenderer::drawGhosts(const std::vector<MeshGhost>& ghosts, const glm::m
   glBufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(jointScratch_.size() * sizeof(float)), jointScratch_.data(),
                GL_STREAM_DRAW);
   glBindBuffer(GL_TEXTURE_BUFFER, 0);
-  glUseProgram(program_.id());
-  glUniformMatrix4fv(program_.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
-  glUniformMatrix4fv(program_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
+  useProgram(cpu ? posedProgram_ : program_);
+  glUniformMatrix4fv(shading_->uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
+  glUniformMatrix4fv(shading_->uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_BUFFER, ghostTexture_);
   glEnable(GL_DEPTH_TEST);
@@ -717,7 +719,7 @@ void MeshRenderer::drawGhosts(const std::vector<MeshGhost>& ghosts, const glm::m
     glDepthMask(GL_TRUE);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
-    glUniform1i(program_.uniform("uGhost"), 0);
+    glUniform1i(shading_->uniform("uGhost"), 0);
     if (cpu)
       drawInstancesCpu(frame, cpuGhostPoses_[g]);
     else
@@ -727,15 +729,15 @@ void MeshRenderer::drawGhosts(const std::vector<MeshGhost>& ghosts, const glm::m
     glDepthMask(GL_FALSE);
     glDepthFunc(GL_LEQUAL);
     glEnable(GL_BLEND);
-    glUniform1i(program_.uniform("uGhost"), 1);
-    glUniform4fv(program_.uniform("uGhostColor"), 1, glm::value_ptr(ghosts[g].color));
+    glUniform1i(shading_->uniform("uGhost"), 1);
+    glUniform4fv(shading_->uniform("uGhostColor"), 1, glm::value_ptr(ghosts[g].color));
     if (cpu)
       drawInstancesCpu(frame, cpuGhostPoses_[g]);
     else
       drawInstances(frame, false);
   }
   jointSlotBase_ = 0;
-  glUniform1i(program_.uniform("uGhost"), 0);
+  glUniform1i(shading_->uniform("uGhost"), 0);
   glDisable(GL_POLYGON_OFFSET_FILL);
   glDisable(GL_BLEND);
   glDepthMask(GL_TRUE);
@@ -750,7 +752,7 @@ std::string MeshRenderer::deform(const MeshFrame& frame, bool skinnedOnly, std::
   GLint previousFbo = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previousFbo);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, feedbackFbo_);
-  glUseProgram(program_.id());
+  useProgram(program_);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_BUFFER, jointTexture_);
   glEnable(GL_RASTERIZER_DISCARD);

@@ -22,6 +22,11 @@ struct MeshFrame {
   // instances whose deformer stack is active), world space. Those are drawn from these
   // positions and normals, streamed each frame, instead of being morphed and skinned here.
   const std::vector<DeformedPrimitive>* deformed = nullptr;
+  // Optional, for the CPU path (cpuDeformation()): every instance already morphed and
+  // skinned by the caller (SceneDeformationJob with `world` and `morphWeights`, no
+  // deformers), world space; draw() uploads these instead of running the job itself, so a
+  // caller that needs the vertices too (SceneDamageJob) deforms once. Ignored elsewhere.
+  const std::vector<DeformedPrimitive>* posed = nullptr;
   // Optional, per instance (sampleDeformerStacks): stacks the vertex shader runs after
   // skinning, those for which axisStackOnGpu holds (others are ignored here: deform them on
   // the CPU, `deformed`). The CPU's SceneDeformationJob is the reference (1e-4 m).
@@ -143,6 +148,13 @@ class MeshRenderer {
   void release();
 
   ShaderProgram program_;
+  // Meshes posed on the CPU: mesh_posed.vert (world-space vertices in, no skinning code).
+  ShaderProgram posedProgram_;
+  ShaderProgram* shading_ = &program_;  // the program in use: uniforms are set on it
+  void useProgram(ShaderProgram& p) {
+    shading_ = &p;
+    glUseProgram(p.id());
+  }
   const Scene* scene_ = nullptr;
   std::vector<GpuPrimitive> primitives_;
   std::vector<std::vector<int>> primitivesOfMesh_;  // indices into primitives_

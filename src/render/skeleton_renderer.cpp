@@ -179,16 +179,26 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
     if (frame.timer) frame.timer->mark(pass);
   };
   glViewport(frame.x, frame.y, frame.width, frame.height);
-  glScissor(frame.x, frame.y, frame.width, frame.height);
+  // The scissor box stays on for the whole frame when it is limited (a partial redraw);
+  // else only for the clears, which must not reach past the view.
+  const PixelRect viewRect{frame.x, frame.y, frame.x + frame.width, frame.y + frame.height};
+  const bool limited = !frame.limit.empty();
+  const PixelRect box = limited ? viewRect.intersected(frame.limit) : viewRect;
+  if (box.empty()) return;
+  glScissor(box.x0, box.y0, box.width(), box.height());
+  auto scissorForClears = [limited](bool on) {
+    if (limited || on) glEnable(GL_SCISSOR_TEST);
+    else glDisable(GL_SCISSOR_TEST);
+  };
   glDepthMask(GL_TRUE);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   if (frame.clear) {
-    glEnable(GL_SCISSOR_TEST);
+    scissorForClears(true);
     glClearColor(frame.background.r, frame.background.g, frame.background.b, frame.background.a);
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   }
-  glDisable(GL_SCISSOR_TEST);
+  scissorForClears(false);
   glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);  // thin octahedra seen edge-on; the shader lights back faces too
   glEnable(GL_DEPTH_TEST);
@@ -213,9 +223,9 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
     if (xray) {
       // On top of the meshes (or, without any, of the grid): fresh depth, a depth-only pass, then the nearest bone surfaces
       // blended by their colours' alpha (SkeletonStyle::xRay()) so the body still shows through.
-      glEnable(GL_SCISSOR_TEST);
+      scissorForClears(true);
       glClear(GL_DEPTH_BUFFER_BIT);
-      glDisable(GL_SCISSOR_TEST);
+      scissorForClears(false);
       glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
       drawInstances(bone_, frame.skeleton->boneMatrices, frame.skeleton->boneColors);
       drawInstances(sphere_, frame.skeleton->jointMatrices, frame.skeleton->jointColors);
@@ -253,6 +263,7 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
   }
   glBindVertexArray(0);
   glUseProgram(0);
+  glDisable(GL_SCISSOR_TEST);
   mark("3D view: overlay");
 }
 

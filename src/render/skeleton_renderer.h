@@ -5,6 +5,7 @@
 #include "render/camera.h"
 #include "render/grid_lines.h"
 #include "render/overlay_renderer.h"
+#include "render/pixel_rect.h"
 #include "render/shader_program.h"
 #include "render/shape_meshes.h"
 #include "render/skeleton_draw_list.h"
@@ -32,6 +33,10 @@ struct FrameDescription {
   // window cleared whole), so draw() skips its own clear, which a software rasteriser pays
   // for pixel by pixel when it is limited to part of the framebuffer.
   bool clear = true;
+  // Non-empty: only these framebuffer pixels are touched (cleared when `clear`, drawn), the
+  // rest of the view keeps what it showed; the view still maps x, y, width, height. A partial
+  // redraw (SceneDamageJob) draws the whole scene limited to the part that changed.
+  PixelRect limit;
   const MeshDraw* meshes = nullptr;  // shaded (skinned) meshes, drawn before the bones; may be null
   BoneDisplay bones = BoneDisplay::On;
   const OverlayDrawList* overlay = nullptr;             // gizmos, handles, ...; drawn last

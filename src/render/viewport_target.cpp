@@ -80,12 +80,12 @@ void ViewportTarget::resolve() {
   resolved_ = keptFbo_ != 0;
 }
 
-void ViewportTarget::present(int x, int y) const {
+void ViewportTarget::present(int x, int y, GLuint into) const {
   if (!resolved_) return;
   glBindFramebuffer(GL_READ_FRAMEBUFFER, keptFbo_);
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, into);
   glBlitFramebuffer(0, 0, width_, height_, x, y, x + width_, y + height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, into);
 }
 
 }  // namespace kinema

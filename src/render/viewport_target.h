@@ -23,8 +23,9 @@ class ViewportTarget {
   std::string begin(int width, int height, int samples);
   // Resolves what was drawn since begin() into the kept single-sample copy.
   void resolve();
-  // Copies the kept picture into the window's framebuffer with its lower left corner at x, y.
-  void present(int x, int y) const;
+  // Copies the kept picture into framebuffer `into` (0: the window's) with its lower left
+  // corner at x, y, within the scissor box when GL_SCISSOR_TEST is on; leaves `into` bound.
+  void present(int x, int y, GLuint into = 0) const;
   // True when a resolved picture of this size is kept.
   bool holds(int width, int height) const { return resolved_ && width == width_ && height == height_; }
   void forget() { resolved_ = false; }

@@ -26,6 +26,7 @@
 #include "editor/model/message_log.h"
 #include "editor/model/user_preferences.h"
 #include "editor/model/viewport_quality.h"
+#include "editor/model/window_redraw.h"
 #include "editor/model/panel_state.h"
 #include "io/scene.h"
 #include "render/camera.h"
@@ -100,6 +101,7 @@ struct EditorState {
   OrbitCamera camera;      // camera.orthographic: numpad 5
   glm::vec4 viewportRect{0.0f};  // the 3D view in window pixels (x, y, width, height), set each frame
   ViewportRenderInfo viewportRender;  // how the window drew the last frame's 3D view (viewport_quality.h)
+  WindowRedrawInfo windowRedraw;      // how the window drew its last frame (window_redraw.h)
   ViewOptions view;
   ToolState tool;
   int hoveredJoint = -1;   // under the mouse (drawn highlighted)

@@ -19,7 +19,9 @@
 #include "editor/commands/keymap.h"
 #include "editor/model/key_codes.h"
 #include "editor/panels/editor_panels.h"
+#include "editor/window/back_buffer_probe.h"
 #include "editor/window/imgui_backends.h"
+#include "editor/window/imgui_damage.h"
 #include "editor/window/imgui_input_feed.h"
 #include "editor/panels/panel_layout.h"
 #include "editor/window/state_dump.h"
@@ -37,6 +39,9 @@
 #include "render/skeleton_renderer.h"
 #include "render/frame_pass_timer.h"
 #include "render/frame_signature.h"
+#include "render/gl_context.h"
+#include "render/scene_damage.h"
+#include "render/window_canvas.h"
 #include "render/viewport_target.h"
 #include "render/skeleton_view.h"
 #include "skin/scene_deformation.h"
@@ -53,6 +58,22 @@ static_assert(keys::ESCAPE == GLFW_KEY_ESCAPE && keys::HOME == GLFW_KEY_HOME && 
               "key_codes.h: named keys, function keys, keypad, modifiers");
 
 namespace {
+
+// What the 3D view's area of the window shows: the canvas of changed-only redraws keeps it
+// from one frame to the next, and a different content redraws the whole area.
+struct ViewContent {
+  enum class Shows { Nothing, KeptPicture, Scene };  // Nothing: the compare mode's grey
+  Shows shows = Shows::Nothing;
+  PixelRect rect;          // framebuffer pixels, rows from the bottom
+  uint64_t signature = 0;  // KeptPicture: frameSignature of the kept picture
+  int samples = 0;         // KeptPicture: its samples per pixel
+  bool operator==(const ViewContent& o) const {
+    if (shows != o.shows) return false;
+    if (shows == Shows::Nothing) return true;
+    return rect == o.rect && (shows != Shows::KeptPicture || (signature == o.signature && samples == o.samples));
+  }
+  bool operator!=(const ViewContent& o) const { return !(*this == o); }
+};
 
 // GLFW reports errors through a callback; keep the last one for the one-line message.
 std::string& lastGlfwError() {
@@ -301,6 +322,16 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     bool viewportTargetFailed = false;
     AnimationDisplay animationDisplay;  // onion-skin ghosts, motion path (kept: the path is cached)
     CrowdDisplay crowdDisplay;          // the crowd's members at the playhead (issue 24)
+    // Changed-only redraws (window_redraw.h): the kept window, what its 3D view area and
+    // panels show, and the framebuffer this frame draws into (0: the window's own).
+    bool changedRedraws = o.redraw == WindowRedraw::Changed || (o.redraw == WindowRedraw::Auto && softwareRasterizer());
+    const bool backBufferKept = changedRedraws && backBufferSurvivesSwaps(window);
+    glm::ivec2 keptSize(-1);  // the back buffer's size when it was last drawn (backBufferKept)
+    WindowCanvas canvas;      // where the back buffer does not survive swaps
+    ImGuiDrawSnapshot imguiSnapshot;
+    SceneSnapshot sceneSnapshot;
+    ViewContent canvasView;
+    GLuint drawFramebuffer = 0;
     evaluateEditorPose(state);
     int fbw = 0, fbh = 0, ww = 0, wh = 0;
     glfwGetFramebufferSize(window, &fbw, &fbh);
@@ -397,11 +428,16 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       const bool scriptDone = o.replay && o.frameCount <= 0 && nextScripted >= o.script.size() && live.queue.empty() &&
                               frame >= lastScriptFrame + 2;
       const bool last = (o.frameCount > 0 && frame >= o.frameCount) || scriptDone || state.panels.quitApproved;
+      // What the frame's 3D view area shows, drawn below into the window or the canvas.
+      ViewContent view3d;
+      bool changedOnly = false;  // drawn into the canvas, only where it changed (window_redraw.h)
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       if (o.emptyFrame) {
         glViewport(0, 0, fbw, fbh);
         glClearColor(0.235f, 0.235f, 0.235f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        imguiBackendsRenderDrawData(ImGui::GetDrawData());
+        state.windowRedraw = {false, 1, static_cast<long long>(fbw) * fbh};
       } else {
         if (meshes.needsUpload(state.doc.scene()) || state.doc.meshRevision() != uploadedMeshRevision) {
           uploadedMeshRevision = state.doc.meshRevision();
@@ -451,11 +487,23 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
           }
         }
         meshDraw.frame.deformed = &cpuDeformed;
+        // On the CPU path the meshes are morphed and skinned here, once: drawn from these
+        // vertices, and compared with the last frame's to find what changed on screen.
+        std::vector<DeformedPrimitive> posed;
+        if (!meshes.empty() && meshes.cpuDeformation() && !state.view.showWeights && cpuDeformed.empty()) {
+          SceneDeformationJob poseJob;
+          poseJob.scene = &state.doc.scene();
+          poseJob.world = &state.world();
+          poseJob.morphWeights = &morphWeights;
+          poseJob.out = &posed;
+          if (poseJob.run()) meshDraw.frame.posed = &posed;
+        }
         meshDraw.frame.gpuDeformers = gpuStacks.empty() ? nullptr : &gpuStacks;
         meshDraw.frame.weightJoint = state.view.showWeights ? state.doc.selection.active() : -1;
         colorSelection(state, list);
         buildCrowdDisplay(state, skinJoints, !meshes.empty(), crowdDisplay);
-        const float sceneRadius = std::max(bounds.radius(), crowdDisplay.radius);  // the crowd too
+        // The crowd too; in steps, so a small move keeps the grid and clip planes (camera.h).
+        const float sceneRadius = steadySceneRadius(std::max(bounds.radius(), crowdDisplay.radius));
         state.camera.fitClipPlanes(sceneRadius);
         // The viewport in framebuffer pixels (GL counts rows from the bottom); the panels
         // cover the rest, which is cleared to the background behind them.
@@ -463,10 +511,6 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         const int vx = int(std::lround(vp.x * sx)), vw = std::max(int(std::lround(vp.w * sx)), 1);
         const int vh = std::max(int(std::lround(vp.h * sy)), 1), vy = std::max(fbh - int(std::lround(vp.y * sy)) - vh, 0);
         mark("scene draw lists");
-        glViewport(0, 0, fbw, fbh);
-        glClearColor(0.235f, 0.235f, 0.235f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        mark("clear the window");
         buildViewportOverlay(state, ViewportView::of(state.camera, glm::vec2(vw, vh), glm::vec2(vp.x * sx, vp.y * sy)),
                              tools, overlay);
         buildAnimationDisplay(state, skinJoints, animationDisplay, overlay);  // onion skin, motion path
@@ -510,6 +554,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         }
         // The compare mode draws with ImGui; else the 3D view, antialiased when it holds still
         // (viewport_quality.h) and then kept, to be shown again while nothing in it changes.
+        view3d.rect = PixelRect{vx, vy, vx + vw, vy + vh};
         if (state.compare.active) {
           state.viewportRender = {};
         } else {
@@ -519,14 +564,15 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
           const ViewportQuality quality = viewportQuality(state, changed, last && !o.screenshotPath.empty());
           std::string failed;
           if (quality == ViewportQuality::Still && !changed && viewportTarget.holds(vw, vh)) {
-            viewportTarget.present(vx, vy);
+            view3d.shows = ViewContent::Shows::KeptPicture;
             state.viewportRender = {viewportTarget.samples(), true};
           } else if (quality == ViewportQuality::Still && !viewportTargetFailed &&
                      (failed = viewportTarget.begin(vw, vh, viewportSamples(quality))).empty()) {
             description.x = description.y = 0;  // the target is the view's own size
             renderer.draw(description);
+            description.x = vx, description.y = vy;
             viewportTarget.resolve();
-            viewportTarget.present(vx, vy);
+            view3d.shows = ViewContent::Shows::KeptPicture;
             state.viewportRender = {viewportTarget.samples(), false};
           } else {  // moving (or no framebuffer of its own): one sample, straight into the window
             if (!failed.empty() && !viewportTargetFailed) {
@@ -534,18 +580,109 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
               std::cerr << "kinema edit: " << failed << "; the 3D view is drawn without antialiasing\n";
             }
             viewportTarget.forget();
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
-            description.clear = false;  // the window was cleared to the same grey above
-            renderer.draw(description);
+            view3d.shows = ViewContent::Shows::Scene;
             state.viewportRender = {kMovingViewportSamples, false};
           }
+          view3d.signature = signature;
+          view3d.samples = state.viewportRender.samples;
+        }
+        mark("overlay, onion skin lists");
+        // The 3D view (as decided above) and the panels: drawn whole into the window, or only
+        // where they changed into the canvas, which is then copied into the window.
+        auto drawView = [&](const PixelRect& limit) {  // into the bound framebuffer, within `limit` (empty: all)
+          if (view3d.shows == ViewContent::Shows::KeptPicture) {
+            viewportTarget.present(view3d.rect.x0, view3d.rect.y0, drawFramebuffer);
+          } else if (view3d.shows == ViewContent::Shows::Scene) {
+            glBindFramebuffer(GL_FRAMEBUFFER, drawFramebuffer);
+            description.clear = false;  // cleared to the same grey just before
+            description.limit = limit;
+            renderer.draw(description);
+          }
           glViewport(0, 0, fbw, fbh);
+        };
+        // Changed-only: into the window's back buffer where it survives swaps, else into
+        // the canvas; `kept`: it holds the previous frame's pixels.
+        changedOnly = changedRedraws;
+        bool kept = false;
+        if (changedOnly && backBufferKept) {
+          kept = keptSize == glm::ivec2(fbw, fbh);
+          keptSize = glm::ivec2(fbw, fbh);
+        } else if (changedOnly) {
+          if (const std::string failed = canvas.begin(fbw, fbh, kept); !failed.empty()) {
+            std::cerr << "kinema edit: " << failed << "; every frame is drawn whole\n";
+            changedRedraws = changedOnly = false;
+          }
+        }
+        drawFramebuffer = changedOnly && !backBufferKept ? canvas.framebuffer() : 0;
+        if (!changedOnly) {
+          glBindFramebuffer(GL_FRAMEBUFFER, 0);
+          glViewport(0, 0, fbw, fbh);
+          glClearColor(0.235f, 0.235f, 0.235f, 1.0f);
+          glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+          mark("clear the window");
+          drawView(PixelRect{});
           mark("3D view: resolve, copy to the window");
+          imguiBackendsRenderDrawData(ImGui::GetDrawData());
+          state.windowRedraw = {false, 1, static_cast<long long>(fbw) * fbh};
+        } else {
+          // Where this frame differs from the canvas: the panels' changed triangles, and in
+          // the 3D view what SceneDamageJob finds (all of it when it shows something else now).
+          const PixelRect window{0, 0, fbw, fbh};
+          const float sx = ww > 0 ? float(fbw) / ww : 1.0f, sy = wh > 0 ? float(fbh) / wh : 1.0f;
+          std::vector<PixelRect> damage;
+          for (const PixelRect& r : imguiDamage(*ImGui::GetDrawData(), io.Fonts->TexID, imguiSnapshot))
+            damage.push_back(PixelRect{int(std::floor(r.x0 * sx)), fbh - int(std::ceil(r.y1 * sy)), int(std::ceil(r.x1 * sx)),
+                                       fbh - int(std::floor(r.y0 * sy))});
+          if (!kept) damage.assign(1, window);
+          if (view3d != canvasView) {
+            damage.push_back(canvasView.rect);
+            damage.push_back(view3d.rect);
+            if (view3d.shows == ViewContent::Shows::Scene) sceneSnapshot.valid = false;
+          }
+          if (view3d.shows == ViewContent::Shows::Scene) {
+            SceneDamageJob damageJob;
+            damageJob.frame = &description;
+            damageJob.scene = &state.doc.scene();
+            damageJob.last = &sceneSnapshot;
+            damageJob.run();
+            damage.push_back(damageJob.out);
+          }
+          canvasView = view3d;
+          for (PixelRect& r : damage) r = r.intersected(window);
+          const std::vector<PixelRect> rects = mergeDamage(std::move(damage), 4);
+          long long pixels = 0;
+          std::vector<ImVec4> clips;  // the same rectangles in ImGui's display coordinates
+          glBindFramebuffer(GL_FRAMEBUFFER, drawFramebuffer);
+          glViewport(0, 0, fbw, fbh);
+          glEnable(GL_SCISSOR_TEST);
+          glClearColor(0.235f, 0.235f, 0.235f, 1.0f);
+          glClearDepth(1.0);
+          for (const PixelRect& r : rects) {
+            pixels += r.area();
+            glScissor(r.x0, r.y0, r.width(), r.height());
+            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+            clips.push_back(ImVec4(r.x0 / sx, (fbh - r.y1) / sy, r.x1 / sx, (fbh - r.y0) / sy));
+          }
+          mark("clear the window");
+          for (const PixelRect& r : rects) {
+            const PixelRect inView = r.intersected(view3d.rect);
+            if (inView.empty()) continue;
+            glEnable(GL_SCISSOR_TEST);
+            glScissor(inView.x0, inView.y0, inView.width(), inView.height());
+            drawView(inView);
+          }
+          glDisable(GL_SCISSOR_TEST);
+          mark("3D view: resolve, copy to the window");
+          if (!rects.empty()) imguiBackendsRenderDrawData(ImGui::GetDrawData(), &clips);
+          mark("ImGui: draw the panels");
+          state.windowRedraw = {true, static_cast<int>(rects.size()), pixels};
+          if (!backBufferKept) {
+            canvas.present();
+            mark("copy the canvas to the window");
+          }
         }
       }
-      mark("overlay, onion skin lists");
-      imguiBackendsRenderDrawData(ImGui::GetDrawData());
-      mark("ImGui: draw the panels");
+      if (!changedOnly) mark("ImGui: draw the panels");
 
       if (last && !o.screenshotPath.empty()) {
         // Read the back buffer before swapping: its contents are undefined afterwards.

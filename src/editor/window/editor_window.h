@@ -26,6 +26,7 @@ struct EditorWindowOptions {
   bool reportFramePasses = false;
   bool emptyFrame = false;        // draw only an empty ImGui frame (the baseline for frame times)
   int maxFps = 0;                 // > 0: each frame lasts at least 1/maxFps s (kinema edit --max-fps)
+  WindowRedraw redraw = WindowRedraw::Auto;  // kinema edit --redraw
 };
 
 struct EditorWindowResult {

@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstring>
 
 #include "imgui_impl_opengl3.h"
@@ -58,20 +59,36 @@ void mergeImGuiDrawLists(const ImDrawData& in, ImDrawList& out) {
 // each frame and override replayed --script events.
 void imguiBackendsInit(GLFWwindow*) { ImGui_ImplOpenGL3_Init("#version 330 core"); }
 void imguiBackendsNewFrame() { ImGui_ImplOpenGL3_NewFrame(); }
-void imguiBackendsRenderDrawData(ImDrawData* data) {
+void imguiBackendsRenderDrawData(ImDrawData* data, const std::vector<ImVec4>* clipTo) {
   // The backend draws with glDrawElementsBaseVertex (it sets RendererHasVtxOffset), so one
   // list of any length draws like the separate ones.
-  if (!data || !(ImGui::GetIO().BackendFlags & ImGuiBackendFlags_RendererHasVtxOffset) || data->CmdListsCount < 2) {
+  const bool vtxOffset = ImGui::GetIO().BackendFlags & ImGuiBackendFlags_RendererHasVtxOffset;
+  if (!data || !vtxOffset || (data->CmdListsCount < 2 && !clipTo)) {
     ImGui_ImplOpenGL3_RenderDrawData(data);
     return;
   }
   MergedDrawData& m = merged();
   mergeImGuiDrawLists(*data, m.list);
+  if (clipTo) clipImGuiDrawList(m.list, *clipTo);
   m.data = *data;
   m.data.CmdLists = m.lists;
   m.data.CmdListsCount = 1;
   ImGui_ImplOpenGL3_RenderDrawData(&m.data);
 }
+
+void clipImGuiDrawList(ImDrawList& list, const std::vector<ImVec4>& rects) {
+  ImVector<ImDrawCmd> clipped;
+  clipped.reserve(list.CmdBuffer.Size);
+  for (const ImDrawCmd& cmd : list.CmdBuffer)
+    for (const ImVec4& r : rects) {
+      ImDrawCmd c = cmd;
+      c.ClipRect = ImVec4(std::max(cmd.ClipRect.x, r.x), std::max(cmd.ClipRect.y, r.y), std::min(cmd.ClipRect.z, r.z),
+                          std::min(cmd.ClipRect.w, r.w));
+      if (c.UserCallback || (c.ClipRect.z > c.ClipRect.x && c.ClipRect.w > c.ClipRect.y)) clipped.push_back(c);
+    }
+  list.CmdBuffer.swap(clipped);
+}
+
 void imguiBackendsShutdown() { ImGui_ImplOpenGL3_Shutdown(); }
 void imguiBackendsReloadFonts() {
   ImGui_ImplOpenGL3_DestroyFontsTexture();

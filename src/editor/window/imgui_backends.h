@@ -1,7 +1,10 @@
 #pragma once
 // Dear ImGui's OpenGL 3 backend (Debian's sources, compiled against glad), behind
 // four calls so the rest of the editor never includes backend headers.
+#include <vector>
+
 struct GLFWwindow;
+struct ImVec4;
 struct ImDrawData;
 struct ImDrawList;
 
@@ -9,7 +12,9 @@ namespace kinema {
 void imguiBackendsInit(GLFWwindow* window);
 void imguiBackendsNewFrame();
 // Draws the frame's lists merged into one (mergeImGuiDrawLists): one buffer upload a frame.
-void imguiBackendsRenderDrawData(ImDrawData* data);
+// `clipTo`, when given: only the pixels inside these rectangles (display coordinates, x0 y0
+// x1 y1, pairwise disjoint) are drawn (clipImGuiDrawList), for a partial redraw.
+void imguiBackendsRenderDrawData(ImDrawData* data, const std::vector<ImVec4>* clipTo = nullptr);
 void imguiBackendsShutdown();
 // Uploads the font atlas again after it was rebuilt (a new UI scale): between frames.
 void imguiBackendsReloadFonts();
@@ -17,4 +22,8 @@ void imguiBackendsReloadFonts();
 // index offsets moved by what came before, so `out` alone draws the same triangles with the
 // same clip rectangles and textures (needs a backend with RendererHasVtxOffset).
 void mergeImGuiDrawLists(const ImDrawData& in, ImDrawList& out);
+// Each command of `list` repeated once per rectangle of `rects` that its clip rectangle
+// meets, clipped to it (in order, so each pixel of disjoint rectangles is drawn as before by
+// the commands that reach it, and nothing outside them); commands that meet none are dropped.
+void clipImGuiDrawList(ImDrawList& list, const std::vector<ImVec4>& rects);
 }  // namespace kinema

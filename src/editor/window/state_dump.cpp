@@ -211,6 +211,9 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
   out["viewport"] = {{"x", s.viewportRect.x}, {"y", s.viewportRect.y}, {"width", s.viewportRect.z},
                      {"height", s.viewportRect.w}};
   out["viewport_render"] = {{"samples", s.viewportRender.samples}, {"from_cache", s.viewportRender.fromCache}};
+  out["window_redraw"] = {{"changed_only", s.windowRedraw.changedOnly},
+                          {"rectangles", s.windowRedraw.rectangles},
+                          {"pixels", s.windowRedraw.pixels}};
   out["playback"] = {{"clip", s.hasMotion() ? s.clip : -1}, {"time", s.time}, {"playing", s.playing}};
   json clipNames = json::array();  // the clip list in file order; playback.clip indexes it
   for (const Clip& c : doc.scene().clips) clipNames.push_back(c.name);

@@ -1,0 +1,124 @@
+// Changed-only redraws of the panels (issue 20): imguiDamage finds where a frame's ImGui
+// draw lists differ from the previous frame's, and clipImGuiDrawList limits drawing to those
+// rectangles. Widget rectangles come from ImGui itself (GetItemRectMin/Max), not from the
+// code under test.
+#include <gtest/gtest.h>
+#include <imgui.h>
+
+#include <string>
+#include <vector>
+
+#include "editor/window/imgui_backends.h"
+#include "editor/window/imgui_damage.h"
+
+namespace kinema {
+namespace {
+
+const ImTextureID kFont = reinterpret_cast<ImTextureID>(static_cast<intptr_t>(7));
+
+struct ImGuiFrames {
+  ImGuiFrames() {
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    io.DisplaySize = ImVec2(800, 600);
+    io.DeltaTime = 1.0f / 60.0f;
+    unsigned char* pixels = nullptr;
+    int w = 0, h = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    io.Fonts->SetTexID(kFont);
+    io.BackendFlags |= ImGuiBackendFlags_RendererHasVtxOffset;
+  }
+  ~ImGuiFrames() { ImGui::DestroyContext(); }
+  // A panel of 12 lines, line `changed` showing `value`; a second window when `extra`.
+  // Returns the rectangles of lines 0, `changed` and 11 as drawn.
+  std::vector<PixelRect> frame(int changed, float value, bool extra = false) {
+    ImGui::NewFrame();
+    ImGui::SetNextWindowPos(ImVec2(20, 30));
+    ImGui::SetNextWindowSize(ImVec2(300, 400));
+    ImGui::Begin("Properties");
+    std::vector<PixelRect> lines;
+    for (int k = 0; k < 12; ++k) {
+      ImGui::Text("rotation %d: %.3f", k, k == changed ? value : 0.0f);
+      if (k == 0 || k == changed || k == 11) {
+        const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+        lines.push_back(PixelRect{int(a.x), int(a.y), int(b.x), int(b.y)});
+      }
+    }
+    ImGui::End();
+    if (extra) {
+      ImGui::SetNextWindowPos(ImVec2(400, 30));
+      ImGui::Begin("Another");
+      ImGui::Text("new");
+      ImGui::End();
+    }
+    ImGui::Render();
+    return lines;
+  }
+};
+
+PixelRect unionOf(const std::vector<PixelRect>& rects) {
+  PixelRect u;
+  for (const PixelRect& r : rects) u = u.united(r);
+  return u;
+}
+
+TEST(ImGuiDamage, AChangedValueDamagesItsLineAloneAndTheSameFrameNothing) {
+  ImGuiFrames imgui;
+  ImGuiDrawSnapshot last;
+  imgui.frame(5, 1.0f);
+  const PixelRect display{0, 0, 800, 600};
+  EXPECT_EQ(unionOf(imguiDamage(*ImGui::GetDrawData(), kFont, last)), display) << "nothing kept: everything";
+  imgui.frame(5, 1.0f);
+  EXPECT_TRUE(imguiDamage(*ImGui::GetDrawData(), kFont, last).empty());
+  const std::vector<PixelRect> lines = imgui.frame(5, 2.5f);
+  const std::vector<PixelRect> damage = imguiDamage(*ImGui::GetDrawData(), kFont, last);
+  ASSERT_EQ(damage.size(), 1u);
+  // The digits that changed lie inside the line; the damage is inside it and nowhere else.
+  EXPECT_TRUE(lines[1].grown(1).contains(damage[0])) << damage[0].x0 << "," << damage[0].y0 << " " << damage[0].x1 << ","
+                                                     << damage[0].y1;
+  EXPECT_FALSE(damage[0].intersects(lines[0]));
+  EXPECT_FALSE(damage[0].intersects(lines[2]));
+  EXPECT_GT(damage[0].area(), 0);
+}
+
+TEST(ImGuiDamage, ANewWindowOrADifferentDisplayDamagesEverything) {
+  ImGuiFrames imgui;
+  ImGuiDrawSnapshot last;
+  imgui.frame(5, 1.0f);
+  imguiDamage(*ImGui::GetDrawData(), kFont, last);
+  imgui.frame(5, 1.0f, true);
+  EXPECT_EQ(unionOf(imguiDamage(*ImGui::GetDrawData(), kFont, last)), (PixelRect{0, 0, 800, 600}));
+  ImGui::GetIO().DisplaySize = ImVec2(640, 480);
+  imgui.frame(5, 1.0f, true);
+  EXPECT_EQ(unionOf(imguiDamage(*ImGui::GetDrawData(), kFont, last)), (PixelRect{0, 0, 640, 480}));
+  // Another font texture (the atlas rebuilt at a new UI scale): everything.
+  imgui.frame(5, 1.0f, true);
+  EXPECT_EQ(unionOf(imguiDamage(*ImGui::GetDrawData(), reinterpret_cast<ImTextureID>(static_cast<intptr_t>(8)), last)),
+            (PixelRect{0, 0, 640, 480}));
+}
+
+TEST(ImGuiDamage, ClippingKeepsEachCommandInsideTheRectanglesAndDropsTheRest) {
+  ImDrawList list(nullptr);
+  ImDrawCmd a, b;
+  a.ClipRect = ImVec4(0, 0, 100, 100);
+  a.ElemCount = 3;
+  b.ClipRect = ImVec4(200, 200, 300, 300);
+  b.IdxOffset = 3;
+  b.ElemCount = 3;
+  list.CmdBuffer.push_back(a);
+  list.CmdBuffer.push_back(b);
+  const std::vector<ImVec4> rects{ImVec4(50, 50, 120, 70), ImVec4(10, 80, 20, 500)};
+  clipImGuiDrawList(list, rects);
+  // a meets both rectangles, b neither.
+  ASSERT_EQ(list.CmdBuffer.Size, 2);
+  for (const ImDrawCmd& c : list.CmdBuffer) EXPECT_EQ(c.IdxOffset, 0u);
+  EXPECT_EQ(list.CmdBuffer[0].ClipRect.x, 50);
+  EXPECT_EQ(list.CmdBuffer[0].ClipRect.z, 100);
+  EXPECT_EQ(list.CmdBuffer[0].ClipRect.w, 70);
+  EXPECT_EQ(list.CmdBuffer[1].ClipRect.y, 80);
+  EXPECT_EQ(list.CmdBuffer[1].ClipRect.w, 100);
+}
+
+}  // namespace
+}  // namespace kinema

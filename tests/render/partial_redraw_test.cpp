@@ -1,0 +1,134 @@
+// Changed-only redraws (issue 20): the editor keeps its window in a WindowCanvas and, on a
+// software rasteriser, draws only the rectangle SceneDamageJob finds, with
+// FrameDescription::limit, over the previous picture. That must give exactly the pixels of
+// drawing the new frame whole, frame after frame, for the skinned body, bones and overlay.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+#include <glad/gl.h>
+
+#include "core/forward_kinematics.h"
+#include "io/image.h"
+#include "render/headless_renderer.h"
+#include "render/image_compare.h"
+#include "render/scene_damage.h"
+#include "render/skeleton_view.h"
+#include "render/window_canvas.h"
+#include "skin/default_character_scene.h"
+#include "skin/scene_deformation.h"
+
+namespace kinema {
+namespace {
+
+constexpr int kWidth = 240, kHeight = 180;
+
+Image readCanvas() {
+  Image img(kWidth, kHeight);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba.data());
+  return img;
+}
+
+// One frame of the default character with its forearm bent `elbow` degrees and a handle on
+// the hand, everything the frame points at kept alive here.
+struct Frame {
+  std::vector<glm::mat4> world;
+  std::vector<DeformedPrimitive> posed;
+  SkeletonDrawList bones;
+  OverlayDrawList overlay;
+  MeshDraw meshes;
+  FrameDescription description;
+  Frame(const Scene& scene, MeshRenderer& renderer, float elbow) {
+    Pose pose = Pose::rest(scene.skeleton);
+    const int forearm = scene.skeleton.find("LowerArm.L"), hand = scene.skeleton.find("Hand.L");
+    EXPECT_GE(forearm, 0);
+    EXPECT_GE(hand, 0);
+    pose.local[forearm].rotation = glm::angleAxis(glm::radians(elbow), glm::vec3(0, 1, 0)) * pose.local[forearm].rotation;
+    world = computeWorld(scene.skeleton, pose);
+    SceneDeformationJob deform;
+    deform.scene = &scene;
+    deform.world = &world;
+    deform.out = &posed;
+    EXPECT_TRUE(deform.run());
+    SkeletonDrawJob job;
+    job.parents = &scene.skeleton.parents;
+    job.world = &world;
+    EXPECT_TRUE(job.run(bones));
+    overlay.addHandle(glm::vec3(world[hand][3]), 7.0f, glm::vec4(1, 0.5f, 0, 1), OverlayDrawList::HandleShape::Disc);
+    meshes.renderer = &renderer;
+    meshes.frame.world = &world;
+    meshes.frame.posed = &posed;
+    description.skeleton = &bones;
+    description.overlay = &overlay;
+    description.meshes = &meshes;
+    description.bones = BoneDisplay::XRay;
+    Bounds bounds = jointBounds(computeWorld(scene.skeleton, Pose::rest(scene.skeleton)));  // the same camera each frame
+    bounds.add(bounds.min - glm::vec3(0.15f));
+    bounds.add(bounds.max + glm::vec3(0.15f));
+    description.camera = defaultCamera(bounds, float(kWidth) / kHeight);
+    description.sceneRadius = bounds.radius();
+    description.width = kWidth;
+    description.height = kHeight;
+    description.clear = false;  // the caller clears, as the editor's window does
+  }
+};
+
+void clearTo(const FrameDescription& f, const PixelRect& r) {
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(r.x0, r.y0, r.width(), r.height());
+  glClearColor(f.background.r, f.background.g, f.background.b, f.background.a);
+  glClearDepth(1.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
+}
+
+TEST(PartialRedraw, DrawingOnlyTheDamagedRectangleGivesTheWholeFramesPixels) {
+  setenv("LIBGL_ALWAYS_SOFTWARE", "1", 0);
+  Result<std::unique_ptr<HeadlessRenderer>> opened = HeadlessRenderer::open(HeadlessBackend::Egl, kWidth, kHeight);
+  ASSERT_TRUE(opened.ok()) << (opened ? "" : opened.error());
+  const Scene scene = makeDefaultCharacterScene();
+  MeshRenderer& meshes = opened.value()->meshes();
+  meshes.setCpuDeformation(true);  // as on llvmpipe, where the editor redraws changed parts
+  ASSERT_EQ(meshes.upload(scene), "");
+  SkeletonRenderer renderer;
+  ASSERT_EQ(renderer.init(), "");
+  WindowCanvas partial, whole;
+  SceneSnapshot snapshot;
+  const PixelRect view{0, 0, kWidth, kHeight};
+  // The elbow bends, holds, bends again: each frame drawn both ways.
+  const float elbows[] = {0.0f, 25.0f, 25.0f, 70.0f, 72.0f};
+  for (size_t step = 0; step < std::size(elbows); ++step) {
+    SCOPED_TRACE("frame " + std::to_string(step) + ", elbow " + std::to_string(elbows[step]));
+    Frame frame(scene, meshes, elbows[step]);
+    SceneDamageJob job;
+    job.frame = &frame.description;
+    job.scene = &scene;
+    job.last = &snapshot;
+    ASSERT_TRUE(job.run());
+    bool kept = false;
+    ASSERT_EQ(partial.begin(kWidth, kHeight, kept), "");
+    EXPECT_EQ(kept, step > 0);
+    if (step == 0) EXPECT_EQ(job.out, view) << "nothing kept: the whole view";
+    if (step == 2) EXPECT_TRUE(job.out.empty()) << "the same frame again changes nothing";
+    if (step == 1 || step == 3 || step == 4) {
+      EXPECT_FALSE(job.out.empty());
+      EXPECT_LT(job.out.area(), view.area() / 2) << "a forearm's move is a small part of the view";
+    }
+    if (!job.out.empty()) {
+      clearTo(frame.description, job.out);
+      frame.description.limit = job.out;
+      renderer.draw(frame.description);
+    }
+    const Image changedOnly = readCanvas();
+    ASSERT_EQ(whole.begin(kWidth, kHeight, kept), "");
+    clearTo(frame.description, view);
+    frame.description.limit = PixelRect{};
+    renderer.draw(frame.description);
+    const Image drawnWhole = readCanvas();
+    EXPECT_EQ(test::differingPixels(changedOnly, drawnWhole, 0), 0);
+  }
+}
+
+}  // namespace
+}  // namespace kinema
