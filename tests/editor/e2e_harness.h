@@ -235,6 +235,8 @@ class Script {
     return *this;
   }
   const std::string& text() const { return lines_; }
+  // The frame the last event added happens in (3 before any).
+  long long lastFrame() const { return frame_ - 1; }
 
  private:
   static std::string num(double v) {

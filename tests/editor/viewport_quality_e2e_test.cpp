@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "editor/e2e_harness.h"
+#include "render/image_compare.h"
 
 namespace kinema::test {
 namespace {
@@ -18,12 +19,13 @@ class ViewportQualityE2e : public FrontViewSuite<ViewportQualityE2e> {
 
  protected:
   // runEditor without --screenshot: the dump then tells how the last frame was drawn.
-  json runUnshot(const Script& script, const std::string& name) {
+  // `extra`: more options (--redraw, --screenshot).
+  json runUnshot(const Script& script, const std::string& name, const std::string& extra = "") {
     const std::string scriptPath = dir_ + "/" + name + ".jsonl", dump = dir_ + "/" + name + ".json";
     std::ofstream(scriptPath) << script.text();
     std::string out, err;
     const int rc = runCommand(xvfb() + editorEnvironment(dir_) + KINEMA_BINARY + " edit --size " + windowSize() +
-                                  " --script " + scriptPath + " --dump-state " + dump,
+                                  " --script " + scriptPath + " --dump-state " + dump + " " + extra,
                               &out, &err);
     EXPECT_EQ(rc, 0) << err;
     return rc == 0 ? readJson(dump) : json();
@@ -50,6 +52,34 @@ TEST_F(ViewportQualityE2e, OneSampleWhileRotatingFullQualityAndKeptOnceStill) {
   EXPECT_LT(std::abs(glm::dot(before, after)), 0.9999) << "the rotation did not happen";
   EXPECT_EQ(still["viewport_render"]["samples"], 4);  // llvmpipe offers 4
   EXPECT_TRUE(bool(still["viewport_render"]["from_cache"]));
+}
+
+// Changed-only redraws (issue 20, model/window_redraw.h): on llvmpipe, while R rotates the
+// arm, a frame draws again only a part of the window; after a whole run of changed-only
+// frames (panels changing, the view moving, then still) the window holds exactly the pixels
+// of a run that drew every frame whole.
+TEST_F(ViewportQualityE2e, WhileRotatingOnlyTheChangedPartIsDrawnAndTheWindowEqualsWholeRedraws) {
+  const DumpCamera camera(front_);
+  const glm::dvec2 elbow = camera.pixel(jointIn(front_, "LowerArm.L"));
+  Script rotating;
+  rotating.select("UpperArm.L").move(elbow).key("R").path(elbow, elbow + glm::dvec2(0, -60), 6);
+  // Stopped on the frame of the last move, while the arm turns.
+  const json moving = runUnshot(rotating, "rotating_changed", "--frame-count " + std::to_string(rotating.lastFrame()));
+  ASSERT_TRUE(moving.is_object());
+  const long long pixelsInWindow = static_cast<long long>(e2e::windowPixels().x) * e2e::windowPixels().y;
+  EXPECT_TRUE(bool(moving["window_redraw"]["changed_only"]));
+  EXPECT_GE(int(moving["window_redraw"]["rectangles"]), 1);
+  EXPECT_LT(moving["window_redraw"]["pixels"].get<long long>(), pixelsInWindow / 2);
+
+  Script confirmed = rotating;
+  confirmed.down().up().wait(4);
+  const std::string changedShot = dir_ + "/changed.png", wholeShot = dir_ + "/whole.png";
+  const json changed = runUnshot(confirmed, "confirmed_changed", "--redraw changed --screenshot " + changedShot);
+  const json whole = runUnshot(confirmed, "confirmed_whole", "--redraw whole --screenshot " + wholeShot);
+  ASSERT_TRUE(changed.is_object() && whole.is_object());
+  EXPECT_FALSE(bool(whole["window_redraw"]["changed_only"]));
+  EXPECT_EQ(whole["window_redraw"]["pixels"].get<long long>(), pixelsInWindow);
+  EXPECT_EQ(differingPixels(loadImageOrFail(changedShot), loadImageOrFail(wholeShot), 0), 0);
 }
 
 }  // namespace

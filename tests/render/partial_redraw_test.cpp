@@ -109,8 +109,12 @@ TEST(PartialRedraw, DrawingOnlyTheDamagedRectangleGivesTheWholeFramesPixels) {
     bool kept = false;
     ASSERT_EQ(partial.begin(kWidth, kHeight, kept), "");
     EXPECT_EQ(kept, step > 0);
-    if (step == 0) EXPECT_EQ(job.out, view) << "nothing kept: the whole view";
-    if (step == 2) EXPECT_TRUE(job.out.empty()) << "the same frame again changes nothing";
+    if (step == 0) {
+      EXPECT_EQ(job.out, view) << "nothing kept: the whole view";
+    }
+    if (step == 2) {
+      EXPECT_TRUE(job.out.empty()) << "the same frame again changes nothing";
+    }
     if (step == 1 || step == 3 || step == 4) {
       EXPECT_FALSE(job.out.empty());
       EXPECT_LT(job.out.area(), view.area() / 2) << "a forearm's move is a small part of the view";
