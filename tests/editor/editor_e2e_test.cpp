@@ -570,7 +570,7 @@ TEST_F(EditorE2e, XdotoolClickSelectsTheHandThroughTheXServer) {
                     << "xdotool windowfocus --sync $w || true\n"
                     << "sleep 0.5\nxdotool key --window $w KP_1 Home\nsleep 0.5\n"
                     << "xdotool mousemove --window $w " << move << "\nsleep 0.3\nxdotool click 1\nsleep 0.5\n"
-                    << "xdotool key --window $w ctrl+q\nwait $pid\n";
+                    << "xdotool key --window $w ctrl+q || true\nwait $pid\n";  // it may quit before the releases
   std::string out, err;
   ASSERT_EQ(runCommand(e2e::xvfb() + "sh " + sh, &out, &err), 0) << err;
   json d = readJson(dump);
@@ -601,7 +601,7 @@ TEST_F(EditorE2e, XdotoolTapsOf12MsAtFiveFramesASecondAreAllHandled) {
                     << "xdotool windowfocus --sync $w || true\n"
                     << "xdotool mousemove --window $w " << move << "\nsleep 1\n"
                     << "xdotool key --delay 12 " << keys << "\nxdotool key --delay 12" << undos << "\n"
-                    << "sleep 0.5\nxdotool key ctrl+q\nwait $pid\n";
+                    << "sleep 0.5\nxdotool key ctrl+q || true\nwait $pid\n";  // it may quit before the releases
   std::string out, err;
   ASSERT_EQ(runCommand(e2e::xvfb() + "sh " + sh, &out, &err), 0) << err;
   const json d = readJson(dump);
