@@ -7,6 +7,9 @@
 # Each size ends with the ratio of the two medians (the issue 20 bound: at most 1.5).
 # Usage: bench/editor/frame_times.sh [build/src/kinema] [WIDTHxHEIGHT]
 set -euo pipefail
+# KINEMA_EDIT_OPTIONS: more options for the measured runs (not the empty frame), e.g.
+# "--redraw whole" to time drawing every frame whole (the default on llvmpipe: changed only).
+read -r -a extra <<< "${KINEMA_EDIT_OPTIONS:-}"
 root=$(cd "$(dirname "$0")/../.." && pwd)
 kinema=${1:-$root/build/src/kinema}
 sizes=${2:-"1280x800 1600x1000"}
@@ -32,7 +35,7 @@ PY
 for size in $sizes; do
   script=$root/bench/editor/ik_drag_$size.jsonl
   echo "$size IK drag:"
-  run "$size" "$script" --dump-state "$tmp/state.json" | tee "$tmp/drag.txt"
+  run "$size" "$script" --dump-state "$tmp/state.json" ${extra[@]+"${extra[@]}"} | tee "$tmp/drag.txt"
   if ! python3 -c 'import json,sys; sys.exit(0 if len(json.load(open(sys.argv[1]))["ik_targets"]) == 1 else 1)' "$tmp/state.json"; then
     echo "frame_times.sh: $script added no IK target (it missed the hand: regenerate it with make_ik_drag_script.py)" >&2
     exit 1

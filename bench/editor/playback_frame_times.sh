@@ -6,6 +6,9 @@
 # Preferences, recovery files and caches go to a temporary folder.
 # Usage: bench/editor/playback_frame_times.sh [build/src/kinema] [file.bvh] [WIDTHxHEIGHT]
 set -euo pipefail
+# KINEMA_EDIT_OPTIONS: more options for the measured runs (not the empty frame), e.g.
+# "--redraw whole" to time drawing every frame whole (the default on llvmpipe: changed only).
+read -r -a extra <<< "${KINEMA_EDIT_OPTIONS:-}"
 root=$(cd "$(dirname "$0")/../.." && pwd)
 kinema=${1:-$root/build/src/kinema}
 file=${2:-$root/../shared/data/bvh/cmu_01_01_first720.bvh}
@@ -33,8 +36,8 @@ print(f"{sys.argv[3]}: {a:.2f} / {b:.2f} ms = {a / b:.2f}x")
 PY
 }
 for size in $sizes; do
-  echo "$size playback, onion skin off:"; run "$size" --script "$root/bench/editor/playback.jsonl" | tee "$tmp/off.txt"
-  echo "$size playback, onion skin on (4 ghosts):"; run "$size" --script "$tmp/onion.jsonl" | tee "$tmp/on.txt"
+  echo "$size playback, onion skin off:"; run "$size" --script "$root/bench/editor/playback.jsonl" ${extra[@]+"${extra[@]}"} | tee "$tmp/off.txt"
+  echo "$size playback, onion skin on (4 ghosts):"; run "$size" --script "$tmp/onion.jsonl" ${extra[@]+"${extra[@]}"} | tee "$tmp/on.txt"
   echo "$size empty ImGui frame:"; run "$size" --script "$root/bench/editor/playback.jsonl" --empty-frame | tee "$tmp/empty.txt"
   ratio "$tmp/off.txt" "$tmp/empty.txt" "$size playback, onion skin off / empty frame"
   ratio "$tmp/on.txt" "$tmp/empty.txt" "$size playback, onion skin on / empty frame"

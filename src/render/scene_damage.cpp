@@ -142,7 +142,7 @@ bool SceneDamageJob::run() {
 
   out = view;
   const bool comparable = last->valid && last->settings == settings && f.width > 0 && f.height > 0 &&
-                          (!meshFrame || (posed && !meshFrame->gpuDeformers)) && (!posed || scene) &&
+                          (!meshFrame || !meshFrame->gpuDeformers) && (!posed || scene) &&
                           last->skeleton.boneMatrices.size() == now.skeleton.boneMatrices.size() &&
                           last->skeleton.jointMatrices.size() == now.skeleton.jointMatrices.size() &&
                           last->skeleton.relationships.size() == now.skeleton.relationships.size() &&

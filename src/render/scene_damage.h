@@ -30,8 +30,9 @@ struct SceneSnapshot {
 // one: a bone, joint sphere, relationship line, overlay line, handle or screen shape that
 // changed adds its old and new screen bounds; a mesh vertex whose position or normal
 // changed adds the old and new positions of every triangle around it. Anything else
-// (camera, viewport, switches, ghosts, morphs or joints of meshes not posed on the CPU, a
-// different number of elements, a point behind the camera) redraws the whole view.
+// (camera, viewport, switches, ghosts, morphs or joints of meshes not posed on the CPU, the
+// vertices of meshes with deformers, a different number of elements, a point behind the
+// camera, deformers run in the vertex shader) redraws the whole view.
 // Conservative: bounds are grown by line widths, handle radii and a margin of
 // kSceneDamageMargin pixels, and clipped to the view.
 constexpr int kSceneDamageMargin = 3;

@@ -4,6 +4,7 @@
 // that rectangle is tests/render/partial_redraw_test.cpp.
 #include <gtest/gtest.h>
 
+#include "render/mesh_renderer.h"
 #include "render/scene_damage.h"
 #include "render/skeleton_renderer.h"
 
@@ -127,6 +128,29 @@ TEST(SceneDamage, APointBehindTheCameraOrADifferentCountRedrawsEverything) {
   EXPECT_EQ(job.out, whole);
   SceneDamageJob missing;
   EXPECT_FALSE(missing.run());
+}
+
+TEST(SceneDamage, MeshesNotPosedOnTheCpuRedrawTheWholeViewWhenTheirJointsMoveAndNothingElse) {
+  const SkeletonDrawList bones = twoBones(glm::vec3(3, 1, 0));
+  FrameDescription f = frameOf(&bones, nullptr);
+  MeshRenderer renderer;  // never initialised: the job only reads what the frame says
+  std::vector<glm::mat4> world{glm::mat4(1.0f)};
+  MeshDraw meshes;
+  meshes.renderer = &renderer;
+  meshes.frame.world = &world;
+  f.meshes = &meshes;
+  SceneSnapshot last;
+  SceneDamageJob job;
+  job.frame = &f;
+  job.last = &last;
+  const PixelRect whole{kX, kY, kX + kW, kY + kH};
+  ASSERT_TRUE(job.run());
+  EXPECT_EQ(job.out, whole);
+  ASSERT_TRUE(job.run());
+  EXPECT_TRUE(job.out.empty()) << "an idle frame (the weights view, a GPU) draws nothing";
+  world[0] = glm::translate(glm::mat4(1.0f), glm::vec3(0.1f, 0, 0));
+  ASSERT_TRUE(job.run());
+  EXPECT_EQ(job.out, whole) << "the vertices are not known here: the whole view";
 }
 
 TEST(PixelRect, MergedDamageIsDisjointCoversEveryInputAndHasAtMostTheCount) {
