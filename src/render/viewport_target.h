@@ -8,8 +8,10 @@ namespace kinema {
 // The editor's 3D view drawn into a framebuffer of its own (the window's has one sample per
 // pixel): a multisampled colour + depth target for the still picture, resolved into a
 // single-sample copy that is copied into the window and kept, so a frame where nothing in
-// the view changed shows the copy again without drawing. Sizes are framebuffer pixels.
-// Create, use and destroy it with one context current.
+// the view changed shows the copy again without drawing. With one sample it is also the
+// whole window's kept copy for changed-only redraws where the window's back buffer does not
+// survive a swap (window_redraw.h): drawn into, then presented whole. Sizes are framebuffer
+// pixels. Create, use and destroy it with one context current.
 class ViewportTarget {
  public:
   ViewportTarget() = default;
@@ -30,6 +32,8 @@ class ViewportTarget {
   bool holds(int width, int height) const { return resolved_ && width == width_ && height == height_; }
   void forget() { resolved_ = false; }
   int samples() const { return samples_; }  // of the target begin() bound last
+  // The framebuffer begin() bound for drawing (the kept one with one sample).
+  GLuint boundFramebuffer() const { return samples_ > 1 ? drawFbo_ : keptFbo_; }
 
  private:
   void release();

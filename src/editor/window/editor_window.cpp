@@ -41,7 +41,6 @@
 #include "render/frame_signature.h"
 #include "render/gl_context.h"
 #include "render/scene_damage.h"
-#include "render/window_canvas.h"
 #include "render/viewport_target.h"
 #include "render/skeleton_view.h"
 #include "skin/scene_deformation.h"
@@ -327,7 +326,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     bool changedRedraws = o.redraw == WindowRedraw::Changed || (o.redraw == WindowRedraw::Auto && softwareRasterizer());
     const bool backBufferKept = changedRedraws && backBufferSurvivesSwaps(window);
     glm::ivec2 keptSize(-1);  // the back buffer's size when it was last drawn (backBufferKept)
-    WindowCanvas canvas;      // where the back buffer does not survive swaps
+    ViewportTarget canvas;    // the whole window, one sample, where the back buffer does not survive swaps
     ImGuiDrawSnapshot imguiSnapshot;
     SceneSnapshot sceneSnapshot;
     ViewContent canvasView;
@@ -608,12 +607,13 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
           kept = keptSize == glm::ivec2(fbw, fbh);
           keptSize = glm::ivec2(fbw, fbh);
         } else if (changedOnly) {
-          if (const std::string failed = canvas.begin(fbw, fbh, kept); !failed.empty()) {
+          kept = canvas.holds(fbw, fbh);
+          if (const std::string failed = canvas.begin(fbw, fbh, 1); !failed.empty()) {
             std::cerr << "kinema edit: " << failed << "; every frame is drawn whole\n";
             changedRedraws = changedOnly = false;
           }
         }
-        drawFramebuffer = changedOnly && !backBufferKept ? canvas.framebuffer() : 0;
+        drawFramebuffer = changedOnly && !backBufferKept ? canvas.boundFramebuffer() : 0;
         if (!changedOnly) {
           glBindFramebuffer(GL_FRAMEBUFFER, 0);
           glViewport(0, 0, fbw, fbh);
@@ -677,7 +677,8 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
           mark("ImGui: draw the panels");
           state.windowRedraw = {true, static_cast<int>(rects.size()), pixels};
           if (!backBufferKept) {
-            canvas.present();
+            canvas.resolve();  // one sample: nothing to resolve, kept for the next frame
+            canvas.present(0, 0, 0);
             mark("copy the canvas to the window");
           }
         }
