@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "editor/imgui_test_context.h"
 #include "editor/window/imgui_backends.h"
 #include "editor/window/imgui_damage.h"
 
@@ -17,19 +18,7 @@ namespace {
 const ImTextureID kFont = reinterpret_cast<ImTextureID>(static_cast<intptr_t>(7));
 
 struct ImGuiFrames {
-  ImGuiFrames() {
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.DisplaySize = ImVec2(800, 600);
-    io.DeltaTime = 1.0f / 60.0f;
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-    io.Fonts->SetTexID(kFont);
-    io.BackendFlags |= ImGuiBackendFlags_RendererHasVtxOffset;
-  }
-  ~ImGuiFrames() { ImGui::DestroyContext(); }
+  test::ImGuiTestContext context{kFont};
   // A panel of 12 lines, line `changed` showing `value`; a second window when `extra`.
   // Returns the rectangles of lines 0, `changed` and 11 as drawn.
   std::vector<PixelRect> frame(int changed, float value, bool extra = false) {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "editor/imgui_test_context.h"
 #include "editor/window/imgui_backends.h"
 
 namespace kinema {
@@ -47,16 +48,7 @@ void drawn(const ImDrawList& list, std::vector<DrawnTriangle>& out) {
 }
 
 TEST(ImGuiDrawMerge, TheMergedListDrawsEveryListsTrianglesInOrder) {
-  ImGui::CreateContext();
-  ImGuiIO& io = ImGui::GetIO();
-  io.IniFilename = nullptr;
-  io.DisplaySize = ImVec2(800, 600);
-  io.DeltaTime = 1.0f / 60.0f;
-  unsigned char* pixels = nullptr;
-  int w = 0, h = 0;
-  io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-  io.Fonts->SetTexID(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(7)));
-  io.BackendFlags |= ImGuiBackendFlags_RendererHasVtxOffset;
+  const test::ImGuiTestContext imgui(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(7)));
   ImGui::NewFrame();
   // Three windows with text, frames, a clipped child and an image of another texture, so
   // the lists hold several commands with different clip rectangles and textures.
@@ -94,7 +86,6 @@ TEST(ImGuiDrawMerge, TheMergedListDrawsEveryListsTrianglesInOrder) {
   // Merging again into the same list starts afresh.
   mergeImGuiDrawLists(*data, merged);
   EXPECT_EQ(merged.VtxBuffer.Size, data->TotalVtxCount);
-  ImGui::DestroyContext();
 }
 
 }  // namespace

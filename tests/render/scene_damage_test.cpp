@@ -41,49 +41,53 @@ glm::vec2 pixelOf(const FrameDescription& f, const glm::vec3& p) {
   return glm::vec2(w);
 }
 
+// The job over one frame description, frame after frame.
+struct Damage {
+  SceneSnapshot last;
+  SceneDamageJob job;
+  explicit Damage(const FrameDescription& f) {
+    job.frame = &f;
+    job.last = &last;
+  }
+  PixelRect next() {
+    EXPECT_TRUE(job.run());
+    return job.out;
+  }
+};
+
 bool holds(const PixelRect& r, const glm::vec2& p) { return p.x >= r.x0 && p.x <= r.x1 && p.y >= r.y0 && p.y <= r.y1; }
 
 TEST(SceneDamage, TheFirstFrameAndAChangedCameraDamageTheWholeViewAndTheSameFrameNothing) {
   const SkeletonDrawList bones = twoBones(glm::vec3(3, 1, 0));
   FrameDescription f = frameOf(&bones, nullptr);
-  SceneSnapshot last;
-  SceneDamageJob job;
-  job.frame = &f;
-  job.last = &last;
-  ASSERT_TRUE(job.run());
-  EXPECT_EQ(job.out, (PixelRect{kX, kY, kX + kW, kY + kH}));
-  ASSERT_TRUE(job.run());
-  EXPECT_TRUE(job.out.empty());
+  Damage damage(f);
+  EXPECT_EQ(damage.next(), (PixelRect{kX, kY, kX + kW, kY + kH}));
+  EXPECT_TRUE(damage.next().empty());
   f.camera.azimuthDeg = 1.0f;
-  ASSERT_TRUE(job.run());
-  EXPECT_EQ(job.out, (PixelRect{kX, kY, kX + kW, kY + kH}));
+  EXPECT_EQ(damage.next(), (PixelRect{kX, kY, kX + kW, kY + kH}));
   f.showGrid = false;  // a switch
-  ASSERT_TRUE(job.run());
-  EXPECT_EQ(job.out, (PixelRect{kX, kY, kX + kW, kY + kH}));
+  EXPECT_EQ(damage.next(), (PixelRect{kX, kY, kX + kW, kY + kH}));
 }
 
 TEST(SceneDamage, AMovedBoneDamagesItsOldAndNewPlaceAndNotTheOtherBone) {
   SkeletonDrawList bones = twoBones(glm::vec3(3, 1, 0));
   FrameDescription f = frameOf(&bones, nullptr);
-  SceneSnapshot last;
-  SceneDamageJob job;
-  job.frame = &f;
-  job.last = &last;
-  ASSERT_TRUE(job.run());
+  Damage damage(f);
+  damage.next();
   bones = twoBones(glm::vec3(3.8f, 0.6f, 0));  // the right bone turns down to the right
-  ASSERT_TRUE(job.run());
-  ASSERT_FALSE(job.out.empty());
+  PixelRect out = damage.next();
+  ASSERT_FALSE(out.empty());
   for (const glm::vec3& p : {glm::vec3(3, 0, 0), glm::vec3(3, 1, 0), glm::vec3(3.8f, 0.6f, 0)})
-    EXPECT_TRUE(holds(job.out, pixelOf(f, p))) << p.x << " " << p.y;
+    EXPECT_TRUE(holds(out, pixelOf(f, p))) << p.x << " " << p.y;
   // The waist of the old bone: 0.1 of its length out from its axis at a tenth of the way up.
-  EXPECT_TRUE(holds(job.out, pixelOf(f, glm::vec3(2.9f, 0.1f, 0))));
+  EXPECT_TRUE(holds(out, pixelOf(f, glm::vec3(2.9f, 0.1f, 0))));
   for (const glm::vec3& p : {glm::vec3(-3, 0, 0), glm::vec3(-3, 1, 0), glm::vec3(0, 0.5f, 0)})
-    EXPECT_FALSE(holds(job.out, pixelOf(f, p))) << p.x << " " << p.y;
+    EXPECT_FALSE(holds(out, pixelOf(f, p))) << p.x << " " << p.y;
   // A colour change alone (selecting the bone) damages it too.
   bones.boneColors[0] = glm::vec4(1, 0.6f, 0.2f, 1);
-  ASSERT_TRUE(job.run());
-  EXPECT_TRUE(holds(job.out, pixelOf(f, glm::vec3(-3, 0.5f, 0))));
-  EXPECT_FALSE(holds(job.out, pixelOf(f, glm::vec3(3.4f, 0.8f, 0))));
+  out = damage.next();
+  EXPECT_TRUE(holds(out, pixelOf(f, glm::vec3(-3, 0.5f, 0))));
+  EXPECT_FALSE(holds(out, pixelOf(f, glm::vec3(3.4f, 0.8f, 0))));
 }
 
 TEST(SceneDamage, AMovedHandleDamagesItsRadiusInPixelsAroundBothCentres) {
@@ -91,41 +95,33 @@ TEST(SceneDamage, AMovedHandleDamagesItsRadiusInPixelsAroundBothCentres) {
   OverlayDrawList overlay;
   overlay.addHandle(glm::vec3(0, 0, 0), 8.0f, glm::vec4(1), OverlayDrawList::HandleShape::Disc);
   FrameDescription f = frameOf(&bones, &overlay);
-  SceneSnapshot last;
-  SceneDamageJob job;
-  job.frame = &f;
-  job.last = &last;
-  ASSERT_TRUE(job.run());
+  Damage damage(f);
+  damage.next();
   overlay.handles[0].center = glm::vec3(1, 1, 0);
-  ASSERT_TRUE(job.run());
+  PixelRect out = damage.next();
   const glm::vec2 a = pixelOf(f, glm::vec3(0)), b = pixelOf(f, glm::vec3(1, 1, 0));
-  EXPECT_TRUE(holds(job.out, a - glm::vec2(8)));
-  EXPECT_TRUE(holds(job.out, b + glm::vec2(8)));
-  EXPECT_FALSE(holds(job.out, a - glm::vec2(30)));
-  EXPECT_FALSE(holds(job.out, pixelOf(f, glm::vec3(-3, 0.5f, 0))));
+  EXPECT_TRUE(holds(out, a - glm::vec2(8)));
+  EXPECT_TRUE(holds(out, b + glm::vec2(8)));
+  EXPECT_FALSE(holds(out, a - glm::vec2(30)));
+  EXPECT_FALSE(holds(out, pixelOf(f, glm::vec3(-3, 0.5f, 0))));
   // A screen rectangle (box select) in pixels from the view's top left corner.
   overlay.addScreenRectangle(glm::vec2(10, 10), glm::vec2(50, 40), glm::vec4(1, 1, 1, 0.1f), glm::vec4(1));
-  ASSERT_TRUE(job.run());
-  EXPECT_TRUE(holds(job.out, glm::vec2(kX + 10, kY + kH - 10)));
-  EXPECT_TRUE(holds(job.out, glm::vec2(kX + 50, kY + kH - 40)));
+  out = damage.next();
+  EXPECT_TRUE(holds(out, glm::vec2(kX + 10, kY + kH - 10)));
+  EXPECT_TRUE(holds(out, glm::vec2(kX + 50, kY + kH - 40)));
 }
 
 TEST(SceneDamage, APointBehindTheCameraOrADifferentCountRedrawsEverything) {
   SkeletonDrawList bones = twoBones(glm::vec3(3, 1, 0));
   FrameDescription f = frameOf(&bones, nullptr);
-  SceneSnapshot last;
-  SceneDamageJob job;
-  job.frame = &f;
-  job.last = &last;
-  ASSERT_TRUE(job.run());
+  Damage damage(f);
+  damage.next();
   const PixelRect whole{kX, kY, kX + kW, kY + kH};
   bones = twoBones(glm::vec3(3, 1, 20));  // the tail reaches past the camera (at z = 10)
-  ASSERT_TRUE(job.run());
-  EXPECT_EQ(job.out, whole);
+  EXPECT_EQ(damage.next(), whole);
   bones.boneMatrices.pop_back();
   bones.boneColors.pop_back();
-  ASSERT_TRUE(job.run());
-  EXPECT_EQ(job.out, whole);
+  EXPECT_EQ(damage.next(), whole);
   SceneDamageJob missing;
   EXPECT_FALSE(missing.run());
 }
@@ -139,18 +135,12 @@ TEST(SceneDamage, MeshesNotPosedOnTheCpuRedrawTheWholeViewWhenTheirJointsMoveAnd
   meshes.renderer = &renderer;
   meshes.frame.world = &world;
   f.meshes = &meshes;
-  SceneSnapshot last;
-  SceneDamageJob job;
-  job.frame = &f;
-  job.last = &last;
+  Damage damage(f);
   const PixelRect whole{kX, kY, kX + kW, kY + kH};
-  ASSERT_TRUE(job.run());
-  EXPECT_EQ(job.out, whole);
-  ASSERT_TRUE(job.run());
-  EXPECT_TRUE(job.out.empty()) << "an idle frame (the weights view, a GPU) draws nothing";
+  EXPECT_EQ(damage.next(), whole);
+  EXPECT_TRUE(damage.next().empty()) << "an idle frame (the weights view, a GPU) draws nothing";
   world[0] = glm::translate(glm::mat4(1.0f), glm::vec3(0.1f, 0, 0));
-  ASSERT_TRUE(job.run());
-  EXPECT_EQ(job.out, whole) << "the vertices are not known here: the whole view";
+  EXPECT_EQ(damage.next(), whole) << "the vertices are not known here: the whole view";
 }
 
 TEST(PixelRect, MergedDamageIsDisjointCoversEveryInputAndHasAtMostTheCount) {
