@@ -57,7 +57,8 @@ struct Digest {
   }
 };
 
-// The settings (camera, viewport, switches) and the ghosts, which both digests hold.
+// The settings (camera, viewport, switches) and the mesh ghosts, which both digests hold
+// (the skeleton ghosts: how many, their shapes compared by SceneDamageJob).
 void settingsAndGhosts(Digest& d, const FrameDescription& f) {
   const OrbitCamera& c = f.camera;
   d.value(c.azimuthDeg), d.value(c.elevationDeg), d.value(c.distance), d.value(c.target), d.value(c.fovYDeg);
@@ -67,8 +68,6 @@ void settingsAndGhosts(Digest& d, const FrameDescription& f) {
   d.value(f.skeleton != nullptr);
   d.value(f.overlay != nullptr);
   d.value(f.ghosts ? f.ghosts->size() : size_t(0));
-  if (f.ghosts)
-    for (const SkeletonDrawList& g : *f.ghosts) d.skeleton(g);
   d.value(f.meshGhosts ? f.meshGhosts->size() : size_t(0));
   if (f.meshGhosts)
     for (const MeshGhost& g : *f.meshGhosts) {
@@ -109,6 +108,8 @@ uint64_t frameSignature(const FrameDescription& f) {
   Digest d;
   d.value(frameSettingsSignature(f));
   if (f.skeleton) d.skeleton(*f.skeleton);
+  if (f.ghosts)
+    for (const SkeletonDrawList& g : *f.ghosts) d.skeleton(g);
   if (f.overlay) d.overlay(*f.overlay);
   if (f.meshes && f.meshes->renderer) {
     const MeshFrame& m = f.meshes->frame;

@@ -13,8 +13,9 @@ struct FrameDescription;
 uint64_t frameSignature(const FrameDescription& frame);
 
 // The same digest of everything apart from the elements SceneDamageJob compares one by one
-// (the skeleton's bones, joints and relationship lines, the overlay, and the vertices of
-// meshes posed on the CPU, MeshFrame::posed): camera, viewport, switches, grid, ghosts, the
+// (the skeleton's and its ghosts' bones, joints and relationship lines, the overlay, and the
+// vertices of meshes posed on the CPU, MeshFrame::posed): camera, viewport, switches, grid,
+// the number of skeleton ghosts, the mesh ghosts, the
 // meshes' joints and morph weights when they are not posed on the CPU, and the vertices of
 // meshes deformed on the CPU (MeshFrame::deformed).
 uint64_t frameSettingsSignature(const FrameDescription& frame);

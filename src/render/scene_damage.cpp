@@ -96,6 +96,28 @@ void compareLists(const std::vector<T>& before, const std::vector<T>& now, Same 
   }
 }
 
+// Two drawings with the same number of bones and of joints each (and of ghosts).
+bool sameShapeCounts(const SkeletonDrawList& a, const SkeletonDrawList& b) {
+  return a.boneMatrices.size() == b.boneMatrices.size() && a.boneColors.size() == b.boneColors.size() &&
+         a.jointMatrices.size() == b.jointMatrices.size() && a.jointColors.size() == b.jointColors.size();
+}
+bool sameShapeCounts(const std::vector<SkeletonDrawList>& a, const std::vector<SkeletonDrawList>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t g = 0; g < a.size(); ++g)
+    if (!sameShapeCounts(a[g], b[g])) return false;
+  return true;
+}
+
+// Every bone or joint sphere whose matrix or colour differs: its old and new boxes.
+void addChangedShapes(const SkeletonDrawList& a, const SkeletonDrawList& b, ScreenBounds& s) {
+  for (size_t i = 0; i < b.boneMatrices.size() && i < b.boneColors.size(); ++i)
+    if (!same(a.boneMatrices[i], b.boneMatrices[i]) || !same(a.boneColors[i], b.boneColors[i]))
+      s.addBox(a.boneMatrices[i], boneBox()), s.addBox(b.boneMatrices[i], boneBox());
+  for (size_t i = 0; i < b.jointMatrices.size() && i < b.jointColors.size(); ++i)
+    if (!same(a.jointMatrices[i], b.jointMatrices[i]) || !same(a.jointColors[i], b.jointColors[i]))
+      s.addBox(a.jointMatrices[i], sphereBox()), s.addBox(b.jointMatrices[i], sphereBox());
+}
+
 // The triangles of one posed primitive around vertices that moved or turned: their corners'
 // old and new positions. False when the two cannot be compared (then the whole view).
 bool addMovedTriangles(const DeformedPrimitive& before, const DeformedPrimitive& now, const MeshPrimitive& source,
@@ -137,15 +159,16 @@ bool SceneDamageJob::run() {
   now.valid = true;
   now.settings = settings;
   if (f.skeleton) now.skeleton = *f.skeleton;
+  if (f.ghosts) now.ghosts = *f.ghosts;
   if (f.overlay) now.overlay = *f.overlay;
   if (posed) now.posed = *posed;
 
   out = view;
   const bool comparable = last->valid && last->settings == settings && f.width > 0 && f.height > 0 &&
                           (!meshFrame || !meshFrame->gpuDeformers) && (!posed || scene) &&
-                          last->skeleton.boneMatrices.size() == now.skeleton.boneMatrices.size() &&
-                          last->skeleton.jointMatrices.size() == now.skeleton.jointMatrices.size() &&
+                          sameShapeCounts(last->skeleton, now.skeleton) &&
                           last->skeleton.relationships.size() == now.skeleton.relationships.size() &&
+                          sameShapeCounts(last->ghosts, now.ghosts) &&
                           last->posed.size() == now.posed.size();
   if (!comparable) {
     *last = std::move(now);
@@ -156,20 +179,11 @@ bool SceneDamageJob::run() {
   s.viewProjection = f.camera.projection(aspect) * f.camera.view();
   s.x = f.x, s.y = f.y, s.w = f.width, s.h = f.height;
   const double scale = f.lineScale;
-  // Bones and joints: instance matrices and colours.
-  const SkeletonDrawList& a = last->skeleton;
-  const SkeletonDrawList& b = now.skeleton;
-  for (size_t i = 0; i < b.boneMatrices.size(); ++i)
-    if (!same(a.boneMatrices[i], b.boneMatrices[i]) || i >= a.boneColors.size() || i >= b.boneColors.size() ||
-        !same(a.boneColors[i], b.boneColors[i]))
-      s.addBox(a.boneMatrices[i], boneBox()), s.addBox(b.boneMatrices[i], boneBox());
-  for (size_t i = 0; i < b.jointMatrices.size(); ++i)
-    if (!same(a.jointMatrices[i], b.jointMatrices[i]) || i >= a.jointColors.size() || i >= b.jointColors.size() ||
-        !same(a.jointColors[i], b.jointColors[i]))
-      s.addBox(a.jointMatrices[i], sphereBox()), s.addBox(b.jointMatrices[i], sphereBox());
-  compareLists(a.relationships, b.relationships, sameRelationship, [&](const SkeletonDrawList::Relationship& r) {
-    s.addPoint(r.from, scale), s.addPoint(r.to, scale);
-  });
+  // Bones and joints (instance matrices and colours) of the skeleton and its ghosts.
+  addChangedShapes(last->skeleton, now.skeleton, s);
+  for (size_t g = 0; g < now.ghosts.size(); ++g) addChangedShapes(last->ghosts[g], now.ghosts[g], s);
+  compareLists(last->skeleton.relationships, now.skeleton.relationships, sameRelationship,
+               [&](const SkeletonDrawList::Relationship& r) { s.addPoint(r.from, scale), s.addPoint(r.to, scale); });
   // The overlay: widths and radii in pixels (times the line scale, as drawn).
   const OverlayDrawList& oa = last->overlay;
   const OverlayDrawList& ob = now.overlay;

@@ -19,6 +19,7 @@ struct SceneSnapshot {
   bool valid = false;       // false: nothing kept (the next frame redraws the whole view)
   uint64_t settings = 0;    // frameSettingsSignature of the frame
   SkeletonDrawList skeleton;
+  std::vector<SkeletonDrawList> ghosts;  // onion-skin skeletons (FrameDescription::ghosts)
   OverlayDrawList overlay;
   std::vector<DeformedPrimitive> posed;  // MeshFrame::posed, when the meshes were drawn from it
 };
@@ -27,10 +28,11 @@ struct SceneSnapshot {
 // from the bottom) that differs between the picture `last` describes and `frame`'s, so a
 // software rasteriser can draw that rectangle alone over the previous picture (the partial
 // redraw of Blender 2.7's "Triple Buffer" window draw method). Elements are compared one by
-// one: a bone, joint sphere, relationship line, overlay line, handle or screen shape that
+// one: a bone, joint sphere (of the skeleton or one of its onion-skin ghosts), relationship
+// line, overlay line, handle or screen shape that
 // changed adds its old and new screen bounds; a mesh vertex whose position or normal
 // changed adds the old and new positions of every triangle around it. Anything else
-// (camera, viewport, switches, ghosts, morphs or joints of meshes not posed on the CPU, the
+// (camera, viewport, switches, mesh ghosts, morphs or joints of meshes not posed on the CPU, the
 // vertices of meshes with deformers, a different number of elements, a point behind the
 // camera, deformers run in the vertex shader) redraws the whole view.
 // Conservative: bounds are grown by line widths, handle radii and a margin of

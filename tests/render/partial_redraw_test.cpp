@@ -30,22 +30,34 @@ Image readCanvas() {
   return img;
 }
 
-// One frame of the default character with its forearm bent `elbow` degrees and a handle on
-// the hand, everything the frame points at kept alive here.
+// One frame of the default character with its forearm bent `elbow` degrees, an onion-skin
+// ghost of its skeleton 20 degrees behind and a handle on the hand, everything the frame
+// points at kept alive here.
 struct Frame {
   std::vector<glm::mat4> world;
   std::vector<DeformedPrimitive> posed;
   SkeletonDrawList bones;
+  std::vector<SkeletonDrawList> ghosts;
   OverlayDrawList overlay;
   MeshDraw meshes;
   FrameDescription description;
   Frame(const Scene& scene, MeshRenderer& renderer, float elbow) {
-    Pose pose = Pose::rest(scene.skeleton);
     const int forearm = scene.skeleton.find("LowerArm.L"), hand = scene.skeleton.find("Hand.L");
     EXPECT_GE(forearm, 0);
     EXPECT_GE(hand, 0);
-    pose.local[forearm].rotation = glm::angleAxis(glm::radians(elbow), glm::vec3(0, 1, 0)) * pose.local[forearm].rotation;
-    world = computeWorld(scene.skeleton, pose);
+    auto bent = [&](float degrees) {
+      Pose pose = Pose::rest(scene.skeleton);
+      pose.local[forearm].rotation = glm::angleAxis(glm::radians(degrees), glm::vec3(0, 1, 0)) * pose.local[forearm].rotation;
+      return computeWorld(scene.skeleton, pose);
+    };
+    world = bent(elbow);
+    const std::vector<glm::mat4> ghostWorld = bent(elbow - 20.0f);
+    SkeletonDrawJob ghostJob;
+    ghostJob.parents = &scene.skeleton.parents;
+    ghostJob.world = &ghostWorld;
+    ghostJob.style.bone = ghostJob.style.joint = glm::vec4(0.3f, 0.6f, 1.0f, 0.4f);
+    ghosts.emplace_back();
+    EXPECT_TRUE(ghostJob.run(ghosts.back()));
     SceneDeformationJob deform;
     deform.scene = &scene;
     deform.world = &world;
@@ -60,6 +72,7 @@ struct Frame {
     meshes.frame.world = &world;
     meshes.frame.posed = &posed;
     description.skeleton = &bones;
+    description.ghosts = &ghosts;
     description.overlay = &overlay;
     description.meshes = &meshes;
     description.bones = BoneDisplay::XRay;

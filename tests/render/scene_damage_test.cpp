@@ -111,6 +111,21 @@ TEST(SceneDamage, AMovedHandleDamagesItsRadiusInPixelsAroundBothCentres) {
   EXPECT_TRUE(holds(out, glm::vec2(kX + 50, kY + kH - 40)));
 }
 
+TEST(SceneDamage, AMovedGhostDamagesItsPlaceAndAnotherNumberOfGhostsTheWholeView) {
+  const SkeletonDrawList bones = twoBones(glm::vec3(3, 1, 0));
+  std::vector<SkeletonDrawList> ghosts{twoBones(glm::vec3(3, 1, 0))};
+  FrameDescription f = frameOf(&bones, nullptr);
+  f.ghosts = &ghosts;
+  Damage damage(f);
+  damage.next();
+  ghosts[0] = twoBones(glm::vec3(3.8f, 0.6f, 0));  // the ghost of the right bone turns
+  const PixelRect out = damage.next();
+  EXPECT_TRUE(holds(out, pixelOf(f, glm::vec3(3.8f, 0.6f, 0))));
+  EXPECT_FALSE(holds(out, pixelOf(f, glm::vec3(-3, 0.5f, 0))));
+  ghosts.push_back(ghosts[0]);
+  EXPECT_EQ(damage.next(), (PixelRect{kX, kY, kX + kW, kY + kH}));
+}
+
 TEST(SceneDamage, APointBehindTheCameraOrADifferentCountRedrawsEverything) {
   SkeletonDrawList bones = twoBones(glm::vec3(3, 1, 0));
   FrameDescription f = frameOf(&bones, nullptr);
