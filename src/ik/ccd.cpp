@@ -73,12 +73,15 @@ void sweep(IkChain& c, const Goal& g, const IkSettings& settings, int it) {
 // run root..effector, each the parent of the next), no limits, no damping, no trace. The
 // same arithmetic as sweep() with fastFromTo and turnedLocal written out, operation for
 // operation, so both give the same bits; GCC keeps these scalars in registers where the
-// glm temporaries of the general loop went through the stack.
+// glm temporaries of the general loop went through the stack. Square roots are sqrtss
+// (ik_detail::sqrtFloat: the same IEEE result as std::sqrt without its errno branch).
 void plainSweep(IkChain& c, const Goal& g) {
+  using ik_detail::sqrtFloat;
   const glm::vec3* pos = c.positions.data();
   const glm::quat* rot = c.rotation.data();
   const int* joints = c.joints.data();
   Transform* local = c.pose->local.data();
+  const glm::quat& rootParent = c.fixedRotation[g.rootSlot];
   const float gx = g.position.x, gy = g.position.y, gz = g.position.z;
   float ex = pos[g.slot].x, ey = pos[g.slot].y, ez = pos[g.slot].z;
   for (int s = g.slot - 1; s >= g.rootSlot; --s) {
@@ -87,22 +90,35 @@ void plainSweep(IkChain& c, const Goal& g) {
     const float bx = gx - px, by = gy - py, bz = gz - pz;  // joint -> target
     const float ee = ax * ax + ay * ay + az * az, tt = bx * bx + by * by + bz * bz;
     if (!(ee > 1e-20f && tt > 1e-20f)) continue;
-    glm::quat delta;
-    const float ll = std::sqrt(ee * tt), d = ax * bx + ay * by + az * bz;
-    const float cx = ay * bz - by * az, cy = az * bx - bz * ax, cz = ax * by - bx * ay;
-    const float n2 = 2.0f * ll * (ll + d);
-    if (!(ll > 0.0f) || d < -0.999999f * ll || !(n2 > 1e-30f && n2 < 1e30f)) {
-      delta = ik_detail::fastFromTo(glm::vec3(ax, ay, az), glm::vec3(bx, by, bz), ee, tt);
-    } else {
-      const float k = 1.0f / std::sqrt(n2);
-      delta = glm::quat((ll + d) * k, cx * k, cy * k, cz * k);
-    }
-    const glm::quat& parentRot = s > 0 ? rot[s - 1] : c.fixedRotation[s];
-    local[joints[s]].rotation = ik_detail::turnedLocal(parentRot, delta, rot[s]);
-    const float k = std::sqrt(ee / tt);
+    // The effector first: it is the chain from one joint to the next.
+    const float k = sqrtFloat(ee / tt);
     ex = px + bx * k;
     ey = py + by * k;
     ez = pz + bz * k;
+    const float ll = sqrtFloat(ee * tt), d = ax * bx + ay * by + az * bz;
+    const float cx = ay * bz - by * az, cy = az * bx - bz * ax, cz = ax * by - bx * ay;
+    const float n2 = 2.0f * ll * (ll + d);
+#if defined(__SSE2__)
+    __m128 delta;
+    if (!(ll > 0.0f) || d < -0.999999f * ll || !(n2 > 1e-30f && n2 < 1e30f)) {
+      delta = ik_detail::simd::load(ik_detail::fastFromTo(glm::vec3(ax, ay, az), glm::vec3(bx, by, bz), ee, tt));
+    } else {
+      delta = _mm_mul_ps(_mm_setr_ps(cx, cy, cz, ll + d), _mm_set1_ps(1.0f / sqrtFloat(n2)));
+    }
+    namespace simd = ik_detail::simd;
+    const __m128 parentRot = simd::load(s > g.rootSlot ? rot[s - 1] : rootParent);
+    simd::store(local[joints[s]].rotation,
+                simd::renormalize(simd::mul(simd::mul(simd::conjugate(parentRot), delta), simd::load(rot[s]))));
+#else
+    glm::quat delta;
+    if (!(ll > 0.0f) || d < -0.999999f * ll || !(n2 > 1e-30f && n2 < 1e30f)) {
+      delta = ik_detail::fastFromTo(glm::vec3(ax, ay, az), glm::vec3(bx, by, bz), ee, tt);
+    } else {
+      const float kq = 1.0f / sqrtFloat(n2);
+      delta = glm::quat((ll + d) * kq, cx * kq, cy * kq, cz * kq);
+    }
+    local[joints[s]].rotation = ik_detail::turnedLocal(s > g.rootSlot ? rot[s - 1] : rootParent, delta, rot[s]);
+#endif
   }
 }
 

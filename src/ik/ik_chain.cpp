@@ -28,16 +28,22 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
   const int n = s.size();
   std::vector<int>& order = orderScratch;
   order.clear();
-  if (problem.targets.size() == 1) {
+  const bool single = problem.targets.size() == 1;
+  if (single) {
     // One target: the slots are its root..effector path, root first (the preorder of a
-    // path), found by walking up from the effector; no marking, no child search.
+    // path), found by walking up from the effector (once to count, once to fill from the
+    // end); no marking, no child search.
     const IkTarget& t = problem.targets[0];
     const int root = ikRootOf(s, t, twoBone);
-    for (int j = t.effector; j >= 0; j = s.parents[j]) {
-      order.push_back(j);
+    const int* parents = s.parents.data();
+    int depth = 0;
+    for (int j = t.effector; j >= 0; j = parents[j]) {
+      ++depth;
       if (j == root) break;
     }
-    std::reverse(order.begin(), order.end());
+    joints.resize(depth);
+    int* out = joints.data();
+    for (int j = t.effector, i = depth - 1; i >= 0; j = parents[j]) out[i--] = j;
   } else {
     // Mark the union of root..effector paths.
     std::vector<char>& in = inScratch;
@@ -73,24 +79,30 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
       for (int k = childStart[j + 1] - 1; k >= childStart[j]; --k) stack.push_back(childList[k]);
     }
   }
-  const int m = static_cast<int>(order.size());
-  joints = order;
+  if (!single) joints = order;
+  const int m = static_cast<int>(joints.size());
   // Every slot's entry is written below; fixedParent, fixedRotation and fixedPosition are
   // read only for slots whose parent lies outside (parentSlot -1).
   parentSlot.resize(m);
-  subtreeSize.assign(m, 1);
+  subtreeSize.resize(m);
   fixedParent.resize(m);
   fixedRotation.resize(m);
   fixedPosition.resize(m);
   positions.resize(m);
   rotation.resize(m);
-  limit.assign(m, nullptr);
-  // One target: slot i's parent is slot i - 1. Several: through the joint -> slot map.
+  limit.resize(m);
+  // One target: slot i's parent is slot i - 1, and m - i slots hang from slot i. Several:
+  // through the joint -> slot map.
   std::vector<int>& slotOf = slotOfScratch;
-  if (problem.targets.size() == 1) {
-    for (int i = 0; i < m; ++i) parentSlot[i] = i - 1;
-    for (int i = m - 1; i > 0; --i) subtreeSize[i - 1] += subtreeSize[i];
+  if (single) {
+    int* ps = parentSlot.data();
+    int* sub = subtreeSize.data();
+    for (int i = 0; i < m; ++i) {
+      ps[i] = i - 1;
+      sub[i] = m - i;
+    }
   } else {
+    std::fill(subtreeSize.begin(), subtreeSize.end(), 1);
     slotOf.assign(n, -1);
     for (int i = 0; i < m; ++i) slotOf[joints[i]] = i;
     for (int i = 0; i < m; ++i) {
@@ -100,14 +112,28 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
     for (int i = m - 1; i >= 0; --i)
       if (parentSlot[i] >= 0) subtreeSize[parentSlot[i]] += subtreeSize[i];
   }
-  for (int i = 0; i < m; ++i) makeUnit(pose->local[joints[i]].rotation);
-  if (rig)
-    for (int i = 0; i < m; ++i) limit[i] = rig->limitOf(joints[i]);
+  // Unit rotations, and whether any slot has scale (then the chain is not rigid).
+  bool unscaled = true;
+  {
+    Transform* local = pose->local.data();
+    const int* js = joints.data();
+    for (int i = 0; i < m; ++i) {
+      Transform& t = local[js[i]];
+      makeUnit(t.rotation);
+      unscaled = unscaled && t.scale == glm::vec3(1.0f);
+    }
+  }
+  anyLimit = false;
+  if (rig) {
+    for (int i = 0; i < m; ++i) anyLimit = (limit[i] = rig->limitOf(joints[i])) != nullptr || anyLimit;
+  } else {
+    std::fill(limit.begin(), limit.end(), nullptr);
+  }
   // The fixed parents: the placement times the world of the joint above the slot (FK of
-  // that joint's ancestors only).
-  const bool identityPlacement = problem.rootTransform == glm::mat4(1.0f);
+  // that joint's ancestors only). One target: only slot 0 has one.
+  const bool identityPlacement = isIdentity(problem.rootTransform);
   bool fixedRigid = true;
-  for (int i = 0; i < m; ++i) {
+  for (int i = 0; i < (single ? std::min(m, 1) : m); ++i) {
     if (parentSlot[i] >= 0) continue;
     const int p = s.parents[joints[i]];
     glm::mat4 parentWorld(1.0f);
@@ -135,8 +161,8 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) fixedRigid = fixedRigid && std::abs(ltl[a][b] - (a == b ? 1.0f : 0.0f)) < 1e-6f;
   }
-  rigid = fixedRigid;
-  for (int i = 0; i < m && rigid; ++i) rigid = pose->local[joints[i]].scale == glm::vec3(1.0f);
+  rigid = fixedRigid && unscaled;
+  chain = single;
   world.assign(rigid ? 0 : m, glm::mat4(1.0f));
   goals.clear();
   for (const IkTarget& t : problem.targets) {
@@ -190,6 +216,21 @@ void IkChain::forwardKinematics() {
   // forwardSlot's rigid branch, inlined: every iterative solver runs this once a step.
   const Transform* local = pose->local.data();
 #if defined(__SSE2__)
+  if (chain) {
+    // One target's path: each slot's parent is the previous one, slot 0's is fixed.
+    const int* js = joints.data();
+    glm::quat* rotOut = rotation.data();
+    glm::vec3* posOut = positions.data();
+    __m128 rot = simd::load(fixedRotation[0]), pos = simd::load3(fixedPosition[0]);
+    for (int s = 0; s < m; ++s) {
+      const Transform& t = local[js[s]];
+      pos = _mm_add_ps(pos, simd::rotate(rot, _mm_loadu_ps(&t.translation.x)));
+      rot = simd::renormalize(simd::mul(rot, simd::load(t.rotation)));
+      simd::store(rotOut[s], rot);
+      simd::store3(posOut[s], pos);
+    }
+    return;
+  }
   // The previous slot's rotation and position stay in registers: along a chain (parent =
   // previous slot) nothing is read back from memory.
   __m128 rot = _mm_setzero_ps(), pos = _mm_setzero_ps();
@@ -280,11 +321,6 @@ bool IkChain::stalled(float error, const IkSettings& settings) {
   return before - error <= settings.stallFraction * before;
 }
 
-bool IkChain::hasLimits() const {
-  for (const JointLimit* l : limit)
-    if (l) return true;
-  return false;
-}
 
 float IkChain::reach(const Goal& g) const {
   float r = 0.0f;

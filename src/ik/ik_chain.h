@@ -2,6 +2,8 @@
 // The working state every solver shares: the joints a set of targets moves ("slots"),
 // their world transforms, and the goals. Internal to src/ik.
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -46,6 +48,15 @@ inline glm::vec3 rotate(const glm::quat& q, const glm::vec3& v) {
               tz = 2.0f * (q.x * v.y - q.y * v.x);
   return glm::vec3(v.x + q.w * tx + (q.y * tz - q.z * ty), v.y + q.w * ty + (q.z * tx - q.x * tz),
                    v.z + q.w * tz + (q.x * ty - q.y * tx));
+}
+
+// std::sqrt's IEEE result without its errno branch (sqrtss on SSE2): the same bits.
+inline float sqrtFloat(float x) {
+#if defined(__SSE2__)
+  return _mm_cvtss_f32(_mm_sqrt_ss(_mm_set_ss(x)));
+#else
+  return std::sqrt(x);
+#endif
 }
 
 // Normalises a quaternion that is already nearly unit (a product of unit quaternions):
@@ -162,6 +173,68 @@ inline glm::quat fastFromTo(const glm::vec3& from, const glm::vec3& to) {
   return fastFromTo(from, to, glm::dot(from, from), glm::dot(to, to));
 }
 
+// True when none of the n floats at p is infinite or NaN (exponent bits not all ones):
+// integer tests, where std::isfinite costs a classification per float.
+inline bool finiteFloats(const float* p, int n) {
+  uint32_t bad = 0;
+  for (int i = 0; i < n; ++i) {
+    uint32_t bits;
+    std::memcpy(&bits, p + i, sizeof bits);
+    bad |= static_cast<uint32_t>((bits & 0x7f800000u) == 0x7f800000u);
+  }
+  return bad == 0;
+}
+static_assert(sizeof(Transform) == 10 * sizeof(float), "Transform is ten floats");
+// Transform::isFinite's answer.
+inline bool finiteTransform(const Transform& t) {
+#if defined(__SSE2__)
+  // Floats 0-3, 4-7 and 6-9 (the last two loads overlap), exponent bits compared at once.
+  const float* p = &t.translation.x;
+  const __m128i exponent = _mm_set1_epi32(0x7f800000);
+  auto bad = [&](const float* q) {
+    return _mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(_mm_loadu_ps(q)), exponent), exponent);
+  };
+  return _mm_movemask_epi8(_mm_or_si128(_mm_or_si128(bad(p), bad(p + 4)), bad(p + 6))) == 0;
+#else
+  return finiteFloats(&t.translation.x, 10);
+#endif
+}
+// The x y z of the four columns of a placement are finite (what IkProblem::validate asks).
+inline bool finitePlacement(const glm::mat4& m) {
+#if defined(__SSE2__)
+  const __m128i exponent = _mm_set1_epi32(0x7f800000);
+  __m128i bad = _mm_setzero_si128();
+  for (int c = 0; c < 4; ++c)
+    bad = _mm_or_si128(bad, _mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(_mm_loadu_ps(&m[c].x)), exponent), exponent));
+  return (_mm_movemask_ps(_mm_castsi128_ps(bad)) & 0x7) == 0;
+#else
+  for (int c = 0; c < 4; ++c)
+    if (!finiteFloats(&m[c].x, 3)) return false;
+  return true;
+#endif
+}
+
+// m == glm::mat4(1.0f), column by column in SSE registers (glm's operator== compares the
+// sixteen floats one branch at a time): the same answer, NaN and -0 included.
+inline bool isIdentity(const glm::mat4& m) {
+#if defined(__SSE2__)
+  const __m128 one = _mm_set_ss(1.0f);  // 1 0 0 0
+  __m128 eq = _mm_cmpeq_ps(_mm_loadu_ps(&m[0].x), one);
+  eq = _mm_and_ps(eq, _mm_cmpeq_ps(_mm_loadu_ps(&m[1].x), _mm_shuffle_ps(one, one, _MM_SHUFFLE(1, 1, 0, 1))));
+  eq = _mm_and_ps(eq, _mm_cmpeq_ps(_mm_loadu_ps(&m[2].x), _mm_shuffle_ps(one, one, _MM_SHUFFLE(1, 0, 1, 1))));
+  eq = _mm_and_ps(eq, _mm_cmpeq_ps(_mm_loadu_ps(&m[3].x), _mm_shuffle_ps(one, one, _MM_SHUFFLE(0, 1, 1, 1))));
+  return _mm_movemask_ps(eq) == 0xf;
+#else
+  return m == glm::mat4(1.0f);
+#endif
+}
+
+// IkProblem::validate in two parts: a check that the problem is plainly valid (every
+// check passes; no message is built), and the full checks that name the first problem.
+// validate() runs the second only where the first says no; they agree (ik tests).
+bool plainlyValid(const IkProblem& problem, bool twoBone);
+std::string validateInFull(const IkProblem& problem, bool twoBone);
+
 struct Goal {
   int slot = -1;      // the effector's slot
   int rootSlot = -1;  // the IK root's slot
@@ -196,6 +269,8 @@ struct IkChain {
   // No scale anywhere (slots and fixed parents): FK then needs only quaternion products,
   // and a world matrix is its rotation plus its position.
   bool rigid = false;
+  bool anyLimit = false;  // some slot has a joint limit (set by build)
+  bool chain = false;     // one target: slot i's parent is slot i - 1 (slot 0's is fixed)
 
   // Fills the slots from the problem; returns an error message or "".
   std::string build(const IkProblem& problem, bool twoBone = false);
@@ -231,7 +306,7 @@ struct IkChain {
   // True when the last stallWindow iterations improved the error by less than
   // stallFraction; records `error` first.
   bool stalled(float error, const IkSettings& settings);
-  bool hasLimits() const;
+  bool hasLimits() const { return anyLimit; }
   // The sum of bone lengths from the goal's root to its effector.
   float reach(const Goal& g) const;
   // Single goal beyond reach and no limits: point every bone straight at the target.
