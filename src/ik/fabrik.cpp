@@ -311,16 +311,17 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
   if (IkResult bad; !(bad.message = c.begin(problem, settings)).empty()) return bad;
   IkTrace* trace = settings.trace;
   const int m = static_cast<int>(c.joints.size());
-  // The paper's first test: a single target out of reach straightens the chain at once.
-  if (c.straightenIfUnreachable()) {
-    c.record(trace, 1, IkStep::Straighten);
-    return c.result(1, settings);
-  }
   thread_local FabrikScratch scratch;  // per-slot arrays, reused from call to call
   std::vector<float>& boneLength = scratch.boneLength;
   boneLength.assign(m, 0.0f);
   for (int s = 0; s < m; ++s)
     if (c.parentSlot[s] >= 0) boneLength[s] = glm::length(c.position(s) - c.position(c.parentSlot[s]));
+  // The paper's first test: a single target out of reach straightens the chain at once
+  // (its reach: the sum of these bone lengths).
+  if (c.straightenIfUnreachable(boneLength.data())) {
+    c.record(trace, 1, IkStep::Straighten);
+    return c.result(1, settings);
+  }
   if (!trace && c.rigid && c.goals.size() == 1 && !c.goals[0].hasOrientation && !c.hasLimits()) {
     scratch.reached.resize(m);
     return c.result(plainPasses(c, settings, boneLength, scratch.reached), settings);

@@ -322,19 +322,19 @@ bool IkChain::stalled(float error, const IkSettings& settings) {
 }
 
 
-float IkChain::reach(const Goal& g) const {
+float IkChain::reach(const Goal& g, const float* boneLength) const {
   float r = 0.0f;
   for (int s = g.slot; s != g.rootSlot && parentSlot[s] >= 0; s = parentSlot[s])
-    r += glm::length(position(s) - position(parentSlot[s]));
+    r += boneLength ? boneLength[s] : glm::length(position(s) - position(parentSlot[s]));
   return r;
 }
 
-bool IkChain::straightenIfUnreachable() {
+bool IkChain::straightenIfUnreachable(const float* boneLength) {
   if (goals.size() != 1 || hasLimits()) return false;
   const Goal& g = goals[0];
   const glm::vec3 toTarget = g.position - position(g.rootSlot);
   const float d = glm::length(toTarget);
-  if (!(d > reach(g)) || !(d > 0.0f)) return false;
+  if (!(d > reach(g, boneLength)) || !(d > 0.0f)) return false;
   const glm::vec3 u = toTarget / d;
   // One target: the slots are its chain, root first, each the parent of the next. Root
   // down, each joint turns its bone (as its ancestors' turns `turned` left it) onto u;

@@ -308,9 +308,10 @@ struct IkChain {
   bool stalled(float error, const IkSettings& settings);
   bool hasLimits() const { return anyLimit; }
   // The sum of bone lengths from the goal's root to its effector.
-  float reach(const Goal& g) const;
+  // boneLength (optional): each slot's distance to its parent slot, as computed here.
+  float reach(const Goal& g, const float* boneLength = nullptr) const;
   // Single goal beyond reach and no limits: point every bone straight at the target.
-  bool straightenIfUnreachable();
+  bool straightenIfUnreachable(const float* boneLength = nullptr);
   void record(IkTrace* trace, int iteration, IkStep step, int joint = -1) const;
   void recordPositions(IkTrace* trace, int iteration, IkStep step, const std::vector<glm::vec3>& positions,
                        float error) const;
