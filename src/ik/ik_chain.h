@@ -13,6 +13,15 @@
 #include <emmintrin.h>
 #endif
 
+// The small helpers below go inline wherever they are used: GCC stops inlining them into
+// a function once it has grown large (the whole two-bone solve), and a call per quaternion
+// product costs more than the product.
+#if defined(__GNUC__) || defined(__clang__)
+#define KINEMA_IK_INLINE [[gnu::always_inline]] inline
+#else
+#define KINEMA_IK_INLINE inline
+#endif
+
 namespace kinema::ik_detail {
 
 // The quaternion product a * b and the rotation q * v, written out for the solvers' inner
@@ -20,7 +29,7 @@ namespace kinema::ik_detail {
 // when inlined there). With SSE2 the product runs one component per lane, each lane
 // adding its four terms in the scalar order (a negated term added is exactly a term
 // subtracted), so both paths give the same bits.
-inline glm::quat mul(const glm::quat& a, const glm::quat& b) {
+KINEMA_IK_INLINE glm::quat mul(const glm::quat& a, const glm::quat& b) {
 #if defined(__SSE2__)
   // glm stores x y z w. Lanes: x = aw bx + ax bw + ay bz - az by, y = aw by - ax bz + ay bw
   // + az bx, z = aw bz + ax by - ay bx + az bw, w = aw bw - ax bx - ay by - az bz.
@@ -42,7 +51,7 @@ inline glm::quat mul(const glm::quat& a, const glm::quat& b) {
                    a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w);
 #endif
 }
-inline glm::vec3 rotate(const glm::quat& q, const glm::vec3& v) {
+KINEMA_IK_INLINE glm::vec3 rotate(const glm::quat& q, const glm::vec3& v) {
   // t = 2 (q.xyz x v); q v q* = v + w t + q.xyz x t.
   const float tx = 2.0f * (q.y * v.z - q.z * v.y), ty = 2.0f * (q.z * v.x - q.x * v.z),
               tz = 2.0f * (q.x * v.y - q.y * v.x);
@@ -51,7 +60,7 @@ inline glm::vec3 rotate(const glm::quat& q, const glm::vec3& v) {
 }
 
 // std::sqrt's IEEE result without its errno branch (sqrtss on SSE2): the same bits.
-inline float sqrtFloat(float x) {
+KINEMA_IK_INLINE float sqrtFloat(float x) {
 #if defined(__SSE2__)
   return _mm_cvtss_f32(_mm_sqrt_ss(_mm_set_ss(x)));
 #else
@@ -62,7 +71,7 @@ inline float sqrtFloat(float x) {
 // Normalises a quaternion that is already nearly unit (a product of unit quaternions):
 // at most one square root, where safeNormalize guards against denormal, huge and NaN input
 // (still the fallback here) at several times the cost in the solvers' inner loops.
-inline glm::quat renormalize(const glm::quat& q) {
+KINEMA_IK_INLINE glm::quat renormalize(const glm::quat& q) {
 #if defined(__SSE2__)
   // glm::dot's order, (w w + x x) + (y y + z z), in two lanes.
   const __m128 Q = _mm_loadu_ps(&q.x), sq = _mm_mul_ps(Q, Q);
@@ -88,15 +97,15 @@ inline glm::quat renormalize(const glm::quat& q) {
 // the CCD sweep keep a rotation in a register from one joint to the next instead of
 // going through glm types in memory. Bit-identical to mul / rotate / renormalize.
 namespace simd {
-inline __m128 load(const glm::quat& q) { return _mm_loadu_ps(&q.x); }
-inline void store(glm::quat& q, __m128 v) { _mm_storeu_ps(&q.x, v); }
-inline __m128 load3(const glm::vec3& v) { return _mm_set_ps(0.0f, v.z, v.y, v.x); }
-inline void store3(glm::vec3& v, __m128 x) {
+KINEMA_IK_INLINE __m128 load(const glm::quat& q) { return _mm_loadu_ps(&q.x); }
+KINEMA_IK_INLINE void store(glm::quat& q, __m128 v) { _mm_storeu_ps(&q.x, v); }
+KINEMA_IK_INLINE __m128 load3(const glm::vec3& v) { return _mm_set_ps(0.0f, v.z, v.y, v.x); }
+KINEMA_IK_INLINE void store3(glm::vec3& v, __m128 x) {
   _mm_storel_pi(reinterpret_cast<__m64*>(&v.x), x);
   _mm_store_ss(&v.z, _mm_shuffle_ps(x, x, _MM_SHUFFLE(2, 2, 2, 2)));
 }
-inline __m128 conjugate(__m128 q) { return _mm_xor_ps(q, _mm_set_ps(0.0f, -0.0f, -0.0f, -0.0f)); }
-inline __m128 mul(__m128 A, __m128 B) {
+KINEMA_IK_INLINE __m128 conjugate(__m128 q) { return _mm_xor_ps(q, _mm_set_ps(0.0f, -0.0f, -0.0f, -0.0f)); }
+KINEMA_IK_INLINE __m128 mul(__m128 A, __m128 B) {
   const __m128 ax = _mm_shuffle_ps(A, A, _MM_SHUFFLE(0, 0, 0, 0)), ay = _mm_shuffle_ps(A, A, _MM_SHUFFLE(1, 1, 1, 1)),
                az = _mm_shuffle_ps(A, A, _MM_SHUFFLE(2, 2, 2, 2)), aw = _mm_shuffle_ps(A, A, _MM_SHUFFLE(3, 3, 3, 3));
   const __m128 t2 = _mm_xor_ps(_mm_mul_ps(ax, _mm_shuffle_ps(B, B, _MM_SHUFFLE(0, 1, 2, 3))),
@@ -108,12 +117,12 @@ inline __m128 mul(__m128 A, __m128 B) {
   return _mm_add_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(aw, B), t2), t3), t4);
 }
 // q.xyz x v, lane by lane in rotate()'s order (a.y b.z - a.z b.y, ...).
-inline __m128 cross(__m128 a, __m128 b) {
+KINEMA_IK_INLINE __m128 cross(__m128 a, __m128 b) {
   const __m128 ayzx = _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 0, 2, 1)), azxy = _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 1, 0, 2));
   const __m128 byzx = _mm_shuffle_ps(b, b, _MM_SHUFFLE(3, 0, 2, 1)), bzxy = _mm_shuffle_ps(b, b, _MM_SHUFFLE(3, 1, 0, 2));
   return _mm_sub_ps(_mm_mul_ps(ayzx, bzxy), _mm_mul_ps(azxy, byzx));
 }
-inline __m128 rotate(__m128 q, __m128 v) {
+KINEMA_IK_INLINE __m128 rotate(__m128 q, __m128 v) {
   const __m128 t = _mm_mul_ps(_mm_set1_ps(2.0f), cross(q, v));
   return _mm_add_ps(_mm_add_ps(v, _mm_mul_ps(_mm_shuffle_ps(q, q, _MM_SHUFFLE(3, 3, 3, 3)), t)), cross(q, t));
 }
@@ -122,7 +131,7 @@ inline __m128 rotate(__m128 q, __m128 v) {
 
 #if defined(__SSE2__)
 namespace simd {
-inline __m128 renormalize(__m128 Q) {
+KINEMA_IK_INLINE __m128 renormalize(__m128 Q) {
   const __m128 sq = _mm_mul_ps(Q, Q);
   const __m128 pairs = _mm_add_ps(sq, _mm_shuffle_ps(sq, sq, _MM_SHUFFLE(0, 1, 2, 3)));
   const float d = _mm_cvtss_f32(_mm_add_ss(pairs, _mm_shuffle_ps(pairs, pairs, _MM_SHUFFLE(1, 1, 1, 1))));
@@ -136,7 +145,7 @@ inline __m128 renormalize(__m128 Q) {
 
 // The local rotation that turns a joint of world rotation `world` by the world turn
 // `delta`, under a parent of world rotation `parentRot`: renormalize(parentRot^-1 delta world).
-inline glm::quat turnedLocal(const glm::quat& parentRot, const glm::quat& delta, const glm::quat& world) {
+KINEMA_IK_INLINE glm::quat turnedLocal(const glm::quat& parentRot, const glm::quat& delta, const glm::quat& world) {
 #if defined(__SSE2__)
   glm::quat q;
   simd::store(q, simd::renormalize(simd::mul(simd::mul(simd::conjugate(simd::load(parentRot)), simd::load(delta)),

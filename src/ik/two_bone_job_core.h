@@ -19,7 +19,7 @@ namespace kinema::ik_detail {
 
 // The rotation taking unit vector a onto unit vector b: the half-way quaternion
 // (1 + a.b, a x b) normalised, one square root. Opposite vectors: any perpendicular axis.
-inline glm::quat unitFromTo(const glm::vec3& a, const glm::vec3& b) {
+KINEMA_IK_INLINE glm::quat unitFromTo(const glm::vec3& a, const glm::vec3& b) {
   const float d = glm::dot(a, b);
   if (d < -0.999999f) return fromToRotation(a, b);
   const glm::vec3 c = glm::cross(a, b);
@@ -34,7 +34,8 @@ inline glm::vec3 anyPerpendicular(const glm::vec3& v) {
 
 inline bool nearlyUnit(const glm::quat& q) { return std::abs(glm::dot(q, q) - 1.0f) < 1e-3f; }
 
-[[gnu::always_inline]] inline void runTwoBoneJob(const TwoBoneIkJob& job) {
+// The job in glm scalars: every case.
+inline void runTwoBoneJobScalar(const TwoBoneIkJob& job) {
   const glm::vec3 ab = job.midPosition - job.startPosition, bc = job.endPosition - job.midPosition;
   const float l1 = sqrtFloat(glm::dot(ab, ab)), l2 = sqrtFloat(glm::dot(bc, bc));
   const float reach = l1 + l2;
@@ -111,6 +112,91 @@ inline bool nearlyUnit(const glm::quat& q) { return std::abs(glm::dot(q, q) - 1.
   if (job.midTurn) *job.midTurn = dB;
   *job.startCorrection = cA;
   *job.midCorrection = cB;
+}
+
+#if defined(__SSE2__)
+namespace twobone_simd {
+// glm::dot of two 3-vectors held in SSE lanes, in glm's order: (x + y) + z.
+KINEMA_IK_INLINE float dot3(__m128 a, __m128 b) {
+  const __m128 t = _mm_mul_ps(a, b);
+  return _mm_cvtss_f32(_mm_add_ss(_mm_add_ss(t, _mm_shuffle_ps(t, t, _MM_SHUFFLE(1, 1, 1, 1))),
+                                  _mm_shuffle_ps(t, t, _MM_SHUFFLE(2, 2, 2, 2))));
+}
+KINEMA_IK_INLINE __m128 scale(__m128 v, float s) { return _mm_mul_ps(v, _mm_set1_ps(s)); }
+KINEMA_IK_INLINE glm::vec3 toVec3(__m128 v) {
+  glm::vec3 r;
+  simd::store3(r, v);
+  return r;
+}
+// unitFromTo on unit 3-vectors in lanes: the half-way quaternion (1 + a.b, a x b) times
+// 1 / sqrt of glm's quaternion dot ((w w + x x) + (y y + z z)).
+KINEMA_IK_INLINE __m128 unitFromTo(__m128 a, __m128 b) {
+  const float d = dot3(a, b);
+  if (d < -0.999999f) return simd::load(fromToRotation(toVec3(a), toVec3(b)));
+  // Lane 3 of a and b is +0 (callers make sure), so that of their cross product is +0,
+  // and or-ing 1 + d into it sets w without touching x y z (an add would turn -0 into +0).
+  const __m128 c = simd::cross(a, b);
+  const __m128 q = _mm_or_ps(c, _mm_set_ps(1.0f + d, 0.0f, 0.0f, 0.0f));
+  const __m128 sq = _mm_mul_ps(q, q);
+  const __m128 pairs = _mm_add_ps(sq, _mm_shuffle_ps(sq, sq, _MM_SHUFFLE(0, 1, 2, 3)));
+  const float n = _mm_cvtss_f32(_mm_add_ss(pairs, _mm_shuffle_ps(pairs, pairs, _MM_SHUFFLE(1, 1, 1, 1))));
+  return scale(q, 1.0f / sqrtFloat(n));
+}
+}  // namespace twobone_simd
+
+// runTwoBoneJobScalar's common case in SSE lanes (3-vectors as x y z 0, quaternions as
+// x y z w), the same operations in the same order (glm's dot and cross orders, products
+// and sums lane by lane): the same bits. The rare branches (soften, twist, weight, a
+// target on the start joint, no bend plane, a zero bone) return false before writing
+// anything, and the scalar job runs instead.
+KINEMA_IK_INLINE bool runTwoBoneJobSse(const TwoBoneIkJob& job) {
+  namespace ts = twobone_simd;
+  if (job.soften > 0.0f || job.twistAngle != 0.0f || job.weight < 1.0f) return false;
+  const __m128 start = simd::load3(job.startPosition), mid = simd::load3(job.midPosition);
+  const __m128 end = simd::load3(job.endPosition);
+  const __m128 ab = _mm_sub_ps(mid, start), bc = _mm_sub_ps(end, mid);
+  const float l1 = sqrtFloat(ts::dot3(ab, ab)), l2 = sqrtFloat(ts::dot3(bc, bc));
+  if (!(l1 > 1e-12f && l2 > 1e-12f)) return false;
+  const float reach = l1 + l2;
+  const __m128 toTarget = _mm_sub_ps(simd::load3(job.target), start);
+  const float dist = sqrtFloat(ts::dot3(toTarget, toTarget));
+  if (!(dist > 1e-12f)) return false;
+  const float minReach = std::abs(l1 - l2);
+  const float d = std::clamp(dist, minReach, reach);
+  const __m128 u = ts::scale(toTarget, 1.0f / dist);
+  const __m128 pole = simd::load3(job.pole);
+  __m128 n = simd::cross(u, pole);
+  float nn = ts::dot3(n, n);
+  if (!(nn > 1e-10f * ts::dot3(pole, pole))) {
+    n = simd::cross(u, ab);
+    nn = ts::dot3(n, n);
+    if (!(nn > 1e-10f * ts::dot3(ab, ab))) return false;
+  }
+  const __m128 w = ts::scale(simd::cross(n, u), 1.0f / sqrtFloat(nn));
+  const float cosA = d > 1e-12f ? std::clamp((l1 * l1 + d * d - l2 * l2) / (2.0f * l1 * d), -1.0f, 1.0f) : 0.0f;
+  const float sinA = sqrtFloat(std::max(0.0f, 1.0f - cosA * cosA));
+  const __m128 midDir = _mm_add_ps(ts::scale(u, cosA), ts::scale(w, sinA));
+  const float inv1 = 1.0f / l1, inv2 = 1.0f / l2;
+  const __m128 dA = ts::unitFromTo(ts::scale(ab, inv1), midDir);
+  const __m128 lower = ts::scale(_mm_sub_ps(ts::scale(u, d), ts::scale(midDir, l1)), inv2);
+  // rotate(conj(dA), lower): its lane 3 is not 0; unitFromTo needs 0 there.
+  const __m128 xyz = _mm_castsi128_ps(_mm_set_epi32(0, -1, -1, -1));
+  const __m128 dB = ts::unitFromTo(ts::scale(bc, inv2), _mm_and_ps(simd::rotate(simd::conjugate(dA), lower), xyz));
+  const __m128 rs = simd::load(job.startRotation), rm = simd::load(job.midRotation);
+  if (job.reached) *job.reached = dist >= minReach && dist <= reach;
+  if (job.startTurn) simd::store(*job.startTurn, dA);
+  if (job.midTurn) simd::store(*job.midTurn, dB);
+  simd::store(*job.startCorrection, simd::mul(simd::mul(simd::conjugate(rs), dA), rs));
+  simd::store(*job.midCorrection, simd::mul(simd::mul(simd::conjugate(rm), dB), rm));
+  return true;
+}
+#endif
+
+[[gnu::always_inline]] inline void runTwoBoneJob(const TwoBoneIkJob& job) {
+#if defined(__SSE2__)
+  if (runTwoBoneJobSse(job)) return;
+#endif
+  runTwoBoneJobScalar(job);
 }
 
 }  // namespace kinema::ik_detail

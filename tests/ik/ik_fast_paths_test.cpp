@@ -6,6 +6,7 @@
 //   weight).
 // - IkChain's FK along one target's path against its general FK.
 // - solveTwoBone's one-pass case (one target, no rig, no trace) against its general loop.
+// - TwoBoneIkJob's SSE geometry against its glm scalar one.
 // (CCD's and FABRIK's plain sweeps and passes against the general ones: IkSolvers'
 // TraceRecordsEveryStepAndChangesNothing, since a trace takes the general code.)
 #include <gtest/gtest.h>
@@ -16,6 +17,7 @@
 
 #include "ik/ik_chain.h"
 #include "ik/ik_solver.h"
+#include "ik/two_bone_job_core.h"
 #include "ik_test_chains.h"
 
 namespace kinema {
@@ -184,6 +186,55 @@ TEST(IkFastPaths, TwoBoneOnePassEqualsTheGeneralLoop) {
     solved += ra.converged;
   }
   EXPECT_GT(solved, 100);  // reachable targets among them
+}
+
+TEST(IkFastPaths, TwoBoneJobInSseRegistersEqualsTheScalarJob) {
+#if defined(__SSE2__)
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<float> u(-2.0f, 2.0f), len(0.1f, 2.0f);
+  int fast = 0;
+  for (int k = 0; k < 20000; ++k) {
+    TwoBoneIkJob job;
+    job.startPosition = {u(rng), u(rng), u(rng)};
+    job.startRotation = test::randomRotation(rng, 3.0f);
+    job.midPosition = job.startPosition + len(rng) * glm::normalize(glm::vec3(u(rng), u(rng), u(rng)) + 1e-3f);
+    job.midRotation = test::randomRotation(rng, 3.0f);
+    job.endPosition = job.midPosition + len(rng) * glm::normalize(glm::vec3(u(rng), u(rng), u(rng)) + 1e-3f);
+    job.target = {u(rng), u(rng), u(rng)};
+    switch (k % 6) {
+      case 0: break;                                                 // no pole: the current side
+      case 1: job.pole = {u(rng), u(rng), u(rng)}; break;            // a pole
+      case 2: job.target = job.startPosition; break;                 // target on the start joint
+      case 3: job.endPosition = job.midPosition; break;              // a zero bone
+      case 4: job.pole = (job.target - job.startPosition) * 2.0f; break;  // pole on the target line
+      default: job.target = job.startPosition + 1e3f * (job.target - job.startPosition); break;  // far out
+    }
+    glm::quat c1[2], c2[2], t1[2], t2[2];
+    bool r[2] = {false, true};
+    auto outputsTo = [&](int side) {
+      job.startCorrection = &c1[side];
+      job.midCorrection = &c2[side];
+      job.startTurn = &t1[side];
+      job.midTurn = &t2[side];
+      job.reached = &r[side];
+    };
+    outputsTo(0);
+    ik_detail::runTwoBoneJobScalar(job);
+    outputsTo(1);
+    if (!ik_detail::runTwoBoneJobSse(job)) {
+      // Only the rare cases are left to the scalar job.
+      EXPECT_TRUE(k % 6 == 2 || k % 6 == 3) << "case " << k;
+      continue;
+    }
+    ++fast;
+    ASSERT_EQ(r[0], r[1]) << k;
+    EXPECT_EQ(std::memcmp(&c1[0], &c1[1], sizeof(glm::quat)), 0) << "case " << k;
+    EXPECT_EQ(std::memcmp(&c2[0], &c2[1], sizeof(glm::quat)), 0) << "case " << k;
+    EXPECT_EQ(std::memcmp(&t1[0], &t1[1], sizeof(glm::quat)), 0) << "case " << k;
+    EXPECT_EQ(std::memcmp(&t2[0], &t2[1], sizeof(glm::quat)), 0) << "case " << k;
+  }
+  EXPECT_GT(fast, 10000);
+#endif
 }
 
 }  // namespace
