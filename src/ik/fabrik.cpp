@@ -172,11 +172,13 @@ int plainPasses(IkChain& c, const IkSettings& settings, std::vector<float>& bone
   const int* joints = c.joints.data();
   const float* bone = boneLength.data();
   glm::vec3* back = reached.data();
-  // Lanes x, y, z of a 3-vector register as scalars.
-  auto lane = [](__m128 v, int i) {
-    return _mm_cvtss_f32(i == 0 ? v : i == 1 ? _mm_shuffle_ps(v, v, _MM_SHUFFLE(1, 1, 1, 1))
-                                             : _mm_shuffle_ps(v, v, _MM_SHUFFLE(2, 2, 2, 2)));
+  // glm::dot of 3-vectors in SSE lanes, in its order: (x x + y y) + z z.
+  auto dot3 = [](__m128 a, __m128 b) {
+    const __m128 t = _mm_mul_ps(a, b);
+    return _mm_cvtss_f32(_mm_add_ss(_mm_add_ss(t, _mm_shuffle_ps(t, t, _MM_SHUFFLE(1, 1, 1, 1))),
+                                    _mm_shuffle_ps(t, t, _MM_SHUFFLE(2, 2, 2, 2))));
   };
+  const __m128 xyz = _mm_castsi128_ps(_mm_set_epi32(0, -1, -1, -1));
   const glm::vec3 start = goal.weight * goal.position / goal.weight;
   const __m128 fixedRot = simd::load(c.fixedRotation[0]);
   int it = 0;
@@ -221,11 +223,11 @@ int plainPasses(IkChain& c, const IkSettings& settings, std::vector<float>& bone
         simd::store(rot[s], world);
         break;
       }
-      const __m128 a4 = _mm_sub_ps(_mm_add_ps(p, simd::rotate(world, _mm_loadu_ps(&local[joints[s + 1]].translation.x))), p);
-      const __m128 b4 = _mm_sub_ps(simd::load3(back[s + 1]), p);
-      const float ax = lane(a4, 0), ay = lane(a4, 1), az = lane(a4, 2);
-      const float bx = lane(b4, 0), by = lane(b4, 1), bz = lane(b4, 2);
-      const float aa = ax * ax + ay * ay + az * az, bb = bx * bx + by * by + bz * bz;
+      // Lane 3 masked to +0: the cross product's lane 3 is then +0 and w can be or-ed in.
+      const __m128 a4 =
+          _mm_and_ps(_mm_sub_ps(_mm_add_ps(p, simd::rotate(world, _mm_loadu_ps(&local[joints[s + 1]].translation.x))), p), xyz);
+      const __m128 b4 = _mm_and_ps(_mm_sub_ps(simd::load3(back[s + 1]), p), xyz);
+      const float aa = dot3(a4, a4), bb = dot3(b4, b4);
       parentPos = p;
       if (!(aa > 1e-24f && bb > 1e-24f)) {
         simd::store(rot[s], world);
@@ -233,14 +235,17 @@ int plainPasses(IkChain& c, const IkSettings& settings, std::vector<float>& bone
         continue;
       }
       // fastFromTo(a, b, aa, bb), written out.
-      const float ll = sqrtFloat(aa * bb), d = ax * bx + ay * by + az * bz;
+      const float ll = sqrtFloat(aa * bb), d = dot3(a4, b4);
       const float n2 = 2.0f * ll * (ll + d);
       __m128 delta;
       if (!(ll > 0.0f) || d < -0.999999f * ll || !(n2 > 1e-30f && n2 < 1e30f)) {
-        delta = simd::load(ik_detail::fastFromTo(glm::vec3(ax, ay, az), glm::vec3(bx, by, bz), aa, bb));
+        glm::vec3 from, to;
+        simd::store3(from, a4);
+        simd::store3(to, b4);
+        delta = simd::load(ik_detail::fastFromTo(from, to, aa, bb));
       } else {
-        const float cx = ay * bz - by * az, cy = az * bx - bz * ax, cz = ax * by - bx * ay;
-        delta = _mm_mul_ps(_mm_setr_ps(cx, cy, cz, ll + d), _mm_set1_ps(1.0f / sqrtFloat(n2)));
+        const __m128 half = _mm_or_ps(simd::cross(a4, b4), _mm_set_ps(ll + d, 0.0f, 0.0f, 0.0f));
+        delta = _mm_mul_ps(half, _mm_set1_ps(1.0f / sqrtFloat(n2)));
       }
       const __m128 turned = simd::renormalize(simd::mul(simd::mul(simd::conjugate(parentRot), delta), world));
       simd::store(local[joints[s]].rotation, turned);

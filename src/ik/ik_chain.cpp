@@ -165,6 +165,7 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
   chain = single;
   world.assign(rigid ? 0 : m, glm::mat4(1.0f));
   goals.clear();
+  anyOrientation = false;
   for (const IkTarget& t : problem.targets) {
     Goal g;
     if (problem.targets.size() == 1) {
@@ -179,6 +180,7 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
     // Read only where hasOrientation is set.
     if (t.hasOrientation) g.orientation = safeNormalize(t.orientation);
     g.weight = t.weight;
+    anyOrientation = anyOrientation || g.hasOrientation;
     goals.push_back(g);
   }
   history.clear();
@@ -292,7 +294,7 @@ void IkChain::setLocalRotation(int s, const glm::quat& localIn) {
   for (int k = s; k < s + subtreeSize[s]; ++k) forwardSlot(k);
 }
 
-float IkChain::maxError() const {
+float IkChain::maxErrorOfAll() const {
   float e = 0.0f;
   for (const Goal& g : goals) e = std::max(e, goalError(g));
   return e;
@@ -308,10 +310,6 @@ float IkChain::orientationError() const {
   return e;
 }
 
-bool IkChain::converged(float error, const IkSettings& settings) const {
-  // Orientation targets share the tolerance, read as radians.
-  return error <= settings.tolerance && orientationError() <= std::max(settings.tolerance, 1e-3f);
-}
 
 bool IkChain::stalled(float error, const IkSettings& settings) {
   history.push_back(error);

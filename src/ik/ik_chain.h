@@ -1,6 +1,7 @@
 #pragma once
 // The working state every solver shares: the joints a set of targets moves ("slots"),
 // their world transforms, and the goals. Internal to src/ik.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -280,6 +281,7 @@ struct IkChain {
   bool rigid = false;
   bool anyLimit = false;  // some slot has a joint limit (set by build)
   bool chain = false;     // one target: slot i's parent is slot i - 1 (slot 0's is fixed)
+  bool anyOrientation = false;  // some goal has an orientation target (set by build)
 
   // Fills the slots from the problem; returns an error message or "".
   std::string build(const IkProblem& problem, bool twoBone = false);
@@ -307,11 +309,17 @@ struct IkChain {
   // Sets slot s's local rotation (limited), then refreshes its sub-tree by FK.
   void setLocalRotation(int s, const glm::quat& local);
   float goalError(const Goal& g) const { return distanceInDouble(position(g.slot), g.position); }
-  float maxError() const;
+  // One goal (the common case) inline: the same value as the loop over goals.
+  float maxError() const { return goals.size() == 1 ? std::max(0.0f, goalError(goals[0])) : maxErrorOfAll(); }
+  float maxErrorOfAll() const;
   float orientationError() const;  // largest angle (radians) to an orientation target
   bool converged(const IkSettings& settings) const { return converged(maxError(), settings); }
-  // The same, given maxError() of the current pose.
-  bool converged(float error, const IkSettings& settings) const;
+  // The same, given maxError() of the current pose. Orientation targets share the
+  // tolerance, read as radians; without any, orientationError() is 0.
+  bool converged(float error, const IkSettings& settings) const {
+    return error <= settings.tolerance &&
+           (anyOrientation ? orientationError() : 0.0f) <= std::max(settings.tolerance, 1e-3f);
+  }
   // True when the last stallWindow iterations improved the error by less than
   // stallFraction; records `error` first.
   bool stalled(float error, const IkSettings& settings);
