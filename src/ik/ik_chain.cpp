@@ -117,11 +117,28 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
   {
     Transform* local = pose->local.data();
     const int* js = joints.data();
+#if defined(__SSE2__)
+    // makeUnit's test (glm's quaternion dot, (w w + x x) + (y y + z z)) and the scale test
+    // in SSE registers; makeUnit itself only where the test says so.
+    const __m128 ones = _mm_set1_ps(1.0f);
+    int scaled = 0;
+    for (int i = 0; i < m; ++i) {
+      Transform& t = local[js[i]];
+      const __m128 q = simd::load(t.rotation), sq = _mm_mul_ps(q, q);
+      const __m128 pairs = _mm_add_ps(sq, _mm_shuffle_ps(sq, sq, _MM_SHUFFLE(0, 1, 2, 3)));
+      const float d = _mm_cvtss_f32(_mm_add_ss(pairs, _mm_shuffle_ps(pairs, pairs, _MM_SHUFFLE(1, 1, 1, 1))));
+      if (std::abs(d - 1.0f) > 1e-6f) t.rotation = safeNormalize(t.rotation);
+      // Floats 6-9 of the transform: rotation.w, then the scale.
+      scaled |= _mm_movemask_ps(_mm_cmpneq_ps(_mm_loadu_ps(&t.translation.x + 6), ones)) & 0xe;
+    }
+    unscaled = scaled == 0;
+#else
     for (int i = 0; i < m; ++i) {
       Transform& t = local[js[i]];
       makeUnit(t.rotation);
       unscaled = unscaled && t.scale == glm::vec3(1.0f);
     }
+#endif
   }
   anyLimit = false;
   if (rig) {
