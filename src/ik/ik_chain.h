@@ -160,8 +160,16 @@ KINEMA_IK_INLINE glm::quat turnedLocal(const glm::quat& parentRot, const glm::qu
 // A valid pose may hold non-unit rotations (they still encode a rotation); the solvers
 // make the ones they may move unit first, so the pose they hand back is unit where they
 // worked even for joints they did not need to turn. Unit input is left bit for bit.
-inline void makeUnit(glm::quat& q) {
-  if (std::abs(glm::dot(q, q) - 1.0f) > 1e-6f) q = safeNormalize(q);
+KINEMA_IK_INLINE void makeUnit(glm::quat& q) {
+#if defined(__SSE2__)
+  // glm::dot(q, q)'s order, (w w + x x) + (y y + z z), in two lanes.
+  const __m128 v = _mm_loadu_ps(&q.x), sq = _mm_mul_ps(v, v);
+  const __m128 pairs = _mm_add_ps(sq, _mm_shuffle_ps(sq, sq, _MM_SHUFFLE(0, 1, 2, 3)));
+  const float d = _mm_cvtss_f32(_mm_add_ss(pairs, _mm_shuffle_ps(pairs, pairs, _MM_SHUFFLE(1, 1, 1, 1))));
+#else
+  const float d = glm::dot(q, q);
+#endif
+  if (std::abs(d - 1.0f) > 1e-6f) q = safeNormalize(q);
 }
 
 // The shortest rotation taking direction `from` onto `to` (neither need be unit), given
@@ -209,6 +217,21 @@ inline bool finiteTransform(const Transform& t) {
   return finiteFloats(&t.translation.x, 10);
 #endif
 }
+// finiteTransform, and the scale is exactly 1 (scale == glm::vec3(1.0f), NaN failing).
+inline bool finiteUnscaled(const Transform& t) {
+#if defined(__SSE2__)
+  const float* p = &t.translation.x;
+  const __m128i exponent = _mm_set1_epi32(0x7f800000);
+  const __m128 l0 = _mm_loadu_ps(p), l1 = _mm_loadu_ps(p + 4), l2 = _mm_loadu_ps(p + 6);  // l2: rotation.w, scale
+  auto bad = [&](__m128 l) { return _mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(l), exponent), exponent); };
+  const int nonFinite = _mm_movemask_epi8(_mm_or_si128(_mm_or_si128(bad(l0), bad(l1)), bad(l2)));
+  const int scaled = _mm_movemask_ps(_mm_cmpneq_ps(l2, _mm_set1_ps(1.0f))) & 0xe;
+  return (nonFinite | scaled) == 0;
+#else
+  return finiteTransform(t) && t.scale == glm::vec3(1.0f);
+#endif
+}
+
 // The x y z of the four columns of a placement are finite (what IkProblem::validate asks).
 inline bool finitePlacement(const glm::mat4& m) {
 #if defined(__SSE2__)

@@ -200,8 +200,7 @@ bool solvePlain(const IkProblem& problem, const IkSettings& settings, IkResult& 
   int up[kMaxDepth];
   int depth = 0, ib = -1, ia = -1;
   for (int j = c; j >= 0; j = parents[j]) {
-    if (depth == kMaxDepth || !ik_detail::finiteTransform(local[j]) || !(local[j].scale == glm::vec3(1.0f)))
-      return false;
+    if (depth == kMaxDepth || !ik_detail::finiteUnscaled(local[j])) return false;
     if (j == b && ib < 0) ib = depth;
     if (j == a && ib >= 0 && ia < 0) ia = depth;
     up[depth++] = j;
@@ -216,10 +215,14 @@ bool solvePlain(const IkProblem& problem, const IkSettings& settings, IkResult& 
   glm::quat ra, rb, rcp;
 #if defined(__SSE2__)
   namespace simd = ik_detail::simd;
-  __m128 q = _mm_set_ps(1.0f, 0.0f, 0.0f, 0.0f), p = _mm_setzero_ps();
+  // The top joint: 0 + rotate(identity, t) is 0 + t bit for bit (x + 0 = x for x != 0, and
+  // every sum of zeros that starts from +0 is +0), so its rotation is left out; its
+  // product with the identity is kept (it may turn a -0 component into +0).
+  __m128 q = _mm_set_ps(1.0f, 0.0f, 0.0f, 0.0f);
+  __m128 p = _mm_add_ps(_mm_setzero_ps(), simd::load3(local[up[depth - 1]].translation));
   for (int i = depth - 1; i >= 0; --i) {
     const Transform& tr = local[up[i]];
-    p = _mm_add_ps(p, simd::rotate(q, _mm_loadu_ps(&tr.translation.x)));
+    if (i < depth - 1) p = _mm_add_ps(p, simd::rotate(q, _mm_loadu_ps(&tr.translation.x)));
     q = simd::mul(q, simd::load(tr.rotation));
     if (i == ia) simd::store(ra, q), simd::store3(pa, p);
     if (i == ib) simd::store(rb, q), simd::store3(pb, p);

@@ -172,6 +172,10 @@ TEST(IkFastPaths, TwoBoneOnePassEqualsTheGeneralLoop) {
     settings.twoBoneSoften = k % 4 == 1 ? 0.2f : 0.0f;
     Pose a = start, b = start;
     if (k % 6 == 5) a.local[1].rotation *= 1.7f, b.local[1].rotation *= 1.7f;  // non-unit: made unit first
+    if (k % 8 == 7) {  // negative zeros at the top, where the one-pass FK skips a rotation
+      a.local[0].translation = b.local[0].translation = glm::vec3(-0.0f, 0.5f, -0.0f);
+      a.local[0].rotation = b.local[0].rotation = glm::quat(1.0f, -0.0f, k % 16 == 7 ? -0.0f : 0.0f, -0.0f);
+    }
     p.pose = &a;
     const IkResult ra = solveTwoBone(p, settings);
     p.pose = &b;
