@@ -192,7 +192,7 @@ KINEMA_IK_INLINE bool runTwoBoneJobSse(const TwoBoneIkJob& job) {
 }
 #endif
 
-[[gnu::always_inline]] inline void runTwoBoneJob(const TwoBoneIkJob& job) {
+KINEMA_IK_INLINE void runTwoBoneJob(const TwoBoneIkJob& job) {
 #if defined(__SSE2__)
   if (runTwoBoneJobSse(job)) return;
 #endif
