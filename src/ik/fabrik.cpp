@@ -154,6 +154,111 @@ struct FabrikScratch {
 // general passes below reduce to this for such a chain, operation for operation (a
 // single proposal per joint, a single child per bone, no twist, no fit), without their
 // per-slot bookkeeping. Returns the number of passes.
+#if defined(__SSE2__)
+// The backward and forward passes below in SSE registers: the parent's rotation and
+// position, the backward position and the effector carried from joint to joint instead of
+// through the slot arrays (written once per joint for the next pass), and the scalar parts
+// (lengths, fastFromTo) written out as in CCD's plainSweep. Operation for operation the
+// same as the portable version after it (same order, sqrtss for std::sqrt): the same bits.
+int plainPasses(IkChain& c, const IkSettings& settings, std::vector<float>& boneLength,
+                std::vector<glm::vec3>& reached) {
+  namespace simd = ik_detail::simd;
+  using ik_detail::sqrtFloat;
+  const int m = static_cast<int>(c.joints.size());
+  const Goal& goal = c.goals[0];
+  glm::vec3* pos = c.positions.data();
+  glm::quat* rot = c.rotation.data();
+  Transform* local = c.pose->local.data();
+  const int* joints = c.joints.data();
+  const float* bone = boneLength.data();
+  glm::vec3* back = reached.data();
+  // glm::dot of 3-vectors in SSE lanes, in its order: (x x + y y) + z z.
+  auto dot3 = [](__m128 a, __m128 b) {
+    const __m128 t = _mm_mul_ps(a, b);
+    return _mm_cvtss_f32(_mm_add_ss(_mm_add_ss(t, _mm_shuffle_ps(t, t, _MM_SHUFFLE(1, 1, 1, 1))),
+                                    _mm_shuffle_ps(t, t, _MM_SHUFFLE(2, 2, 2, 2))));
+  };
+  const __m128 xyz = _mm_castsi128_ps(_mm_set_epi32(0, -1, -1, -1));
+  const glm::vec3 start = goal.weight * goal.position / goal.weight;
+  const __m128 fixedRot = simd::load(c.fixedRotation[0]);
+  int it = 0;
+  float error = c.maxError();
+  while (!c.converged(error, settings) && it < settings.maxIterations) {
+    ++it;
+    // Backward: from the target, each joint's parent at bone length towards where it is.
+    float rx = start.x, ry = start.y, rz = start.z;
+    back[m - 1] = start;
+    for (int s = m - 1; s > 0; --s) {
+      const glm::vec3 pp = pos[s - 1];
+      float dx = pp.x - rx, dy = pp.y - ry, dz = pp.z - rz;
+      float len = sqrtFloat(dx * dx + dy * dy + dz * dz);
+      if (!(len > 1e-12f)) {  // on top of the parent: keep the bone's current direction
+        const glm::vec3 ps = pos[s];
+        dx = -(ps.x - pp.x), dy = -(ps.y - pp.y), dz = -(ps.z - pp.z);
+        len = sqrtFloat(dx * dx + dy * dy + dz * dz);
+      }
+      if (len > 1e-12f) {
+        const float k = bone[s] / len;
+        rx = rx + dx * k, ry = ry + dy * k, rz = rz + dz * k;
+      } else {
+        rx = pp.x, ry = pp.y, rz = pp.z;
+      }
+      back[s - 1] = glm::vec3(rx, ry, rz);
+    }
+    // Forward: from the fixed root, each joint turns its bone onto its child's backward place.
+    __m128 parentRot = fixedRot, parentPos = _mm_setzero_ps();
+    for (int s = 0; s < m; ++s) {
+      __m128 world, p;
+      if (s > 0) {
+        const Transform& t = local[joints[s]];
+        world = simd::renormalize(simd::mul(parentRot, simd::load(t.rotation)));
+        // t.translation is followed by t.rotation: a 4-float load stays inside t.
+        p = _mm_add_ps(parentPos, simd::rotate(parentRot, _mm_loadu_ps(&t.translation.x)));
+        simd::store3(pos[s], p);
+      } else {
+        world = simd::load(rot[0]);
+        p = simd::load3(pos[0]);
+      }
+      if (s == m - 1) {
+        simd::store(rot[s], world);
+        break;
+      }
+      // Lane 3 masked to +0: the cross product's lane 3 is then +0 and w can be or-ed in.
+      const __m128 a4 =
+          _mm_and_ps(_mm_sub_ps(_mm_add_ps(p, simd::rotate(world, _mm_loadu_ps(&local[joints[s + 1]].translation.x))), p), xyz);
+      const __m128 b4 = _mm_and_ps(_mm_sub_ps(simd::load3(back[s + 1]), p), xyz);
+      const float aa = dot3(a4, a4), bb = dot3(b4, b4);
+      parentPos = p;
+      if (!(aa > 1e-24f && bb > 1e-24f)) {
+        simd::store(rot[s], world);
+        parentRot = world;
+        continue;
+      }
+      // fastFromTo(a, b, aa, bb), written out.
+      const float ll = sqrtFloat(aa * bb), d = dot3(a4, b4);
+      const float n2 = 2.0f * ll * (ll + d);
+      __m128 delta;
+      if (!(ll > 0.0f) || d < -0.999999f * ll || !(n2 > 1e-30f && n2 < 1e30f)) {
+        glm::vec3 from, to;
+        simd::store3(from, a4);
+        simd::store3(to, b4);
+        delta = simd::load(ik_detail::fastFromTo(from, to, aa, bb));
+      } else {
+        const __m128 half = _mm_or_ps(simd::cross(a4, b4), _mm_set_ps(ll + d, 0.0f, 0.0f, 0.0f));
+        delta = _mm_mul_ps(half, _mm_set1_ps(1.0f / sqrtFloat(n2)));
+      }
+      const __m128 turned = simd::renormalize(simd::mul(simd::mul(simd::conjugate(parentRot), delta), world));
+      simd::store(local[joints[s]].rotation, turned);
+      world = simd::renormalize(simd::mul(parentRot, turned));
+      simd::store(rot[s], world);
+      parentRot = world;
+    }
+    error = c.maxError();
+    if (c.stalled(error, settings)) break;
+  }
+  return it;
+}
+#else
 int plainPasses(IkChain& c, const IkSettings& settings, std::vector<float>& boneLength,
                 std::vector<glm::vec3>& reached) {
   const int m = static_cast<int>(c.joints.size());
@@ -163,7 +268,8 @@ int plainPasses(IkChain& c, const IkSettings& settings, std::vector<float>& bone
   Transform* local = c.pose->local.data();
   const int* joints = c.joints.data();
   int it = 0;
-  while (!c.converged(settings) && it < settings.maxIterations) {
+  float error = c.maxError();
+  while (!c.converged(error, settings) && it < settings.maxIterations) {
     ++it;
     // Backward: from the target, each joint's parent at bone length towards where it is.
     reached[m - 1] = goal.weight * goal.position / goal.weight;
@@ -195,10 +301,13 @@ int plainPasses(IkChain& c, const IkSettings& settings, std::vector<float>& bone
       local[joints[s]].rotation = turned;
       rot[s] = ik_detail::renormalize(ik_detail::mul(parentRot, turned));
     }
-    if (c.stalled(c.maxError(), settings)) break;
+    error = c.maxError();
+    if (c.stalled(error, settings)) break;
   }
   return it;
 }
+
+#endif
 
 }  // namespace
 
@@ -207,16 +316,17 @@ IkResult solveFabrik(const IkProblem& problem, const IkSettings& settings) {
   if (IkResult bad; !(bad.message = c.begin(problem, settings)).empty()) return bad;
   IkTrace* trace = settings.trace;
   const int m = static_cast<int>(c.joints.size());
-  // The paper's first test: a single target out of reach straightens the chain at once.
-  if (c.straightenIfUnreachable()) {
-    c.record(trace, 1, IkStep::Straighten);
-    return c.result(1, settings);
-  }
   thread_local FabrikScratch scratch;  // per-slot arrays, reused from call to call
   std::vector<float>& boneLength = scratch.boneLength;
   boneLength.assign(m, 0.0f);
   for (int s = 0; s < m; ++s)
     if (c.parentSlot[s] >= 0) boneLength[s] = glm::length(c.position(s) - c.position(c.parentSlot[s]));
+  // The paper's first test: a single target out of reach straightens the chain at once
+  // (its reach: the sum of these bone lengths).
+  if (c.straightenIfUnreachable(boneLength.data())) {
+    c.record(trace, 1, IkStep::Straighten);
+    return c.result(1, settings);
+  }
   if (!trace && c.rigid && c.goals.size() == 1 && !c.goals[0].hasOrientation && !c.hasLimits()) {
     scratch.reached.resize(m);
     return c.result(plainPasses(c, settings, boneLength, scratch.reached), settings);

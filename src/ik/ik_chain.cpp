@@ -28,16 +28,22 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
   const int n = s.size();
   std::vector<int>& order = orderScratch;
   order.clear();
-  if (problem.targets.size() == 1) {
+  const bool single = problem.targets.size() == 1;
+  if (single) {
     // One target: the slots are its root..effector path, root first (the preorder of a
-    // path), found by walking up from the effector; no marking, no child search.
+    // path), found by walking up from the effector (once to count, once to fill from the
+    // end); no marking, no child search.
     const IkTarget& t = problem.targets[0];
     const int root = ikRootOf(s, t, twoBone);
-    for (int j = t.effector; j >= 0; j = s.parents[j]) {
-      order.push_back(j);
+    const int* parents = s.parents.data();
+    int depth = 0;
+    for (int j = t.effector; j >= 0; j = parents[j]) {
+      ++depth;
       if (j == root) break;
     }
-    std::reverse(order.begin(), order.end());
+    joints.resize(depth);
+    int* out = joints.data();
+    for (int j = t.effector, i = depth - 1; i >= 0; j = parents[j]) out[i--] = j;
   } else {
     // Mark the union of root..effector paths.
     std::vector<char>& in = inScratch;
@@ -73,24 +79,30 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
       for (int k = childStart[j + 1] - 1; k >= childStart[j]; --k) stack.push_back(childList[k]);
     }
   }
-  const int m = static_cast<int>(order.size());
-  joints = order;
+  if (!single) joints = order;
+  const int m = static_cast<int>(joints.size());
   // Every slot's entry is written below; fixedParent, fixedRotation and fixedPosition are
   // read only for slots whose parent lies outside (parentSlot -1).
   parentSlot.resize(m);
-  subtreeSize.assign(m, 1);
+  subtreeSize.resize(m);
   fixedParent.resize(m);
   fixedRotation.resize(m);
   fixedPosition.resize(m);
   positions.resize(m);
   rotation.resize(m);
-  limit.assign(m, nullptr);
-  // One target: slot i's parent is slot i - 1. Several: through the joint -> slot map.
+  limit.resize(m);
+  // One target: slot i's parent is slot i - 1, and m - i slots hang from slot i. Several:
+  // through the joint -> slot map.
   std::vector<int>& slotOf = slotOfScratch;
-  if (problem.targets.size() == 1) {
-    for (int i = 0; i < m; ++i) parentSlot[i] = i - 1;
-    for (int i = m - 1; i > 0; --i) subtreeSize[i - 1] += subtreeSize[i];
+  if (single) {
+    int* ps = parentSlot.data();
+    int* sub = subtreeSize.data();
+    for (int i = 0; i < m; ++i) {
+      ps[i] = i - 1;
+      sub[i] = m - i;
+    }
   } else {
+    std::fill(subtreeSize.begin(), subtreeSize.end(), 1);
     slotOf.assign(n, -1);
     for (int i = 0; i < m; ++i) slotOf[joints[i]] = i;
     for (int i = 0; i < m; ++i) {
@@ -100,14 +112,45 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
     for (int i = m - 1; i >= 0; --i)
       if (parentSlot[i] >= 0) subtreeSize[parentSlot[i]] += subtreeSize[i];
   }
-  for (int i = 0; i < m; ++i) makeUnit(pose->local[joints[i]].rotation);
-  if (rig)
-    for (int i = 0; i < m; ++i) limit[i] = rig->limitOf(joints[i]);
+  // Unit rotations, and whether any slot has scale (then the chain is not rigid).
+  bool unscaled = true;
+  {
+    Transform* local = pose->local.data();
+    const int* js = joints.data();
+#if defined(__SSE2__)
+    // makeUnit's test (glm's quaternion dot, (w w + x x) + (y y + z z)) and the scale test
+    // in SSE registers; makeUnit itself only where the test says so.
+    const __m128 ones = _mm_set1_ps(1.0f);
+    int scaled = 0;
+    for (int i = 0; i < m; ++i) {
+      Transform& t = local[js[i]];
+      const __m128 q = simd::load(t.rotation), sq = _mm_mul_ps(q, q);
+      const __m128 pairs = _mm_add_ps(sq, _mm_shuffle_ps(sq, sq, _MM_SHUFFLE(0, 1, 2, 3)));
+      const float d = _mm_cvtss_f32(_mm_add_ss(pairs, _mm_shuffle_ps(pairs, pairs, _MM_SHUFFLE(1, 1, 1, 1))));
+      if (std::abs(d - 1.0f) > 1e-6f) t.rotation = safeNormalize(t.rotation);
+      // Floats 6-9 of the transform: rotation.w, then the scale.
+      scaled |= _mm_movemask_ps(_mm_cmpneq_ps(_mm_loadu_ps(&t.translation.x + 6), ones)) & 0xe;
+    }
+    unscaled = scaled == 0;
+#else
+    for (int i = 0; i < m; ++i) {
+      Transform& t = local[js[i]];
+      makeUnit(t.rotation);
+      unscaled = unscaled && t.scale == glm::vec3(1.0f);
+    }
+#endif
+  }
+  anyLimit = false;
+  if (rig) {
+    for (int i = 0; i < m; ++i) anyLimit = (limit[i] = rig->limitOf(joints[i])) != nullptr || anyLimit;
+  } else {
+    std::fill(limit.begin(), limit.end(), nullptr);
+  }
   // The fixed parents: the placement times the world of the joint above the slot (FK of
-  // that joint's ancestors only).
-  const bool identityPlacement = problem.rootTransform == glm::mat4(1.0f);
+  // that joint's ancestors only). One target: only slot 0 has one.
+  const bool identityPlacement = isIdentity(problem.rootTransform);
   bool fixedRigid = true;
-  for (int i = 0; i < m; ++i) {
+  for (int i = 0; i < (single ? std::min(m, 1) : m); ++i) {
     if (parentSlot[i] >= 0) continue;
     const int p = s.parents[joints[i]];
     glm::mat4 parentWorld(1.0f);
@@ -135,10 +178,11 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) fixedRigid = fixedRigid && std::abs(ltl[a][b] - (a == b ? 1.0f : 0.0f)) < 1e-6f;
   }
-  rigid = fixedRigid;
-  for (int i = 0; i < m && rigid; ++i) rigid = pose->local[joints[i]].scale == glm::vec3(1.0f);
+  rigid = fixedRigid && unscaled;
+  chain = single;
   world.assign(rigid ? 0 : m, glm::mat4(1.0f));
   goals.clear();
+  anyOrientation = false;
   for (const IkTarget& t : problem.targets) {
     Goal g;
     if (problem.targets.size() == 1) {
@@ -153,6 +197,7 @@ std::string IkChain::build(const IkProblem& problem, bool twoBone) {
     // Read only where hasOrientation is set.
     if (t.hasOrientation) g.orientation = safeNormalize(t.orientation);
     g.weight = t.weight;
+    anyOrientation = anyOrientation || g.hasOrientation;
     goals.push_back(g);
   }
   history.clear();
@@ -190,6 +235,21 @@ void IkChain::forwardKinematics() {
   // forwardSlot's rigid branch, inlined: every iterative solver runs this once a step.
   const Transform* local = pose->local.data();
 #if defined(__SSE2__)
+  if (chain) {
+    // One target's path: each slot's parent is the previous one, slot 0's is fixed.
+    const int* js = joints.data();
+    glm::quat* rotOut = rotation.data();
+    glm::vec3* posOut = positions.data();
+    __m128 rot = simd::load(fixedRotation[0]), pos = simd::load3(fixedPosition[0]);
+    for (int s = 0; s < m; ++s) {
+      const Transform& t = local[js[s]];
+      pos = _mm_add_ps(pos, simd::rotate(rot, _mm_loadu_ps(&t.translation.x)));
+      rot = simd::renormalize(simd::mul(rot, simd::load(t.rotation)));
+      simd::store(rotOut[s], rot);
+      simd::store3(posOut[s], pos);
+    }
+    return;
+  }
   // The previous slot's rotation and position stay in registers: along a chain (parent =
   // previous slot) nothing is read back from memory.
   __m128 rot = _mm_setzero_ps(), pos = _mm_setzero_ps();
@@ -251,7 +311,7 @@ void IkChain::setLocalRotation(int s, const glm::quat& localIn) {
   for (int k = s; k < s + subtreeSize[s]; ++k) forwardSlot(k);
 }
 
-float IkChain::maxError() const {
+float IkChain::maxErrorOfAll() const {
   float e = 0.0f;
   for (const Goal& g : goals) e = std::max(e, goalError(g));
   return e;
@@ -267,10 +327,6 @@ float IkChain::orientationError() const {
   return e;
 }
 
-bool IkChain::converged(float error, const IkSettings& settings) const {
-  // Orientation targets share the tolerance, read as radians.
-  return error <= settings.tolerance && orientationError() <= std::max(settings.tolerance, 1e-3f);
-}
 
 bool IkChain::stalled(float error, const IkSettings& settings) {
   history.push_back(error);
@@ -280,25 +336,20 @@ bool IkChain::stalled(float error, const IkSettings& settings) {
   return before - error <= settings.stallFraction * before;
 }
 
-bool IkChain::hasLimits() const {
-  for (const JointLimit* l : limit)
-    if (l) return true;
-  return false;
-}
 
-float IkChain::reach(const Goal& g) const {
+float IkChain::reach(const Goal& g, const float* boneLength) const {
   float r = 0.0f;
   for (int s = g.slot; s != g.rootSlot && parentSlot[s] >= 0; s = parentSlot[s])
-    r += glm::length(position(s) - position(parentSlot[s]));
+    r += boneLength ? boneLength[s] : glm::length(position(s) - position(parentSlot[s]));
   return r;
 }
 
-bool IkChain::straightenIfUnreachable() {
+bool IkChain::straightenIfUnreachable(const float* boneLength) {
   if (goals.size() != 1 || hasLimits()) return false;
   const Goal& g = goals[0];
   const glm::vec3 toTarget = g.position - position(g.rootSlot);
   const float d = glm::length(toTarget);
-  if (!(d > reach(g)) || !(d > 0.0f)) return false;
+  if (!(d > reach(g, boneLength)) || !(d > 0.0f)) return false;
   const glm::vec3 u = toTarget / d;
   // One target: the slots are its chain, root first, each the parent of the next. Root
   // down, each joint turns its bone (as its ancestors' turns `turned` left it) onto u;

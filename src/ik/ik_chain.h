@@ -1,7 +1,10 @@
 #pragma once
 // The working state every solver shares: the joints a set of targets moves ("slots"),
 // their world transforms, and the goals. Internal to src/ik.
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -11,6 +14,15 @@
 #include <emmintrin.h>
 #endif
 
+// The small helpers below go inline wherever they are used: GCC stops inlining them into
+// a function once it has grown large (the whole two-bone solve), and a call per quaternion
+// product costs more than the product.
+#if defined(__GNUC__) || defined(__clang__)
+#define KINEMA_IK_INLINE [[gnu::always_inline]] inline
+#else
+#define KINEMA_IK_INLINE inline
+#endif
+
 namespace kinema::ik_detail {
 
 // The quaternion product a * b and the rotation q * v, written out for the solvers' inner
@@ -18,7 +30,7 @@ namespace kinema::ik_detail {
 // when inlined there). With SSE2 the product runs one component per lane, each lane
 // adding its four terms in the scalar order (a negated term added is exactly a term
 // subtracted), so both paths give the same bits.
-inline glm::quat mul(const glm::quat& a, const glm::quat& b) {
+KINEMA_IK_INLINE glm::quat mul(const glm::quat& a, const glm::quat& b) {
 #if defined(__SSE2__)
   // glm stores x y z w. Lanes: x = aw bx + ax bw + ay bz - az by, y = aw by - ax bz + ay bw
   // + az bx, z = aw bz + ax by - ay bx + az bw, w = aw bw - ax bx - ay by - az bz.
@@ -40,7 +52,7 @@ inline glm::quat mul(const glm::quat& a, const glm::quat& b) {
                    a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w);
 #endif
 }
-inline glm::vec3 rotate(const glm::quat& q, const glm::vec3& v) {
+KINEMA_IK_INLINE glm::vec3 rotate(const glm::quat& q, const glm::vec3& v) {
   // t = 2 (q.xyz x v); q v q* = v + w t + q.xyz x t.
   const float tx = 2.0f * (q.y * v.z - q.z * v.y), ty = 2.0f * (q.z * v.x - q.x * v.z),
               tz = 2.0f * (q.x * v.y - q.y * v.x);
@@ -48,10 +60,19 @@ inline glm::vec3 rotate(const glm::quat& q, const glm::vec3& v) {
                    v.z + q.w * tz + (q.x * ty - q.y * tx));
 }
 
+// std::sqrt's IEEE result without its errno branch (sqrtss on SSE2): the same bits.
+KINEMA_IK_INLINE float sqrtFloat(float x) {
+#if defined(__SSE2__)
+  return _mm_cvtss_f32(_mm_sqrt_ss(_mm_set_ss(x)));
+#else
+  return std::sqrt(x);
+#endif
+}
+
 // Normalises a quaternion that is already nearly unit (a product of unit quaternions):
 // at most one square root, where safeNormalize guards against denormal, huge and NaN input
 // (still the fallback here) at several times the cost in the solvers' inner loops.
-inline glm::quat renormalize(const glm::quat& q) {
+KINEMA_IK_INLINE glm::quat renormalize(const glm::quat& q) {
 #if defined(__SSE2__)
   // glm::dot's order, (w w + x x) + (y y + z z), in two lanes.
   const __m128 Q = _mm_loadu_ps(&q.x), sq = _mm_mul_ps(Q, Q);
@@ -77,15 +98,15 @@ inline glm::quat renormalize(const glm::quat& q) {
 // the CCD sweep keep a rotation in a register from one joint to the next instead of
 // going through glm types in memory. Bit-identical to mul / rotate / renormalize.
 namespace simd {
-inline __m128 load(const glm::quat& q) { return _mm_loadu_ps(&q.x); }
-inline void store(glm::quat& q, __m128 v) { _mm_storeu_ps(&q.x, v); }
-inline __m128 load3(const glm::vec3& v) { return _mm_set_ps(0.0f, v.z, v.y, v.x); }
-inline void store3(glm::vec3& v, __m128 x) {
+KINEMA_IK_INLINE __m128 load(const glm::quat& q) { return _mm_loadu_ps(&q.x); }
+KINEMA_IK_INLINE void store(glm::quat& q, __m128 v) { _mm_storeu_ps(&q.x, v); }
+KINEMA_IK_INLINE __m128 load3(const glm::vec3& v) { return _mm_set_ps(0.0f, v.z, v.y, v.x); }
+KINEMA_IK_INLINE void store3(glm::vec3& v, __m128 x) {
   _mm_storel_pi(reinterpret_cast<__m64*>(&v.x), x);
   _mm_store_ss(&v.z, _mm_shuffle_ps(x, x, _MM_SHUFFLE(2, 2, 2, 2)));
 }
-inline __m128 conjugate(__m128 q) { return _mm_xor_ps(q, _mm_set_ps(0.0f, -0.0f, -0.0f, -0.0f)); }
-inline __m128 mul(__m128 A, __m128 B) {
+KINEMA_IK_INLINE __m128 conjugate(__m128 q) { return _mm_xor_ps(q, _mm_set_ps(0.0f, -0.0f, -0.0f, -0.0f)); }
+KINEMA_IK_INLINE __m128 mul(__m128 A, __m128 B) {
   const __m128 ax = _mm_shuffle_ps(A, A, _MM_SHUFFLE(0, 0, 0, 0)), ay = _mm_shuffle_ps(A, A, _MM_SHUFFLE(1, 1, 1, 1)),
                az = _mm_shuffle_ps(A, A, _MM_SHUFFLE(2, 2, 2, 2)), aw = _mm_shuffle_ps(A, A, _MM_SHUFFLE(3, 3, 3, 3));
   const __m128 t2 = _mm_xor_ps(_mm_mul_ps(ax, _mm_shuffle_ps(B, B, _MM_SHUFFLE(0, 1, 2, 3))),
@@ -97,12 +118,12 @@ inline __m128 mul(__m128 A, __m128 B) {
   return _mm_add_ps(_mm_add_ps(_mm_add_ps(_mm_mul_ps(aw, B), t2), t3), t4);
 }
 // q.xyz x v, lane by lane in rotate()'s order (a.y b.z - a.z b.y, ...).
-inline __m128 cross(__m128 a, __m128 b) {
+KINEMA_IK_INLINE __m128 cross(__m128 a, __m128 b) {
   const __m128 ayzx = _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 0, 2, 1)), azxy = _mm_shuffle_ps(a, a, _MM_SHUFFLE(3, 1, 0, 2));
   const __m128 byzx = _mm_shuffle_ps(b, b, _MM_SHUFFLE(3, 0, 2, 1)), bzxy = _mm_shuffle_ps(b, b, _MM_SHUFFLE(3, 1, 0, 2));
   return _mm_sub_ps(_mm_mul_ps(ayzx, bzxy), _mm_mul_ps(azxy, byzx));
 }
-inline __m128 rotate(__m128 q, __m128 v) {
+KINEMA_IK_INLINE __m128 rotate(__m128 q, __m128 v) {
   const __m128 t = _mm_mul_ps(_mm_set1_ps(2.0f), cross(q, v));
   return _mm_add_ps(_mm_add_ps(v, _mm_mul_ps(_mm_shuffle_ps(q, q, _MM_SHUFFLE(3, 3, 3, 3)), t)), cross(q, t));
 }
@@ -111,7 +132,7 @@ inline __m128 rotate(__m128 q, __m128 v) {
 
 #if defined(__SSE2__)
 namespace simd {
-inline __m128 renormalize(__m128 Q) {
+KINEMA_IK_INLINE __m128 renormalize(__m128 Q) {
   const __m128 sq = _mm_mul_ps(Q, Q);
   const __m128 pairs = _mm_add_ps(sq, _mm_shuffle_ps(sq, sq, _MM_SHUFFLE(0, 1, 2, 3)));
   const float d = _mm_cvtss_f32(_mm_add_ss(pairs, _mm_shuffle_ps(pairs, pairs, _MM_SHUFFLE(1, 1, 1, 1))));
@@ -125,7 +146,7 @@ inline __m128 renormalize(__m128 Q) {
 
 // The local rotation that turns a joint of world rotation `world` by the world turn
 // `delta`, under a parent of world rotation `parentRot`: renormalize(parentRot^-1 delta world).
-inline glm::quat turnedLocal(const glm::quat& parentRot, const glm::quat& delta, const glm::quat& world) {
+KINEMA_IK_INLINE glm::quat turnedLocal(const glm::quat& parentRot, const glm::quat& delta, const glm::quat& world) {
 #if defined(__SSE2__)
   glm::quat q;
   simd::store(q, simd::renormalize(simd::mul(simd::mul(simd::conjugate(simd::load(parentRot)), simd::load(delta)),
@@ -139,8 +160,16 @@ inline glm::quat turnedLocal(const glm::quat& parentRot, const glm::quat& delta,
 // A valid pose may hold non-unit rotations (they still encode a rotation); the solvers
 // make the ones they may move unit first, so the pose they hand back is unit where they
 // worked even for joints they did not need to turn. Unit input is left bit for bit.
-inline void makeUnit(glm::quat& q) {
-  if (std::abs(glm::dot(q, q) - 1.0f) > 1e-6f) q = safeNormalize(q);
+KINEMA_IK_INLINE void makeUnit(glm::quat& q) {
+#if defined(__SSE2__)
+  // glm::dot(q, q)'s order, (w w + x x) + (y y + z z), in two lanes.
+  const __m128 v = _mm_loadu_ps(&q.x), sq = _mm_mul_ps(v, v);
+  const __m128 pairs = _mm_add_ps(sq, _mm_shuffle_ps(sq, sq, _MM_SHUFFLE(0, 1, 2, 3)));
+  const float d = _mm_cvtss_f32(_mm_add_ss(pairs, _mm_shuffle_ps(pairs, pairs, _MM_SHUFFLE(1, 1, 1, 1))));
+#else
+  const float d = glm::dot(q, q);
+#endif
+  if (std::abs(d - 1.0f) > 1e-6f) q = safeNormalize(q);
 }
 
 // The shortest rotation taking direction `from` onto `to` (neither need be unit), given
@@ -161,6 +190,83 @@ inline glm::quat fastFromTo(const glm::vec3& from, const glm::vec3& to, float fr
 inline glm::quat fastFromTo(const glm::vec3& from, const glm::vec3& to) {
   return fastFromTo(from, to, glm::dot(from, from), glm::dot(to, to));
 }
+
+// True when none of the n floats at p is infinite or NaN (exponent bits not all ones):
+// integer tests, where std::isfinite costs a classification per float.
+inline bool finiteFloats(const float* p, int n) {
+  uint32_t bad = 0;
+  for (int i = 0; i < n; ++i) {
+    uint32_t bits;
+    std::memcpy(&bits, p + i, sizeof bits);
+    bad |= static_cast<uint32_t>((bits & 0x7f800000u) == 0x7f800000u);
+  }
+  return bad == 0;
+}
+static_assert(sizeof(Transform) == 10 * sizeof(float), "Transform is ten floats");
+// Transform::isFinite's answer.
+inline bool finiteTransform(const Transform& t) {
+#if defined(__SSE2__)
+  // Floats 0-3, 4-7 and 6-9 (the last two loads overlap), exponent bits compared at once.
+  const float* p = &t.translation.x;
+  const __m128i exponent = _mm_set1_epi32(0x7f800000);
+  auto bad = [&](const float* q) {
+    return _mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(_mm_loadu_ps(q)), exponent), exponent);
+  };
+  return _mm_movemask_epi8(_mm_or_si128(_mm_or_si128(bad(p), bad(p + 4)), bad(p + 6))) == 0;
+#else
+  return finiteFloats(&t.translation.x, 10);
+#endif
+}
+// finiteTransform, and the scale is exactly 1 (scale == glm::vec3(1.0f), NaN failing).
+inline bool finiteUnscaled(const Transform& t) {
+#if defined(__SSE2__)
+  const float* p = &t.translation.x;
+  const __m128i exponent = _mm_set1_epi32(0x7f800000);
+  const __m128 l0 = _mm_loadu_ps(p), l1 = _mm_loadu_ps(p + 4), l2 = _mm_loadu_ps(p + 6);  // l2: rotation.w, scale
+  auto bad = [&](__m128 l) { return _mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(l), exponent), exponent); };
+  const int nonFinite = _mm_movemask_epi8(_mm_or_si128(_mm_or_si128(bad(l0), bad(l1)), bad(l2)));
+  const int scaled = _mm_movemask_ps(_mm_cmpneq_ps(l2, _mm_set1_ps(1.0f))) & 0xe;
+  return (nonFinite | scaled) == 0;
+#else
+  return finiteTransform(t) && t.scale == glm::vec3(1.0f);
+#endif
+}
+
+// The x y z of the four columns of a placement are finite (what IkProblem::validate asks).
+inline bool finitePlacement(const glm::mat4& m) {
+#if defined(__SSE2__)
+  const __m128i exponent = _mm_set1_epi32(0x7f800000);
+  __m128i bad = _mm_setzero_si128();
+  for (int c = 0; c < 4; ++c)
+    bad = _mm_or_si128(bad, _mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(_mm_loadu_ps(&m[c].x)), exponent), exponent));
+  return (_mm_movemask_ps(_mm_castsi128_ps(bad)) & 0x7) == 0;
+#else
+  for (int c = 0; c < 4; ++c)
+    if (!finiteFloats(&m[c].x, 3)) return false;
+  return true;
+#endif
+}
+
+// m == glm::mat4(1.0f), column by column in SSE registers (glm's operator== compares the
+// sixteen floats one branch at a time): the same answer, NaN and -0 included.
+inline bool isIdentity(const glm::mat4& m) {
+#if defined(__SSE2__)
+  const __m128 one = _mm_set_ss(1.0f);  // 1 0 0 0
+  __m128 eq = _mm_cmpeq_ps(_mm_loadu_ps(&m[0].x), one);
+  eq = _mm_and_ps(eq, _mm_cmpeq_ps(_mm_loadu_ps(&m[1].x), _mm_shuffle_ps(one, one, _MM_SHUFFLE(1, 1, 0, 1))));
+  eq = _mm_and_ps(eq, _mm_cmpeq_ps(_mm_loadu_ps(&m[2].x), _mm_shuffle_ps(one, one, _MM_SHUFFLE(1, 0, 1, 1))));
+  eq = _mm_and_ps(eq, _mm_cmpeq_ps(_mm_loadu_ps(&m[3].x), _mm_shuffle_ps(one, one, _MM_SHUFFLE(0, 1, 1, 1))));
+  return _mm_movemask_ps(eq) == 0xf;
+#else
+  return m == glm::mat4(1.0f);
+#endif
+}
+
+// IkProblem::validate in two parts: a check that the problem is plainly valid (every
+// check passes; no message is built), and the full checks that name the first problem.
+// validate() runs the second only where the first says no; they agree (ik tests).
+bool plainlyValid(const IkProblem& problem, bool twoBone);
+std::string validateInFull(const IkProblem& problem, bool twoBone);
 
 struct Goal {
   int slot = -1;      // the effector's slot
@@ -196,6 +302,9 @@ struct IkChain {
   // No scale anywhere (slots and fixed parents): FK then needs only quaternion products,
   // and a world matrix is its rotation plus its position.
   bool rigid = false;
+  bool anyLimit = false;  // some slot has a joint limit (set by build)
+  bool chain = false;     // one target: slot i's parent is slot i - 1 (slot 0's is fixed)
+  bool anyOrientation = false;  // some goal has an orientation target (set by build)
 
   // Fills the slots from the problem; returns an error message or "".
   std::string build(const IkProblem& problem, bool twoBone = false);
@@ -223,19 +332,26 @@ struct IkChain {
   // Sets slot s's local rotation (limited), then refreshes its sub-tree by FK.
   void setLocalRotation(int s, const glm::quat& local);
   float goalError(const Goal& g) const { return distanceInDouble(position(g.slot), g.position); }
-  float maxError() const;
+  // One goal (the common case) inline: the same value as the loop over goals.
+  float maxError() const { return goals.size() == 1 ? std::max(0.0f, goalError(goals[0])) : maxErrorOfAll(); }
+  float maxErrorOfAll() const;
   float orientationError() const;  // largest angle (radians) to an orientation target
   bool converged(const IkSettings& settings) const { return converged(maxError(), settings); }
-  // The same, given maxError() of the current pose.
-  bool converged(float error, const IkSettings& settings) const;
+  // The same, given maxError() of the current pose. Orientation targets share the
+  // tolerance, read as radians; without any, orientationError() is 0.
+  bool converged(float error, const IkSettings& settings) const {
+    return error <= settings.tolerance &&
+           (anyOrientation ? orientationError() : 0.0f) <= std::max(settings.tolerance, 1e-3f);
+  }
   // True when the last stallWindow iterations improved the error by less than
   // stallFraction; records `error` first.
   bool stalled(float error, const IkSettings& settings);
-  bool hasLimits() const;
+  bool hasLimits() const { return anyLimit; }
   // The sum of bone lengths from the goal's root to its effector.
-  float reach(const Goal& g) const;
+  // boneLength (optional): each slot's distance to its parent slot, as computed here.
+  float reach(const Goal& g, const float* boneLength = nullptr) const;
   // Single goal beyond reach and no limits: point every bone straight at the target.
-  bool straightenIfUnreachable();
+  bool straightenIfUnreachable(const float* boneLength = nullptr);
   void record(IkTrace* trace, int iteration, IkStep step, int joint = -1) const;
   void recordPositions(IkTrace* trace, int iteration, IkStep step, const std::vector<glm::vec3>& positions,
                        float error) const;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "ik/ik_chain.h"
+
 namespace kinema {
 
 const char* toString(IkSolver solver) {
@@ -66,7 +68,86 @@ std::string IkTarget::validate(const Skeleton& skeleton) const {
   return {};
 }
 
+namespace {
+
+using ik_detail::finiteFloats;
+using ik_detail::finiteTransform;
+
+// One target of a problem whose skeleton, pose and placement passed: true only where
+// IkTarget::validate and IkProblem::validate's per-target checks would all pass, in one
+// walk from the effector up (the checks' own walks are isInSubtree, ikRootOf and the
+// pose loop). False also in cases that may be valid but are not the common ones; the
+// caller then runs the full checks, which give the message.
+bool plainTarget(const Skeleton& s, const Pose& pose, const IkTarget& t, bool twoBone) {
+  const int n = s.size();
+  if (t.effector < 0 || t.effector >= n || t.root >= n || t.mid >= n) return false;
+  if (!finiteFloats(&t.position.x, 3) || !std::isfinite(t.weight) || !(t.weight > 0.0f)) return false;
+  if (t.hasOrientation &&
+      (!finiteFloats(&t.orientation.x, 4) || !(glm::dot(t.orientation, t.orientation) >= 1e-12f)))
+    return false;
+  if (t.hasPole && !finiteFloats(&t.pole.x, 3)) return false;
+  const int* parents = s.parents.data();
+  const Transform* local = pose.local.data();
+  if (!finiteTransform(local[t.effector])) return false;
+  int j = t.effector;
+  if (twoBone) {
+    // The middle joint: given, or the effector's parent; a proper ancestor either way.
+    const int mid = t.mid >= 0 ? t.mid : parents[j];
+    if (mid < 0 || mid == j) return false;
+    do {
+      j = parents[j];
+      if (j < 0 || !finiteTransform(local[j])) return false;
+    } while (j != mid);
+    // The root: given, or the middle joint's parent; a proper ancestor of the middle.
+    const int root = t.root >= 0 ? t.root : parents[mid];
+    if (root < 0 || root == mid) return false;
+    do {
+      j = parents[j];
+      if (j < 0 || !finiteTransform(local[j])) return false;
+    } while (j != root);
+    return true;
+  }
+  if (t.root >= 0) {
+    if (t.root == j) return false;
+    do {
+      j = parents[j];
+      if (j < 0 || !finiteTransform(local[j])) return false;
+    } while (j != t.root);
+    return true;
+  }
+  if (parents[j] < 0) return false;  // no parent joint to move
+  for (j = parents[j]; j >= 0; j = parents[j])
+    if (!finiteTransform(local[j])) return false;
+  return true;
+}
+
+// The whole problem, without a rig (a rig goes through the full checks).
+bool plainProblem(const IkProblem& p, bool twoBone) {
+  if (!p.skeleton || !p.pose || p.rig || p.targets.empty() || p.pose->size() != p.skeleton->size()) return false;
+  if (!ik_detail::finitePlacement(p.rootTransform)) return false;
+  for (const IkTarget& t : p.targets)
+    if (!plainTarget(*p.skeleton, *p.pose, t, twoBone)) return false;
+  return true;
+}
+
+}  // namespace
+
 std::string IkProblem::validate(bool twoBone) const {
+  // The common case (every check passes) without building any message.
+  if (plainProblem(*this, twoBone)) return {};
+  return ik_detail::validateInFull(*this, twoBone);
+}
+
+namespace ik_detail {
+
+bool plainlyValid(const IkProblem& problem, bool twoBone) { return plainProblem(problem, twoBone); }
+
+std::string validateInFull(const IkProblem& problem, bool twoBone) {
+  const Skeleton* skeleton = problem.skeleton;
+  const Pose* pose = problem.pose;
+  const IkRig* rig = problem.rig;
+  const std::vector<IkTarget>& targets = problem.targets;
+  const glm::mat4& rootTransform = problem.rootTransform;
   if (!skeleton || !pose) return "no skeleton or pose";
   const Skeleton& s = *skeleton;
   if (pose->size() != s.size())
@@ -96,6 +177,8 @@ std::string IkProblem::validate(bool twoBone) const {
   }
   return {};
 }
+
+}  // namespace ik_detail
 
 std::string IkRig::validate(const Skeleton& skeleton) const {
   if (!limits.empty() && static_cast<int>(limits.size()) != skeleton.size())

@@ -173,6 +173,41 @@ TEST(PlaybackSamplingJob, EqualsReferenceOnRandomClipsOfEveryInterpolation) {
   EXPECT_GT(otherTracks, cases * 5);
 }
 
+// A grid whose rows are long enough for the software prefetches (over 16,384 floats: 2,400
+// joints of translation, rotation and scale make rows of 2,400 x 40 = 96,000 floats) gives
+// the reference's values like any other, a few keys apart, at and between keys and off
+// both ends (the prefetches change no value; here they run, and past a row's end too).
+TEST(PlaybackSamplingJob, LongRowsWithPrefetchesEqualTheReference) {
+  constexpr int kJoints = 2400;
+  std::mt19937 rng(24);
+  std::uniform_real_distribution<float> val(-2.0f, 2.0f);
+  const std::vector<float> times = {0.0f, 0.4f, 0.5f, 1.25f};
+  Clip clip;
+  for (int j = 0; j < kJoints; ++j) {
+    std::vector<glm::vec4> t, r, sc;
+    glm::quat q = test::randomRotation(rng);
+    for (size_t k = 0; k < times.size(); ++k) {
+      t.emplace_back(val(rng), val(rng), val(rng), 0.0f);
+      q = wander(q, 0.5f, rng);
+      r.emplace_back(q.x, q.y, q.z, q.w);
+      sc.emplace_back(1.0f + 0.2f * val(rng), 1.0f, 1.0f + 0.1f * val(rng), 0.0f);
+    }
+    clip.channels.push_back(Channel(j, ChannelTarget::Translation, Interpolation::Linear, times, t));
+    clip.channels.push_back(Channel(j, ChannelTarget::Rotation, Interpolation::Linear, times, r));
+    clip.channels.push_back(Channel(j, ChannelTarget::Scale, j % 3 ? Interpolation::Linear : Interpolation::Step, times, sc));
+  }
+  const PlaybackClip playback = PlaybackClip::build(clip, kJoints);
+  ASSERT_EQ(playback.grids.size(), 1u);
+  ASSERT_GT(playback.grids[0].rowFloats, 16384);
+  const Pose base = randomBase(kJoints, rng);
+  PlaybackContext context;
+  Pose pose = base;
+  for (float t : {-0.1f, 0.0f, 0.2f, 0.4f, 0.45f, 1.0f, 0.5f, 1.25f, 2.0f, 0.01f}) {
+    ASSERT_TRUE(samplePlayback(playback, t, pose, context));
+    EXPECT_LE(test::maxPoseDifference(pose, test::referencePose(clip, base, t)), kTolerance) << "time " << t;
+  }
+}
+
 // Imported motion (one key grid, Linear, unit quaternions): every channel lands in one grid,
 // in blocks of four tracks; 5 joints need two blocks per part, the second padded.
 TEST(PlaybackSamplingJob, ImportedMotionIsOneGridOfFourTrackBlocks) {
