@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "editor/panels/editor_panels.h"
+#include "editor/panels/item_names.h"
 #include "editor/model/motion_control.h"
 #include "editor/panels/panel_layout.h"
 #include "editor/model/timeline.h"
@@ -28,12 +29,16 @@ void drawOnionSkinWindow(EditorState& state) {
     ImGui::End();
     return;
   }
+  recordWindow("Onion Skin & Motion Path");
   OnionSkinSettings& o = state.onionSkin;
   ImGui::Checkbox("Onion skin (Alt+O)", &o.enabled);
   ImGui::PushItemWidth(90.0f);
   ImGui::SliderInt("Before", &o.before, 0, 10);
+  recordItem("Onion Skin & Motion Path/Before");
   ImGui::SliderInt("After", &o.after, 0, 10);
+  recordItem("Onion Skin & Motion Path/After");
   ImGui::DragInt("Step (frames)", &o.step, 0.2f, 1, 120);
+  recordItem("Onion Skin & Motion Path/Step");
   o.step = std::max(o.step, 1);
   ImGui::SliderFloat("Opacity", &o.opacity, 0.05f, 1.0f, "%.2f");
   ImGui::PopItemWidth();
