@@ -48,7 +48,7 @@ rm -rf "$tmp"
 # XDG folders point away from the user's recent files and recovery files.
 tmp=$(mktemp -d)
 for shot in editor_fk_gizmo editor_ik_drag; do
-  XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp xvfb-run -a -s "-screen 0 1280x800x24" "$kinema" edit \
+  XDG_STATE_HOME=$tmp XDG_CONFIG_HOME=$tmp xvfb-run -a -s "-screen 0 1280x800x24" "$kinema" edit --size 1280x720 \
     --script "$root/docs/images/$shot.jsonl" --frame-count 40 --screenshot "$root/docs/images/$shot.png"
 done
 rm -rf "$tmp"
