@@ -155,13 +155,27 @@ bool SceneDamageJob::run() {
   const uint64_t settings = frameSettingsSignature(f);
   const MeshFrame* meshFrame = f.meshes && f.meshes->renderer ? &f.meshes->frame : nullptr;
   const std::vector<DeformedPrimitive>* posed = meshFrame ? meshFrame->posed : nullptr;
-  SceneSnapshot now;
-  now.valid = true;
-  now.settings = settings;
-  if (f.skeleton) now.skeleton = *f.skeleton;
-  if (f.ghosts) now.ghosts = *f.ghosts;
-  if (f.overlay) now.overlay = *f.overlay;
-  if (posed) now.posed = *posed;
+  // The frame's elements, compared with the kept ones, then kept in their place (assigned,
+  // so the snapshot's storage is reused frame after frame).
+  static const SkeletonDrawList kNoSkeleton;
+  static const std::vector<SkeletonDrawList> kNoGhosts;
+  static const OverlayDrawList kNoOverlay;
+  static const std::vector<DeformedPrimitive> kNoPosed;
+  struct Now {
+    const SkeletonDrawList& skeleton;
+    const std::vector<SkeletonDrawList>& ghosts;
+    const OverlayDrawList& overlay;
+    const std::vector<DeformedPrimitive>& posed;
+  } now{f.skeleton ? *f.skeleton : kNoSkeleton, f.ghosts ? *f.ghosts : kNoGhosts, f.overlay ? *f.overlay : kNoOverlay,
+        posed ? *posed : kNoPosed};
+  auto keep = [&] {
+    last->valid = true;
+    last->settings = settings;
+    last->skeleton = now.skeleton;
+    last->ghosts = now.ghosts;
+    last->overlay = now.overlay;
+    last->posed = now.posed;
+  };
 
   out = view;
   const bool comparable = last->valid && last->settings == settings && f.width > 0 && f.height > 0 &&
@@ -171,7 +185,7 @@ bool SceneDamageJob::run() {
                           sameShapeCounts(last->ghosts, now.ghosts) &&
                           last->posed.size() == now.posed.size();
   if (!comparable) {
-    *last = std::move(now);
+    keep();
     return true;
   }
   ScreenBounds s;
@@ -216,7 +230,7 @@ bool SceneDamageJob::run() {
                        after.primitive < static_cast<int>(scene->meshes[mesh].primitives.size()) &&
                        addMovedTriangles(before, after, scene->meshes[mesh].primitives[after.primitive], s);
   }
-  *last = std::move(now);
+  keep();
   if (!meshesComparable || s.behind) return true;  // the whole view
   if (s.minX > s.maxX) {
     out = {};  // nothing changed
