@@ -97,26 +97,42 @@ TEST(ImGuiDamage, ANewWindowOrADifferentDisplayDamagesEverything) {
             (PixelRect{0, 0, 640, 480}));
 }
 
-TEST(ImGuiDamage, ClippingKeepsEachCommandInsideTheRectanglesAndDropsTheRest) {
+TEST(ImGuiDamage, ClippingKeepsTheTrianglesThatMeetEachRectangleInsideItAndDropsTheRest) {
+  // Command a: two triangles, one at (0..10, 0..10), one at (60..70, 60..70), clipped to
+  // (0, 0, 100, 100); command b: one triangle at (250..260, 250..260), clipped to
+  // (200, 200, 300, 300).
   ImDrawList list(nullptr);
+  auto vertex = [&](float x, float y) {
+    ImDrawVert v{};
+    v.pos = ImVec2(x, y);
+    list.VtxBuffer.push_back(v);
+  };
+  for (float o : {0.0f, 60.0f, 250.0f}) vertex(o, o), vertex(o + 10, o), vertex(o, o + 10);
+  for (ImDrawIdx i = 0; i < 9; ++i) list.IdxBuffer.push_back(i);
   ImDrawCmd a, b;
   a.ClipRect = ImVec4(0, 0, 100, 100);
-  a.ElemCount = 3;
+  a.ElemCount = 6;
   b.ClipRect = ImVec4(200, 200, 300, 300);
-  b.IdxOffset = 3;
+  b.IdxOffset = 6;
   b.ElemCount = 3;
   list.CmdBuffer.push_back(a);
   list.CmdBuffer.push_back(b);
-  const std::vector<ImVec4> rects{ImVec4(50, 50, 120, 70), ImVec4(10, 80, 20, 500)};
+  // The first rectangle meets a's second triangle only, the second a's first only; b meets none.
+  const std::vector<ImVec4> rects{ImVec4(50, 50, 120, 70), ImVec4(5, 5, 20, 500)};
   clipImGuiDrawList(list, rects);
-  // a meets both rectangles, b neither.
   ASSERT_EQ(list.CmdBuffer.Size, 2);
-  for (const ImDrawCmd& c : list.CmdBuffer) EXPECT_EQ(c.IdxOffset, 0u);
-  EXPECT_EQ(list.CmdBuffer[0].ClipRect.x, 50);
-  EXPECT_EQ(list.CmdBuffer[0].ClipRect.z, 100);
-  EXPECT_EQ(list.CmdBuffer[0].ClipRect.w, 70);
-  EXPECT_EQ(list.CmdBuffer[1].ClipRect.y, 80);
-  EXPECT_EQ(list.CmdBuffer[1].ClipRect.w, 100);
+  const ImDrawCmd& first = list.CmdBuffer[0];
+  const ImDrawCmd& second = list.CmdBuffer[1];
+  EXPECT_EQ(first.ClipRect.x, 50);
+  EXPECT_EQ(first.ClipRect.z, 100);
+  EXPECT_EQ(first.ClipRect.w, 70);
+  ASSERT_EQ(first.ElemCount, 3u);
+  EXPECT_EQ(list.IdxBuffer[static_cast<int>(first.IdxOffset)], 3);  // a's second triangle
+  EXPECT_EQ(second.ClipRect.y, 5);
+  EXPECT_EQ(second.ClipRect.w, 100);
+  ASSERT_EQ(second.ElemCount, 3u);
+  EXPECT_EQ(list.IdxBuffer[static_cast<int>(second.IdxOffset)], 0);  // a's first triangle
+  EXPECT_EQ(list.IdxBuffer.Size, 6);
 }
 
 }  // namespace

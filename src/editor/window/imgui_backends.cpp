@@ -77,16 +77,47 @@ void imguiBackendsRenderDrawData(ImDrawData* data, const std::vector<ImVec4>* cl
 }
 
 void clipImGuiDrawList(ImDrawList& list, const std::vector<ImVec4>& rects) {
+  // Triangles whose box misses a rectangle give it no pixel: left out, so a software
+  // rasteriser does not shade and set up the whole panel's text to fill a few words of it.
   ImVector<ImDrawCmd> clipped;
+  ImVector<ImDrawIdx> indices;
   clipped.reserve(list.CmdBuffer.Size);
+  indices.reserve(list.IdxBuffer.Size);
+  const ImDrawVert* vertices = list.VtxBuffer.Data;
+  const unsigned int vertexCount = static_cast<unsigned int>(list.VtxBuffer.Size);
   for (const ImDrawCmd& cmd : list.CmdBuffer)
     for (const ImVec4& r : rects) {
       ImDrawCmd c = cmd;
       c.ClipRect = ImVec4(std::max(cmd.ClipRect.x, r.x), std::max(cmd.ClipRect.y, r.y), std::min(cmd.ClipRect.z, r.z),
                           std::min(cmd.ClipRect.w, r.w));
-      if (c.UserCallback || (c.ClipRect.z > c.ClipRect.x && c.ClipRect.w > c.ClipRect.y)) clipped.push_back(c);
+      if (c.UserCallback) {
+        clipped.push_back(c);
+        continue;
+      }
+      if (!(c.ClipRect.z > c.ClipRect.x && c.ClipRect.w > c.ClipRect.y)) continue;
+      c.IdxOffset = static_cast<unsigned int>(indices.Size);
+      const unsigned int end = std::min(cmd.IdxOffset + cmd.ElemCount, static_cast<unsigned int>(list.IdxBuffer.Size));
+      for (unsigned int k = cmd.IdxOffset; k + 2 < end; k += 3) {
+        const ImDrawIdx* t = list.IdxBuffer.Data + k;
+        float x0 = 1e30f, y0 = 1e30f, x1 = -1e30f, y1 = -1e30f;
+        bool known = true;
+        for (int i = 0; i < 3; ++i) {
+          const unsigned int v = cmd.VtxOffset + t[i];
+          if (v >= vertexCount) {
+            known = false;  // kept as it was: the backend draws what the list says
+            break;
+          }
+          x0 = std::min(x0, vertices[v].pos.x), x1 = std::max(x1, vertices[v].pos.x);
+          y0 = std::min(y0, vertices[v].pos.y), y1 = std::max(y1, vertices[v].pos.y);
+        }
+        if (known && (x1 < c.ClipRect.x || x0 > c.ClipRect.z || y1 < c.ClipRect.y || y0 > c.ClipRect.w)) continue;
+        indices.push_back(t[0]), indices.push_back(t[1]), indices.push_back(t[2]);
+      }
+      c.ElemCount = static_cast<unsigned int>(indices.Size) - c.IdxOffset;
+      if (c.ElemCount > 0) clipped.push_back(c);
     }
   list.CmdBuffer.swap(clipped);
+  list.IdxBuffer.swap(indices);
 }
 
 void imguiBackendsShutdown() { ImGui_ImplOpenGL3_Shutdown(); }

@@ -23,7 +23,8 @@ void imguiBackendsReloadFonts();
 // same clip rectangles and textures (needs a backend with RendererHasVtxOffset).
 void mergeImGuiDrawLists(const ImDrawData& in, ImDrawList& out);
 // Each command of `list` repeated once per rectangle of `rects` that its clip rectangle
-// meets, clipped to it (in order, so each pixel of disjoint rectangles is drawn as before by
-// the commands that reach it, and nothing outside them); commands that meet none are dropped.
+// meets, clipped to it, with only its triangles whose box meets that rectangle (in order, so
+// each pixel of disjoint rectangles is drawn as before by the triangles that reach it, and
+// nothing outside them); commands left with no triangle are dropped. Rewrites the indices.
 void clipImGuiDrawList(ImDrawList& list, const std::vector<ImVec4>& rects);
 }  // namespace kinema
