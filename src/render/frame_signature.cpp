@@ -96,10 +96,8 @@ uint64_t frameSettingsSignature(const FrameDescription& f) {
   }
   d.value(m.deformed ? m.deformed->size() : size_t(0));
   if (m.deformed)
-    for (const DeformedPrimitive& p : *m.deformed) {
-      d.value(p.instance), d.value(p.primitive);
-      d.array(p.positions), d.array(p.normals);
-    }
+    for (const DeformedPrimitive& p : *m.deformed)
+      d.value(p.instance), d.value(p.primitive), d.value(p.positions.size()), d.value(p.normals.size());
   return d.h;
 }
 
@@ -116,6 +114,8 @@ uint64_t frameSignature(const FrameDescription& f) {
     d.value(m.world != nullptr);
     if (m.world) d.array(*m.world);
     d.weights(m.morphWeights);
+    if (m.deformed)
+      for (const DeformedPrimitive& p : *m.deformed) d.array(p.positions), d.array(p.normals);
   }
   return d.h;
 }

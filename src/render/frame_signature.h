@@ -16,8 +16,8 @@ uint64_t frameSignature(const FrameDescription& frame);
 // (the skeleton's and its ghosts' bones, joints and relationship lines, the overlay, and the
 // vertices of meshes posed on the CPU, MeshFrame::posed): camera, viewport, switches, grid,
 // the number of skeleton ghosts, the mesh ghosts, the
-// meshes' joints and morph weights when they are not posed on the CPU, and the vertices of
-// meshes deformed on the CPU (MeshFrame::deformed).
+// meshes' joints and morph weights when they are not posed on the CPU, and how many
+// primitives are deformed on the CPU (MeshFrame::deformed; their vertices are compared).
 uint64_t frameSettingsSignature(const FrameDescription& frame);
 
 }  // namespace kinema

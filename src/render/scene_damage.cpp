@@ -155,6 +155,7 @@ bool SceneDamageJob::run() {
   const uint64_t settings = frameSettingsSignature(f);
   const MeshFrame* meshFrame = f.meshes && f.meshes->renderer ? &f.meshes->frame : nullptr;
   const std::vector<DeformedPrimitive>* posed = meshFrame ? meshFrame->posed : nullptr;
+  const std::vector<DeformedPrimitive>* deformed = meshFrame ? meshFrame->deformed : nullptr;
   // The frame's elements, compared with the kept ones, then kept in their place (assigned,
   // so the snapshot's storage is reused frame after frame).
   static const SkeletonDrawList kNoSkeleton;
@@ -166,8 +167,9 @@ bool SceneDamageJob::run() {
     const std::vector<SkeletonDrawList>& ghosts;
     const OverlayDrawList& overlay;
     const std::vector<DeformedPrimitive>& posed;
+    const std::vector<DeformedPrimitive>& deformed;
   } now{f.skeleton ? *f.skeleton : kNoSkeleton, f.ghosts ? *f.ghosts : kNoGhosts, f.overlay ? *f.overlay : kNoOverlay,
-        posed ? *posed : kNoPosed};
+        posed ? *posed : kNoPosed, deformed ? *deformed : kNoPosed};
   auto keep = [&] {
     last->valid = true;
     last->settings = settings;
@@ -175,15 +177,16 @@ bool SceneDamageJob::run() {
     last->ghosts = now.ghosts;
     last->overlay = now.overlay;
     last->posed = now.posed;
+    last->deformed = now.deformed;
   };
 
   out = view;
   const bool comparable = last->valid && last->settings == settings && f.width > 0 && f.height > 0 &&
-                          (!meshFrame || !meshFrame->gpuDeformers) && (!posed || scene) &&
+                          (!meshFrame || !meshFrame->gpuDeformers) && ((now.posed.empty() && now.deformed.empty()) || scene) &&
                           sameShapeCounts(last->skeleton, now.skeleton) &&
                           last->skeleton.relationships.size() == now.skeleton.relationships.size() &&
                           sameShapeCounts(last->ghosts, now.ghosts) &&
-                          last->posed.size() == now.posed.size();
+                          last->posed.size() == now.posed.size() && last->deformed.size() == now.deformed.size();
   if (!comparable) {
     keep();
     return true;
@@ -217,19 +220,23 @@ bool SceneDamageJob::run() {
   compareLists(oa.screenRects, ob.screenRects, sameScreenRect, [&](const OverlayDrawList::ScreenRect& r) {
     s.addViewPixel(r.min, 2.0 * scale + 1.0), s.addViewPixel(r.max, 2.0 * scale + 1.0);
   });
-  // Meshes posed on the CPU: triangles around the vertices that changed.
+  // Meshes posed or deformed on the CPU: triangles around the vertices that changed.
   bool meshesComparable = true;
-  for (size_t i = 0; i < now.posed.size() && meshesComparable; ++i) {
-    const DeformedPrimitive& before = last->posed[i];
-    const DeformedPrimitive& after = now.posed[i];
-    meshesComparable = before.instance == after.instance && before.primitive == after.primitive &&
-                       after.instance >= 0 && after.instance < static_cast<int>(scene->meshInstances.size());
-    if (!meshesComparable) break;
-    const int mesh = scene->meshInstances[after.instance].mesh;
-    meshesComparable = mesh >= 0 && mesh < static_cast<int>(scene->meshes.size()) && after.primitive >= 0 &&
-                       after.primitive < static_cast<int>(scene->meshes[mesh].primitives.size()) &&
-                       addMovedTriangles(before, after, scene->meshes[mesh].primitives[after.primitive], s);
-  }
+  auto compareMeshes = [&](const std::vector<DeformedPrimitive>& was, const std::vector<DeformedPrimitive>& is) {
+    for (size_t i = 0; i < is.size() && meshesComparable; ++i) {
+      const DeformedPrimitive& before = was[i];
+      const DeformedPrimitive& after = is[i];
+      meshesComparable = before.instance == after.instance && before.primitive == after.primitive &&
+                         after.instance >= 0 && after.instance < static_cast<int>(scene->meshInstances.size());
+      if (!meshesComparable) break;
+      const int mesh = scene->meshInstances[after.instance].mesh;
+      meshesComparable = mesh >= 0 && mesh < static_cast<int>(scene->meshes.size()) && after.primitive >= 0 &&
+                         after.primitive < static_cast<int>(scene->meshes[mesh].primitives.size()) &&
+                         addMovedTriangles(before, after, scene->meshes[mesh].primitives[after.primitive], s);
+    }
+  };
+  compareMeshes(last->posed, now.posed);
+  compareMeshes(last->deformed, now.deformed);
   keep();
   if (!meshesComparable || s.behind) return true;  // the whole view
   if (s.minX > s.maxX) {

@@ -21,7 +21,8 @@ struct SceneSnapshot {
   SkeletonDrawList skeleton;
   std::vector<SkeletonDrawList> ghosts;  // onion-skin skeletons (FrameDescription::ghosts)
   OverlayDrawList overlay;
-  std::vector<DeformedPrimitive> posed;  // MeshFrame::posed, when the meshes were drawn from it
+  std::vector<DeformedPrimitive> posed;     // MeshFrame::posed, when the meshes were drawn from it
+  std::vector<DeformedPrimitive> deformed;  // MeshFrame::deformed (instances with deformers)
 };
 
 // The part of the 3D view (FrameDescription x, y, width, height: framebuffer pixels, rows
@@ -31,10 +32,11 @@ struct SceneSnapshot {
 // one: a bone, joint sphere (of the skeleton or one of its onion-skin ghosts), relationship
 // line, overlay line, handle or screen shape that
 // changed adds its old and new screen bounds; a mesh vertex whose position or normal
-// changed adds the old and new positions of every triangle around it. Anything else
-// (camera, viewport, switches, mesh ghosts, morphs or joints of meshes not posed on the CPU, the
-// vertices of meshes with deformers, a different number of elements, a point behind the
-// camera, deformers run in the vertex shader) redraws the whole view.
+// changed (posed on the CPU, MeshFrame::posed, or deformed there, MeshFrame::deformed) adds
+// the old and new positions of every triangle around it. Anything else (camera, viewport,
+// switches, mesh ghosts, morphs or joints of meshes not posed on the CPU, a different number
+// of elements, a point behind the camera, deformers run in the vertex shader) redraws the
+// whole view.
 // Conservative: bounds are grown by line widths, handle radii and a margin of
 // kSceneDamageMargin pixels, and clipped to the view.
 constexpr int kSceneDamageMargin = 3;
@@ -42,7 +44,7 @@ constexpr int kSceneDamageMargin = 3;
 struct SceneDamageJob {
   const FrameDescription* frame = nullptr;  // the frame about to be drawn
   // The scene the meshes were uploaded from (its triangles' indices), when
-  // frame->meshes->frame.posed is set; may be null otherwise.
+  // frame->meshes->frame.posed or .deformed is set; may be null otherwise.
   const Scene* scene = nullptr;
   SceneSnapshot* last = nullptr;  // in: the picture the view shows; out: `frame`'s
   PixelRect out;                  // the damaged part of the view; empty: nothing changed

@@ -147,5 +147,56 @@ TEST(PartialRedraw, DrawingOnlyTheDamagedRectangleGivesTheWholeFramesPixels) {
   }
 }
 
+// The same with the body deformed on the CPU (a deformer stack's output, MeshFrame::deformed,
+// drawn through the shader path): the head's vertices pushed sideways a little more each
+// frame, as a lattice point dragged there would.
+TEST(PartialRedraw, ADeformedBodyRedrawnInPartGivesTheWholeFramesPixels) {
+  setenv("LIBGL_ALWAYS_SOFTWARE", "1", 0);
+  Result<std::unique_ptr<HeadlessRenderer>> opened = HeadlessRenderer::open(HeadlessBackend::Egl, kWidth, kHeight);
+  ASSERT_TRUE(opened.ok()) << (opened ? "" : opened.error());
+  const Scene scene = makeDefaultCharacterScene();
+  MeshRenderer& meshes = opened.value()->meshes();
+  meshes.setCpuDeformation(true);
+  ASSERT_EQ(meshes.upload(scene), "");
+  SkeletonRenderer renderer;
+  ASSERT_EQ(renderer.init(), "");
+  ViewportTarget partial, whole;
+  SceneSnapshot snapshot;
+  const PixelRect view{0, 0, kWidth, kHeight};
+  for (int step = 0; step < 4; ++step) {
+    SCOPED_TRACE("frame " + std::to_string(step));
+    Frame frame(scene, meshes, 0.0f);
+    frame.description.bones = BoneDisplay::None;
+    std::vector<DeformedPrimitive> deformed = frame.posed;
+    for (DeformedPrimitive& d : deformed)
+      for (glm::vec3& p : d.positions)
+        if (p.y > 1.45f) p.x += 0.01f * static_cast<float>(step);
+    frame.meshes.frame.posed = nullptr;
+    frame.meshes.frame.deformed = &deformed;
+    SceneDamageJob job;
+    job.frame = &frame.description;
+    job.scene = &scene;
+    job.last = &snapshot;
+    ASSERT_TRUE(job.run());
+    if (step > 0) {
+      EXPECT_FALSE(job.out.empty());
+      EXPECT_LT(job.out.area(), view.area() / 4) << "the head's move is a small part of the view";
+    }
+    ASSERT_EQ(partial.begin(kWidth, kHeight, 1), "");
+    if (!job.out.empty()) {
+      clearTo(frame.description, job.out);
+      frame.description.limit = job.out;
+      renderer.draw(frame.description);
+    }
+    const Image changedOnly = readCanvas();
+    partial.resolve();
+    ASSERT_EQ(whole.begin(kWidth, kHeight, 1), "");
+    clearTo(frame.description, view);
+    frame.description.limit = PixelRect{};
+    renderer.draw(frame.description);
+    EXPECT_EQ(test::differingPixels(changedOnly, readCanvas(), 0), 0);
+  }
+}
+
 }  // namespace
 }  // namespace kinema
