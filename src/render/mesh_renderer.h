@@ -22,10 +22,11 @@ struct MeshFrame {
   // instances whose deformer stack is active), world space. Those are drawn from these
   // positions and normals, streamed each frame, instead of being morphed and skinned here.
   const std::vector<DeformedPrimitive>* deformed = nullptr;
-  // Optional, for the CPU path (cpuDeformation()): every instance already morphed and
-  // skinned by the caller (SceneDeformationJob with `world` and `morphWeights`, no
-  // deformers), world space; draw() uploads these instead of running the job itself, so a
-  // caller that needs the vertices too (SceneDamageJob) deforms once. Ignored elsewhere.
+  // Optional, for the CPU path (drawsPosed()): every instance already morphed, skinned and
+  // deformed by the caller (SceneDeformationJob with `world`, `morphWeights` and the
+  // frame's deformer stacks), world space; draw() uploads these instead of running the job
+  // itself, so a caller that needs the vertices too (SceneDamageJob) deforms once, and
+  // deformed bodies take the CPU path too. Ignored elsewhere.
   const std::vector<DeformedPrimitive>* posed = nullptr;
   // Optional, per instance (sampleDeformerStacks): stacks the vertex shader runs after
   // skinning, those for which axisStackOnGpu holds (others are ignored here: deform them on
@@ -107,6 +108,9 @@ class MeshRenderer {
   // weight heat view and primitives without normals always take the shader's path.
   void setCpuDeformation(bool on) { cpuDeformation_ = on; }
   bool cpuDeformation() const { return cpuDeformation_; }
+  // Whether draw() draws from MeshFrame::posed when given one (and no weight view): the CPU
+  // path with every uploaded primitive carrying normals. Meaningful after upload().
+  bool drawsPosed() const { return cpuEligible(); }
 
   // Most morph targets a primitive blends (more are ignored, with a warning from upload()).
   static constexpr int kMaxMorphTargets = 32;

@@ -463,9 +463,13 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         // reference path), drawn as they come out.
         std::vector<DeformedPrimitive> cpuDeformed;
         std::vector<DeformerStack> gpuStacks;  // per instance: what the vertex shader deforms
+        // On a software rasteriser every mesh is morphed, skinned and deformed here, once
+        // (`posed`): drawn from these vertices, and compared with the last frame's to find
+        // what changed on screen. Elsewhere the deformer stacks alone (`cpuDeformed`).
+        const bool cpuPosed = !meshes.empty() && meshes.drawsPosed() && !state.view.showWeights;
+        std::vector<DeformerStack> stacks;
         if (!meshes.empty() && !state.doc.scene().deformers.empty()) {
-          std::vector<DeformerStack> stacks =
-              sampleDeformerStacks(state.doc.scene(), state.hasMotion() ? state.clip : -1, state.time);
+          stacks = sampleDeformerStacks(state.doc.scene(), state.hasMotion() ? state.clip : -1, state.time);
           previewLatticeMove(state, state.world(), stacks);  // a running G on lattice points
           // With the shader deforming (a hardware GPU), bend / twist / taper stacks run in
           // the vertex shader; the rest, and everything on llvmpipe, on the CPU.
@@ -474,7 +478,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
             for (size_t i = 0; i < stacks.size(); ++i)
               if (axisStackOnGpu(stacks[i])) std::swap(gpuStacks[i], stacks[i]);
           }
-          if (anyDeformerActive(stacks)) {
+          if (anyDeformerActive(stacks) && !cpuPosed) {
             SceneDeformationJob deformJob;
             deformJob.scene = &state.doc.scene();
             deformJob.world = &state.world();
@@ -486,14 +490,13 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
           }
         }
         meshDraw.frame.deformed = &cpuDeformed;
-        // On the CPU path the meshes are morphed and skinned here, once: drawn from these
-        // vertices, and compared with the last frame's to find what changed on screen.
         std::vector<DeformedPrimitive> posed;
-        if (!meshes.empty() && meshes.cpuDeformation() && !state.view.showWeights && cpuDeformed.empty()) {
+        if (cpuPosed) {
           SceneDeformationJob poseJob;
           poseJob.scene = &state.doc.scene();
           poseJob.world = &state.world();
           poseJob.morphWeights = &morphWeights;
+          if (anyDeformerActive(stacks)) poseJob.deformers = &stacks;  // sampled, with a running G's preview
           poseJob.out = &posed;
           if (poseJob.run()) meshDraw.frame.posed = &posed;
         }
