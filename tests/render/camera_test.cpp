@@ -1,6 +1,8 @@
 // Orbit camera and framing math (no GL context needed).
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <cmath>
+
 #include "render/camera.h"
 #include "test_support.h"
 
@@ -78,6 +80,20 @@ TEST(OrbitCamera, FramingDistanceIsTheClosedFormForASphere) {
   c.frame(b, 1.0f, 0.85f);
   const double expected = std::sqrt(3.0) / std::sin(0.85 * 17.5 * 3.14159265358979 / 180.0);
   EXPECT_NEAR(c.distance, expected, 1e-4);
+}
+
+TEST(SteadySceneRadius, RoundsUpToAPowerOfOneAndAQuarterAndHoldsThroughSmallMoves) {
+  for (float r : {0.01f, 0.3f, 0.95f, 1.0f, 1.7f, 12.0f, 480.0f}) {
+    const float s = steadySceneRadius(r);
+    EXPECT_GE(s, r * (1.0f - 1e-6f)) << r;
+    EXPECT_LT(s, r * 1.25f * (1.0f + 1e-6f)) << r;
+    const double k = std::log(double(s)) / std::log(1.25);  // a whole power of 1.25
+    EXPECT_NEAR(k, std::round(k), 1e-4) << r;
+  }
+  // A pose that moves a little keeps the radius (unless it crosses a step).
+  EXPECT_EQ(steadySceneRadius(1.10f), steadySceneRadius(1.12f));
+  EXPECT_EQ(steadySceneRadius(0.0f), 1e-3f);
+  EXPECT_EQ(steadySceneRadius(std::nanf("")), 1e-3f);
 }
 
 TEST(GridCellSize, StepsAreOneTwoAndAHalfOrFiveTimesAPowerOfTen) {
