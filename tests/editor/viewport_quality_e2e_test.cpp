@@ -79,7 +79,10 @@ TEST_F(ViewportQualityE2e, WhileRotatingOnlyTheChangedPartIsDrawnAndTheWindowEqu
   ASSERT_TRUE(changed.is_object() && whole.is_object());
   EXPECT_FALSE(bool(whole["window_redraw"]["changed_only"]));
   EXPECT_EQ(whole["window_redraw"]["pixels"].get<long long>(), pixelsInWindow);
-  EXPECT_EQ(differingPixels(loadImageOrFail(changedShot), loadImageOrFail(wholeShot), 0), 0);
+  // Kept in the window's back buffer (Mesa's GLX): the same pixels. Kept in a copy: blended
+  // pixels may round one step differently in the copy's colour format.
+  const bool inBackBuffer = changed["window_redraw"]["kept_in"] == "back_buffer";
+  EXPECT_EQ(differingPixels(loadImageOrFail(changedShot), loadImageOrFail(wholeShot), inBackBuffer ? 0 : 1), 0);
 }
 
 }  // namespace

@@ -14,6 +14,7 @@ enum class WindowRedraw { Auto, Whole, Changed };
 // What the window did for its last frame (--dump-state "window_redraw").
 struct WindowRedrawInfo {
   bool changedOnly = false;  // drawn by the Changed method (else the whole window)
+  bool inBackBuffer = false; // Changed: the last frame kept in the window's back buffer (else in a copy)
   int rectangles = 0;        // rectangles drawn again (0: nothing changed)
   long long pixels = 0;      // pixels in them (the whole window's when drawn whole)
 };

@@ -436,7 +436,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         glClearColor(0.235f, 0.235f, 0.235f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         imguiBackendsRenderDrawData(ImGui::GetDrawData());
-        state.windowRedraw = {false, 1, static_cast<long long>(fbw) * fbh};
+        state.windowRedraw = {false, false, 1, static_cast<long long>(fbw) * fbh};
       } else {
         if (meshes.needsUpload(state.doc.scene()) || state.doc.meshRevision() != uploadedMeshRevision) {
           uploadedMeshRevision = state.doc.meshRevision();
@@ -626,7 +626,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
           drawView(PixelRect{});
           mark("3D view: resolve, copy to the window");
           imguiBackendsRenderDrawData(ImGui::GetDrawData());
-          state.windowRedraw = {false, 1, static_cast<long long>(fbw) * fbh};
+          state.windowRedraw = {false, false, 1, static_cast<long long>(fbw) * fbh};
         } else {
           // Where this frame differs from the canvas: the panels' changed triangles, and in
           // the 3D view what SceneDamageJob finds (all of it when it shows something else now).
@@ -678,7 +678,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
           mark("3D view: resolve, copy to the window");
           if (!rects.empty()) imguiBackendsRenderDrawData(ImGui::GetDrawData(), &clips);
           mark("ImGui: draw the panels");
-          state.windowRedraw = {true, static_cast<int>(rects.size()), pixels};
+          state.windowRedraw = {true, backBufferKept, static_cast<int>(rects.size()), pixels};
           if (!backBufferKept) {
             canvas.resolve();  // one sample: nothing to resolve, kept for the next frame
             canvas.present(0, 0, 0);

@@ -212,6 +212,9 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
                      {"height", s.viewportRect.w}};
   out["viewport_render"] = {{"samples", s.viewportRender.samples}, {"from_cache", s.viewportRender.fromCache}};
   out["window_redraw"] = {{"changed_only", s.windowRedraw.changedOnly},
+                          {"kept_in", !s.windowRedraw.changedOnly ? "none"
+                                      : s.windowRedraw.inBackBuffer ? "back_buffer"
+                                                                    : "copy"},
                           {"rectangles", s.windowRedraw.rectangles},
                           {"pixels", s.windowRedraw.pixels}};
   out["playback"] = {{"clip", s.hasMotion() ? s.clip : -1}, {"time", s.time}, {"playing", s.playing}};
