@@ -16,6 +16,7 @@
 #include "io/kinema_file.h"
 #include "io/scene.h"
 #include "skin/default_character_scene.h"
+#include "cli/simulate_cli_fixture.h"
 #include "test_support.h"
 
 namespace kinema::test {
@@ -49,21 +50,7 @@ Scene crowdFile(int members) {
   return scene;
 }
 
-class CrowdCli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = makeTempDir();
-    ASSERT_FALSE(dir_.empty());
-  }
-  void TearDown() override { std::system(("rm -rf '" + dir_ + "'").c_str()); }
-  std::string save(const Scene& scene, const std::string& name) {
-    const std::string path = dir_ + "/" + name;
-    EXPECT_EQ(saveKinemaFile(path, scene), "");
-    return path;
-  }
-  int kinema(const std::string& args) { return runCommand(std::string(KINEMA_BINARY) + " simulate " + args, &out_, &err_); }
-  bool exists(const std::string& path) { return std::ifstream(path).good(); }
-  std::string dir_, out_, err_;
+class CrowdCli : public test::SimulateCliFixture {
 };
 
 TEST_F(CrowdCli, AKinemaOutGetsAClipPerMemberThatReplaysTheCrowd) {

@@ -14,6 +14,7 @@
 #include "io/kinema_file.h"
 #include "io/scene.h"
 #include "sim/spring_bones.h"
+#include "cli/simulate_cli_fixture.h"
 #include "test_support.h"
 
 namespace kinema::test {
@@ -62,22 +63,9 @@ Scene tailedCharacter(bool withRagdoll) {
   return scene;
 }
 
-class SimulateCli : public ::testing::Test {
+class SimulateCli : public test::SimulateCliFixture {
  protected:
-  void SetUp() override {
-    dir_ = makeTempDir();
-    ASSERT_FALSE(dir_.empty());
-  }
-  void TearDown() override { std::system(("rm -rf '" + dir_ + "'").c_str()); }
-  std::string save(const Scene& scene, const std::string& name) {
-    const std::string path = dir_ + "/" + name;
-    EXPECT_EQ(saveKinemaFile(path, scene), "");
-    return path;
-  }
-  int kinema(const std::string& args) { return runCommand(std::string(KINEMA_BINARY) + " simulate " + args, &out_, &err_); }
   static int lines(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
-  bool exists(const std::string& path) { return std::ifstream(path).good(); }
-  std::string dir_, out_, err_;
 };
 
 TEST_F(SimulateCli, EveryFrameKeysReplayTheSpringChain) {
