@@ -7,6 +7,7 @@
 
 #include "io/kinema_file.h"
 #include "test_support.h"
+#include "io/kinema_refusals.h"
 
 namespace kinema {
 namespace {
@@ -107,14 +108,7 @@ TEST(KinemaCrowds, BadValuesAreOneLineNamingTheJsonPath) {
       {with("debug_member", 50), "simulation.crowds[0].debug_member: must be 0 to 49"},
       {with("cruise_speed", 9), "simulation.crowds[0]: crowd 'crowd': the cruise speed must not pass the max speed"},
   };
-  for (const auto& [simulation, expected] : cases) {
-    nlohmann::ordered_json j = base;
-    j["simulation"] = simulation;
-    Result<Scene> r = parseKinemaJson(j.dump(), "bad.kinema");
-    ASSERT_FALSE(r) << expected;
-    EXPECT_EQ(r.error().rfind("bad.kinema: " + expected, 0), 0u) << r.error();
-    EXPECT_EQ(r.error().find('\n'), std::string::npos) << r.error();
-  }
+  for (const auto& [simulation, expected] : cases) test::expectSimulationRefused(base, simulation, expected);
 }
 
 }  // namespace

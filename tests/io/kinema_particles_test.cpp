@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/kinema_file.h"
+#include "io/kinema_refusals.h"
 
 namespace kinema {
 namespace {
@@ -147,14 +148,7 @@ TEST(KinemaParticles, BadValuesAreOneLineNamingTheJsonPath) {
       {system("seed", -3), "simulation.particles[0].seed: expected a whole number"},
       {system("max_particles", 0), "simulation.particles[0].max_particles: expected a whole number 1 to 4194304"},
   };
-  for (const auto& [simulation, expected] : cases) {
-    nlohmann::ordered_json j = base;
-    j["simulation"] = simulation;
-    Result<Scene> r = parseKinemaJson(j.dump(), "bad.kinema");
-    ASSERT_FALSE(r) << expected;
-    EXPECT_EQ(r.error().rfind("bad.kinema: " + expected, 0), 0u) << r.error();
-    EXPECT_EQ(r.error().find('\n'), std::string::npos) << r.error();
-  }
+  for (const auto& [simulation, expected] : cases) test::expectSimulationRefused(base, simulation, expected);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include "io/kinema_file.h"
 #include "test_support.h"
+#include "io/kinema_refusals.h"
 
 namespace kinema {
 namespace {
@@ -155,14 +156,7 @@ TEST(KinemaSimulation, BadValuesAreOneLineNamingTheJsonPath) {
       {{{"ragdolls", {{{"root", "Hips"}}, {{"root", "Tail2"}, {"name", "b"}}}}},
        "simulation: ragdoll 'b': its joints overlap ragdoll ''"},
   };
-  for (const Case& c : cases) {
-    nlohmann::ordered_json j = base;
-    j["simulation"] = c.simulation;
-    Result<Scene> r = parseKinemaJson(j.dump(), "bad.kinema");
-    ASSERT_FALSE(r) << c.expected;
-    EXPECT_EQ(r.error().rfind("bad.kinema: " + c.expected, 0), 0u) << r.error();
-    EXPECT_EQ(r.error().find('\n'), std::string::npos) << r.error();
-  }
+  for (const Case& c : cases) test::expectSimulationRefused(base, c.simulation, c.expected);
 }
 
 TEST(KinemaSimulation, SavingRefusesSettingsThatDoNotFit) {
