@@ -29,25 +29,15 @@ start='{"frame": 1, "type": "key", "key": "KP_1"}
 printf '%s\n{"frame": 8, "type": "command", "id": "lattice.edit"}\n{"frame": 9, "type": "command", "id": "lattice.select_all"}\n' \
   "$start" > "$tmp/probe.jsonl"
 run "$tmp/probe.jsonl" --dump-state "$tmp/probe.json" > /dev/null
-python3 - "$tmp/probe.json" "$start" > "$tmp/drag.jsonl" <<'PY'
+python3 - "$tmp/probe.json" "$start" "$root/bench/editor" > "$tmp/drag.jsonl" <<'PY'
 import json, math, sys
+sys.path.insert(0, sys.argv[3])
+import dump_camera  # bench/editor/dump_camera.py
 d = json.load(open(sys.argv[1]))
 edit = d["lattice_edit"]
 assert edit.get("points") == 27, f"no 3x3x3 lattice in edit mode: {edit}"
 point = 2 + 3 * (1 + 3 * 2)  # index(2, 1, 2): i fastest
-c, vp = d["camera"], d["viewport"]
-eye, target = c["eye"], c["target"]
-sub = lambda a, b: [x - y for x, y in zip(a, b)]
-dot = lambda a, b: sum(x * y for x, y in zip(a, b))
-cross = lambda a, b: [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
-unit = lambda a: [x / math.sqrt(dot(a, a)) for x in a]
-forward = unit(sub(target, eye))
-right = unit(cross(forward, [0.0, 1.0, 0.0]))
-up = cross(right, forward)
-p = sub(edit["selected_positions"][point], eye)
-depth, half = dot(p, forward), math.tan(math.radians(c["fov_y"]) / 2)
-x = vp["x"] + (dot(p, right) / (depth * half * vp["width"] / vp["height"]) * 0.5 + 0.5) * vp["width"]
-y = vp["y"] + (0.5 - dot(p, up) / (depth * half) * 0.5) * vp["height"]
+x, y = dump_camera.pixel(d, edit["selected_positions"][point])
 print(sys.argv[2])
 events = [{"frame": 8, "type": "command", "id": "lattice.edit"},
           {"frame": 9, "type": "mouse_move", "x": round(x, 2), "y": round(y, 2)},

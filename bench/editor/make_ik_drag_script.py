@@ -10,6 +10,8 @@ import json
 import math
 import sys
 
+import dump_camera  # bench/editor/dump_camera.py, beside this script
+
 # The loop's pixels are for a hand-to-fingertip bone 40.66 px long (the 1280x800 view) and
 # scale with it; 600 frames, one mouse move each.
 LOOP_BONE_PIXELS = 40.66
@@ -27,22 +29,8 @@ def loop_offsets():
 
 
 def project(dump, name):
-    c, vp = dump["camera"], dump["viewport"]
-    eye, target = c["eye"], c["target"]
-    sub = lambda a, b: [x - y for x, y in zip(a, b)]
-    dot = lambda a, b: sum(x * y for x, y in zip(a, b))
-    cross = lambda a, b: [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
-    unit = lambda a: [x / math.sqrt(dot(a, a)) for x in a]
-    forward = unit(sub(target, eye))
-    right = unit(cross(forward, [0.0, 1.0, 0.0]))
-    up = cross(right, forward)
     joint = next(j for j in dump["joints"] if j["name"] == name)
-    p = sub(joint["world_position"], eye)
-    depth = dot(p, forward)
-    half = math.tan(math.radians(c["fov_y"]) / 2)
-    nx = dot(p, right) / (depth * half * vp["width"] / vp["height"])
-    ny = dot(p, up) / (depth * half)
-    return vp["x"] + (nx * 0.5 + 0.5) * vp["width"], vp["y"] + (0.5 - ny * 0.5) * vp["height"]
+    return dump_camera.pixel(dump, joint["world_position"])
 
 
 def main():
