@@ -112,8 +112,8 @@ void packJointTexels(const glm::mat4& m, float* out) {
 MeshRenderer::~MeshRenderer() {
   release();
   if (!program_.id()) return;  // init() never succeeded: no GL objects (and maybe no GL loaded)
-  const GLuint buffers[] = {jointBuffer_, feedbackBuffer_, emptyBuffer_, ghostBuffer_, cpuBuffer_};
-  glDeleteBuffers(5, buffers);
+  const GLuint buffers[] = {jointBuffer_, feedbackBuffer_, emptyBuffer_, ghostBuffer_, cpuBuffer_, cullIndices_};
+  glDeleteBuffers(6, buffers);
   const GLuint textures[] = {jointTexture_, emptyTexture_, ghostTexture_};
   glDeleteTextures(3, textures);
   glDeleteFramebuffers(1, &feedbackFbo_);
@@ -159,6 +159,7 @@ std::string MeshRenderer::init() {
   glBindBuffer(GL_TEXTURE_BUFFER, 0);
   glGenBuffers(1, &feedbackBuffer_);
   glGenBuffers(1, &cpuBuffer_);
+  glGenBuffers(1, &cullIndices_);
   cpuDeformation_ = softwareRasterizer();
   // Draws need a complete framebuffer even with the rasterizer off, and a headless context
   // has none of its own: deform() binds this 1x1 one.
@@ -520,7 +521,7 @@ void MeshRenderer::uploadCpuScratch() {
                GL_STREAM_DRAW);
 }
 
-void MeshRenderer::drawInstancesCpu(const MeshFrame& frame, const CpuPose& pose) {
+void MeshRenderer::drawInstancesCpu(const MeshFrame& frame, const CpuPose& pose, const ScreenRegion* region) {
   const glm::mat4 identity(1.0f);
   const glm::mat3 identity3(1.0f);
   for (size_t i = 0; i < scene_->meshInstances.size() && i < pose.size(); ++i) {
@@ -544,12 +545,29 @@ void MeshRenderer::drawInstancesCpu(const MeshFrame& frame, const CpuPose& pose)
       const size_t bytes = static_cast<size_t>(pose[i][p.primitive]) * sizeof(float);
       glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), reinterpret_cast<void*>(bytes));
       glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), reinterpret_cast<void*>(bytes + 3 * sizeof(float)));
-      glDrawElements(GL_TRIANGLES, p.indexCount, GL_UNSIGNED_INT, nullptr);
+      if (region && region->culls()) {
+        // A partial redraw: the triangles that may reach the limit (screen_culling.h), from
+        // their own element buffer; the VAO's own one is put back for the next frame.
+        cullScratch_.clear();
+        appendTrianglesInRegion(*region, &cpuScratch_[static_cast<size_t>(pose[i][p.primitive])], 6,
+                                static_cast<size_t>(p.vertexCount), scene_->meshes[inst.mesh].primitives[p.primitive].indices,
+                                cullScratch_);
+        if (!cullScratch_.empty()) {
+          glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, cullIndices_);
+          glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(cullScratch_.size() * sizeof(uint32_t)),
+                       cullScratch_.data(), GL_STREAM_DRAW);
+          glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(cullScratch_.size()), GL_UNSIGNED_INT, nullptr);
+        }
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, p.indices);
+      } else {
+        glDrawElements(GL_TRIANGLES, p.indexCount, GL_UNSIGNED_INT, nullptr);
+      }
     }
   }
 }
 
-void MeshRenderer::draw(const MeshFrame& frame, const glm::mat4& viewProjection, const glm::mat4& view) {
+void MeshRenderer::draw(const MeshFrame& frame, const glm::mat4& viewProjection, const glm::mat4& view,
+                        const ScreenRegion* region) {
   if (!scene_ || !frame.world || primitives_.empty()) return;
   // Frames with an active deformer stack take the shader path with those primitives streamed
   // (bindCpuDeformed): the whole-scene CPU path below knows only morphs and skinning.
@@ -563,7 +581,7 @@ void MeshRenderer::draw(const MeshFrame& frame, const glm::mat4& viewProjection,
       glUniform1i(shading_->uniform("uGhost"), 0);
       glEnable(GL_DEPTH_TEST);
       glDisable(GL_CULL_FACE);
-      drawInstancesCpu(frame, cpuPose_);
+      drawInstancesCpu(frame, cpuPose_, region);
       unbindMeshDrawState();
       return;
     }

@@ -7,6 +7,7 @@
 #include "core/math.h"
 #include "io/scene.h"
 #include "render/camera.h"
+#include "render/screen_culling.h"
 #include "render/shader_program.h"
 #include "skin/scene_deformation.h"
 
@@ -80,7 +81,10 @@ class MeshRenderer {
   bool needsUpload(const Scene& scene) const;
 
   // Draws every mesh instance into the bound framebuffer (depth test on, both faces lit).
-  void draw(const MeshFrame& frame, const glm::mat4& viewProjection, const glm::mat4& view);
+  // `region` (optional; its viewProjection the same as here): a partial redraw, where the
+  // CPU-posed path leaves out triangles that cannot reach region->limit (screen_culling.h).
+  void draw(const MeshFrame& frame, const glm::mat4& viewProjection, const glm::mat4& view,
+            const ScreenRegion* region = nullptr);
 
   // Onion-skin ghosts over what the framebuffer holds: each ghost is depth-tested against
   // the scene and blended once per pixel (its nearest surface: a depth-only pass, then a
@@ -140,7 +144,7 @@ class MeshRenderer {
   using CpuPose = std::vector<std::vector<long long>>;  // [instance][primitive]
   bool appendCpuPose(const MeshFrame& frame, CpuPose& pose);
   void uploadCpuScratch();
-  void drawInstancesCpu(const MeshFrame& frame, const CpuPose& pose);
+  void drawInstancesCpu(const MeshFrame& frame, const CpuPose& pose, const ScreenRegion* region = nullptr);
   bool cpuEligible() const;
   // The frame's CPU-deformed primitive for (instance, primitive of the mesh), or null.
   static const DeformedPrimitive* cpuDeformed(const MeshFrame& frame, int instance, const GpuPrimitive& p);
@@ -175,6 +179,8 @@ class MeshRenderer {
   bool cpuDeformation_ = false;
   bool allNormals_ = true;  // every uploaded primitive has its own normals
   GLuint cpuBuffer_ = 0;
+  GLuint cullIndices_ = 0;  // a partial redraw's triangles (drawInstancesCpu)
+  std::vector<uint32_t> cullScratch_;
   std::vector<float> cpuScratch_;
   std::vector<DeformedPrimitive> cpuDeformed_;
   CpuPose cpuPose_;

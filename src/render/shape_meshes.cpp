@@ -1,6 +1,8 @@
 #include "render/shape_meshes.h"
 
 #include <algorithm>
+#include <array>
+#include <map>
 
 namespace kinema {
 
@@ -54,6 +56,23 @@ ShapeMesh makeSphere(int slices, int stacks) {
     }
   }
   return m;
+}
+
+IndexedShapeMesh weldVertices(const ShapeMesh& mesh) {
+  IndexedShapeMesh out;
+  std::map<std::array<float, 6>, unsigned int> seen;  // +0 and -0 compare equal, as they draw alike
+  out.indices.reserve(mesh.positions.size());
+  for (size_t i = 0; i < mesh.positions.size(); ++i) {
+    const glm::vec3 &p = mesh.positions[i], &n = mesh.normals[i];
+    const auto key = std::array<float, 6>{p.x + 0.0f, p.y + 0.0f, p.z + 0.0f, n.x + 0.0f, n.y + 0.0f, n.z + 0.0f};
+    const auto [at, added] = seen.emplace(key, static_cast<unsigned int>(out.positions.size()));
+    if (added) {
+      out.positions.push_back(p);
+      out.normals.push_back(n);
+    }
+    out.indices.push_back(at->second);
+  }
+  return out;
 }
 
 }  // namespace kinema

@@ -12,6 +12,16 @@ struct ShapeMesh {
   int vertexCount() const { return static_cast<int>(positions.size()); }
 };
 
+// The same triangles with each distinct (position, normal) pair stored once and referenced by
+// index, in the same order: a rasteriser then shades each corner once instead of once per
+// triangle (a 16 x 10 sphere: 146 vertices instead of 864). Pairs are merged only when equal.
+struct IndexedShapeMesh {
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;
+  std::vector<unsigned int> indices;  // three per triangle, into positions / normals
+};
+IndexedShapeMesh weldVertices(const ShapeMesh& mesh);
+
 // Blender's octahedral bone in bone space: head at the origin, tail at (0, 1, 0), the
 // square waist at y = 0.1 with corners (+-0.1, 0.1, +-0.1). Scaling by the bone's length
 // keeps Blender's proportions. 8 flat faces, counter-clockwise seen from outside.

@@ -73,11 +73,13 @@ bool SkeletonDrawJob::run(SkeletonDrawList& out) const {
   }
 
   // Joint radius: a tenth of the shortest bone touching the joint (Blender's proportion),
-  // capped by the skeleton's size so tiny or huge bones stay readable.
+  // capped by the skeleton's size so tiny or huge bones stay readable. The size is taken in
+  // steps (steadySceneRadius), so a pose that moves a hand leaves the other joints' spheres
+  // as they were (and a partial redraw to the part that moved: SceneDamageJob).
   Bounds shownBounds;
   for (int i = 0; i < n; ++i)
     if (shown(i)) shownBounds.add(pos(i));
-  const float size = std::max(shownBounds.radius(), 1e-3f);
+  const float size = steadySceneRadius(shownBounds.radius());
   std::vector<float> shortest(n, 0.0f);
   for (int i = 0; i < n; ++i) {
     const int p = drawnParent[i];

@@ -32,6 +32,7 @@ SkeletonRenderer::~SkeletonRenderer() {
   for (ShapeBuffers* s : {&bone_, &sphere_, &ghostBone_, &ghostSphere_}) {
     if (s->vao) glDeleteVertexArrays(1, &s->vao);
     if (s->vertices) glDeleteBuffers(1, &s->vertices);
+    if (s->indices) glDeleteBuffers(1, &s->indices);
     if (s->instances) glDeleteBuffers(1, &s->instances);
   }
   if (lineVao_) glDeleteVertexArrays(1, &lineVao_);
@@ -62,17 +63,24 @@ std::string SkeletonRenderer::init() {
   return {};
 }
 
-void SkeletonRenderer::createShape(ShapeBuffers& shape, const ShapeMesh& mesh) {
-  // Interleaved position + normal per vertex; a second buffer holds per-instance matrix + colour.
+void SkeletonRenderer::createShape(ShapeBuffers& shape, const ShapeMesh& triangles) {
+  // Interleaved position + normal per vertex, indexed; a second buffer holds per-instance matrix + colour.
+  const IndexedShapeMesh mesh = weldVertices(triangles);
   std::vector<float> data;
   data.reserve(mesh.positions.size() * 6);
-  for (int i = 0; i < mesh.vertexCount(); ++i)
+  for (size_t i = 0; i < mesh.positions.size(); ++i)
     for (const glm::vec3& v : {mesh.positions[i], mesh.normals[i]}) data.insert(data.end(), {v.x, v.y, v.z});
-  shape.vertexCount = mesh.vertexCount();
+  shape.indexCount = static_cast<int>(mesh.indices.size());
+  shape.boxMin = shape.boxMax = mesh.positions.empty() ? glm::vec3(0.0f) : mesh.positions[0];
+  for (const glm::vec3& p : mesh.positions) shape.boxMin = glm::min(shape.boxMin, p), shape.boxMax = glm::max(shape.boxMax, p);
   glGenVertexArrays(1, &shape.vao);
   glGenBuffers(1, &shape.vertices);
+  glGenBuffers(1, &shape.indices);
   glGenBuffers(1, &shape.instances);
   glBindVertexArray(shape.vao);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, shape.indices);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(unsigned int)),
+               mesh.indices.data(), GL_STATIC_DRAW);
   glBindBuffer(GL_ARRAY_BUFFER, shape.vertices);
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(), GL_STATIC_DRAW);
   glEnableVertexAttribArray(0);
@@ -105,10 +113,22 @@ void SkeletonRenderer::uploadInstances(ShapeBuffers& shape, const std::vector<gl
 }
 
 void SkeletonRenderer::drawInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices,
-                                     const std::vector<glm::vec4>& colors) {
-  if (matrices.empty()) return;
-  uploadInstances(shape, matrices, colors);
-  glDrawArraysInstanced(GL_TRIANGLES, 0, shape.vertexCount, static_cast<GLsizei>(matrices.size()));
+                                     const std::vector<glm::vec4>& colors, const ScreenRegion& region) {
+  const std::vector<glm::mat4>* drawn = &matrices;
+  const std::vector<glm::vec4>* drawnColors = &colors;
+  if (region.culls()) {
+    culledMatrices_.clear();
+    culledColors_.clear();
+    for (size_t i = 0; i < matrices.size() && i < colors.size(); ++i)
+      if (region.boxMayCover(matrices[i], shape.boxMin, shape.boxMax)) {
+        culledMatrices_.push_back(matrices[i]);
+        culledColors_.push_back(colors[i]);
+      }
+    drawn = &culledMatrices_, drawnColors = &culledColors_;
+  }
+  if (drawn->empty()) return;
+  uploadInstances(shape, *drawn, *drawnColors);
+  glDrawElementsInstanced(GL_TRIANGLES, shape.indexCount, GL_UNSIGNED_INT, nullptr, static_cast<GLsizei>(drawn->size()));
 }
 
 void SkeletonRenderer::drawGrid(const FrameDescription& frame, const glm::mat4& viewProjection) {
@@ -166,7 +186,8 @@ void SkeletonRenderer::drawGhosts(const std::vector<SkeletonDrawList>& ghosts, c
   for (int k = 0; k < 2; ++k) {
     if (ghostMatrices_[k].empty()) continue;
     glBindVertexArray(shapes[k]->vao);
-    glDrawArraysInstanced(GL_TRIANGLES, 0, shapes[k]->vertexCount, static_cast<GLsizei>(ghostMatrices_[k].size()));
+    glDrawElementsInstanced(GL_TRIANGLES, shapes[k]->indexCount, GL_UNSIGNED_INT, nullptr,
+                            static_cast<GLsizei>(ghostMatrices_[k].size()));
   }
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
@@ -208,9 +229,12 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
   const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
   const glm::mat4 view = frame.camera.view();
   const glm::mat4 viewProjection = frame.camera.projection(aspect) * view;
+  // A partial redraw leaves out what cannot reach the scissor box (screen_culling.h).
+  const ScreenRegion region{viewProjection, viewRect, limited ? box : PixelRect{}};
   if (frame.showGrid) drawGrid(frame, viewProjection);
   mark("3D view: grid");
-  if (frame.meshes && frame.meshes->renderer) frame.meshes->renderer->draw(frame.meshes->frame, viewProjection, view);
+  if (frame.meshes && frame.meshes->renderer)
+    frame.meshes->renderer->draw(frame.meshes->frame, viewProjection, view, &region);
   mark("3D view: mesh");
   if (frame.meshes && frame.meshes->renderer && frame.meshGhosts && !frame.meshGhosts->empty())
     frame.meshes->renderer->drawGhosts(*frame.meshGhosts, viewProjection, view);
@@ -227,15 +251,15 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
       glClear(GL_DEPTH_BUFFER_BIT);
       scissorForClears(false);
       glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-      drawInstances(bone_, frame.skeleton->boneMatrices, frame.skeleton->boneColors);
-      drawInstances(sphere_, frame.skeleton->jointMatrices, frame.skeleton->jointColors);
+      drawInstances(bone_, frame.skeleton->boneMatrices, frame.skeleton->boneColors, region);
+      drawInstances(sphere_, frame.skeleton->jointMatrices, frame.skeleton->jointColors, region);
       glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
       glDepthFunc(GL_LEQUAL);
       glEnable(GL_BLEND);
       glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     }
-    drawInstances(bone_, frame.skeleton->boneMatrices, frame.skeleton->boneColors);
-    drawInstances(sphere_, frame.skeleton->jointMatrices, frame.skeleton->jointColors);
+    drawInstances(bone_, frame.skeleton->boneMatrices, frame.skeleton->boneColors, region);
+    drawInstances(sphere_, frame.skeleton->jointMatrices, frame.skeleton->jointColors, region);
     if (xray) {
       glDisable(GL_BLEND);
       glDepthFunc(GL_LESS);

@@ -6,6 +6,7 @@
 #include "render/grid_lines.h"
 #include "render/overlay_renderer.h"
 #include "render/pixel_rect.h"
+#include "render/screen_culling.h"
 #include "render/shader_program.h"
 #include "render/shape_meshes.h"
 #include "render/skeleton_draw_list.h"
@@ -70,11 +71,14 @@ class SkeletonRenderer {
 
  private:
   struct ShapeBuffers {
-    GLuint vao = 0, vertices = 0, instances = 0;
-    int vertexCount = 0;
+    GLuint vao = 0, vertices = 0, indices = 0, instances = 0;
+    int indexCount = 0;  // welded (weldVertices): each corner shaded once per instance
+    glm::vec3 boxMin{0.0f}, boxMax{0.0f};  // the shape's bounds in its own space
   };
   void createShape(ShapeBuffers& shape, const ShapeMesh& mesh);
-  void drawInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices, const std::vector<glm::vec4>& colors);
+  // `region`: a partial redraw, where instances that cannot reach its limit are left out.
+  void drawInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices, const std::vector<glm::vec4>& colors,
+                     const ScreenRegion& region);
   void uploadInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices, const std::vector<glm::vec4>& colors);
   void drawGrid(const FrameDescription& frame, const glm::mat4& viewProjection);
   void drawGhosts(const std::vector<SkeletonDrawList>& ghosts, const glm::mat4& viewProjection, const glm::mat4& view);
@@ -91,6 +95,8 @@ class SkeletonRenderer {
   std::vector<LineVertex> gridCache_;
   float gridCacheCell_ = 0.0f, gridCacheReach_ = 0.0f;
   std::vector<float> instanceScratch_;
+  std::vector<glm::mat4> culledMatrices_;  // drawInstances: the instances a partial redraw keeps
+  std::vector<glm::vec4> culledColors_;
 };
 
 }  // namespace kinema

@@ -3,7 +3,8 @@
 // Bones have length 2, so makeOctahedralBone's waist corners (+-0.1, 0.1, +-0.1) become
 // (+-0.2, 0.2, +-0.2) and the front face (the one between the two +z corners and the tail)
 // sits at z = 0.2 (2 - y) / 1.8 for y in [0.2, 2]. Joint radius: a tenth of the shortest bone
-// (0.2) clamped to 0.025 * size with size = 2 (half of the box's diagonal, 4): 0.05.
+// (0.2) clamped to 0.025 * size, with size the box's half diagonal (2) taken up to the next
+// power of 1.25 (2.44140625): 0.06103515625.
 #include "editor/viewport/box_select.h"
 #include "editor/viewport/picking.h"
 #include "editor/viewport/viewport_controller.h"
@@ -47,7 +48,9 @@ TEST(Picking, DrawListRecordsEachBonesJoints) {
   Chain c;
   ASSERT_EQ(c.list.boneParents, (std::vector<int>{0, 1}));
   ASSERT_EQ(c.list.boneChildren, (std::vector<int>{1, 2}));
-  EXPECT_NEAR(glm::length(glm::vec3(c.list.jointMatrices[0][0])), 0.05f, 1e-6f);
+  // A tenth of the 2 m bones (0.2) capped at 0.025 x the skeleton's size: its bounds radius 2
+  // taken up to a power of 1.25 (1.25^4 = 2.44140625), so 0.06103515625.
+  EXPECT_NEAR(glm::length(glm::vec3(c.list.jointMatrices[0][0])), 0.06103515625f, 1e-6f);
 }
 
 TEST(Picking, ClickOnABoneSelectsItsHeadJoint) {
@@ -71,18 +74,18 @@ TEST(Picking, ClickOnABoneSelectsItsHeadJoint) {
 
 TEST(Picking, JointSphereWinsOverTheBonesMeetingThere) {
   Chain c;
-  // Pixel (100, 80) is joint 1 at (0, 2, 0): its sphere's front is at z = 0.05.
+  // Pixel (100, 80) is joint 1 at (0, 2, 0): its sphere's front is at z = 0.0610 (radius above).
   const SkeletonPick pick = pickSkeleton(c.list, handView(true).rayThrough({100, 80}));
   EXPECT_EQ(pick.joint, 1);
   EXPECT_EQ(pick.boneChild, -1);
-  EXPECT_NEAR(pick.distance, 9.85f, 1e-4f);
+  EXPECT_NEAR(pick.distance, 9.9f - 0.06103515625f, 1e-4f);
 }
 
 TEST(Picking, MissFallsBackToTheNearestJointOnScreen) {
   Chain c;
   const ViewportView ortho = handView(true);
   // (104, 64) is world (0.4, 3.6): beside the bone (half-width 0.2 * 0.4 / 1.8 there) and the
-  // sphere (radius 0.05); joint 2 projects to (100, 60), sqrt(32) = 5.7 px away.
+  // sphere (radius 0.061); joint 2 projects to (100, 60), sqrt(32) = 5.7 px away.
   EXPECT_FALSE(pickSkeleton(c.list, ortho.rayThrough({104, 64})).hit());
   const SkeletonPick near = pickSkeletonAt(c.list, ortho, {104, 64}, 8.0f);
   EXPECT_EQ(near.joint, 2);

@@ -53,6 +53,32 @@ TEST(Sphere, IsAClosedUnitSphereWoundOutward) {
   EXPECT_NEAR(fine, exact, 0.01 * exact);
 }
 
+// Welding keeps every triangle, corner for corner, and stores each distinct corner once:
+// a 16 x 10 sphere has 16 x 9 ring points and two poles, each pole repeated per slice
+// with the same position (at the north pole sin(0) = 0 gives +-0, which weld).
+TEST(WeldVertices, SameTrianglesEachCornerOnce) {
+  for (const ShapeMesh& m : {makeSphere(16, 10), makeOctahedralBone()}) {
+    const IndexedShapeMesh w = weldVertices(m);
+    ASSERT_EQ(w.indices.size(), m.positions.size());
+    ASSERT_EQ(w.positions.size(), w.normals.size());
+    for (size_t i = 0; i < w.indices.size(); ++i) {
+      ASSERT_LT(w.indices[i], w.positions.size());
+      EXPECT_EQ(w.positions[w.indices[i]], m.positions[i]) << i;
+      EXPECT_EQ(w.normals[w.indices[i]], m.normals[i]) << i;
+    }
+    for (size_t a = 0; a < w.positions.size(); ++a)  // no two stored corners alike
+      for (size_t b = a + 1; b < w.positions.size(); ++b)
+        EXPECT_FALSE(w.positions[a] == w.positions[b] && w.normals[a] == w.normals[b]) << a << " " << b;
+  }
+  // The north pole welds to one vertex; the south pole's 16 copies are the same point only
+  // up to float rounding of sin(pi) (about -8.7e-8), so at most 16 of them stay apart.
+  const size_t sphere = weldVertices(makeSphere(16, 10)).positions.size();
+  EXPECT_GE(sphere, 16u * 9u + 2u);
+  EXPECT_LE(sphere, 16u * 9u + 1u + 16u);
+  // Flat faces share no corner normals: the bone's 6 points make 24 distinct corners.
+  EXPECT_EQ(weldVertices(makeOctahedralBone()).positions.size(), 24u);
+}
+
 TEST(BoneMatrix, TakesTheUnitBoneToTheSegmentWithUniformScale) {
   const glm::vec3 head(1, 2, 3), tail(1, 2, 3 + 2);  // length 2 along +Z
   const glm::mat4 m = boneMatrix(head, tail, glm::vec3(1, 0, 0));
@@ -121,8 +147,9 @@ TEST(SkeletonDrawList, ShownJointsSkipHelperNodesAndBridgeToTheNearestShownAnces
   EXPECT_VEC3_NEAR(glm::vec3(list.boneMatrices[0] * glm::vec4(0, 0, 0, 1)), glm::vec3(0, 1, 0), 1e-6f);
   EXPECT_VEC3_NEAR(glm::vec3(list.boneMatrices[0] * glm::vec4(0, 1, 0, 1)), glm::vec3(0, 2, 0), 1e-6f);
   ASSERT_EQ(list.jointMatrices.size(), 2u);
-  // Sized by the drawn joints only (bounds radius 0.5), not by the far mesh node.
-  EXPECT_NEAR(list.jointMatrices[0][0][0], 0.025f * 0.5f, 1e-6f);
+  // Sized by the drawn joints only (bounds radius 0.5, taken up to the step 1.25^-3 = 0.512),
+  // not by the far mesh node (radius over 2.5).
+  EXPECT_NEAR(list.jointMatrices[0][0][0], 0.025f * 0.512f, 1e-6f);
 
   // Without a mask (BVH, bare skeletons) every joint is drawn, as before.
   const std::vector<char> none;
@@ -140,6 +167,31 @@ TEST(SkeletonDrawList, ShownJointsSkipHelperNodesAndBridgeToTheNearestShownAnces
   EXPECT_TRUE(skinJointMask(scene).empty());
   scene.skins.push_back(Skin{"s", {3, 1}, {glm::mat4(1), glm::mat4(1)}, -1});
   EXPECT_EQ(skinJointMask(scene), shown);
+}
+
+// Joint spheres are sized by the skeleton's extent in steps of 1.25, so a hand moving a
+// little (an IK drag) leaves every other joint's sphere exactly as it was: the partial
+// redraw then covers the moving arm only (SceneDamageJob compares the matrices bit for bit).
+TEST(SkeletonDrawList, ASmallMoveKeepsTheOtherJointsSpheres) {
+  std::vector<int> parents = {-1, 0, 1, 2};
+  std::vector<glm::mat4> world(4, glm::mat4(1));
+  world[1][3] = glm::vec4(0, 1, 0, 1);
+  world[2][3] = glm::vec4(0, 1.05f, 0, 1);  // a short bone: its joints' radius is clamped by the size
+  world[3][3] = glm::vec4(0.9f, 1.05f, 0, 1);
+  SkeletonDrawJob job;
+  job.parents = &parents;
+  job.world = &world;
+  SkeletonDrawList before, after;
+  ASSERT_TRUE(job.run(before));
+  world[3][3] = glm::vec4(0.9f, 1.08f, 0.02f, 1);  // the tip moves: the bounds' radius changes a little
+  ASSERT_TRUE(job.run(after));
+  ASSERT_EQ(before.jointMatrices.size(), 4u);
+  ASSERT_EQ(after.jointMatrices.size(), 4u);
+  for (int j = 0; j < 3; ++j) EXPECT_EQ(before.jointMatrices[j], after.jointMatrices[j]) << "joint " << j;
+  EXPECT_NE(before.jointMatrices[3], after.jointMatrices[3]);
+  // Joint 1 sits on the 0.05 bone: a tenth of it (0.005) is under the floor of 0.008 x size,
+  // size = the bounds radius (about 0.68) taken up to a power of 1.25 (1.25^-1 = 0.8).
+  EXPECT_NEAR(before.jointMatrices[1][0][0], 0.008f * 0.8f, 1e-6f);
 }
 
 TEST(GridLines, CoverTheReachWithAxesThroughTheOrigin) {

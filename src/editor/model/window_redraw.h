@@ -17,6 +17,8 @@ struct WindowRedrawInfo {
   bool inBackBuffer = false; // Changed: the last frame kept in the window's back buffer (else in a copy)
   int rectangles = 0;        // rectangles drawn again (0: nothing changed)
   long long pixels = 0;      // pixels in them (the whole window's when drawn whole)
+  // Shown by copying those rectangles to the window (WindowPresenter), not by a swap.
+  bool presentedRectangles = false;
 };
 
 }  // namespace kinema

@@ -26,6 +26,7 @@
 #include "editor/panels/panel_layout.h"
 #include "editor/window/state_dump.h"
 #include "editor/window/ui_style.h"
+#include "editor/window/window_present.h"
 #include "editor/viewport/particle_display.h"
 #include "editor/viewport/viewport_overlay.h"
 #include "editor/viewport/crowd_display.h"
@@ -117,9 +118,11 @@ float effectiveUiScale(GLFWwindow* window, const EditorState& state, float frame
 // replayed ones. The queue lives in the window's user pointer.
 struct LiveInput {
   std::deque<InputEvent> queue;
-  bool ignore = false;  // --script replay: the real pointer and keyboard must not interfere
+  bool ignore = false;   // --script replay: the real pointer and keyboard must not interfere
+  bool exposed = false;  // the X server lost the window's pixels: show the whole frame again
 };
 LiveInput* liveInput(GLFWwindow* w) { return static_cast<LiveInput*>(glfwGetWindowUserPointer(w)); }
+void onRefresh(GLFWwindow* w) { liveInput(w)->exposed = true; }
 void onCursor(GLFWwindow* w, double x, double y) {
   InputEvent e;
   e.type = InputEventType::MouseMove;
@@ -235,6 +238,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
   glfwSetScrollCallback(window, onScroll);
   glfwSetKeyCallback(window, onKey);
   glfwSetCharCallback(window, onChar);
+  glfwSetWindowRefreshCallback(window, onRefresh);
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -325,6 +329,9 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     // panels show, and the framebuffer this frame draws into (0: the window's own).
     bool changedRedraws = o.redraw == WindowRedraw::Changed || (o.redraw == WindowRedraw::Auto && softwareRasterizer());
     const bool backBufferKept = changedRedraws && backBufferSurvivesSwaps(window);
+    // Frames drawn only where they changed, into the kept back buffer, show those parts alone.
+    WindowPresenter presenter(window, backBufferKept);
+    std::vector<PixelRect> shownRects;  // what this frame drew again, for the presenter
     glm::ivec2 keptSize(-1);  // the back buffer's size when it was last drawn (backBufferKept)
     ViewportTarget canvas;    // the whole window, one sample, where the back buffer does not survive swaps
     ImGuiDrawSnapshot imguiSnapshot;
@@ -653,6 +660,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
           canvasView = view3d;
           for (PixelRect& r : damage) r = r.intersected(window);
           const std::vector<PixelRect> rects = mergeDamage(std::move(damage), 4);
+          shownRects = rects;
           long long pixels = 0;
           std::vector<ImVec4> clips;  // the same rectangles in ImGui's display coordinates
           glBindFramebuffer(GL_FRAMEBUFFER, drawFramebuffer);
@@ -698,7 +706,13 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         for (size_t i = 3; i < shot.rgba.size(); i += 4) shot.rgba[i] = 255;  // the window is opaque
         result.error = savePng(o.screenshotPath, shot);
       }
-      glfwSwapBuffers(window);
+      if (live.exposed) {
+        presenter.markExposed();
+        live.exposed = false;
+      }
+      // Drawn into the kept back buffer only where it changed: those rectangles shown alone.
+      state.windowRedraw.presentedRectangles =
+          presenter.present(changedOnly && backBufferKept ? &shownRects : nullptr, fbw, fbh);
       // --max-fps: the rest of the frame's time is slept (events keep queueing meanwhile).
       if (o.maxFps > 0) std::this_thread::sleep_until(frameStart + std::chrono::microseconds(1000000 / o.maxFps));
       if (timer) {

@@ -216,7 +216,8 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
                                       : s.windowRedraw.inBackBuffer ? "back_buffer"
                                                                     : "copy"},
                           {"rectangles", s.windowRedraw.rectangles},
-                          {"pixels", s.windowRedraw.pixels}};
+                          {"pixels", s.windowRedraw.pixels},
+                          {"presented", s.windowRedraw.presentedRectangles ? "rectangles" : "swap"}};
   out["playback"] = {{"clip", s.hasMotion() ? s.clip : -1}, {"time", s.time}, {"playing", s.playing}};
   json clipNames = json::array();  // the clip list in file order; playback.clip indexes it
   for (const Clip& c : doc.scene().clips) clipNames.push_back(c.name);
