@@ -65,6 +65,7 @@ void settingsAndGhosts(Digest& d, const FrameDescription& f) {
   d.value(c.nearPlane), d.value(c.farPlane), d.value(c.orthographic);
   d.value(f.x), d.value(f.y), d.value(f.width), d.value(f.height);
   d.value(f.sceneRadius), d.value(f.showGrid), d.value(f.background), d.value(f.bones), d.value(f.lineScale);
+  d.value(f.frontFacesOnly);
   d.value(f.skeleton != nullptr);
   d.value(f.overlay != nullptr);
   d.value(f.ghosts ? f.ghosts->size() : size_t(0));

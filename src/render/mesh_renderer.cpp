@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "deform/deformer_stack.h"
+#include "render/closed_surface.h"
 #include "render/gl_context.h"
 #include "render/shader_sources.h"
 #include "skin/skinning_decomposition.h"
@@ -211,6 +212,7 @@ std::string MeshRenderer::upload(const Scene& scene) {
       p.indexCount = static_cast<int>(src.indices.size());
       p.hasNormals = src.normals.size() == src.positions.size();
       p.skinned = src.skinned();
+      p.closed = isClosedOutwardSurface(src.positions, src.indices);
       const std::vector<glm::vec3> normals = p.hasNormals ? src.normals : displayNormals(src);
       const std::vector<PackedVertex> vertices = packVertices(src.positions, normals, src);
       glGenVertexArrays(1, &p.vao);
@@ -521,7 +523,8 @@ void MeshRenderer::uploadCpuScratch() {
                GL_STREAM_DRAW);
 }
 
-void MeshRenderer::drawInstancesCpu(const MeshFrame& frame, const CpuPose& pose, const ScreenRegion* region) {
+void MeshRenderer::drawInstancesCpu(const MeshFrame& frame, const CpuPose& pose, const ScreenRegion* region,
+                                    bool frontFacesOnly) {
   const glm::mat4 identity(1.0f);
   const glm::mat3 identity3(1.0f);
   for (size_t i = 0; i < scene_->meshInstances.size() && i < pose.size(); ++i) {
@@ -545,11 +548,28 @@ void MeshRenderer::drawInstancesCpu(const MeshFrame& frame, const CpuPose& pose,
       const size_t bytes = static_cast<size_t>(pose[i][p.primitive]) * sizeof(float);
       glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), reinterpret_cast<void*>(bytes));
       glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), reinterpret_cast<void*>(bytes + 3 * sizeof(float)));
+      const float* posed = &cpuScratch_[static_cast<size_t>(pose[i][p.primitive])];
+      // A closed surface wholly in front of the near plane shows only its front faces.
+      bool cull = frontFacesOnly && region && p.closed && p.vertexCount > 0;
+      if (cull) {
+        glm::vec3 lo(posed[0], posed[1], posed[2]), hi = lo;
+        for (int v = 1; v < p.vertexCount; ++v) {
+          const glm::vec3 q(posed[6 * v], posed[6 * v + 1], posed[6 * v + 2]);
+          lo = glm::min(lo, q), hi = glm::max(hi, q);
+        }
+        cull = boxInFrontOfNearPlane(region->viewProjection, lo, hi);
+      }
+      if (cull) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_BACK);
+      } else {
+        glDisable(GL_CULL_FACE);
+      }
       if (region && region->culls()) {
         // A partial redraw: the triangles that may reach the limit (screen_culling.h), from
         // their own element buffer; the VAO's own one is put back for the next frame.
         cullScratch_.clear();
-        appendTrianglesInRegion(*region, &cpuScratch_[static_cast<size_t>(pose[i][p.primitive])], 6,
+        appendTrianglesInRegion(*region, posed, 6,
                                 static_cast<size_t>(p.vertexCount), scene_->meshes[inst.mesh].primitives[p.primitive].indices,
                                 cullScratch_);
         if (!cullScratch_.empty()) {
@@ -567,7 +587,7 @@ void MeshRenderer::drawInstancesCpu(const MeshFrame& frame, const CpuPose& pose,
 }
 
 void MeshRenderer::draw(const MeshFrame& frame, const glm::mat4& viewProjection, const glm::mat4& view,
-                        const ScreenRegion* region) {
+                        const ScreenRegion* region, bool frontFacesOnly) {
   if (!scene_ || !frame.world || primitives_.empty()) return;
   // Frames with an active deformer stack take the shader path with those primitives streamed
   // (bindCpuDeformed): the whole-scene CPU path below knows only morphs and skinning.
@@ -581,7 +601,8 @@ void MeshRenderer::draw(const MeshFrame& frame, const glm::mat4& viewProjection,
       glUniform1i(shading_->uniform("uGhost"), 0);
       glEnable(GL_DEPTH_TEST);
       glDisable(GL_CULL_FACE);
-      drawInstancesCpu(frame, cpuPose_, region);
+      drawInstancesCpu(frame, cpuPose_, region, frontFacesOnly);
+      glDisable(GL_CULL_FACE);
       unbindMeshDrawState();
       return;
     }

@@ -83,8 +83,11 @@ class MeshRenderer {
   // Draws every mesh instance into the bound framebuffer (depth test on, both faces lit).
   // `region` (optional; its viewProjection the same as here): a partial redraw, where the
   // CPU-posed path leaves out triangles that cannot reach region->limit (screen_culling.h).
+  // `frontFacesOnly` (FrameDescription's, needs `region`): on the CPU-posed path, primitives
+  // that bound a solid (isClosedOutwardSurface) and lie wholly in front of the near plane are
+  // drawn without their back faces.
   void draw(const MeshFrame& frame, const glm::mat4& viewProjection, const glm::mat4& view,
-            const ScreenRegion* region = nullptr);
+            const ScreenRegion* region = nullptr, bool frontFacesOnly = false);
 
   // Onion-skin ghosts over what the framebuffer holds: each ghost is depth-tested against
   // the scene and blended once per pixel (its nearest surface: a depth-only pass, then a
@@ -130,6 +133,7 @@ class MeshRenderer {
     GLuint deformedVao = 0, deformedVertices = 0;  // MeshFrame::deformed vertices, made when first needed
     int vertexCount = 0, indexCount = 0, morphCount = 0;
     bool hasNormals = false, morphNormals = false, skinned = false;
+    bool closed = false;  // bounds a solid, faces wound outward (isClosedOutwardSurface, at upload)
   };
   void bindInstance(const MeshFrame& frame, int instance, const GpuPrimitive& p, bool weightsView);
   // The instance's stack of frame.gpuDeformers as the shader's uAxis* uniforms (uAxisCount 0
@@ -144,7 +148,8 @@ class MeshRenderer {
   using CpuPose = std::vector<std::vector<long long>>;  // [instance][primitive]
   bool appendCpuPose(const MeshFrame& frame, CpuPose& pose);
   void uploadCpuScratch();
-  void drawInstancesCpu(const MeshFrame& frame, const CpuPose& pose, const ScreenRegion* region = nullptr);
+  void drawInstancesCpu(const MeshFrame& frame, const CpuPose& pose, const ScreenRegion* region = nullptr,
+                        bool frontFacesOnly = false);
   bool cpuEligible() const;
   // The frame's CPU-deformed primitive for (instance, primitive of the mesh), or null.
   static const DeformedPrimitive* cpuDeformed(const MeshFrame& frame, int instance, const GpuPrimitive& p);

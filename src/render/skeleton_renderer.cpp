@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 
+#include "render/closed_surface.h"
 #include "render/frame_pass_timer.h"
 #include "render/mesh_renderer.h"
 #include "render/shader_sources.h"
@@ -113,7 +114,8 @@ void SkeletonRenderer::uploadInstances(ShapeBuffers& shape, const std::vector<gl
 }
 
 void SkeletonRenderer::drawInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices,
-                                     const std::vector<glm::vec4>& colors, const ScreenRegion& region) {
+                                     const std::vector<glm::vec4>& colors, const ScreenRegion& region,
+                                     bool frontFacesOnly) {
   const std::vector<glm::mat4>* drawn = &matrices;
   const std::vector<glm::vec4>* drawnColors = &colors;
   if (region.culls()) {
@@ -127,8 +129,18 @@ void SkeletonRenderer::drawInstances(ShapeBuffers& shape, const std::vector<glm:
     drawn = &culledMatrices_, drawnColors = &culledColors_;
   }
   if (drawn->empty()) return;
+  // The shapes are closed and wound outward (shape_meshes.h): front faces alone while every
+  // one is wholly in front of the near plane.
+  bool cull = frontFacesOnly;
+  for (size_t i = 0; i < drawn->size() && cull; ++i)
+    cull = boxInFrontOfNearPlane(region.viewProjection * (*drawn)[i], shape.boxMin, shape.boxMax);
+  if (cull) {
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+  }
   uploadInstances(shape, *drawn, *drawnColors);
   glDrawElementsInstanced(GL_TRIANGLES, shape.indexCount, GL_UNSIGNED_INT, nullptr, static_cast<GLsizei>(drawn->size()));
+  if (cull) glDisable(GL_CULL_FACE);
 }
 
 void SkeletonRenderer::drawGrid(const FrameDescription& frame, const glm::mat4& viewProjection) {
@@ -234,7 +246,7 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
   if (frame.showGrid) drawGrid(frame, viewProjection);
   mark("3D view: grid");
   if (frame.meshes && frame.meshes->renderer)
-    frame.meshes->renderer->draw(frame.meshes->frame, viewProjection, view, &region);
+    frame.meshes->renderer->draw(frame.meshes->frame, viewProjection, view, &region, frame.frontFacesOnly);
   mark("3D view: mesh");
   if (frame.meshes && frame.meshes->renderer && frame.meshGhosts && !frame.meshGhosts->empty())
     frame.meshes->renderer->drawGhosts(*frame.meshGhosts, viewProjection, view);
@@ -251,15 +263,15 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
       glClear(GL_DEPTH_BUFFER_BIT);
       scissorForClears(false);
       glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-      drawInstances(bone_, frame.skeleton->boneMatrices, frame.skeleton->boneColors, region);
-      drawInstances(sphere_, frame.skeleton->jointMatrices, frame.skeleton->jointColors, region);
+      drawInstances(bone_, frame.skeleton->boneMatrices, frame.skeleton->boneColors, region, frame.frontFacesOnly);
+      drawInstances(sphere_, frame.skeleton->jointMatrices, frame.skeleton->jointColors, region, frame.frontFacesOnly);
       glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
       glDepthFunc(GL_LEQUAL);
       glEnable(GL_BLEND);
       glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     }
-    drawInstances(bone_, frame.skeleton->boneMatrices, frame.skeleton->boneColors, region);
-    drawInstances(sphere_, frame.skeleton->jointMatrices, frame.skeleton->jointColors, region);
+    drawInstances(bone_, frame.skeleton->boneMatrices, frame.skeleton->boneColors, region, frame.frontFacesOnly);
+    drawInstances(sphere_, frame.skeleton->jointMatrices, frame.skeleton->jointColors, region, frame.frontFacesOnly);
     if (xray) {
       glDisable(GL_BLEND);
       glDepthFunc(GL_LESS);

@@ -51,6 +51,12 @@ struct FrameDescription {
   // with their renderer (so before the bones, whose x-ray pass would clear the body's depth).
   // Needs `meshes`; may be null.
   const std::vector<MeshGhost>* meshGhosts = nullptr;
+  // While the view moves (a drag, playback: one sample per pixel, viewport_quality.h): closed
+  // shapes (bones, joint spheres, meshes that bound a solid, closed_surface.h) are drawn
+  // without their back faces where the near plane does not cut them. Seen from outside, a
+  // closed surface shows front faces only, so the picture is the same but for silhouette
+  // pixels that a back face's edge took, and a software rasteriser fills half the triangles.
+  bool frontFacesOnly = false;
   // Measurement only (kinema edit --report-frame-passes): each pass is marked on it. May be null.
   FramePassTimer* timer = nullptr;
 };
@@ -77,8 +83,9 @@ class SkeletonRenderer {
   };
   void createShape(ShapeBuffers& shape, const ShapeMesh& mesh);
   // `region`: a partial redraw, where instances that cannot reach its limit are left out.
+  // `frontFacesOnly`: back faces culled when every drawn instance is in front of the near plane.
   void drawInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices, const std::vector<glm::vec4>& colors,
-                     const ScreenRegion& region);
+                     const ScreenRegion& region, bool frontFacesOnly);
   void uploadInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices, const std::vector<glm::vec4>& colors);
   void drawGrid(const FrameDescription& frame, const glm::mat4& viewProjection);
   void drawGhosts(const std::vector<SkeletonDrawList>& ghosts, const glm::mat4& viewProjection, const glm::mat4& view);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <cstring>
 
 #include <glad/gl.h>
 
@@ -106,44 +107,49 @@ TEST(PartialRedraw, DrawingOnlyTheDamagedRectangleGivesTheWholeFramesPixels) {
   ASSERT_EQ(meshes.upload(scene), "");
   SkeletonRenderer renderer;
   ASSERT_EQ(renderer.init(), "");
-  ViewportTarget partial, whole;  // one sample each, as the editor's canvas
-  SceneSnapshot snapshot;
   const PixelRect view{0, 0, kWidth, kHeight};
-  // The elbow bends, holds, bends again: each frame drawn both ways.
-  const float elbows[] = {0.0f, 25.0f, 25.0f, 70.0f, 72.0f};
-  for (size_t step = 0; step < std::size(elbows); ++step) {
-    SCOPED_TRACE("frame " + std::to_string(step) + ", elbow " + std::to_string(elbows[step]));
-    Frame frame(scene, meshes, elbows[step]);
-    SceneDamageJob job;
-    job.frame = &frame.description;
-    job.scene = &scene;
-    job.last = &snapshot;
-    ASSERT_TRUE(job.run());
-    EXPECT_EQ(partial.holds(kWidth, kHeight), step > 0);
-    ASSERT_EQ(partial.begin(kWidth, kHeight, 1), "");
-    if (step == 0) {
-      EXPECT_EQ(job.out, view) << "nothing kept: the whole view";
-    }
-    if (step == 2) {
-      EXPECT_TRUE(job.out.empty()) << "the same frame again changes nothing";
-    }
-    if (step == 1 || step == 3 || step == 4) {
-      EXPECT_FALSE(job.out.empty());
-      EXPECT_LT(job.out.area(), view.area() / 2) << "a forearm's move is a small part of the view";
-    }
-    if (!job.out.empty()) {
-      clearTo(frame.description, job.out);
-      frame.description.limit = job.out;
+  // Held still (every face drawn) and moving (closed shapes' front faces alone).
+  for (const bool frontFacesOnly : {false, true}) {
+    ViewportTarget partial, whole;  // one sample each, as the editor's canvas
+    SceneSnapshot snapshot;
+    // The elbow bends, holds, bends again: each frame drawn both ways.
+    const float elbows[] = {0.0f, 25.0f, 25.0f, 70.0f, 72.0f};
+    for (size_t step = 0; step < std::size(elbows); ++step) {
+      SCOPED_TRACE("frame " + std::to_string(step) + ", elbow " + std::to_string(elbows[step]) +
+                   (frontFacesOnly ? ", front faces only" : ""));
+      Frame frame(scene, meshes, elbows[step]);
+      frame.description.frontFacesOnly = frontFacesOnly;
+      SceneDamageJob job;
+      job.frame = &frame.description;
+      job.scene = &scene;
+      job.last = &snapshot;
+      ASSERT_TRUE(job.run());
+      EXPECT_EQ(partial.holds(kWidth, kHeight), step > 0);
+      ASSERT_EQ(partial.begin(kWidth, kHeight, 1), "");
+      if (step == 0) {
+        EXPECT_EQ(job.out, view) << "nothing kept: the whole view";
+      }
+      if (step == 2) {
+        EXPECT_TRUE(job.out.empty()) << "the same frame again changes nothing";
+      }
+      if (step == 1 || step == 3 || step == 4) {
+        EXPECT_FALSE(job.out.empty());
+        EXPECT_LT(job.out.area(), view.area() / 2) << "a forearm's move is a small part of the view";
+      }
+      if (!job.out.empty()) {
+        clearTo(frame.description, job.out);
+        frame.description.limit = job.out;
+        renderer.draw(frame.description);
+      }
+      const Image changedOnly = readCanvas();
+      partial.resolve();  // kept for the next frame
+      ASSERT_EQ(whole.begin(kWidth, kHeight, 1), "");
+      clearTo(frame.description, view);
+      frame.description.limit = PixelRect{};
       renderer.draw(frame.description);
+      const Image drawnWhole = readCanvas();
+      EXPECT_EQ(test::differingPixels(changedOnly, drawnWhole, 0), 0);
     }
-    const Image changedOnly = readCanvas();
-    partial.resolve();  // kept for the next frame
-    ASSERT_EQ(whole.begin(kWidth, kHeight, 1), "");
-    clearTo(frame.description, view);
-    frame.description.limit = PixelRect{};
-    renderer.draw(frame.description);
-    const Image drawnWhole = readCanvas();
-    EXPECT_EQ(test::differingPixels(changedOnly, drawnWhole, 0), 0);
   }
 }
 
@@ -196,6 +202,96 @@ TEST(PartialRedraw, ADeformedBodyRedrawnInPartGivesTheWholeFramesPixels) {
     renderer.draw(frame.description);
     EXPECT_EQ(test::differingPixels(changedOnly, readCanvas(), 0), 0);
   }
+}
+
+// FrameDescription::frontFacesOnly (while the view moves): the closed body, bones and joint
+// spheres without their back faces look the same from outside. Only a pixel on a silhouette
+// may differ (where the pixel's centre fell on the back face side of the outline edge), so
+// every differing pixel must have a 4-neighbour that differs strongly from it in the picture
+// drawn with every face (an edge); and there are few of them.
+Image drawnOnce(SkeletonRenderer& renderer, Frame& frame, const PixelRect& view) {
+  clearTo(frame.description, view);
+  renderer.draw(frame.description);
+  return readCanvas();
+}
+
+bool onAnEdge(const Image& img, int x, int y) {
+  const uint8_t* c = img.pixel(x, y);
+  const int near[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  for (const auto& d : near) {
+    const int nx = x + d[0], ny = y + d[1];
+    if (nx < 0 || ny < 0 || nx >= img.width || ny >= img.height) continue;
+    const uint8_t* n = img.pixel(nx, ny);
+    if (std::abs(int(c[0]) - n[0]) + std::abs(int(c[1]) - n[1]) + std::abs(int(c[2]) - n[2]) > 24) return true;
+  }
+  return false;
+}
+
+TEST(FrontFacesOnly, TheClosedBodyAndBonesDifferOnlyOnSilhouettes) {
+  setenv("LIBGL_ALWAYS_SOFTWARE", "1", 0);
+  Result<std::unique_ptr<HeadlessRenderer>> opened = HeadlessRenderer::open(HeadlessBackend::Egl, kWidth, kHeight);
+  ASSERT_TRUE(opened.ok()) << (opened ? "" : opened.error());
+  const Scene scene = makeDefaultCharacterScene();
+  MeshRenderer& meshes = opened.value()->meshes();
+  meshes.setCpuDeformation(true);
+  ASSERT_EQ(meshes.upload(scene), "");
+  SkeletonRenderer renderer;
+  ASSERT_EQ(renderer.init(), "");
+  ViewportTarget target;
+  ASSERT_EQ(target.begin(kWidth, kHeight, 1), "");
+  const PixelRect view{0, 0, kWidth, kHeight};
+  for (const BoneDisplay bones : {BoneDisplay::On, BoneDisplay::XRay}) {
+    Frame frame(scene, meshes, 40.0f);
+    frame.description.bones = bones;
+    frame.description.ghosts = nullptr;
+    const Image every = drawnOnce(renderer, frame, view);
+    frame.description.frontFacesOnly = true;
+    const Image front = drawnOnce(renderer, frame, view);
+    int differing = 0, offEdge = 0;
+    for (int y = 0; y < kHeight; ++y)
+      for (int x = 0; x < kWidth; ++x)
+        if (std::memcmp(every.pixel(x, y), front.pixel(x, y), 3) != 0) {
+          ++differing;
+          offEdge += !onAnEdge(every, x, y);
+        }
+    EXPECT_EQ(offEdge, 0) << "pixels away from any outline differ: back faces were seen, or front faces left out";
+    EXPECT_LT(differing, kWidth * kHeight / 200) << "more than silhouette ties";
+  }
+}
+
+// With the camera inside the body (the near plane cuts it) its inside is what shows: back
+// faces, which must then stay. The picture is the same to the pixel with the switch on.
+TEST(FrontFacesOnly, ANearPlaneCuttingTheBodyKeepsItsBackFaces) {
+  setenv("LIBGL_ALWAYS_SOFTWARE", "1", 0);
+  Result<std::unique_ptr<HeadlessRenderer>> opened = HeadlessRenderer::open(HeadlessBackend::Egl, kWidth, kHeight);
+  ASSERT_TRUE(opened.ok()) << (opened ? "" : opened.error());
+  const Scene scene = makeDefaultCharacterScene();
+  MeshRenderer& meshes = opened.value()->meshes();
+  meshes.setCpuDeformation(true);
+  ASSERT_EQ(meshes.upload(scene), "");
+  SkeletonRenderer renderer;
+  ASSERT_EQ(renderer.init(), "");
+  ViewportTarget target;
+  ASSERT_EQ(target.begin(kWidth, kHeight, 1), "");
+  const PixelRect view{0, 0, kWidth, kHeight};
+  Frame frame(scene, meshes, 0.0f);
+  frame.description.bones = BoneDisplay::None;
+  frame.description.ghosts = nullptr;
+  const int chest = scene.skeleton.find("Chest");
+  ASSERT_GE(chest, 0);
+  frame.description.camera.target = glm::vec3(frame.world[chest][3]);
+  frame.description.camera.distance = 0.02f;  // the eye inside the chest
+  frame.description.camera.nearPlane = 0.005f;
+  frame.description.camera.farPlane = 10.0f;
+  const Image every = drawnOnce(renderer, frame, view);
+  frame.description.frontFacesOnly = true;
+  const Image front = drawnOnce(renderer, frame, view);
+  EXPECT_EQ(test::differingPixels(every, front, 0), 0);
+  // The view does show the body's inside (not the background alone).
+  int body = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) body += every.pixel(x, y)[0] > 100;
+  EXPECT_GT(body, kWidth * kHeight / 2);
 }
 
 }  // namespace

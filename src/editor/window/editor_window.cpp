@@ -591,6 +591,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
             viewportTarget.forget();
             view3d.shows = ViewContent::Shows::Scene;
             state.viewportRender = {kMovingViewportSamples, false};
+            description.frontFacesOnly = true;  // closed shapes: front faces alone while moving
           }
           view3d.signature = signature;
           view3d.samples = state.viewportRender.samples;
