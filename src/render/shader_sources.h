@@ -8,6 +8,8 @@ extern const char* const lines_frag;
 extern const char* const mesh_vert;
 extern const char* const mesh_frag;
 extern const char* const mesh_posed_vert;
+extern const char* const sphere_impostor_vert;
+extern const char* const sphere_impostor_frag;
 extern const char* const overlay_vert;
 extern const char* const overlay_frag;
 }  // namespace kinema::shaders

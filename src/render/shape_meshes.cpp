@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <utility>
 
 namespace kinema {
 
@@ -27,6 +28,23 @@ ShapeMesh makeOctahedralBone() {
     addFlatTriangle(m, a, b, tail);
     addFlatTriangle(m, b, a, head);
   }
+  return m;
+}
+
+ShapeMesh makeCube() {
+  ShapeMesh m;
+  // Each face: its axis, its side, and two edge directions whose cross product points out.
+  for (int axis = 0; axis < 3; ++axis)
+    for (const float side : {-1.0f, 1.0f}) {
+      glm::vec3 n(0.0f), u(0.0f), v(0.0f);
+      n[axis] = side;
+      u[(axis + 1) % 3] = 1.0f;
+      v[(axis + 2) % 3] = 1.0f;
+      if (side < 0.0f) std::swap(u, v);  // keeps u x v = n
+      const glm::vec3 a = n - u - v, b = n + u - v, c = n + u + v, d = n - u + v;
+      addFlatTriangle(m, a, b, c);
+      addFlatTriangle(m, a, c, d);
+    }
   return m;
 }
 

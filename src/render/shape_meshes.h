@@ -27,6 +27,10 @@ IndexedShapeMesh weldVertices(const ShapeMesh& mesh);
 // keeps Blender's proportions. 8 flat faces, counter-clockwise seen from outside.
 ShapeMesh makeOctahedralBone();
 
+// The box [-1, 1]^3 around the unit sphere: 12 triangles with flat normals, counter-clockwise
+// seen from outside (the proxy a sphere impostor is drawn on, shaders/sphere_impostor.*).
+ShapeMesh makeCube();
+
 // A unit sphere (radius 1, centre at the origin) with smooth normals; `slices` around Y,
 // `stacks` from pole to pole. Counter-clockwise seen from outside.
 ShapeMesh makeSphere(int slices, int stacks);

@@ -30,7 +30,7 @@ int dashCount(const glm::vec3& a, const glm::vec3& b, const glm::mat4& viewProje
 }  // namespace
 
 SkeletonRenderer::~SkeletonRenderer() {
-  for (ShapeBuffers* s : {&bone_, &sphere_, &ghostBone_, &ghostSphere_}) {
+  for (ShapeBuffers* s : {&bone_, &sphere_, &ghostBone_, &ghostSphere_, &sphereBox_, &ghostSphereBox_}) {
     if (s->vao) glDeleteVertexArrays(1, &s->vao);
     if (s->vertices) glDeleteBuffers(1, &s->vertices);
     if (s->indices) glDeleteBuffers(1, &s->indices);
@@ -42,6 +42,7 @@ SkeletonRenderer::~SkeletonRenderer() {
 
 std::string SkeletonRenderer::init() {
   std::string error = shaded_.build("shaded", shaders::shaded_vert, shaders::shaded_frag);
+  if (error.empty()) error = impostor_.build("sphere_impostor", shaders::sphere_impostor_vert, shaders::sphere_impostor_frag);
   if (error.empty()) error = lines_.build("lines", shaders::lines_vert, shaders::lines_frag);
   if (error.empty()) error = overlay_.init();
   if (!error.empty()) return error;
@@ -49,6 +50,8 @@ std::string SkeletonRenderer::init() {
   createShape(sphere_, makeSphere(16, 10));
   createShape(ghostBone_, makeOctahedralBone());
   createShape(ghostSphere_, makeSphere(16, 10));
+  createShape(sphereBox_, makeCube());
+  createShape(ghostSphereBox_, makeCube());
 
   glGenVertexArrays(1, &lineVao_);
   glGenBuffers(1, &lineVertices_);
@@ -113,34 +116,58 @@ void SkeletonRenderer::uploadInstances(ShapeBuffers& shape, const std::vector<gl
                instanceScratch_.data(), GL_STREAM_DRAW);
 }
 
-void SkeletonRenderer::drawInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices,
-                                     const std::vector<glm::vec4>& colors, const ScreenRegion& region,
-                                     bool frontFacesOnly) {
-  const std::vector<glm::mat4>* drawn = &matrices;
-  const std::vector<glm::vec4>* drawnColors = &colors;
-  if (region.culls()) {
-    culledMatrices_.clear();
-    culledColors_.clear();
-    for (size_t i = 0; i < matrices.size() && i < colors.size(); ++i)
-      if (region.boxMayCover(matrices[i], shape.boxMin, shape.boxMax)) {
-        culledMatrices_.push_back(matrices[i]);
-        culledColors_.push_back(colors[i]);
-      }
-    drawn = &culledMatrices_, drawnColors = &culledColors_;
+SkeletonRenderer::Prepared SkeletonRenderer::prepareInstances(ShapeBuffers& shape, ShapeBuffers* impostorBox,
+                                                               const std::vector<glm::mat4>& matrices,
+                                                               const std::vector<glm::vec4>& colors,
+                                                               const ScreenRegion& region, bool frontFacesOnly) {
+  shapeMatrices_.clear(), shapeColors_.clear(), impostorMatrices_.clear(), impostorColors_.clear();
+  bool allInFront = true;
+  for (size_t i = 0; i < matrices.size() && i < colors.size(); ++i) {
+    if (region.culls() && !region.boxMayCover(matrices[i], shape.boxMin, shape.boxMax)) continue;
+    const bool inFront =
+        frontFacesOnly && boxInFrontOfNearPlane(region.viewProjection * matrices[i], shape.boxMin, shape.boxMax);
+    if (inFront && impostorBox) {
+      impostorMatrices_.push_back(matrices[i]);
+      impostorColors_.push_back(colors[i]);
+    } else {
+      allInFront = allInFront && inFront;
+      shapeMatrices_.push_back(matrices[i]);
+      shapeColors_.push_back(colors[i]);
+    }
   }
-  if (drawn->empty()) return;
-  // The shapes are closed and wound outward (shape_meshes.h): front faces alone while every
-  // one is wholly in front of the near plane.
-  bool cull = frontFacesOnly;
-  for (size_t i = 0; i < drawn->size() && cull; ++i)
-    cull = boxInFrontOfNearPlane(region.viewProjection * (*drawn)[i], shape.boxMin, shape.boxMax);
-  if (cull) {
+  Prepared p;
+  p.shapes = static_cast<GLsizei>(shapeMatrices_.size());
+  p.impostors = static_cast<GLsizei>(impostorMatrices_.size());
+  // The shapes are closed and wound outward (shape_meshes.h): front faces alone while
+  // every one is wholly in front of the near plane.
+  p.cullShapes = frontFacesOnly && allInFront;
+  if (p.shapes > 0) uploadInstances(shape, shapeMatrices_, shapeColors_);
+  if (p.impostors > 0) uploadInstances(*impostorBox, impostorMatrices_, impostorColors_);
+  return p;
+}
+
+void SkeletonRenderer::drawPrepared(ShapeBuffers& shape, ShapeBuffers* impostorBox, const Prepared& prepared) {
+  if (prepared.shapes > 0) {
+    if (prepared.cullShapes) {
+      glEnable(GL_CULL_FACE);
+      glCullFace(GL_BACK);
+    }
+    glBindVertexArray(shape.vao);
+    glDrawElementsInstanced(GL_TRIANGLES, shape.indexCount, GL_UNSIGNED_INT, nullptr, prepared.shapes);
+    if (prepared.cullShapes) glDisable(GL_CULL_FACE);
+  }
+  if (prepared.impostors > 0 && impostorBox) {
+    // The box's front faces: each pixel of the sphere once (the box is convex).
+    GLint previous = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &previous);
+    glUseProgram(impostor_.id());
     glEnable(GL_CULL_FACE);
     glCullFace(GL_BACK);
+    glBindVertexArray(impostorBox->vao);
+    glDrawElementsInstanced(GL_TRIANGLES, impostorBox->indexCount, GL_UNSIGNED_INT, nullptr, prepared.impostors);
+    glDisable(GL_CULL_FACE);
+    glUseProgram(static_cast<GLuint>(previous));
   }
-  uploadInstances(shape, *drawn, *drawnColors);
-  glDrawElementsInstanced(GL_TRIANGLES, shape.indexCount, GL_UNSIGNED_INT, nullptr, static_cast<GLsizei>(drawn->size()));
-  if (cull) glDisable(GL_CULL_FACE);
 }
 
 void SkeletonRenderer::drawGrid(const FrameDescription& frame, const glm::mat4& viewProjection) {
@@ -170,7 +197,7 @@ void SkeletonRenderer::drawGrid(const FrameDescription& frame, const glm::mat4& 
 }
 
 void SkeletonRenderer::drawGhosts(const std::vector<SkeletonDrawList>& ghosts, const glm::mat4& viewProjection,
-                                  const glm::mat4& view) {
+                                  const glm::mat4& view, const ScreenRegion& region, bool frontFacesOnly) {
   // All ghosts in one instance list per shape, uploaded and drawn once.
   for (int k = 0; k < 2; ++k) {
     ghostMatrices_[k].clear();
@@ -185,22 +212,17 @@ void SkeletonRenderer::drawGhosts(const std::vector<SkeletonDrawList>& ghosts, c
   glUseProgram(shaded_.id());
   glUniformMatrix4fv(shaded_.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
   glUniformMatrix4fv(shaded_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
-  ShapeBuffers* shapes[2] = {&ghostBone_, &ghostSphere_};
-  for (int k = 0; k < 2; ++k)
-    if (!ghostMatrices_[k].empty()) uploadInstances(*shapes[k], ghostMatrices_[k], ghostColors_[k]);
+  Prepared bones = prepareInstances(ghostBone_, nullptr, ghostMatrices_[0], ghostColors_[0], region, frontFacesOnly);
+  Prepared joints =
+      prepareInstances(ghostSphere_, &ghostSphereBox_, ghostMatrices_[1], ghostColors_[1], region, frontFacesOnly);
   // One blended pass with back faces culled: the shapes are closed and wound outward
   // (shape_meshes.h), so a bone blends once where it is seen, at the cost of one pass only.
+  bones.cullShapes = joints.cullShapes = true;
   glEnable(GL_DEPTH_TEST);
-  glEnable(GL_CULL_FACE);
-  glCullFace(GL_BACK);
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-  for (int k = 0; k < 2; ++k) {
-    if (ghostMatrices_[k].empty()) continue;
-    glBindVertexArray(shapes[k]->vao);
-    glDrawElementsInstanced(GL_TRIANGLES, shapes[k]->indexCount, GL_UNSIGNED_INT, nullptr,
-                            static_cast<GLsizei>(ghostMatrices_[k].size()));
-  }
+  drawPrepared(ghostBone_, nullptr, bones);
+  drawPrepared(ghostSphere_, &ghostSphereBox_, joints);
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
   glDepthFunc(GL_LESS);
@@ -240,7 +262,13 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
 
   const float aspect = static_cast<float>(frame.width) / static_cast<float>(frame.height);
   const glm::mat4 view = frame.camera.view();
-  const glm::mat4 viewProjection = frame.camera.projection(aspect) * view;
+  const glm::mat4 projection = frame.camera.projection(aspect);
+  const glm::mat4 viewProjection = projection * view;
+  glUseProgram(impostor_.id());
+  glUniformMatrix4fv(impostor_.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
+  glUniformMatrix4fv(impostor_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
+  glUniformMatrix4fv(impostor_.uniform("uProjection"), 1, GL_FALSE, glm::value_ptr(projection));
+  glUniform1i(impostor_.uniform("uOrthographic"), frame.camera.orthographic);
   // A partial redraw leaves out what cannot reach the scissor box (screen_culling.h).
   const ScreenRegion region{viewProjection, viewRect, limited ? box : PixelRect{}};
   if (frame.showGrid) drawGrid(frame, viewProjection);
@@ -256,6 +284,12 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
     glUniformMatrix4fv(shaded_.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
     glUniformMatrix4fv(shaded_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
     const bool xray = frame.bones == BoneDisplay::XRay;
+    // Made ready once, drawn once or (x-ray) twice: re-filling a buffer a queued draw reads
+    // makes llvmpipe finish the frame so far first.
+    const Prepared bones = prepareInstances(bone_, nullptr, frame.skeleton->boneMatrices, frame.skeleton->boneColors,
+                                            region, frame.frontFacesOnly);
+    const Prepared joints = prepareInstances(sphere_, &sphereBox_, frame.skeleton->jointMatrices,
+                                             frame.skeleton->jointColors, region, frame.frontFacesOnly);
     if (xray) {
       // On top of the meshes (or, without any, of the grid): fresh depth, a depth-only pass, then the nearest bone surfaces
       // blended by their colours' alpha (SkeletonStyle::xRay()) so the body still shows through.
@@ -263,15 +297,15 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
       glClear(GL_DEPTH_BUFFER_BIT);
       scissorForClears(false);
       glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-      drawInstances(bone_, frame.skeleton->boneMatrices, frame.skeleton->boneColors, region, frame.frontFacesOnly);
-      drawInstances(sphere_, frame.skeleton->jointMatrices, frame.skeleton->jointColors, region, frame.frontFacesOnly);
+      drawPrepared(bone_, nullptr, bones);
+      drawPrepared(sphere_, &sphereBox_, joints);
       glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
       glDepthFunc(GL_LEQUAL);
       glEnable(GL_BLEND);
       glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     }
-    drawInstances(bone_, frame.skeleton->boneMatrices, frame.skeleton->boneColors, region, frame.frontFacesOnly);
-    drawInstances(sphere_, frame.skeleton->jointMatrices, frame.skeleton->jointColors, region, frame.frontFacesOnly);
+    drawPrepared(bone_, nullptr, bones);
+    drawPrepared(sphere_, &sphereBox_, joints);
     if (xray) {
       glDisable(GL_BLEND);
       glDepthFunc(GL_LESS);
@@ -288,7 +322,7 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
     }
   }
   mark("3D view: bones");
-  if (frame.ghosts && !frame.ghosts->empty()) drawGhosts(*frame.ghosts, viewProjection, view);
+  if (frame.ghosts && !frame.ghosts->empty()) drawGhosts(*frame.ghosts, viewProjection, view, region, frame.frontFacesOnly);
   mark("3D view: bone ghosts");
   if (frame.overlay && frame.lineScale != 1.0f) {
     OverlayDrawList scaled = *frame.overlay;

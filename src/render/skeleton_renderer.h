@@ -83,16 +83,29 @@ class SkeletonRenderer {
   };
   void createShape(ShapeBuffers& shape, const ShapeMesh& mesh);
   // `region`: a partial redraw, where instances that cannot reach its limit are left out.
-  // `frontFacesOnly`: back faces culled when every drawn instance is in front of the near plane.
-  void drawInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices, const std::vector<glm::vec4>& colors,
-                     const ScreenRegion& region, bool frontFacesOnly);
+  // Instances of a closed shape made ready to draw (drawPrepared), possibly more than once:
+  // those that cannot reach a partial redraw's limit left out; with `frontFacesOnly`, those
+  // wholly in front of the near plane go to `impostorBox` where given (joint spheres drawn
+  // by sphere_impostor.*), and the shape's own are drawn without back faces when every one
+  // of them is in front. Uploads the instance buffers.
+  struct Prepared {
+    GLsizei shapes = 0, impostors = 0;
+    bool cullShapes = false;
+  };
+  Prepared prepareInstances(ShapeBuffers& shape, ShapeBuffers* impostorBox, const std::vector<glm::mat4>& matrices,
+                            const std::vector<glm::vec4>& colors, const ScreenRegion& region, bool frontFacesOnly);
+  // Draws them: the shapes with the program in use (shaded_), the impostors with impostor_.
+  void drawPrepared(ShapeBuffers& shape, ShapeBuffers* impostorBox, const Prepared& prepared);
   void uploadInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices, const std::vector<glm::vec4>& colors);
   void drawGrid(const FrameDescription& frame, const glm::mat4& viewProjection);
-  void drawGhosts(const std::vector<SkeletonDrawList>& ghosts, const glm::mat4& viewProjection, const glm::mat4& view);
+  void drawGhosts(const std::vector<SkeletonDrawList>& ghosts, const glm::mat4& viewProjection, const glm::mat4& view,
+                  const ScreenRegion& region, bool frontFacesOnly);
 
   ShaderProgram shaded_, lines_;
+  ShaderProgram impostor_;  // joint spheres while the view moves (shaders/sphere_impostor.*)
   OverlayRenderer overlay_;
   ShapeBuffers bone_, sphere_;
+  ShapeBuffers sphereBox_, ghostSphereBox_;  // the impostors' boxes (makeCube), own instance buffers
   // The ghosts' own instance buffers, uploaded once a frame: re-filling a buffer that a
   // queued draw still reads makes llvmpipe finish the frame so far first.
   ShapeBuffers ghostBone_, ghostSphere_;
@@ -102,8 +115,8 @@ class SkeletonRenderer {
   std::vector<LineVertex> gridCache_;
   float gridCacheCell_ = 0.0f, gridCacheReach_ = 0.0f;
   std::vector<float> instanceScratch_;
-  std::vector<glm::mat4> culledMatrices_;  // drawInstances: the instances a partial redraw keeps
-  std::vector<glm::vec4> culledColors_;
+  std::vector<glm::mat4> shapeMatrices_, impostorMatrices_;  // prepareInstances' two groups
+  std::vector<glm::vec4> shapeColors_, impostorColors_;
 };
 
 }  // namespace kinema
