@@ -19,17 +19,18 @@ const ImTextureID kFont = reinterpret_cast<ImTextureID>(static_cast<intptr_t>(7)
 
 struct ImGuiFrames {
   test::ImGuiTestContext context{kFont};
-  // A panel of 12 lines, line `changed` showing `value`; a second window when `extra`.
-  // Returns the rectangles of lines 0, `changed` and 11 as drawn.
-  std::vector<PixelRect> frame(int changed, float value, bool extra = false) {
+  // A panel of 12 lines, line `changed` (and `alsoChanged`) showing `value`; a second window
+  // when `extra`. Returns the rectangles of lines 0, `changed` and 11 as drawn (and of
+  // `alsoChanged` and of the line halfway between the two, when given).
+  std::vector<PixelRect> frame(int changed, float value, bool extra = false, int alsoChanged = -1) {
     ImGui::NewFrame();
     ImGui::SetNextWindowPos(ImVec2(20, 30));
     ImGui::SetNextWindowSize(ImVec2(300, 400));
     ImGui::Begin("Properties");
     std::vector<PixelRect> lines;
     for (int k = 0; k < 12; ++k) {
-      ImGui::Text("rotation %d: %.3f", k, k == changed ? value : 0.0f);
-      if (k == 0 || k == changed || k == 11) {
+      ImGui::Text("rotation %d: %.3f", k, k == changed || k == alsoChanged ? value : 0.0f);
+      if (k == 0 || k == changed || k == 11 || (alsoChanged >= 0 && (k == alsoChanged || k == (changed + alsoChanged) / 2))) {
         const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
         lines.push_back(PixelRect{int(a.x), int(a.y), int(b.x), int(b.y)});
       }
@@ -74,6 +75,27 @@ TEST(ImGuiDamage, AChangedValueDamagesItsLineAloneAndTheSameFrameNothing) {
   EXPECT_FALSE(damage[0].intersects(lines[0]));
   EXPECT_FALSE(damage[0].intersects(lines[2]));
   EXPECT_GT(damage[0].area(), 0);
+}
+
+// Two values far apart in one window (a moved playhead and the frame number it shows, on a
+// timeline) damage two small rectangles, not the box around both.
+TEST(ImGuiDamage, TwoChangesFarApartInAWindowDamageTwoRectangles) {
+  ImGuiFrames imgui;
+  ImGuiDrawSnapshot last;
+  for (int settle = 0; settle < 3; ++settle) {
+    imgui.frame(2, 1.0f, false, 10);
+    imguiDamage(*ImGui::GetDrawData(), kFont, last);
+  }
+  // Lines 0, 2, 6 (between), 10, 11 in their order of drawing.
+  const std::vector<PixelRect> lines = imgui.frame(2, 2.5f, false, 10);
+  ASSERT_EQ(lines.size(), 5u);
+  const std::vector<PixelRect> damage = imguiDamage(*ImGui::GetDrawData(), kFont, last);
+  ASSERT_EQ(damage.size(), 2u);
+  const PixelRect& first = damage[0].y0 < damage[1].y0 ? damage[0] : damage[1];
+  const PixelRect& second = damage[0].y0 < damage[1].y0 ? damage[1] : damage[0];
+  EXPECT_TRUE(lines[1].grown(1).contains(first));
+  EXPECT_TRUE(lines[3].grown(1).contains(second));
+  EXPECT_FALSE(first.intersects(lines[2]) || second.intersects(lines[2])) << "the line between did not change";
 }
 
 TEST(ImGuiDamage, ANewWindowOrADifferentDisplayDamagesEverything) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <limits>
 
@@ -89,8 +90,29 @@ Drawn drawnOf(const ImGuiDrawSnapshot::List& l) {
   return d;
 }
 
-// The changed triangles of one window's list between two frames.
-void compareList(const Drawn& a, const Drawn& b, ImTextureID font, Box& box) {
+// Boxes of changed triangles, joined when they come within kJoin pixels of each other: a
+// moved playhead and a changed frame number far from it stay two small rectangles.
+constexpr float kJoin = 16.0f;
+bool near(const Box& a, const Box& b) {
+  return a.minX <= b.maxX + kJoin && a.maxX >= b.minX - kJoin && a.minY <= b.maxY + kJoin && a.maxY >= b.minY - kJoin;
+}
+void join(Box& into, const Box& b) {
+  into.minX = std::min(into.minX, b.minX), into.minY = std::min(into.minY, b.minY);
+  into.maxX = std::max(into.maxX, b.maxX), into.maxY = std::max(into.maxY, b.maxY);
+}
+void addToNearest(std::vector<Box>& boxes, const Box& t) {
+  if (t.minX > t.maxX) return;
+  for (Box& b : boxes)
+    if (near(b, t)) return join(b, t);
+  boxes.push_back(t);
+}
+
+// The changed triangles of one window's list between two frames, as boxes (`whole` set on
+// the first for a user callback). Between the triangles alike at the start and at the end,
+// two runs of the same length (the same widgets, some with other values or places) are
+// compared triangle by triangle, so only those that differ count; runs of other lengths
+// count whole.
+std::vector<Box> compareList(const Drawn& a, const Drawn& b, ImTextureID font) {
   const size_t na = a.indexCount - a.indexCount % 3, nb = b.indexCount - b.indexCount % 3;
   size_t prefix = 0;
   while (prefix < na && prefix < nb && sameAt(a, prefix, b, prefix, font)) ++prefix;
@@ -98,8 +120,41 @@ void compareList(const Drawn& a, const Drawn& b, ImTextureID font, Box& box) {
   size_t suffix = 0;
   while (suffix < na - prefix && suffix < nb - prefix && sameAt(a, na - 1 - suffix, b, nb - 1 - suffix, font)) ++suffix;
   suffix -= suffix % 3;
-  for (size_t k = prefix; k < na - suffix; k += 3) box.addTriangle(a, k);
-  for (size_t k = prefix; k < nb - suffix; k += 3) box.addTriangle(b, k);
+  std::vector<Box> boxes;
+  bool whole = false;
+  auto add = [&](const Drawn& d, size_t k) {
+    Box t;
+    t.addTriangle(d, k);
+    whole = whole || t.whole;
+    addToNearest(boxes, t);
+  };
+  if (na - suffix - prefix == nb - suffix - prefix) {
+    for (size_t k = prefix; k < na - suffix; k += 3)
+      if (!sameAt(a, k, b, k, font) || !sameAt(a, k + 1, b, k + 1, font) || !sameAt(a, k + 2, b, k + 2, font))
+        add(a, k), add(b, k);
+  } else {
+    for (size_t k = prefix; k < na - suffix; k += 3) add(a, k);
+    for (size_t k = prefix; k < nb - suffix; k += 3) add(b, k);
+  }
+  // A box grown by joining may now come near another: join until none does.
+  for (bool joined = true; joined;) {
+    joined = false;
+    for (size_t i = 0; i < boxes.size(); ++i)
+      for (size_t j = i + 1; j < boxes.size();) {
+        if (near(boxes[i], boxes[j])) {
+          join(boxes[i], boxes[j]);
+          boxes.erase(boxes.begin() + static_cast<std::ptrdiff_t>(j));
+          joined = true;
+        } else {
+          ++j;
+        }
+      }
+  }
+  if (whole) {
+    boxes.assign(1, Box());
+    boxes[0].whole = true;
+  }
+  return boxes;
 }
 
 void copyInto(ImGuiDrawSnapshot::List& c, const ImDrawList& l) {  // keeps c's capacity
@@ -124,13 +179,12 @@ std::vector<PixelRect> imguiDamage(const ImDrawData& now, ImTextureID fontTextur
   }
   std::vector<PixelRect> out;
   if (!whole) {
-    for (int n = 0; n < now.CmdListsCount && !whole; ++n) {
-      Box box;
-      compareList(drawnOf(last.lists[size_t(n)]), drawnOf(*now.CmdLists[n]), fontTexture, box);
-      whole = box.whole;
-      // Antialiased edges stay inside their vertices; one pixel more covers rounding.
-      if (box.minX <= box.maxX) out.push_back(PixelRect::covering(box.minX, box.minY, box.maxX, box.maxY, display).grown(1));
-    }
+    for (int n = 0; n < now.CmdListsCount && !whole; ++n)
+      for (const Box& box : compareList(drawnOf(last.lists[size_t(n)]), drawnOf(*now.CmdLists[n]), fontTexture)) {
+        whole = whole || box.whole;
+        // Antialiased edges stay inside their vertices; one pixel more covers rounding.
+        if (box.minX <= box.maxX) out.push_back(PixelRect::covering(box.minX, box.minY, box.maxX, box.maxY, display).grown(1));
+      }
   }
   if (whole) out.assign(1, display);
   for (PixelRect& r : out) r = r.intersected(display);
