@@ -1,5 +1,5 @@
 #version 330 core
-// The sphere inside an impostor box (sphere_impostor.vert): the view ray through this pixel
+// The sphere behind an impostor card (sphere_impostor.vert): the view ray through this pixel
 // (from the eye, or straight along -z for an orthographic camera) meets it or the pixel is
 // left alone; where it does, the depth is the sphere's and the light is shaded.frag's.
 in vec3 vViewPosition;

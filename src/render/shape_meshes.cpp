@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <map>
-#include <utility>
 
 namespace kinema {
 
@@ -31,20 +30,11 @@ ShapeMesh makeOctahedralBone() {
   return m;
 }
 
-ShapeMesh makeCube() {
+ShapeMesh makeSquare() {
   ShapeMesh m;
-  // Each face: its axis, its side, and two edge directions whose cross product points out.
-  for (int axis = 0; axis < 3; ++axis)
-    for (const float side : {-1.0f, 1.0f}) {
-      glm::vec3 n(0.0f), u(0.0f), v(0.0f);
-      n[axis] = side;
-      u[(axis + 1) % 3] = 1.0f;
-      v[(axis + 2) % 3] = 1.0f;
-      if (side < 0.0f) std::swap(u, v);  // keeps u x v = n
-      const glm::vec3 a = n - u - v, b = n + u - v, c = n + u + v, d = n - u + v;
-      addFlatTriangle(m, a, b, c);
-      addFlatTriangle(m, a, c, d);
-    }
+  const glm::vec3 a(-1, -1, 0), b(1, -1, 0), c(1, 1, 0), d(-1, 1, 0);
+  addFlatTriangle(m, a, b, c);
+  addFlatTriangle(m, a, c, d);
   return m;
 }
 

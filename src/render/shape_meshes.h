@@ -27,9 +27,9 @@ IndexedShapeMesh weldVertices(const ShapeMesh& mesh);
 // keeps Blender's proportions. 8 flat faces, counter-clockwise seen from outside.
 ShapeMesh makeOctahedralBone();
 
-// The box [-1, 1]^3 around the unit sphere: 12 triangles with flat normals, counter-clockwise
-// seen from outside (the proxy a sphere impostor is drawn on, shaders/sphere_impostor.*).
-ShapeMesh makeCube();
+// The square [-1, 1]^2 in the plane z = 0: two triangles, counter-clockwise seen from +z
+// (the card a sphere impostor is drawn on, shaders/sphere_impostor.*).
+ShapeMesh makeSquare();
 
 // A unit sphere (radius 1, centre at the origin) with smooth normals; `slices` around Y,
 // `stacks` from pole to pole. Counter-clockwise seen from outside.

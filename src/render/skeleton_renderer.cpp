@@ -30,7 +30,7 @@ int dashCount(const glm::vec3& a, const glm::vec3& b, const glm::mat4& viewProje
 }  // namespace
 
 SkeletonRenderer::~SkeletonRenderer() {
-  for (ShapeBuffers* s : {&bone_, &sphere_, &ghostBone_, &ghostSphere_, &sphereBox_, &ghostSphereBox_}) {
+  for (ShapeBuffers* s : {&bone_, &sphere_, &ghostBone_, &ghostSphere_, &sphereCard_, &ghostSphereCard_}) {
     if (s->vao) glDeleteVertexArrays(1, &s->vao);
     if (s->vertices) glDeleteBuffers(1, &s->vertices);
     if (s->indices) glDeleteBuffers(1, &s->indices);
@@ -50,8 +50,8 @@ std::string SkeletonRenderer::init() {
   createShape(sphere_, makeSphere(16, 10));
   createShape(ghostBone_, makeOctahedralBone());
   createShape(ghostSphere_, makeSphere(16, 10));
-  createShape(sphereBox_, makeCube());
-  createShape(ghostSphereBox_, makeCube());
+  createShape(sphereCard_, makeSquare());
+  createShape(ghostSphereCard_, makeSquare());
 
   glGenVertexArrays(1, &lineVao_);
   glGenBuffers(1, &lineVertices_);
@@ -116,7 +116,7 @@ void SkeletonRenderer::uploadInstances(ShapeBuffers& shape, const std::vector<gl
                instanceScratch_.data(), GL_STREAM_DRAW);
 }
 
-SkeletonRenderer::Prepared SkeletonRenderer::prepareInstances(ShapeBuffers& shape, ShapeBuffers* impostorBox,
+SkeletonRenderer::Prepared SkeletonRenderer::prepareInstances(ShapeBuffers& shape, ShapeBuffers* impostorCard,
                                                                const std::vector<glm::mat4>& matrices,
                                                                const std::vector<glm::vec4>& colors,
                                                                const ScreenRegion& region, bool frontFacesOnly) {
@@ -126,7 +126,7 @@ SkeletonRenderer::Prepared SkeletonRenderer::prepareInstances(ShapeBuffers& shap
     if (region.culls() && !region.boxMayCover(matrices[i], shape.boxMin, shape.boxMax)) continue;
     const bool inFront =
         frontFacesOnly && boxInFrontOfNearPlane(region.viewProjection * matrices[i], shape.boxMin, shape.boxMax);
-    if (inFront && impostorBox) {
+    if (inFront && impostorCard) {
       impostorMatrices_.push_back(matrices[i]);
       impostorColors_.push_back(colors[i]);
     } else {
@@ -142,11 +142,11 @@ SkeletonRenderer::Prepared SkeletonRenderer::prepareInstances(ShapeBuffers& shap
   // every one is wholly in front of the near plane.
   p.cullShapes = frontFacesOnly && allInFront;
   if (p.shapes > 0) uploadInstances(shape, shapeMatrices_, shapeColors_);
-  if (p.impostors > 0) uploadInstances(*impostorBox, impostorMatrices_, impostorColors_);
+  if (p.impostors > 0) uploadInstances(*impostorCard, impostorMatrices_, impostorColors_);
   return p;
 }
 
-void SkeletonRenderer::drawPrepared(ShapeBuffers& shape, ShapeBuffers* impostorBox, const Prepared& prepared) {
+void SkeletonRenderer::drawPrepared(ShapeBuffers& shape, ShapeBuffers* impostorCard, const Prepared& prepared) {
   if (prepared.shapes > 0) {
     if (prepared.cullShapes) {
       glEnable(GL_CULL_FACE);
@@ -156,16 +156,14 @@ void SkeletonRenderer::drawPrepared(ShapeBuffers& shape, ShapeBuffers* impostorB
     glDrawElementsInstanced(GL_TRIANGLES, shape.indexCount, GL_UNSIGNED_INT, nullptr, prepared.shapes);
     if (prepared.cullShapes) glDisable(GL_CULL_FACE);
   }
-  if (prepared.impostors > 0 && impostorBox) {
-    // The box's front faces: each pixel of the sphere once (the box is convex).
+  if (prepared.impostors > 0 && impostorCard) {
+    // One card per sphere: each of its pixels once.
     GLint previous = 0;
     glGetIntegerv(GL_CURRENT_PROGRAM, &previous);
     glUseProgram(impostor_.id());
-    glEnable(GL_CULL_FACE);
-    glCullFace(GL_BACK);
-    glBindVertexArray(impostorBox->vao);
-    glDrawElementsInstanced(GL_TRIANGLES, impostorBox->indexCount, GL_UNSIGNED_INT, nullptr, prepared.impostors);
     glDisable(GL_CULL_FACE);
+    glBindVertexArray(impostorCard->vao);
+    glDrawElementsInstanced(GL_TRIANGLES, impostorCard->indexCount, GL_UNSIGNED_INT, nullptr, prepared.impostors);
     glUseProgram(static_cast<GLuint>(previous));
   }
 }
@@ -214,7 +212,7 @@ void SkeletonRenderer::drawGhosts(const std::vector<SkeletonDrawList>& ghosts, c
   glUniformMatrix4fv(shaded_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
   Prepared bones = prepareInstances(ghostBone_, nullptr, ghostMatrices_[0], ghostColors_[0], region, frontFacesOnly);
   Prepared joints =
-      prepareInstances(ghostSphere_, &ghostSphereBox_, ghostMatrices_[1], ghostColors_[1], region, frontFacesOnly);
+      prepareInstances(ghostSphere_, &ghostSphereCard_, ghostMatrices_[1], ghostColors_[1], region, frontFacesOnly);
   // One blended pass with back faces culled: the shapes are closed and wound outward
   // (shape_meshes.h), so a bone blends once where it is seen, at the cost of one pass only.
   bones.cullShapes = joints.cullShapes = true;
@@ -222,7 +220,7 @@ void SkeletonRenderer::drawGhosts(const std::vector<SkeletonDrawList>& ghosts, c
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   drawPrepared(ghostBone_, nullptr, bones);
-  drawPrepared(ghostSphere_, &ghostSphereBox_, joints);
+  drawPrepared(ghostSphere_, &ghostSphereCard_, joints);
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
   glDepthFunc(GL_LESS);
@@ -265,7 +263,6 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
   const glm::mat4 projection = frame.camera.projection(aspect);
   const glm::mat4 viewProjection = projection * view;
   glUseProgram(impostor_.id());
-  glUniformMatrix4fv(impostor_.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
   glUniformMatrix4fv(impostor_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
   glUniformMatrix4fv(impostor_.uniform("uProjection"), 1, GL_FALSE, glm::value_ptr(projection));
   glUniform1i(impostor_.uniform("uOrthographic"), frame.camera.orthographic);
@@ -288,7 +285,7 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
     // makes llvmpipe finish the frame so far first.
     const Prepared bones = prepareInstances(bone_, nullptr, frame.skeleton->boneMatrices, frame.skeleton->boneColors,
                                             region, frame.frontFacesOnly);
-    const Prepared joints = prepareInstances(sphere_, &sphereBox_, frame.skeleton->jointMatrices,
+    const Prepared joints = prepareInstances(sphere_, &sphereCard_, frame.skeleton->jointMatrices,
                                              frame.skeleton->jointColors, region, frame.frontFacesOnly);
     if (xray) {
       // On top of the meshes (or, without any, of the grid): fresh depth, a depth-only pass, then the nearest bone surfaces
@@ -298,14 +295,14 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
       scissorForClears(false);
       glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
       drawPrepared(bone_, nullptr, bones);
-      drawPrepared(sphere_, &sphereBox_, joints);
+      drawPrepared(sphere_, &sphereCard_, joints);
       glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
       glDepthFunc(GL_LEQUAL);
       glEnable(GL_BLEND);
       glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     }
     drawPrepared(bone_, nullptr, bones);
-    drawPrepared(sphere_, &sphereBox_, joints);
+    drawPrepared(sphere_, &sphereCard_, joints);
     if (xray) {
       glDisable(GL_BLEND);
       glDepthFunc(GL_LESS);

@@ -85,17 +85,17 @@ class SkeletonRenderer {
   // `region`: a partial redraw, where instances that cannot reach its limit are left out.
   // Instances of a closed shape made ready to draw (drawPrepared), possibly more than once:
   // those that cannot reach a partial redraw's limit left out; with `frontFacesOnly`, those
-  // wholly in front of the near plane go to `impostorBox` where given (joint spheres drawn
+  // wholly in front of the near plane go to `impostorCard` where given (joint spheres drawn
   // by sphere_impostor.*), and the shape's own are drawn without back faces when every one
   // of them is in front. Uploads the instance buffers.
   struct Prepared {
     GLsizei shapes = 0, impostors = 0;
     bool cullShapes = false;
   };
-  Prepared prepareInstances(ShapeBuffers& shape, ShapeBuffers* impostorBox, const std::vector<glm::mat4>& matrices,
+  Prepared prepareInstances(ShapeBuffers& shape, ShapeBuffers* impostorCard, const std::vector<glm::mat4>& matrices,
                             const std::vector<glm::vec4>& colors, const ScreenRegion& region, bool frontFacesOnly);
   // Draws them: the shapes with the program in use (shaded_), the impostors with impostor_.
-  void drawPrepared(ShapeBuffers& shape, ShapeBuffers* impostorBox, const Prepared& prepared);
+  void drawPrepared(ShapeBuffers& shape, ShapeBuffers* impostorCard, const Prepared& prepared);
   void uploadInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices, const std::vector<glm::vec4>& colors);
   void drawGrid(const FrameDescription& frame, const glm::mat4& viewProjection);
   void drawGhosts(const std::vector<SkeletonDrawList>& ghosts, const glm::mat4& viewProjection, const glm::mat4& view,
@@ -105,7 +105,7 @@ class SkeletonRenderer {
   ShaderProgram impostor_;  // joint spheres while the view moves (shaders/sphere_impostor.*)
   OverlayRenderer overlay_;
   ShapeBuffers bone_, sphere_;
-  ShapeBuffers sphereBox_, ghostSphereBox_;  // the impostors' boxes (makeCube), own instance buffers
+  ShapeBuffers sphereCard_, ghostSphereCard_;  // the impostors' cards (makeSquare), own instance buffers
   // The ghosts' own instance buffers, uploaded once a frame: re-filling a buffer that a
   // queued draw still reads makes llvmpipe finish the frame so far first.
   ShapeBuffers ghostBone_, ghostSphere_;
