@@ -97,16 +97,27 @@ void clearTo(const FrameDescription& f, const PixelRect& r) {
   glDisable(GL_SCISSOR_TEST);
 }
 
-TEST(PartialRedraw, DrawingOnlyTheDamagedRectangleGivesTheWholeFramesPixels) {
-  setenv("LIBGL_ALWAYS_SOFTWARE", "1", 0);
-  Result<std::unique_ptr<HeadlessRenderer>> opened = HeadlessRenderer::open(HeadlessBackend::Egl, kWidth, kHeight);
-  ASSERT_TRUE(opened.ok()) << (opened ? "" : opened.error());
+// The default character uploaded for drawing from CPU-posed vertices (as on llvmpipe, where
+// the editor redraws changed parts) and a renderer, in a headless context of kWidth x kHeight.
+class DefaultCharacterCanvas : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    setenv("LIBGL_ALWAYS_SOFTWARE", "1", 0);
+    Result<std::unique_ptr<HeadlessRenderer>> opened = HeadlessRenderer::open(HeadlessBackend::Egl, kWidth, kHeight);
+    ASSERT_TRUE(opened.ok()) << (opened ? "" : opened.error());
+    headless_ = std::move(opened.value());
+    headless_->meshes().setCpuDeformation(true);
+    ASSERT_EQ(headless_->meshes().upload(scene), "");
+    ASSERT_EQ(renderer.init(), "");
+  }
   const Scene scene = makeDefaultCharacterScene();
-  MeshRenderer& meshes = opened.value()->meshes();
-  meshes.setCpuDeformation(true);  // as on llvmpipe, where the editor redraws changed parts
-  ASSERT_EQ(meshes.upload(scene), "");
+  std::unique_ptr<HeadlessRenderer> headless_;  // before the renderer: its context outlives the renderer's GL objects
   SkeletonRenderer renderer;
-  ASSERT_EQ(renderer.init(), "");
+};
+class PartialRedraw : public DefaultCharacterCanvas {};
+class FrontFacesOnly : public DefaultCharacterCanvas {};
+
+TEST_F(PartialRedraw, DrawingOnlyTheDamagedRectangleGivesTheWholeFramesPixels) {
   const PixelRect view{0, 0, kWidth, kHeight};
   // Held still (every face drawn) and moving (closed shapes' front faces alone).
   for (const bool frontFacesOnly : {false, true}) {
@@ -117,7 +128,7 @@ TEST(PartialRedraw, DrawingOnlyTheDamagedRectangleGivesTheWholeFramesPixels) {
     for (size_t step = 0; step < std::size(elbows); ++step) {
       SCOPED_TRACE("frame " + std::to_string(step) + ", elbow " + std::to_string(elbows[step]) +
                    (frontFacesOnly ? ", front faces only" : ""));
-      Frame frame(scene, meshes, elbows[step]);
+      Frame frame(scene, headless_->meshes(), elbows[step]);
       frame.description.frontFacesOnly = frontFacesOnly;
       SceneDamageJob job;
       job.frame = &frame.description;
@@ -156,22 +167,13 @@ TEST(PartialRedraw, DrawingOnlyTheDamagedRectangleGivesTheWholeFramesPixels) {
 // The same with the body deformed on the CPU (a deformer stack's output, MeshFrame::deformed,
 // drawn through the shader path): the head's vertices pushed sideways a little more each
 // frame, as a lattice point dragged there would.
-TEST(PartialRedraw, ADeformedBodyRedrawnInPartGivesTheWholeFramesPixels) {
-  setenv("LIBGL_ALWAYS_SOFTWARE", "1", 0);
-  Result<std::unique_ptr<HeadlessRenderer>> opened = HeadlessRenderer::open(HeadlessBackend::Egl, kWidth, kHeight);
-  ASSERT_TRUE(opened.ok()) << (opened ? "" : opened.error());
-  const Scene scene = makeDefaultCharacterScene();
-  MeshRenderer& meshes = opened.value()->meshes();
-  meshes.setCpuDeformation(true);
-  ASSERT_EQ(meshes.upload(scene), "");
-  SkeletonRenderer renderer;
-  ASSERT_EQ(renderer.init(), "");
+TEST_F(PartialRedraw, ADeformedBodyRedrawnInPartGivesTheWholeFramesPixels) {
   ViewportTarget partial, whole;
   SceneSnapshot snapshot;
   const PixelRect view{0, 0, kWidth, kHeight};
   for (int step = 0; step < 4; ++step) {
     SCOPED_TRACE("frame " + std::to_string(step));
-    Frame frame(scene, meshes, 0.0f);
+    Frame frame(scene, headless_->meshes(), 0.0f);
     frame.description.bones = BoneDisplay::None;
     std::vector<DeformedPrimitive> deformed = frame.posed;
     for (DeformedPrimitive& d : deformed)
@@ -227,21 +229,12 @@ bool onAnEdge(const Image& img, int x, int y) {
   return false;
 }
 
-TEST(FrontFacesOnly, TheClosedBodyAndBonesDifferOnlyOnSilhouettes) {
-  setenv("LIBGL_ALWAYS_SOFTWARE", "1", 0);
-  Result<std::unique_ptr<HeadlessRenderer>> opened = HeadlessRenderer::open(HeadlessBackend::Egl, kWidth, kHeight);
-  ASSERT_TRUE(opened.ok()) << (opened ? "" : opened.error());
-  const Scene scene = makeDefaultCharacterScene();
-  MeshRenderer& meshes = opened.value()->meshes();
-  meshes.setCpuDeformation(true);
-  ASSERT_EQ(meshes.upload(scene), "");
-  SkeletonRenderer renderer;
-  ASSERT_EQ(renderer.init(), "");
+TEST_F(FrontFacesOnly, TheClosedBodyAndBonesDifferOnlyOnSilhouettes) {
   ViewportTarget target;
   ASSERT_EQ(target.begin(kWidth, kHeight, 1), "");
   const PixelRect view{0, 0, kWidth, kHeight};
   for (const BoneDisplay bones : {BoneDisplay::On, BoneDisplay::XRay}) {
-    Frame frame(scene, meshes, 40.0f);
+    Frame frame(scene, headless_->meshes(), 40.0f);
     frame.description.bones = bones;
     frame.description.ghosts = nullptr;
     const Image every = drawnOnce(renderer, frame, view);
@@ -261,20 +254,11 @@ TEST(FrontFacesOnly, TheClosedBodyAndBonesDifferOnlyOnSilhouettes) {
 
 // With the camera inside the body (the near plane cuts it) its inside is what shows: back
 // faces, which must then stay. The picture is the same to the pixel with the switch on.
-TEST(FrontFacesOnly, ANearPlaneCuttingTheBodyKeepsItsBackFaces) {
-  setenv("LIBGL_ALWAYS_SOFTWARE", "1", 0);
-  Result<std::unique_ptr<HeadlessRenderer>> opened = HeadlessRenderer::open(HeadlessBackend::Egl, kWidth, kHeight);
-  ASSERT_TRUE(opened.ok()) << (opened ? "" : opened.error());
-  const Scene scene = makeDefaultCharacterScene();
-  MeshRenderer& meshes = opened.value()->meshes();
-  meshes.setCpuDeformation(true);
-  ASSERT_EQ(meshes.upload(scene), "");
-  SkeletonRenderer renderer;
-  ASSERT_EQ(renderer.init(), "");
+TEST_F(FrontFacesOnly, ANearPlaneCuttingTheBodyKeepsItsBackFaces) {
   ViewportTarget target;
   ASSERT_EQ(target.begin(kWidth, kHeight, 1), "");
   const PixelRect view{0, 0, kWidth, kHeight};
-  Frame frame(scene, meshes, 0.0f);
+  Frame frame(scene, headless_->meshes(), 0.0f);
   frame.description.bones = BoneDisplay::None;
   frame.description.ghosts = nullptr;
   const int chest = scene.skeleton.find("Chest");
