@@ -25,8 +25,11 @@ struct ImGuiDrawSnapshot {
 // The window pixels (ImGui's display coordinates, origin top left) where `now` draws
 // differently from the frame `last` holds; replaces *last with a copy of `now`. Lists are
 // matched window by window; in each, the triangles both frames draw alike at the start and
-// at the end are skipped (what a changed value leaves of a panel), and the rest of the
-// triangles (in both frames) add their bounds clipped to their commands' rectangles.
+// at the end are skipped (what a changed value leaves of a panel). Between them, two runs of
+// the same length are compared triangle by triangle and only the differing triangles count;
+// runs of other lengths count whole. Counted triangles (in both frames) add their bounds,
+// clipped to their commands' rectangles, to boxes joined when 16 pixels apart or closer, so
+// one window may give several rectangles.
 // Triangles with a texture other than `fontTexture` are taken as changed every frame (their
 // picture may change without their vertices), as is everything after a user callback. The
 // whole display when the windows, their order, the display or the font texture changed, or
