@@ -571,7 +571,7 @@ void MeshRenderer::drawInstancesCpu(const MeshFrame& frame, const CpuPose& pose,
         cullScratch_.clear();
         appendTrianglesInRegion(*region, posed, 6,
                                 static_cast<size_t>(p.vertexCount), scene_->meshes[inst.mesh].primitives[p.primitive].indices,
-                                cullScratch_);
+                                cullScratch_, cullWork_);
         if (!cullScratch_.empty()) {
           glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, cullIndices_);
           glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(cullScratch_.size() * sizeof(uint32_t)),

@@ -186,6 +186,7 @@ class MeshRenderer {
   GLuint cpuBuffer_ = 0;
   GLuint cullIndices_ = 0;  // a partial redraw's triangles (drawInstancesCpu)
   std::vector<uint32_t> cullScratch_;
+  ScreenCullScratch cullWork_;
   std::vector<float> cpuScratch_;
   std::vector<DeformedPrimitive> cpuDeformed_;
   CpuPose cpuPose_;

@@ -1,6 +1,7 @@
 #include "render/screen_culling.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace kinema {
@@ -40,7 +41,8 @@ bool ScreenRegion::boxMayCover(const glm::mat4& model, const glm::vec3& min, con
 }
 
 void appendTrianglesInRegion(const ScreenRegion& region, const float* positions, size_t stride, size_t vertexCount,
-                             const std::vector<uint32_t>& indices, std::vector<uint32_t>& out) {
+                             const std::vector<uint32_t>& indices, std::vector<uint32_t>& out,
+                             ScreenCullScratch& scratch) {
   if (!region.culls()) {
     for (size_t t = 0; t + 2 < indices.size(); t += 3)
       if (indices[t] < vertexCount && indices[t + 1] < vertexCount && indices[t + 2] < vertexCount)
@@ -48,8 +50,10 @@ void appendTrianglesInRegion(const ScreenRegion& region, const float* positions,
     return;
   }
   // Each vertex projected once: its pixel, or "no pixel" (behind the camera, not finite).
-  std::vector<glm::dvec2> pixel(vertexCount);
-  std::vector<char> usable(vertexCount, 0);
+  std::vector<glm::dvec2>& pixel = scratch.pixel;
+  std::vector<char>& usable = scratch.usable;
+  pixel.resize(vertexCount);
+  usable.resize(vertexCount);
   for (size_t v = 0; v < vertexCount; ++v) {
     const float* p = positions + v * stride;
     usable[v] = toPixel(region, glm::vec3(p[0], p[1], p[2]), pixel[v]) && std::isfinite(pixel[v].x) &&

@@ -31,10 +31,18 @@ struct ScreenRegion {
 // limit: covers rounding between this projection (float, as the shader) and the rasteriser's.
 constexpr double kScreenCullMargin = 2.0;
 
-// Of a triangle list (three indices a triangle into `positions`, world space), the
-// triangles that may cover a pixel of region.limit, appended to `out` in their order.
-// Indices out of range are dropped with their triangle (the rasteriser would read garbage).
+// Working memory of appendTrianglesInRegion, kept by the caller so a frame allocates nothing.
+struct ScreenCullScratch {
+  std::vector<glm::dvec2> pixel;  // each vertex's framebuffer pixel
+  std::vector<char> usable;       // 0: at or behind the camera plane, or not finite
+};
+
+// Of a triangle list (three indices a triangle into `positions`, world space, `stride`
+// floats apart), the triangles that may cover a pixel of region.limit, appended to `out` in
+// their order. Indices out of range are dropped with their triangle (the rasteriser would
+// read garbage).
 void appendTrianglesInRegion(const ScreenRegion& region, const float* positions, size_t stride, size_t vertexCount,
-                             const std::vector<uint32_t>& indices, std::vector<uint32_t>& out);
+                             const std::vector<uint32_t>& indices, std::vector<uint32_t>& out,
+                             ScreenCullScratch& scratch);
 
 }  // namespace kinema

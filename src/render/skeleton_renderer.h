@@ -56,6 +56,8 @@ struct FrameDescription {
   // without their back faces where the near plane does not cut them. Seen from outside, a
   // closed surface shows front faces only, so the picture is the same but for silhouette
   // pixels that a back face's edge took, and a software rasteriser fills half the triangles.
+  // Joint spheres in front of the near plane are then drawn as impostors (shaders/
+  // sphere_impostor.*: a card per joint, the sphere found per pixel), as Blender's overlay.
   bool frontFacesOnly = false;
   // Measurement only (kinema edit --report-frame-passes): each pass is marked on it. May be null.
   FramePassTimer* timer = nullptr;
@@ -82,7 +84,6 @@ class SkeletonRenderer {
     glm::vec3 boxMin{0.0f}, boxMax{0.0f};  // the shape's bounds in its own space
   };
   void createShape(ShapeBuffers& shape, const ShapeMesh& mesh);
-  // `region`: a partial redraw, where instances that cannot reach its limit are left out.
   // Instances of a closed shape made ready to draw (drawPrepared), possibly more than once:
   // those that cannot reach a partial redraw's limit left out; with `frontFacesOnly`, those
   // wholly in front of the near plane go to `impostorCard` where given (joint spheres drawn

@@ -100,11 +100,20 @@ void join(Box& into, const Box& b) {
   into.minX = std::min(into.minX, b.minX), into.minY = std::min(into.minY, b.minY);
   into.maxX = std::max(into.maxX, b.maxX), into.maxY = std::max(into.maxY, b.maxY);
 }
+// At most kMostBoxes a window (the damage is merged to four rectangles later anyway): past
+// that, a box joins the one whose centre is nearest, so the work stays linear.
+constexpr size_t kMostBoxes = 16;
 void addToNearest(std::vector<Box>& boxes, const Box& t) {
   if (t.minX > t.maxX) return;
   for (Box& b : boxes)
     if (near(b, t)) return join(b, t);
-  boxes.push_back(t);
+  if (boxes.size() < kMostBoxes) return boxes.push_back(t);
+  auto centreDistance = [&t](const Box& b) {
+    return std::abs(b.minX + b.maxX - t.minX - t.maxX) + std::abs(b.minY + b.maxY - t.minY - t.maxY);
+  };
+  join(*std::min_element(boxes.begin(), boxes.end(),
+                         [&](const Box& x, const Box& y) { return centreDistance(x) < centreDistance(y); }),
+       t);
 }
 
 // The changed triangles of one window's list between two frames, as boxes (`whole` set on

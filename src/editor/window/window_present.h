@@ -21,7 +21,6 @@ class WindowPresenter {
   // probed for the window. Without both, present() always swaps.
   WindowPresenter(GLFWwindow* window, bool backBufferKept);
 
-  bool copiesRectangles() const { return copySubBuffer_ != nullptr; }
   // The window's pixels were lost or covered (GLFW's refresh callback): the next present()
   // shows the whole buffer.
   void markExposed() { whole_ = true; }
