@@ -59,7 +59,8 @@ TEST(ScreenCulling, KeepsEveryTriangleThatCoversALimitPixelAndDropsFarOnes) {
     }
   }
   std::vector<uint32_t> kept = {7, 7, 7};  // appended to, not replaced
-  appendTrianglesInRegion(region, positions.data(), 4, positions.size() / 4, indices, kept);
+  ScreenCullScratch scratch;
+  appendTrianglesInRegion(region, positions.data(), 4, positions.size() / 4, indices, kept, scratch);
   ASSERT_EQ(kept.size() % 3, 0u);
   std::vector<char> isKept(indices.size() / 3, 0);
   for (size_t k = 3; k < kept.size(); k += 3) {
@@ -109,11 +110,12 @@ TEST(ScreenCulling, KeepsTrianglesBehindTheCameraAndDropsBadIndices) {
   };
   const std::vector<uint32_t> indices = {0, 1, 2, 0, 3, 4, 0, 1, 9};
   std::vector<uint32_t> kept;
-  appendTrianglesInRegion(region, positions.data(), 3, 5, indices, kept);
+  ScreenCullScratch scratch;
+  appendTrianglesInRegion(region, positions.data(), 3, 5, indices, kept, scratch);
   EXPECT_EQ(kept, (std::vector<uint32_t>{0, 3, 4}));
   // Without a limit (or one holding the whole viewport) everything in range is kept.
   kept.clear();
-  appendTrianglesInRegion(regionOf(PixelRect{}), positions.data(), 3, 5, indices, kept);
+  appendTrianglesInRegion(regionOf(PixelRect{}), positions.data(), 3, 5, indices, kept, scratch);
   EXPECT_EQ(kept, (std::vector<uint32_t>{0, 1, 2, 0, 3, 4}));
   EXPECT_FALSE(regionOf(PixelRect{0, 0, 1000, 1000}).culls());
 }
