@@ -106,14 +106,16 @@ TEST_F(ViewportQualityE2e, TheXServersWindowMatchesTheWholeFrameAfterChangedRect
   const glm::dvec2 elbow = camera.pixel(jointIn(front_, "LowerArm.L"));
   const Rect row = itemRect(front_, "Outliner/UpperArm.L");
   const auto at = [](glm::dvec2 p) { return std::to_string(std::lround(p.x)) + " " + std::to_string(std::lround(p.y)); };
-  // Captures the window every 0.4 s until two in a row are alike below the status bar (its
-  // frame rate changes): the editor has caught up with the input and holds still.
+  // Captures the window every 0.4 s until three in a row are alike below the status bar (its
+  // frame rate changes): the editor has caught up with the input and held still for 0.8 s
+  // (a loaded machine may pause it for a moment, which one repeat alone could mistake).
   const int statusBar = 40, width = windowPixels().x, height = windowPixels().y;
-  const std::string settle = "settle() { prev=; for i in $(seq 60); do sleep 0.4; import -window $w " + dir_ +
+  const std::string settle = "settle() { prev=; same=0; for i in $(seq 80); do sleep 0.4; import -window $w " + dir_ +
                              "/cap.png; convert " + dir_ + "/cap.png -crop " + std::to_string(width) + "x" +
                              std::to_string(height - statusBar) + "+0+0 +repage -depth 8 rgba:" + dir_ +
-                             "/cap.rgba; cur=$(md5sum < " + dir_ +
-                             "/cap.rgba); [ \"$cur\" = \"$prev\" ] && cp " + dir_ + "/cap.png \"$1\" && return 0; prev=$cur; done; return 1; }\n";
+                             "/cap.rgba; cur=$(md5sum < " + dir_ + "/cap.rgba); if [ \"$cur\" = \"$prev\" ]; then " +
+                             "same=$((same + 1)); else same=0; fi; [ $same -ge 2 ] && cp " + dir_ +
+                             "/cap.png \"$1\" && return 0; prev=$cur; done; return 1; }\n";
   const std::string sh = dir_ + "/drive.sh";
   std::ofstream(sh) << "set -e\n"
                     << settle << editorEnvironment(dir_) << KINEMA_BINARY << " edit --size " << windowSize()
