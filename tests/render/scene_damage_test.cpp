@@ -12,6 +12,7 @@ namespace kinema {
 namespace {
 
 constexpr int kX = 40, kY = 20, kW = 400, kH = 300;  // the view inside a larger framebuffer
+const PixelRect kWholeView{kX, kY, kX + kW, kY + kH};
 
 FrameDescription frameOf(const SkeletonDrawList* bones, const OverlayDrawList* overlay) {
   FrameDescription f;
@@ -61,12 +62,12 @@ TEST(SceneDamage, TheFirstFrameAndAChangedCameraDamageTheWholeViewAndTheSameFram
   const SkeletonDrawList bones = twoBones(glm::vec3(3, 1, 0));
   FrameDescription f = frameOf(&bones, nullptr);
   Damage damage(f);
-  EXPECT_EQ(damage.next(), (PixelRect{kX, kY, kX + kW, kY + kH}));
+  EXPECT_EQ(damage.next(), kWholeView);
   EXPECT_TRUE(damage.next().empty());
   f.camera.azimuthDeg = 1.0f;
-  EXPECT_EQ(damage.next(), (PixelRect{kX, kY, kX + kW, kY + kH}));
+  EXPECT_EQ(damage.next(), kWholeView);
   f.showGrid = false;  // a switch
-  EXPECT_EQ(damage.next(), (PixelRect{kX, kY, kX + kW, kY + kH}));
+  EXPECT_EQ(damage.next(), kWholeView);
 }
 
 TEST(SceneDamage, AMovedBoneDamagesItsOldAndNewPlaceAndNotTheOtherBone) {
@@ -123,7 +124,7 @@ TEST(SceneDamage, AMovedGhostDamagesItsPlaceAndAnotherNumberOfGhostsTheWholeView
   EXPECT_TRUE(holds(out, pixelOf(f, glm::vec3(3.8f, 0.6f, 0))));
   EXPECT_FALSE(holds(out, pixelOf(f, glm::vec3(-3, 0.5f, 0))));
   ghosts.push_back(ghosts[0]);
-  EXPECT_EQ(damage.next(), (PixelRect{kX, kY, kX + kW, kY + kH}));
+  EXPECT_EQ(damage.next(), kWholeView);
 }
 
 TEST(SceneDamage, APointBehindTheCameraOrADifferentCountRedrawsEverything) {
@@ -131,7 +132,7 @@ TEST(SceneDamage, APointBehindTheCameraOrADifferentCountRedrawsEverything) {
   FrameDescription f = frameOf(&bones, nullptr);
   Damage damage(f);
   damage.next();
-  const PixelRect whole{kX, kY, kX + kW, kY + kH};
+  const PixelRect& whole = kWholeView;
   bones = twoBones(glm::vec3(3, 1, 20));  // the tail reaches past the camera (at z = 10)
   EXPECT_EQ(damage.next(), whole);
   bones.boneMatrices.pop_back();
@@ -151,7 +152,7 @@ TEST(SceneDamage, MeshesNotPosedOnTheCpuRedrawTheWholeViewWhenTheirJointsMoveAnd
   meshes.frame.world = &world;
   f.meshes = &meshes;
   Damage damage(f);
-  const PixelRect whole{kX, kY, kX + kW, kY + kH};
+  const PixelRect& whole = kWholeView;
   EXPECT_EQ(damage.next(), whole);
   EXPECT_TRUE(damage.next().empty()) << "an idle frame (the weights view, a GPU) draws nothing";
   world[0] = glm::translate(glm::mat4(1.0f), glm::vec3(0.1f, 0, 0));
