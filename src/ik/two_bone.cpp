@@ -52,7 +52,8 @@ struct PathWorld {
       const Transform* local = pose.local.data();
 #if defined(__SSE2__)
       // The same products in SSE registers (ik_detail::simd: the same bits), the rotation
-      // and position carried from joint to joint.
+      // and position carried from joint to joint. Under an identity placement the top
+      // joint's world rotation is its local one as it is, -0 components included.
       namespace simd = ik_detail::simd;
       __m128 qv = simd::load(q), pv = simd::load3(p);
       for (int i = n - 1; i >= 0; --i) {
@@ -60,7 +61,7 @@ struct PathWorld {
         if (up[i] == root) inPath = true;
         // t.translation is followed by t.rotation: a 4-float load stays inside t.
         pv = _mm_add_ps(pv, simd::rotate(qv, _mm_loadu_ps(&t.translation.x)));
-        qv = simd::mul(qv, simd::load(t.rotation));
+        qv = identity && i == n - 1 ? simd::load(t.rotation) : simd::mul(qv, simd::load(t.rotation));
         if (inPath) {
           joints[count] = up[i];
           simd::store(rotation[count], qv);
@@ -72,7 +73,7 @@ struct PathWorld {
         const Transform& t = local[up[i]];
         if (up[i] == root) inPath = true;
         p += ik_detail::rotate(q, t.translation);
-        q = ik_detail::mul(q, t.rotation);
+        q = identity && i == n - 1 ? t.rotation : ik_detail::mul(q, t.rotation);
         if (inPath) {
           joints[count] = up[i];
           rotation[count] = q;
@@ -102,6 +103,40 @@ struct PathWorld {
     return -1;
   }
 };
+
+#if defined(__SSE2__)
+// One transform read float by float into lanes: translation (x y z 0) and rotation
+// (x y z w); true when all ten floats are finite and the scale is exactly 1. A caller that
+// has just copied the pose (memcpy's wide, overlapping stores) would make a 16-byte load
+// that straddles two of those stores wait until they reach the cache (a failed store
+// forward); 4-byte loads always forward.
+KINEMA_IK_INLINE bool loadFloatByFloat(const Transform& t, __m128& translation, __m128& rotation) {
+  const float* p = &t.translation.x;
+  auto lanes = [](const float* f, __m128 w) {
+    return _mm_movelh_ps(_mm_unpacklo_ps(_mm_load_ss(f), _mm_load_ss(f + 1)), _mm_unpacklo_ps(_mm_load_ss(f + 2), w));
+  };
+  translation = lanes(p, _mm_setzero_ps());
+  rotation = lanes(p + 3, _mm_load_ss(p + 6));
+  const __m128 scale = lanes(p + 7, _mm_set_ss(1.0f));
+  const __m128i exponent = _mm_set1_epi32(0x7f800000);
+  auto bad = [&](__m128 l) { return _mm_cmpeq_epi32(_mm_and_si128(_mm_castps_si128(l), exponent), exponent); };
+  const int nonFinite = _mm_movemask_epi8(_mm_or_si128(_mm_or_si128(bad(translation), bad(rotation)), bad(scale)));
+  const int scaled = _mm_movemask_ps(_mm_cmpneq_ps(scale, _mm_set1_ps(1.0f)));
+  return (nonFinite | scaled) == 0;
+}
+
+// ik_detail::makeUnit on a rotation already in lanes (the same test, the same bits);
+// `stored`, where it came from, is written only when it changes.
+KINEMA_IK_INLINE void makeUnitInLanes(__m128& rotation, glm::quat& stored) {
+  const __m128 sq = _mm_mul_ps(rotation, rotation);
+  const __m128 pairs = _mm_add_ps(sq, _mm_shuffle_ps(sq, sq, _MM_SHUFFLE(0, 1, 2, 3)));
+  const float d = _mm_cvtss_f32(_mm_add_ss(pairs, _mm_shuffle_ps(pairs, pairs, _MM_SHUFFLE(1, 1, 1, 1))));
+  if (std::abs(d - 1.0f) > 1e-6f) {
+    ik_detail::makeUnit(stored);
+    rotation = ik_detail::simd::load(stored);
+  }
+}
+#endif
 
 // The job on one arm and its corrections applied to the pose: a (root), b (middle) and c
 // (effector) at model-space positions pa, pb, pc with world rotations ra, rb (raw FK
@@ -199,8 +234,15 @@ bool solvePlain(const IkProblem& problem, const IkSettings& settings, IkResult& 
   // Up from the effector to the top: every joint finite and unscaled; b above c, a above b.
   int up[kMaxDepth];
   int depth = 0, ib = -1, ia = -1;
+#if defined(__SSE2__)
+  namespace simd = ik_detail::simd;
+  __m128 translations[kMaxDepth], rotations[kMaxDepth];  // of up[i], read once
+  for (int j = c; j >= 0; j = parents[j]) {
+    if (depth == kMaxDepth || !loadFloatByFloat(local[j], translations[depth], rotations[depth])) return false;
+#else
   for (int j = c; j >= 0; j = parents[j]) {
     if (depth == kMaxDepth || !ik_detail::finiteUnscaled(local[j])) return false;
+#endif
     if (j == b && ib < 0) ib = depth;
     if (j == a && ib >= 0 && ia < 0) ia = depth;
     up[depth++] = j;
@@ -209,33 +251,33 @@ bool solvePlain(const IkProblem& problem, const IkSettings& settings, IkResult& 
   // Valid: from here on the general path would do the same.
   out.iterations = 1;
   out.converged = true;
-  for (int i = 0; i <= ia; ++i) ik_detail::makeUnit(local[up[i]].rotation);
   // FK down from the top (identity placement): positions and raw world rotations.
   glm::vec3 pa, pb, pc;
   glm::quat ra, rb, rcp;
 #if defined(__SSE2__)
-  namespace simd = ik_detail::simd;
+  for (int i = 0; i <= ia; ++i) makeUnitInLanes(rotations[i], local[up[i]].rotation);
   // The top joint: 0 + rotate(identity, t) is 0 + t bit for bit (x + 0 = x for x != 0, and
-  // every sum of zeros that starts from +0 is +0), so its rotation is left out; its
-  // product with the identity is kept (it may turn a -0 component into +0).
-  __m128 q = _mm_set_ps(1.0f, 0.0f, 0.0f, 0.0f);
-  __m128 p = _mm_add_ps(_mm_setzero_ps(), simd::load3(local[up[depth - 1]].translation));
+  // every sum of zeros that starts from +0 is +0), and its world rotation is its local one.
+  __m128 q = rotations[depth - 1];
+  __m128 p = _mm_add_ps(_mm_setzero_ps(), translations[depth - 1]);
   for (int i = depth - 1; i >= 0; --i) {
-    const Transform& tr = local[up[i]];
-    if (i < depth - 1) p = _mm_add_ps(p, simd::rotate(q, _mm_loadu_ps(&tr.translation.x)));
-    q = simd::mul(q, simd::load(tr.rotation));
+    if (i < depth - 1) {
+      p = _mm_add_ps(p, simd::rotate(q, translations[i]));
+      q = simd::mul(q, rotations[i]);
+    }
     if (i == ia) simd::store(ra, q), simd::store3(pa, p);
     if (i == ib) simd::store(rb, q), simd::store3(pb, p);
     if (i == 1) simd::store(rcp, q);
   }
   simd::store3(pc, p);
 #else
+  for (int i = 0; i <= ia; ++i) ik_detail::makeUnit(local[up[i]].rotation);
   glm::quat q(1.0f, 0.0f, 0.0f, 0.0f);
   glm::vec3 p(0.0f);
   for (int i = depth - 1; i >= 0; --i) {
     const Transform& tr = local[up[i]];
     p += ik_detail::rotate(q, tr.translation);
-    q = ik_detail::mul(q, tr.rotation);
+    q = i == depth - 1 ? tr.rotation : ik_detail::mul(q, tr.rotation);
     if (i == ia) ra = q, pa = p;
     if (i == ib) rb = q, pb = p;
     if (i == 1) rcp = q;

@@ -24,7 +24,7 @@ KINEMA_IK_INLINE glm::quat unitFromTo(const glm::vec3& a, const glm::vec3& b) {
   if (d < -0.999999f) return fromToRotation(a, b);
   const glm::vec3 c = glm::cross(a, b);
   const glm::quat q(1.0f + d, c.x, c.y, c.z);
-  return q * (1.0f / sqrtFloat(glm::dot(q, q)));
+  return q / sqrtFloat(glm::dot(q, q));
 }
 
 inline glm::vec3 anyPerpendicular(const glm::vec3& v) {
@@ -58,7 +58,7 @@ inline void runTwoBoneJobScalar(const TwoBoneIkJob& job) {
 
   glm::vec3 u;
   if (dist > 1e-12f) {
-    u = toTarget * (1.0f / dist);
+    u = toTarget / dist;
   } else {  // target on the start joint: keep the current aim
     u = job.endPosition - job.startPosition;
     if (glm::dot(u, u) < 1e-20f) u = ab;
@@ -78,7 +78,7 @@ inline void runTwoBoneJobScalar(const TwoBoneIkJob& job) {
       nn = glm::dot(n, n);
     }
   }
-  glm::vec3 w = glm::cross(n, u) * (1.0f / sqrtFloat(nn));
+  glm::vec3 w = glm::cross(n, u) / sqrtFloat(nn);
   if (job.twistAngle != 0.0f) w = std::cos(job.twistAngle) * w + std::sin(job.twistAngle) * glm::cross(u, w);
 
   // World rotations: dA turns the whole arm about the start joint, dB the lower bone
@@ -123,6 +123,7 @@ KINEMA_IK_INLINE float dot3(__m128 a, __m128 b) {
                                   _mm_shuffle_ps(t, t, _MM_SHUFFLE(2, 2, 2, 2))));
 }
 KINEMA_IK_INLINE __m128 scale(__m128 v, float s) { return _mm_mul_ps(v, _mm_set1_ps(s)); }
+KINEMA_IK_INLINE __m128 divide(__m128 v, float s) { return _mm_div_ps(v, _mm_set1_ps(s)); }
 KINEMA_IK_INLINE glm::vec3 toVec3(__m128 v) {
   glm::vec3 r;
   simd::store3(r, v);
@@ -140,7 +141,7 @@ KINEMA_IK_INLINE __m128 unitFromTo(__m128 a, __m128 b) {
   const __m128 sq = _mm_mul_ps(q, q);
   const __m128 pairs = _mm_add_ps(sq, _mm_shuffle_ps(sq, sq, _MM_SHUFFLE(0, 1, 2, 3)));
   const float n = _mm_cvtss_f32(_mm_add_ss(pairs, _mm_shuffle_ps(pairs, pairs, _MM_SHUFFLE(1, 1, 1, 1))));
-  return scale(q, 1.0f / sqrtFloat(n));
+  return divide(q, sqrtFloat(n));
 }
 }  // namespace twobone_simd
 
@@ -163,7 +164,7 @@ KINEMA_IK_INLINE bool runTwoBoneJobSse(const TwoBoneIkJob& job) {
   if (!(dist > 1e-12f)) return false;
   const float minReach = std::abs(l1 - l2);
   const float d = std::clamp(dist, minReach, reach);
-  const __m128 u = ts::scale(toTarget, 1.0f / dist);
+  const __m128 u = ts::divide(toTarget, dist);
   const __m128 pole = simd::load3(job.pole);
   __m128 n = simd::cross(u, pole);
   float nn = ts::dot3(n, n);
@@ -172,7 +173,7 @@ KINEMA_IK_INLINE bool runTwoBoneJobSse(const TwoBoneIkJob& job) {
     nn = ts::dot3(n, n);
     if (!(nn > 1e-10f * ts::dot3(ab, ab))) return false;
   }
-  const __m128 w = ts::scale(simd::cross(n, u), 1.0f / sqrtFloat(nn));
+  const __m128 w = ts::divide(simd::cross(n, u), sqrtFloat(nn));
   const float cosA = d > 1e-12f ? std::clamp((l1 * l1 + d * d - l2 * l2) / (2.0f * l1 * d), -1.0f, 1.0f) : 0.0f;
   const float sinA = sqrtFloat(std::max(0.0f, 1.0f - cosA * cosA));
   const __m128 midDir = _mm_add_ps(ts::scale(u, cosA), ts::scale(w, sinA));
