@@ -3,6 +3,8 @@
 namespace kinema::shaders {
 extern const char* const shaded_vert;
 extern const char* const shaded_frag;
+extern const char* const faceted_vert;
+extern const char* const faceted_frag;
 extern const char* const lines_vert;
 extern const char* const lines_frag;
 extern const char* const mesh_vert;

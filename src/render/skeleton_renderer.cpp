@@ -42,6 +42,7 @@ SkeletonRenderer::~SkeletonRenderer() {
 
 std::string SkeletonRenderer::init() {
   std::string error = shaded_.build("shaded", shaders::shaded_vert, shaders::shaded_frag);
+  if (error.empty()) error = faceted_.build("faceted", shaders::faceted_vert, shaders::faceted_frag);
   if (error.empty()) error = impostor_.build("sphere_impostor", shaders::sphere_impostor_vert, shaders::sphere_impostor_frag);
   if (error.empty()) error = lines_.build("lines", shaders::lines_vert, shaders::lines_frag);
   if (error.empty()) error = overlay_.init();
@@ -146,8 +147,18 @@ SkeletonRenderer::Prepared SkeletonRenderer::prepareInstances(ShapeBuffers& shap
   return p;
 }
 
-void SkeletonRenderer::drawPrepared(ShapeBuffers& shape, ShapeBuffers* impostorCard, const Prepared& prepared) {
+void SkeletonRenderer::setLitMatrices(const glm::mat4& viewProjection, const glm::mat4& view) {
+  for (const ShaderProgram* p : {&shaded_, &faceted_}) {
+    glUseProgram(p->id());
+    glUniformMatrix4fv(p->uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
+    glUniformMatrix4fv(p->uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
+  }
+}
+
+void SkeletonRenderer::drawPrepared(ShapeBuffers& shape, ShapeBuffers* impostorCard, const Prepared& prepared,
+                                    const ShaderProgram& lit) {
   if (prepared.shapes > 0) {
+    glUseProgram(lit.id());
     if (prepared.cullShapes) {
       glEnable(GL_CULL_FACE);
       glCullFace(GL_BACK);
@@ -158,13 +169,10 @@ void SkeletonRenderer::drawPrepared(ShapeBuffers& shape, ShapeBuffers* impostorC
   }
   if (prepared.impostors > 0 && impostorCard) {
     // One card per sphere: each of its pixels once.
-    GLint previous = 0;
-    glGetIntegerv(GL_CURRENT_PROGRAM, &previous);
     glUseProgram(impostor_.id());
     glDisable(GL_CULL_FACE);
     glBindVertexArray(impostorCard->vao);
     glDrawElementsInstanced(GL_TRIANGLES, impostorCard->indexCount, GL_UNSIGNED_INT, nullptr, prepared.impostors);
-    glUseProgram(static_cast<GLuint>(previous));
   }
 }
 
@@ -207,9 +215,7 @@ void SkeletonRenderer::drawGhosts(const std::vector<SkeletonDrawList>& ghosts, c
     ghostMatrices_[1].insert(ghostMatrices_[1].end(), g.jointMatrices.begin(), g.jointMatrices.end());
     ghostColors_[1].insert(ghostColors_[1].end(), g.jointColors.begin(), g.jointColors.end());
   }
-  glUseProgram(shaded_.id());
-  glUniformMatrix4fv(shaded_.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
-  glUniformMatrix4fv(shaded_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
+  setLitMatrices(viewProjection, view);
   Prepared bones = prepareInstances(ghostBone_, nullptr, ghostMatrices_[0], ghostColors_[0], region, frontFacesOnly);
   Prepared joints =
       prepareInstances(ghostSphere_, &ghostSphereCard_, ghostMatrices_[1], ghostColors_[1], region, frontFacesOnly);
@@ -219,8 +225,8 @@ void SkeletonRenderer::drawGhosts(const std::vector<SkeletonDrawList>& ghosts, c
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-  drawPrepared(ghostBone_, nullptr, bones);
-  drawPrepared(ghostSphere_, &ghostSphereCard_, joints);
+  drawPrepared(ghostBone_, nullptr, bones, faceted_);
+  drawPrepared(ghostSphere_, &ghostSphereCard_, joints, shaded_);
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
   glDepthFunc(GL_LESS);
@@ -277,9 +283,7 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
     frame.meshes->renderer->drawGhosts(*frame.meshGhosts, viewProjection, view);
   mark("3D view: mesh ghosts");
   if (frame.skeleton && frame.bones != BoneDisplay::None) {
-    glUseProgram(shaded_.id());
-    glUniformMatrix4fv(shaded_.uniform("uViewProjection"), 1, GL_FALSE, glm::value_ptr(viewProjection));
-    glUniformMatrix4fv(shaded_.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view));
+    setLitMatrices(viewProjection, view);
     const bool xray = frame.bones == BoneDisplay::XRay;
     // Made ready once, drawn once or (x-ray) twice: re-filling a buffer a queued draw reads
     // makes llvmpipe finish the frame so far first.
@@ -294,15 +298,15 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
       glClear(GL_DEPTH_BUFFER_BIT);
       scissorForClears(false);
       glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-      drawPrepared(bone_, nullptr, bones);
-      drawPrepared(sphere_, &sphereCard_, joints);
+      drawPrepared(bone_, nullptr, bones, faceted_);
+      drawPrepared(sphere_, &sphereCard_, joints, shaded_);
       glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
       glDepthFunc(GL_LEQUAL);
       glEnable(GL_BLEND);
       glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     }
-    drawPrepared(bone_, nullptr, bones);
-    drawPrepared(sphere_, &sphereCard_, joints);
+    drawPrepared(bone_, nullptr, bones, faceted_);
+    drawPrepared(sphere_, &sphereCard_, joints, shaded_);
     if (xray) {
       glDisable(GL_BLEND);
       glDepthFunc(GL_LESS);
@@ -315,7 +319,6 @@ void SkeletonRenderer::draw(const FrameDescription& frame) {
         dashed.addDashedLine(r.from, r.to, dashCount(r.from, r.to, viewProjection, frame.width, frame.height), r.color,
                              frame.lineScale, xray ? OverlayDrawList::Layer::OnTop : OverlayDrawList::Layer::Scene);
       overlay_.draw(dashed, viewProjection, frame.width, frame.height);
-      glUseProgram(shaded_.id());
     }
   }
   mark("3D view: bones");

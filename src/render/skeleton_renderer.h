@@ -95,14 +95,18 @@ class SkeletonRenderer {
   };
   Prepared prepareInstances(ShapeBuffers& shape, ShapeBuffers* impostorCard, const std::vector<glm::mat4>& matrices,
                             const std::vector<glm::vec4>& colors, const ScreenRegion& region, bool frontFacesOnly);
-  // Draws them: the shapes with the program in use (shaded_), the impostors with impostor_.
-  void drawPrepared(ShapeBuffers& shape, ShapeBuffers* impostorCard, const Prepared& prepared);
+  // Draws them: the shapes with `lit` (faceted_ or shaded_, its matrices set by useLit), the
+  // impostors with impostor_.
+  void drawPrepared(ShapeBuffers& shape, ShapeBuffers* impostorCard, const Prepared& prepared, const ShaderProgram& lit);
+  // Sets both lit programs' view and projection for this frame.
+  void setLitMatrices(const glm::mat4& viewProjection, const glm::mat4& view);
   void uploadInstances(ShapeBuffers& shape, const std::vector<glm::mat4>& matrices, const std::vector<glm::vec4>& colors);
   void drawGrid(const FrameDescription& frame, const glm::mat4& viewProjection);
   void drawGhosts(const std::vector<SkeletonDrawList>& ghosts, const glm::mat4& viewProjection, const glm::mat4& view,
                   const ScreenRegion& region, bool frontFacesOnly);
 
   ShaderProgram shaded_, lines_;
+  ShaderProgram faceted_;   // bones: flat faces lit once per vertex (shaders/faceted.*)
   ShaderProgram impostor_;  // joint spheres while the view moves (shaders/sphere_impostor.*)
   OverlayRenderer overlay_;
   ShapeBuffers bone_, sphere_;

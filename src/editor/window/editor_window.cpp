@@ -37,6 +37,7 @@
 #include "io/image.h"
 #include "render/loose_joints.h"
 #include "render/mesh_renderer.h"
+#include "render/rect_clear.h"
 #include "render/skeleton_renderer.h"
 #include "render/frame_pass_timer.h"
 #include "render/frame_signature.h"
@@ -58,6 +59,9 @@ static_assert(keys::ESCAPE == GLFW_KEY_ESCAPE && keys::HOME == GLFW_KEY_HOME && 
               "key_codes.h: named keys, function keys, keypad, modifiers");
 
 namespace {
+
+// The window's background, behind the panels and in the 3D view (drawn there without a clear of its own).
+constexpr glm::vec4 kWindowGrey(0.235f, 0.235f, 0.235f, 1.0f);
 
 // What the 3D view's area of the window shows: the canvas of changed-only redraws keeps it
 // from one frame to the next, and a different content redraws the whole area.
@@ -277,6 +281,8 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
     // opened (edits never change meshes).
     MeshRenderer meshes;
     if (error.empty()) error = meshes.init();
+    RectClear rectClear;  // the changed-only frames' clears
+    if (error.empty()) error = rectClear.init();
     std::vector<char> skinJoints;  // bones only between skin joints (skinJointMask)
     glm::vec3 meshReach(0.0f);     // how far the body reaches past the joints (a head above the neck)
     auto uploadMeshes = [&]() -> std::string {
@@ -440,7 +446,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       if (o.emptyFrame) {
         glViewport(0, 0, fbw, fbh);
-        glClearColor(0.235f, 0.235f, 0.235f, 1.0f);
+        glClearColor(kWindowGrey.r, kWindowGrey.g, kWindowGrey.b, kWindowGrey.a);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         imguiBackendsRenderDrawData(ImGui::GetDrawData());
         state.windowRedraw = {false, false, 1, static_cast<long long>(fbw) * fbh};
@@ -628,7 +634,7 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
         if (!changedOnly) {
           glBindFramebuffer(GL_FRAMEBUFFER, 0);
           glViewport(0, 0, fbw, fbh);
-          glClearColor(0.235f, 0.235f, 0.235f, 1.0f);
+          glClearColor(kWindowGrey.r, kWindowGrey.g, kWindowGrey.b, kWindowGrey.a);
           glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
           mark("clear the window");
           drawView(PixelRect{});
@@ -666,13 +672,9 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
           std::vector<ImVec4> clips;  // the same rectangles in ImGui's display coordinates
           glBindFramebuffer(GL_FRAMEBUFFER, drawFramebuffer);
           glViewport(0, 0, fbw, fbh);
-          glEnable(GL_SCISSOR_TEST);
-          glClearColor(0.235f, 0.235f, 0.235f, 1.0f);
-          glClearDepth(1.0);
+          rectClear.clear(rects, fbw, fbh, kWindowGrey);
           for (const PixelRect& r : rects) {
             pixels += r.area();
-            glScissor(r.x0, r.y0, r.width(), r.height());
-            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
             clips.push_back(ImVec4(r.x0 / sx, (fbh - r.y1) / sy, r.x1 / sx, (fbh - r.y0) / sy));
           }
           mark("clear the window");
