@@ -95,7 +95,7 @@ class SkeletonRenderer {
   };
   Prepared prepareInstances(ShapeBuffers& shape, ShapeBuffers* impostorCard, const std::vector<glm::mat4>& matrices,
                             const std::vector<glm::vec4>& colors, const ScreenRegion& region, bool frontFacesOnly);
-  // Draws them: the shapes with `lit` (faceted_ or shaded_, its matrices set by useLit), the
+  // Draws them: the shapes with `lit` (faceted_ or shaded_, its matrices set by setLitMatrices), the
   // impostors with impostor_.
   void drawPrepared(ShapeBuffers& shape, ShapeBuffers* impostorCard, const Prepared& prepared, const ShaderProgram& lit);
   // Sets both lit programs' view and projection for this frame.
