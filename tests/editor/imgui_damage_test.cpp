@@ -119,6 +119,35 @@ TEST(ImGuiDamage, ANewWindowOrADifferentDisplayDamagesEverything) {
             (PixelRect{0, 0, 640, 480}));
 }
 
+// A picture from another texture (a kept 3D view, a plot) may change without its triangles
+// changing: a window that draws one counts as changed every frame, even drawn exactly alike.
+TEST(ImGuiDamage, AnImageCountsAsChangedEvenWhenDrawnAlike) {
+  test::ImGuiTestContext context{kFont};
+  ImGuiDrawSnapshot last;
+  const ImTextureID picture = reinterpret_cast<ImTextureID>(static_cast<intptr_t>(9));
+  PixelRect image, text;
+  auto frame = [&] {
+    ImGui::NewFrame();
+    ImGui::SetNextWindowPos(ImVec2(20, 30));
+    ImGui::SetNextWindowSize(ImVec2(300, 300));
+    ImGui::Begin("Plot");
+    ImGui::Text("a caption");
+    text = PixelRect{int(ImGui::GetItemRectMin().x), int(ImGui::GetItemRectMin().y), int(ImGui::GetItemRectMax().x),
+                     int(ImGui::GetItemRectMax().y)};
+    ImGui::Image(picture, ImVec2(100, 80));
+    image = PixelRect{int(ImGui::GetItemRectMin().x), int(ImGui::GetItemRectMin().y), int(ImGui::GetItemRectMax().x),
+                      int(ImGui::GetItemRectMax().y)};
+    ImGui::End();
+    ImGui::Render();
+    return imguiDamage(*ImGui::GetDrawData(), kFont, last);
+  };
+  for (int settle = 0; settle < 3; ++settle) frame();
+  const std::vector<PixelRect> damage = frame();
+  ASSERT_FALSE(damage.empty());
+  EXPECT_TRUE(unionOf(damage).contains(image.grown(-1)));
+  EXPECT_FALSE(unionOf(damage).intersects(text)) << "the caption, a font draw, is alike";
+}
+
 TEST(ImGuiDamage, ClippingKeepsTheTrianglesThatMeetEachRectangleInsideItAndDropsTheRest) {
   // Command a: two triangles, one at (0..10, 0..10), one at (60..70, 60..70), clipped to
   // (0, 0, 100, 100); command b: one triangle at (250..260, 250..260), clipped to

@@ -166,6 +166,23 @@ std::vector<Box> compareList(const Drawn& a, const Drawn& b, ImTextureID font) {
   return boxes;
 }
 
+// The common case, found without indexing either list: a window drawn exactly as before, its
+// commands all plain font draws (what compareList would find no changed triangle in).
+bool drawnAlike(const ImGuiDrawSnapshot::List& a, const ImDrawList& b, ImTextureID font) {
+  if (a.vertices.size() != size_t(b.VtxBuffer.Size) || a.indices.size() != size_t(b.IdxBuffer.Size) ||
+      a.commands.size() != size_t(b.CmdBuffer.Size))
+    return false;
+  for (size_t c = 0; c < a.commands.size(); ++c) {
+    const ImDrawCmd& ca = a.commands[c];
+    const ImDrawCmd& cb = b.CmdBuffer.Data[c];
+    if (!sameCommand(&ca, &cb) || ca.TextureId != font || ca.VtxOffset != cb.VtxOffset ||
+        ca.IdxOffset != cb.IdxOffset || ca.ElemCount != cb.ElemCount)
+      return false;
+  }
+  return std::memcmp(a.indices.data(), b.IdxBuffer.Data, a.indices.size() * sizeof(ImDrawIdx)) == 0 &&
+         std::memcmp(a.vertices.data(), b.VtxBuffer.Data, a.vertices.size() * sizeof(ImDrawVert)) == 0;
+}
+
 void copyInto(ImGuiDrawSnapshot::List& c, const ImDrawList& l) {  // keeps c's capacity
   c.owner = l._OwnerName ? l._OwnerName : "";
   c.vertices.assign(l.VtxBuffer.Data, l.VtxBuffer.Data + l.VtxBuffer.Size);
@@ -188,12 +205,14 @@ std::vector<PixelRect> imguiDamage(const ImDrawData& now, ImTextureID fontTextur
   }
   std::vector<PixelRect> out;
   if (!whole) {
-    for (int n = 0; n < now.CmdListsCount && !whole; ++n)
+    for (int n = 0; n < now.CmdListsCount && !whole; ++n) {
+      if (drawnAlike(last.lists[size_t(n)], *now.CmdLists[n], fontTexture)) continue;
       for (const Box& box : compareList(drawnOf(last.lists[size_t(n)]), drawnOf(*now.CmdLists[n]), fontTexture)) {
         whole = whole || box.whole;
         // Antialiased edges stay inside their vertices; one pixel more covers rounding.
         if (box.minX <= box.maxX) out.push_back(PixelRect::covering(box.minX, box.minY, box.maxX, box.maxY, display).grown(1));
       }
+    }
   }
   if (whole) out.assign(1, display);
   for (PixelRect& r : out) r = r.intersected(display);
