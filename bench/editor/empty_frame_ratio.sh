@@ -1,6 +1,8 @@
 # Sourced by frame_times.sh and playback_frame_times.sh (which define run() and $tmp).
 # The empty frame runs at one of two speeds (about 0.8 or 1.1 ms at 1280x800), the same for
 # a whole run: it is timed KINEMA_EMPTY_RUNS times (3) and each ratio is given against all.
+# (In the slow runs llvmpipe's two raster threads share its whole-window clear and the
+# process uses 0.4-0.5 ms more CPU a frame; in the fast runs one thread does nearly all of it.)
 
 empties() {  # size run-arguments...: the empty frame's runs, into $tmp/empty1.txt ...
   local k
