@@ -21,6 +21,7 @@
 #include "render/skeleton_renderer.h"
 #include "render/skeleton_view.h"
 #include "skin/default_character_scene.h"
+#include "io/scene_files.h"
 
 namespace {
 

@@ -143,19 +143,6 @@ float Clip::duration() const {
   return d;
 }
 
-double Clip::secondsPerFrame() const { return frameTime > 0.0 ? frameTime : 1.0 / kDefaultFrameRate; }
-
-float Clip::frameToTime(long long frame) const {
-  return static_cast<float>(static_cast<double>(frame) * secondsPerFrame());
-}
-
-double Clip::timeToFrame(double time) const { return time / secondsPerFrame(); }
-
-long long Clip::nearestFrame(double time) const {
-  const double f = timeToFrame(time);
-  return std::isfinite(f) ? std::llround(std::clamp(f, -1e12, 1e12)) : 0;
-}
-
 std::string Clip::validate(const Skeleton& skeleton) const {
   if (hasRange && (!std::isfinite(rangeStart) || !std::isfinite(rangeEnd) || rangeStart > rangeEnd))
     return "the playback range must be two finite times, start <= end";

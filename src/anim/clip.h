@@ -6,6 +6,7 @@
 #include "anim/channel_modifier.h"
 #include "anim/clip_source_map.h"
 #include "anim/foot_contact_intervals.h"
+#include "anim/frame_grid.h"
 #include "core/pose.h"
 #include "core/rotation.h"
 
@@ -104,15 +105,12 @@ struct Channel {
   int valueSize() const;
 };
 
-// The frame rate a clip without its own frame grid (glTF, frameTime 0) is counted in:
-// Blender's default, and the rate of a new clip ("Action"). Frames per second.
-constexpr double kDefaultFrameRate = 24.0;
-
 struct Clip {
   std::string name;
   std::vector<Channel> channels;
-  // Seconds per frame for frame-based sources (BVH) and edited clips; 0 when the file gave
-  // the clip no frame grid (glTF). Read it through secondsPerFrame().
+  // Seconds per frame for frame-based sources (BVH), edited clips and files that keep it; 0
+  // when the clip has no rate of its own and counts at the document's (Scene::frameRate).
+  // Count frames through frameGridOf (anim/frame_grid.h) or Scene::frameGrid, never here.
   double frameTime = 0.0;
   // Editor playback only: sampling always clamps.
   bool loop = false;
@@ -133,19 +131,6 @@ struct Clip {
   // The last key time over all channels (clips start at time 0).
   float duration() const;
 
-  // The clip's frame grid, the one every view of the clip counts in (timeline, dope
-  // sheet, curve editor, onion skin, motion path and control): frame N is at N seconds
-  // per frame, frame 0 at time 0.
-  // Seconds per frame: frameTime, or 1 / kDefaultFrameRate for a clip without a grid.
-  double secondsPerFrame() const;
-  double framesPerSecond() const { return 1.0 / secondsPerFrame(); }
-  // Time of frame N (seconds), computed the same way as the keys of frame-based clips, so
-  // that sampling at it returns that frame's values exactly.
-  float frameToTime(long long frame) const;
-  // The (fractional) frame at `time` seconds, and the nearest whole frame (0 for a
-  // non-finite time; clamped to +-1e12 frames).
-  double timeToFrame(double time) const;
-  long long nearestFrame(double time) const;
   // Empty when every channel names a joint of the skeleton (Scalar channels may use -1),
   // times are finite and strictly increasing, values and settings are finite (one per key)
   // and each key's interpolation suits the channel's target; the contacts and the source

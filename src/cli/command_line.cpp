@@ -7,6 +7,7 @@
 #include "anim/channel_modifiers.h"
 #include "skin/default_character_scene.h"
 #include "io/json_number.h"
+#include "io/scene_files.h"
 
 namespace kinema::cli {
 
@@ -38,12 +39,6 @@ InputLimits inputLimits(bool allowOutsidePaths) {
   InputLimits limits;
   limits.allowOutsidePaths = allowOutsidePaths;
   return limits;
-}
-
-double frameTimeOf(const Scene& scene, int clip) {
-  if (clip >= 0 && clip < static_cast<int>(scene.clips.size()) && scene.clips[clip].frameTime > 0)
-    return scene.clips[clip].frameTime;
-  return 1.0 / 30.0;
 }
 
 std::string clipIndexError(const Scene& scene, int clip) {

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/result.h"
-#include "io/scene.h"
+#include "io/scene_files.h"
 
 namespace CLI {
 class App;
@@ -37,9 +37,6 @@ void addAllowOutsidePathsFlag(CLI::App* cmd, bool& allowOutsidePaths);
 // The default input limits with the flag applied.
 InputLimits inputLimits(bool allowOutsidePaths);
 
-// The time to evaluate: --time as given, or --frame N converted with the clip's frame
-// time (1/30 s for clips without a frame grid).
-double frameTimeOf(const Scene& scene, int clip);
 
 // Empty when `clip` names one of the scene's clips (0 is always allowed: a file without
 // clips evaluates to its rest pose); otherwise the one-line error.

@@ -9,32 +9,14 @@
 #include <sstream>
 
 #include "cli/command_line.h"
-#include "io/bvh_writer.h"
-#include "io/gltf_writer.h"
-#include "io/kinema_file.h"
-#include "io/scene.h"
+#include "io/scene_files.h"
 #include "skin/bake_deformers.h"
 
 namespace kinema::cli {
 
 namespace {
 
-bool writable(const std::string& ext) { return ext == ".bvh" || ext == ".gltf" || ext == ".glb" || ext == ".kinema"; }
-
-// Clips at least this many frames long show a progress line.
 constexpr long long kLongClipFrames = 500;
-
-// What a BVH file cannot hold, beyond what the writer itself reports.
-std::vector<std::string> bvhLosses(const Scene& scene) {
-  std::vector<std::string> lost;
-  if (!scene.meshes.empty())
-    lost.push_back(std::to_string(scene.meshes.size()) + " mesh(es), their skins and materials dropped (BVH holds a skeleton and one motion)");
-  if (scene.clips.size() > 1)
-    lost.push_back("only clip 0 ('" + scene.clips[0].name + "') written; " + std::to_string(scene.clips.size() - 1) +
-                   " more dropped (BVH holds one motion)");
-  if (!scene.ik.empty()) lost.push_back("IK limits and targets dropped (BVH has no place for them)");
-  return lost;
-}
 
 }  // namespace
 
@@ -55,7 +37,7 @@ CLI::App* addConvertCommand(CLI::App& app, ConvertOptions& o) {
 
 int runConvert(const ConvertOptions& o) {
   const std::string ext = lowerExtension(o.output);
-  if (!writable(ext)) {
+  if (!canSaveScene(o.output)) {
     std::cerr << "kinema convert: cannot write '" << ext << "' files (use .bvh, .gltf, .glb or .kinema); see --help\n";
     return kExitUsage;
   }
@@ -88,34 +70,22 @@ int runConvert(const ConvertOptions& o) {
   const Scene& scene = loaded.value();
 
   std::vector<std::string> report;
-  std::string error;
-  if (ext == ".bvh") {
-    report = bvhLosses(scene);
-    BvhWriteOptions options;
-    options.order = *order;
-    options.frameRate = o.rate;
-    const bool tty = isatty(STDERR_FILENO) != 0;
-    bool shown = false;
-    options.progress = [&](long long frame, long long total) {
-      if (total < kLongClipFrames) return;
-      // On a terminal the line updates in place; in a log only the last one is written.
-      if (tty) {
-        std::cerr << "\rconverting: frame " << frame << "/" << total << std::flush;
-        shown = true;
-      } else if (frame == total) {
-        std::cerr << "converting: frame " << frame << "/" << total << "\n";
-      }
-    };
-    error = saveBvh(o.output, scene.skeleton, scene.clips.empty() ? nullptr : &scene.clips[0], options, &report);
-    if (shown) std::cerr << "\n";
-  } else if (ext == ".gltf" || ext == ".glb") {
-    GltfWriteOptions options;
-    options.binary = ext == ".glb";
-    options.resampleRate = o.rate;
-    error = saveGltf(o.output, scene, options, &report);
-  } else {
-    error = saveKinemaFile(o.output, scene);
-  }
+  SceneSaveOptions options;
+  options.bvhRotationOrder = *order;
+  options.frameRate = o.rate;
+  const bool tty = isatty(STDERR_FILENO) != 0;
+  bool shown = false;
+  options.progress = [&](long long frame, long long total) {
+    if (total < kLongClipFrames) return;
+    if (tty) {
+      std::cerr << "\rconverting: frame " << frame << "/" << total << std::flush;
+      shown = true;
+    } else if (frame == total) {
+      std::cerr << "converting: frame " << frame << "/" << total << "\n";
+    }
+  };
+  const std::string error = saveScene(o.output, scene, options, &report);
+  if (shown) std::cerr << "\n";
   for (const std::string& line : report) std::cerr << "kinema convert: warning: " << line << "\n";
   if (!error.empty()) return badInput(error);
   return kExitOk;

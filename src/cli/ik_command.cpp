@@ -124,7 +124,7 @@ int runIk(const IkOptions& o) {
   const Scene& scene = loaded.value();
   const Skeleton& skeleton = scene.skeleton;
   if (const std::string bad = clipIndexError(scene, o.clip); !bad.empty()) return badInput(bad);
-  const double time = o.frameOption->count() ? static_cast<double>(o.frame) * frameTimeOf(scene, o.clip) : o.time;
+  const double time = o.frameOption->count() ? static_cast<double>(o.frame) * scene.frameGrid(o.clip).secondsPerFrame : o.time;
   Pose pose = sampledPose(scene, o.clip, time);
   if (const std::string bad = nonFiniteWorldError(scene, computeWorld(skeleton, pose), time); !bad.empty())
     return badInput(bad);

@@ -10,6 +10,7 @@
 #include "io/kinema_file.h"
 #include "sim/lsystem_derivation.h"
 #include "sim/lsystem_skeleton.h"
+#include "io/scene_files.h"
 
 namespace kinema::cli {
 
@@ -71,8 +72,7 @@ int runLSystem(const LSystemOptions& o) {
                                          static_cast<float>(o.radius));
   if (!plant) return badInput(o.grammar + ": generation " + std::to_string(o.generations) + ": " + plant.error());
   plant->source = o.out;
-  const std::string bad = ext == ".kinema" ? saveKinemaFile(o.out, plant.value())
-                                           : saveGltf(o.out, plant.value(), GltfWriteOptions{ext == ".glb", 0.0});
+  const std::string bad = saveScene(o.out, plant.value());
   if (!bad.empty()) return badInput(bad);
   const int joints = plant->skeleton.size();
   if (o.json) {

@@ -34,7 +34,7 @@ int runPose(const PoseOptions& o) {
   if (!loaded) return badInput(loaded.error());
   const Scene& scene = loaded.value();
   if (const std::string bad = clipIndexError(scene, o.clip); !bad.empty()) return badInput(bad);
-  const double time = o.frameOption->count() ? static_cast<double>(o.frame) * frameTimeOf(scene, o.clip) : o.time;
+  const double time = o.frameOption->count() ? static_cast<double>(o.frame) * scene.frameGrid(o.clip).secondsPerFrame : o.time;
   const Pose pose = sampledPose(scene, o.clip, time);
   const std::vector<glm::mat4> world = computeWorld(scene.skeleton, pose);
   if (const std::string bad = nonFiniteWorldError(scene, world, time); !bad.empty()) return badInput(bad);

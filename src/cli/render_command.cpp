@@ -209,7 +209,7 @@ int runRenderOn(const RenderOptions& o, const Scene* given) {
   }
 
   std::vector<Sample> samples;
-  const double frameTime = frameTimeOf(scene, o.clip);
+  const double frameTime = scene.frameGrid(o.clip).secondsPerFrame;
   if (sequence) {
     const long long end = lastFrameOf(scene, o.clip, frameTime);
     // Particles go on after the clip's last key (which the pose holds): no end then.

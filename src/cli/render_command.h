@@ -1,7 +1,7 @@
 #pragma once
 #include <CLI/CLI.hpp>
 
-#include "io/scene.h"
+#include "scene/scene.h"
 
 namespace kinema::cli {
 

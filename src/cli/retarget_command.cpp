@@ -17,6 +17,7 @@
 #include "retarget/motion_cleanup.h"
 #include "retarget/retarget_clip.h"
 #include "retarget/retarget_motion.h"
+#include "io/scene_files.h"
 
 namespace kinema::cli {
 
@@ -25,7 +26,6 @@ namespace {
 constexpr float kDegree = 0.01745329251994329577f;
 constexpr float kDefaultReduceDegrees = 1.0f;
 
-bool writable(const std::string& ext) { return ext == ".bvh" || ext == ".gltf" || ext == ".glb" || ext == ".kinema"; }
 
 // "POS" or "POS,DEG" as numbers (any value; ranges are checked as bad input).
 bool parseReduce(const std::string& text, double& pos, double& deg) {
@@ -97,7 +97,7 @@ CLI::App* addRetargetCommand(CLI::App& app, RetargetOptions& o) {
 
 int runRetarget(const RetargetOptions& o) {
   const std::string ext = lowerExtension(o.out);
-  if (!writable(ext)) {
+  if (!canSaveScene(o.out)) {
     std::cerr << "kinema retarget: cannot write '" << ext << "' files (use .kinema, .gltf, .glb or .bvh); see --help\n";
     return kExitUsage;
   }
@@ -219,16 +219,7 @@ int runRetarget(const RetargetOptions& o) {
   out.pose = Pose{};
   out.playhead.reset();
   std::vector<std::string> report;
-  if (ext == ".bvh") {
-    if (!out.meshes.empty()) report.push_back("meshes and skins dropped (BVH holds a skeleton and one motion)");
-    error = saveBvh(o.out, out.skeleton, &out.clips[0], BvhWriteOptions{}, &report);
-  } else if (ext == ".gltf" || ext == ".glb") {
-    GltfWriteOptions options;
-    options.binary = ext == ".glb";
-    error = saveGltf(o.out, out, options, &report);
-  } else {
-    error = saveKinemaFile(o.out, out);
-  }
+  error = saveScene(o.out, out, SceneSaveOptions{}, &report);
   for (const std::string& line : report) std::cerr << "kinema retarget: warning: " << line << "\n";
   if (!error.empty()) return badInput(error);
 

@@ -17,6 +17,7 @@
 #include "io/kinema_file.h"
 #include "sim/baked_keys.h"
 #include "sim/simulation_bake.h"
+#include "io/scene_files.h"
 
 namespace kinema::cli {
 
@@ -24,7 +25,6 @@ namespace {
 
 constexpr float kDegree = 0.01745329251994329577f;
 
-bool writable(const std::string& ext) { return ext == ".bvh" || ext == ".gltf" || ext == ".glb" || ext == ".kinema"; }
 
 // "A:B" as two integers; false on any other text.
 bool parseFrames(const std::string& text, long long& first, long long& last) {
@@ -75,18 +75,9 @@ CLI::App* addSimulateCommand(CLI::App& app, SimulateOptions& o) {
 }
 
 std::string saveSimulatedScene(const std::string& out, const Scene& scene, int clip, std::vector<std::string>& report) {
-  const std::string ext = lowerExtension(out);
-  if (ext == ".bvh") {
-    if (!scene.meshes.empty()) report.push_back("meshes and skins dropped (BVH holds a skeleton and one motion)");
-    const bool hasClip = clip >= 0 && clip < static_cast<int>(scene.clips.size());
-    return saveBvh(out, scene.skeleton, hasClip ? &scene.clips[clip] : nullptr, BvhWriteOptions{}, &report);
-  }
-  if (ext == ".gltf" || ext == ".glb") {
-    GltfWriteOptions options;
-    options.binary = ext == ".glb";
-    return saveGltf(out, scene, options, &report);
-  }
-  return saveKinemaFile(out, scene);
+  SceneSaveOptions options;
+  options.bvhClip = clip;
+  return saveScene(out, scene, options, &report);
 }
 
 int runSimulate(const SimulateOptions& o) {
@@ -95,7 +86,7 @@ int runSimulate(const SimulateOptions& o) {
     return kExitUsage;
   }
   const std::string ext = lowerExtension(o.out);
-  if (!o.out.empty() && !writable(ext)) {
+  if (!o.out.empty() && !canSaveScene(o.out)) {
     std::cerr << "kinema simulate: cannot write '" << ext << "' files (use .kinema, .gltf, .glb or .bvh); see --help\n";
     return kExitUsage;
   }
@@ -138,21 +129,22 @@ int runSimulate(const SimulateOptions& o) {
     if (!framesGiven) defaultParticleFrames(scene, o.clip, first, last);
     return runParticlesOnly(o, scene, first, last);
   }
-  if (scene.clips.empty()) {  // a still character: one clip to hold the keys, at 30 fps
+  if (scene.clips.empty()) {  // a still character: one clip to hold the keys, at the document's rate
     Clip clip;
     clip.name = "simulation";
-    clip.frameTime = 1.0 / 30.0;
+    clip.frameTime = scene.frameGrid(-1).secondsPerFrame;
     scene.clips.push_back(clip);
   }
   const Clip& clip = scene.clips[o.clip];
   if (!framesGiven) {
     first = 0;
-    last = std::max(0LL, clip.nearestFrame(clip.duration()));
+    last = std::max(0LL, scene.frameGrid(o.clip).nearestFrame(clip.duration()));
   }
 
   SimulationBakeInput in;
   in.skeleton = &scene.skeleton;
   in.clip = &clip;
+  in.documentFrameRate = scene.frameRate;
   in.settings = &scene.simulation;
   in.rig = &scene.ik;
   if (!scene.meshes.empty()) {

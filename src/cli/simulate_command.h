@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "io/scene.h"
+#include "scene/scene.h"
 
 namespace kinema::cli {
 

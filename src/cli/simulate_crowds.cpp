@@ -23,7 +23,7 @@ std::string simulateCrowds(Scene& scene, const std::string& file, const std::str
     long long a = first, b = last;
     if (!framesGiven) {
       a = 0;
-      b = std::max(0LL, clip.nearestFrame(clip.duration()));
+      b = std::max(0LL, character->frameGrid(crowd.clip).nearestFrame(clip.duration()));
     }
     std::fprintf(stderr, "kinema simulate: crowd '%s': %d members, frames %lld..%lld\n", crowd.name.c_str(),
                  crowd.members, a, b);

@@ -4,7 +4,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/scene.h"
+#include "io/input_limits.h"
+#include "scene/scene.h"
 
 namespace kinema::cli {
 

@@ -61,13 +61,13 @@ void defaultParticleFrames(const Scene& scene, int clip, long long& first, long 
   first = 0;
   last = 0;
   if (clip >= 0 && clip < static_cast<int>(scene.clips.size()))
-    last = std::max(0LL, scene.clips[clip].nearestFrame(scene.clips[clip].duration()));
+    last = std::max(0LL, scene.frameGrid(clip).nearestFrame(scene.clips[clip].duration()));
   if (last == 0) last = 119;
 }
 
 nlohmann::ordered_json particleReport(const Scene& scene, int clip, long long first, long long last) {
   ParticlePlayback playback;
-  const double frameTime = frameTimeOf(scene, clip);
+  const double frameTime = scene.frameGrid(clip).secondsPerFrame;
   const std::vector<ParticleState>& states =
       playback.at(scene.simulation.particles, frameTime, last, [&](long long f, std::vector<glm::mat4>& world) {
         world = computeWorld(scene.skeleton, sampledPose(scene, clip, static_cast<double>(f) * frameTime));

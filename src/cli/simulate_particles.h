@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/simulate_command.h"
-#include "io/scene.h"
+#include "scene/scene.h"
 
 namespace kinema::cli {
 

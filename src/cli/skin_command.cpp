@@ -9,6 +9,7 @@
 #include "core/forward_kinematics.h"
 #include "io/json_number.h"
 #include "skin/scene_deformation.h"
+#include "io/scene_files.h"
 
 namespace kinema::cli {
 
@@ -38,7 +39,7 @@ int runSkin(const SkinOptions& o) {
   if (!o.method.empty())
     for (MeshInstance& inst : scene.meshInstances)
       inst.skinning = o.method == "dq" ? SkinningMethod::DualQuaternion : SkinningMethod::LinearBlend;
-  const double time = o.frameOption->count() ? static_cast<double>(o.frame) * frameTimeOf(scene, o.clip) : o.time;
+  const double time = o.frameOption->count() ? static_cast<double>(o.frame) * scene.frameGrid(o.clip).secondsPerFrame : o.time;
   const std::vector<glm::mat4> world = computeWorld(scene.skeleton, sampledPose(scene, o.clip, time));
   if (const std::string bad = nonFiniteWorldError(scene, world, time); !bad.empty()) return badInput(bad);
   const std::vector<std::vector<float>> weights = sampleMorphWeights(scene, o.clip, time);

@@ -439,10 +439,10 @@ Pose BvhData::framePose(int frame) const {
 }
 
 double BvhData::keyFrameTime() const {
-  Clip timing;
-  timing.frameTime = frameTime;
+  const FrameGrid timing{frameTime};
+  // A Frame Time so small that frames share a float time cannot be played at its rate.
   for (int f = 1; f < frameCount; ++f)
-    if (!(timing.frameToTime(f) > timing.frameToTime(f - 1))) return 1.0 / 30.0;
+    if (!(timing.frameToTime(f) > timing.frameToTime(f - 1))) return 1.0 / kDefaultFrameRate;
   return frameTime;
 }
 
@@ -452,7 +452,7 @@ Clip BvhData::clip() const {
   clip.frameTime = keyFrameTime();
   if (frameCount == 0) return clip;
   std::vector<float> times(static_cast<size_t>(frameCount));
-  for (int f = 0; f < frameCount; ++f) times[f] = clip.frameToTime(f);
+  for (int f = 0; f < frameCount; ++f) times[f] = FrameGrid{clip.frameTime}.frameToTime(f);
   for (size_t i = 0; i < joints.size(); ++i) {
     const BvhJoint& j = joints[i];
     Channel translation{static_cast<int>(i), ChannelTarget::Translation, Interpolation::Linear, times, {}};

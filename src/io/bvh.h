@@ -35,7 +35,7 @@ struct BvhData {
 
   // Skeleton in file order: rest translation = OFFSET, rest rotation = identity.
   Skeleton skeleton() const;
-  // The frame time key times use: frameTime, or 1/30 s when frameTime is so small (a
+  // The frame time key times use: frameTime, or 1/kDefaultFrameRate s when frameTime is so small (a
   // denormal) that consecutive frames would get the same float key time.
   double keyFrameTime() const;
   // One clip, key k at time k * keyFrameTime(). Each joint's rotation is the product of its

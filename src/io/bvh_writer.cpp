@@ -48,33 +48,19 @@ std::string bvhName(const std::string& name) {
 
 }  // namespace
 
-double bvhFrameTime(const Clip* clip, double frameRate, bool* uniform) {
+double bvhFrameTime(const Clip* clip, const BvhWriteOptions& options, bool* uniform) {
   if (uniform) *uniform = true;
-  if (frameRate > 0.0) return 1.0 / frameRate;
-  if (!clip) return 1.0 / 30.0;
+  if (options.frameRate > 0.0) return 1.0 / options.frameRate;
+  const double fallback = documentFrameGrid(options.documentFrameRate).secondsPerFrame;
+  if (!clip) return fallback;
   if (clip->frameTime > 0.0) return clip->frameTime;
-  // Smallest key interval, accepted when every key lies on its grid.
-  double step = 0.0;
-  for (const Channel& ch : clip->channels)
-    for (int k = 0; k + 1 < ch.keyCount(); ++k) {
-      const double d = double(ch.times[k + 1]) - ch.times[k];
-      if (d > 1e-6 && (step == 0.0 || d < step)) step = d;
-    }
-  if (step == 0.0) return 1.0 / 30.0;
-  // Key times are floats: the whole span divided by its frame count is the better
-  // estimate of the step; then every key must lie on that grid.
-  const double duration = clip->duration();
-  const double frames = std::round(duration / step);
-  if (frames >= 1.0) step = duration / frames;
-  for (const Channel& ch : clip->channels)
-    for (float t : ch.times) {
-      const double n = t / step;
-      if (std::abs(n - std::round(n)) > 1e-3) {
-        if (uniform) *uniform = false;
-        return 1.0 / 30.0;
-      }
-    }
-  return step;
+  // A clip without a rate of its own counts at the document's: written at it when its keys
+  // lie on that grid, else on the grid they do lie on.
+  if (keysOnGrid(*clip, documentFrameGrid(options.documentFrameRate))) return fallback;
+  if (const double grid = keyGridFrameTime(*clip); grid > 0.0) return grid;
+  // A clip of one key time lies on every grid; keys off any grid are resampled.
+  if (uniform) *uniform = clip->duration() <= 0.0f;
+  return fallback;
 }
 
 Result<std::string> bvhText(const Skeleton& sk, const Clip* clip, const BvhWriteOptions& options,
@@ -200,10 +186,9 @@ Result<std::string> bvhText(const Skeleton& sk, const Clip* clip, const BvhWrite
 
   // MOTION: one line per frame, each joint's local pose sampled at the frame's time.
   bool uniform = true;
-  const double frameTime = bvhFrameTime(clip, options.frameRate, &uniform);
-  if (!uniform) note("key times are not on one frame grid: sampled at 30 fps");
-  Clip timing;
-  timing.frameTime = frameTime;
+  const double frameTime = bvhFrameTime(clip, options, &uniform);
+  if (!uniform) note("key times are not on one frame grid: sampled at the document's " + std::to_string(std::lround(1.0 / frameTime)) + " fps");
+  const FrameGrid timing{frameTime};
   const double duration = clip ? clip->duration() : 0.0;
   const double frameCount = std::floor(duration / frameTime + 1e-4) + 1;
   // A file controls the duration: refuse what would be gigabytes of text.

@@ -12,9 +12,12 @@ namespace kinema {
 
 struct BvhWriteOptions {
   EulerOrder order = EulerOrder::ZXY;  // rotation channel order of every joint
-  // Frames per second; 0: the clip's own frame rate, else the spacing of its keys when
-  // they lie on one grid, else 30.
+  // Frames per second; 0: the clip's own frame rate, else the grid its keys lie on
+  // (keyGridFrameTime), else the document's rate below.
   double frameRate = 0.0;
+  // The document's frame rate (Scene::frameRate): a clip's rate when it has none of its own
+  // and its keys lie on no grid.
+  double documentFrameRate = kDefaultFrameRate;
   // Called every few hundred frames with (frames written, total), for progress lines.
   std::function<void(long long, long long)> progress;
 };
@@ -34,6 +37,6 @@ std::string saveBvh(const std::string& path, const Skeleton& skeleton, const Cli
 
 // The frame time bvhText uses for `clip` (see BvhWriteOptions::frameRate); `uniform` is
 // false when the keys had to be resampled onto a grid.
-double bvhFrameTime(const Clip* clip, double frameRate, bool* uniform = nullptr);
+double bvhFrameTime(const Clip* clip, const BvhWriteOptions& options, bool* uniform = nullptr);
 
 }  // namespace kinema

@@ -4,6 +4,8 @@
 // rotations interpolated component-wise and then normalised.
 #include <tiny_gltf.h>
 
+#include <cmath>
+
 #include "core/rotation.h"
 #include "io/gltf_import_parts.h"
 
@@ -20,7 +22,8 @@ size_t morphTargetsOf(const GltfContext& ctx, const Scene& scene, int node) {
 
 }  // namespace
 
-std::string importAnimations(GltfContext& ctx, const std::vector<int>& jointOfNode, Scene& scene) {
+std::string importAnimations(GltfContext& ctx, const std::vector<int>& jointOfNode, Scene& scene,
+                             bool writtenByKinema) {
   const tinygltf::Model& m = ctx.model;
   const int nodes = static_cast<int>(jointOfNode.size());
   for (size_t a = 0; a < m.animations.size(); ++a) {
@@ -120,6 +123,20 @@ std::string importAnimations(GltfContext& ctx, const std::vector<int>& jointOfNo
         clip.channels.push_back(std::move(channel));
       }
     }
+    // The clip's frame rate: Kinema's own files keep it in the animation's extras (a clip
+    // without it had none); a foreign file's keys give it when they lie on a grid; otherwise
+    // it counts at the document's rate.
+    if (anim.extras.IsObject() && anim.extras.Has("kinema_frame_time")) {
+      const tinygltf::Value& v = anim.extras.Get("kinema_frame_time");
+      const double frameTime = v.IsNumber() ? v.GetNumberAsDouble() : -1.0;
+      if (std::isfinite(frameTime) && frameTime >= 1.0 / kMaxFrameRate && frameTime <= 1.0 / kMinFrameRate)
+        clip.frameTime = frameTime;
+      else
+        ctx.warn("animation " + std::to_string(a) + ": extras.kinema_frame_time is not a frame time of " +
+                 std::to_string(static_cast<int>(kMinFrameRate)) + " to " + std::to_string(static_cast<int>(kMaxFrameRate)) +
+                 " fps: ignored");
+    }
+    if (clip.frameTime == 0.0 && !writtenByKinema) clip.frameTime = keyGridFrameTime(clip);
     scene.clips.push_back(std::move(clip));
   }
   return {};

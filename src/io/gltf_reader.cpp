@@ -293,7 +293,15 @@ Result<Scene> parseGltf(const std::string& bytes, const std::string& path, const
   if (std::string e = importSkins(ctx, jointOfNode, scene); !e.empty()) return R::failure(e);
   if (std::string e = importMaterials(ctx, scene); !e.empty()) return R::failure(e);
   if (std::string e = importMeshes(ctx, jointOfNode, scene); !e.empty()) return R::failure(e);
-  if (std::string e = importAnimations(ctx, jointOfNode, scene); !e.empty()) return R::failure(e);
+  // The document's frame rate, where Kinema wrote it (asset.extras.kinema_frame_rate).
+  const bool writtenByKinema = model.asset.extras.IsObject() && model.asset.extras.Has("kinema_frame_rate");
+  if (writtenByKinema) {
+    const tinygltf::Value& v = model.asset.extras.Get("kinema_frame_rate");
+    const double rate = v.IsNumber() ? v.GetNumberAsDouble() : 0.0;
+    if (rate >= kMinFrameRate && rate <= kMaxFrameRate) scene.frameRate = rate;
+    else ctx.warn("asset.extras.kinema_frame_rate is not a frame rate of 1 to 1000 fps: ignored");
+  }
+  if (std::string e = importAnimations(ctx, jointOfNode, scene, writtenByKinema); !e.empty()) return R::failure(e);
   if (!model.cameras.empty()) ctx.warn("cameras are not kept");
   // Guards: the pieces above only build valid skeletons and clips.
   if (std::string e = scene.skeleton.validate(); !e.empty()) return R::failure(ctx.error(e));

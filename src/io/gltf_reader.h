@@ -3,7 +3,7 @@
 
 #include "core/result.h"
 #include "io/input_limits.h"
-#include "io/scene.h"
+#include "scene/scene.h"
 
 namespace kinema {
 

@@ -262,6 +262,12 @@ class AnimationWriter {
   void add(const Clip& clip, size_t index, double rate) {
     tinygltf::Animation anim;
     anim.name = clip.name;
+    // glTF keeps no frame rate: Kinema's own reader takes the clip's back from here.
+    if (clip.frameTime > 0.0) {
+      tinygltf::Value::Object extras;
+      extras["kinema_frame_time"] = tinygltf::Value(clip.frameTime);
+      anim.extras = tinygltf::Value(extras);
+    }
     clipLabel_ = "clip '" + (clip.name.empty() ? std::to_string(index) : clip.name) + "'";
     std::map<std::pair<int, std::string>, bool> used;
     std::map<int, std::vector<const Channel*>> weights;  // joint -> per morph target
@@ -374,11 +380,10 @@ class AnimationWriter {
 
 constexpr double kMaxResampledKeys = 1e7;
 
-// The clip's frame rate when it has a frame grid, else the option or 30.
-double rateFor(const Clip& clip, const GltfWriteOptions& options) {
+// The option's rate, else the rate clip `c` counts in (its own, else the document's).
+double rateFor(const Scene& scene, size_t c, const GltfWriteOptions& options) {
   if (options.resampleRate > 0.0) return options.resampleRate;
-  if (clip.frameTime > 0.0) return 1.0 / clip.frameTime;
-  return 30.0;
+  return scene.frameGrid(static_cast<int>(c)).framesPerSecond();
 }
 
 std::string numberText(double v) {
@@ -388,8 +393,8 @@ std::string numberText(double v) {
   return o.str();
 }
 
-// A rate that is not a finite number (1 / a denormal frame time) resamples at 30 fps.
-double usableRate(double rate) { return std::isfinite(rate) && rate > 0.0 ? rate : 30.0; }
+// A rate that is not a finite number (1 / a denormal frame time) resamples at the default rate.
+double usableRate(double rate) { return std::isfinite(rate) && rate > 0.0 ? rate : kDefaultFrameRate; }
 
 // Resampling allocates duration x rate keys per curve and a file controls both (key times
 // near 3e38): a clip that would need more than kMaxResampledKeys is refused, but only when
@@ -477,7 +482,7 @@ Result<std::string> gltfBytes(const Scene& scene, const GltfWriteOptions& option
   if (!(options.resampleRate >= 0.0) || !std::isfinite(options.resampleRate))
     return Result<std::string>::failure("cannot export: the resample rate must be a positive number of frames per second");
   for (size_t c = 0; c < scene.clips.size(); ++c)
-    if (std::string e = resamplingError(scene.clips[c], c, usableRate(rateFor(scene.clips[c], options))); !e.empty())
+    if (std::string e = resamplingError(scene.clips[c], c, usableRate(rateFor(scene, c, options))); !e.empty())
       return Result<std::string>::failure(e);
   auto note = [&](const std::string& line) {
     if (report) report->push_back(line);
@@ -486,6 +491,11 @@ Result<std::string> gltfBytes(const Scene& scene, const GltfWriteOptions& option
   tinygltf::Model model;
   model.asset.version = "2.0";
   model.asset.generator = "Kinema";
+  {
+    tinygltf::Value::Object extras;
+    extras["kinema_frame_rate"] = tinygltf::Value(scene.frameRate);
+    model.asset.extras = tinygltf::Value(extras);
+  }
   BufferBuilder b(model);
   const Skeleton& sk = scene.skeleton;
   const std::vector<int> node = nodeIndices(scene);
@@ -582,7 +592,7 @@ Result<std::string> gltfBytes(const Scene& scene, const GltfWriteOptions& option
   AnimationWriter animations(scene, node, b, model, report);
   for (size_t c = 0; c < scene.clips.size(); ++c) {
     const Clip& clip = scene.clips[c];
-    const double wanted = rateFor(clip, options);
+    const double wanted = rateFor(scene, c, options);
     const double rate = usableRate(wanted);
     const size_t before = report ? report->size() : 0;
     // glTF has no procedural curves: modified channels go out as their bake, one key per

@@ -3,14 +3,14 @@
 #include <vector>
 
 #include "core/result.h"
-#include "io/scene.h"
+#include "scene/scene.h"
 
 namespace kinema {
 
 struct GltfWriteOptions {
   bool binary = false;  // .glb; otherwise .gltf JSON with the buffer embedded as a data URI
   // Samples per second for curves glTF cannot express exactly; 0: each clip's frame rate,
-  // or 30 when it has none.
+  // or the document's (Scene::frameRate) when it has none.
   double resampleRate = 0.0;
 };
 

@@ -579,6 +579,18 @@ bool readPlayhead(Reader& r, const Json& root, Scene& scene) {
   return true;
 }
 
+// ---- the document's frame rate (optional top-level "frame_rate" key) ----
+// Frames per second, kMinFrameRate..kMaxFrameRate; absent: kDefaultFrameRate.
+bool readFrameRate(Reader& r, const Json& root, Scene& scene) {
+  const Json* v = r.member(root, "", "frame_rate", false);
+  if (!v) return true;
+  double rate = 0.0;
+  if (!r.number(*v, "frame_rate", rate)) return false;
+  if (!(rate >= kMinFrameRate && rate <= kMaxFrameRate)) return r.fail("frame_rate", "must be 1 to 1000 frames per second");
+  scene.frameRate = rate;
+  return true;
+}
+
 Json poseToJson(const Scene& scene) {
   Json list = Json::array();
   for (int i = 0; i < scene.pose.size(); ++i) {
@@ -1846,6 +1858,8 @@ std::string toKinemaJson(const Scene& scene) {
     clips.push_back(std::move(c));
   }
   root["clips"] = std::move(clips);
+  // Optional: written when it is not the default, so files of other rates keep theirs.
+  if (scene.frameRate != kDefaultFrameRate) root["frame_rate"] = scene.frameRate;
   // Optional: the editor's working pose; files without one load as the rest pose.
   if (!scene.pose.local.empty()) root["pose"] = poseToJson(scene);
   // Optional: where the timeline stood; the time as a double, which JSON keeps exactly.
@@ -1898,6 +1912,7 @@ Result<Scene> readKinemaTree(const Json& root, const std::string& source, const 
   if (!readSimulation(r, root, scene)) return Result<Scene>::failure(r.error());
   if (!readPose(r, root, scene)) return Result<Scene>::failure(r.error());
   if (!readPlayhead(r, root, scene)) return Result<Scene>::failure(r.error());
+  if (!readFrameRate(r, root, scene)) return Result<Scene>::failure(r.error());
   if (!readSceneAssets(r, root, scene)) return Result<Scene>::failure(r.error());
   const std::string bad = scene.skeleton.validate();
   if (!bad.empty()) return Result<Scene>::failure(oneLineMessage(source + ": skeleton: " + bad));

@@ -2,7 +2,7 @@
 #include <string>
 
 #include "io/input_limits.h"
-#include "io/scene.h"
+#include "scene/scene.h"
 
 namespace kinema {
 

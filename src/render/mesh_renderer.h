@@ -5,7 +5,7 @@
 #include <glad/gl.h>
 
 #include "core/math.h"
-#include "io/scene.h"
+#include "scene/scene.h"
 #include "render/camera.h"
 #include "render/screen_culling.h"
 #include "render/shader_program.h"

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "core/mesh.h"
-#include "io/scene.h"
+#include "scene/scene.h"
 #include "render/frame_signature.h"
 #include "render/mesh_renderer.h"
 #include "render/shape_meshes.h"

@@ -37,7 +37,7 @@ std::vector<std::vector<glm::vec3>> jointTracks(const Skeleton& s, const Clip& c
   std::vector<glm::mat4> world;
   for (int f = 0; f < frames; ++f) {
     Pose pose = Pose::rest(s);
-    sampleClip(clip, clip.frameToTime(f), pose);
+    sampleClip(clip, ownFrameGrid(clip).frameToTime(f), pose);
     computeWorld(s, pose, world);
     for (size_t k = 0; k < joints.size(); ++k) tracks[k][f] = glm::vec3(world[joints[k]][3]);
   }
@@ -46,6 +46,7 @@ std::vector<std::vector<glm::vec3>> jointTracks(const Skeleton& s, const Clip& c
 
 std::string FootContactJob::validate() const {
   if (!skeleton || !clip || !output[0] || !output[1]) return "foot contacts: missing input or output";
+  if (!hasOwnFrameRate(*clip)) return "foot contacts: the clip has no frame rate of its own";
   for (const LegJoints& l : legs)
     if (!l.valid(skeleton->size())) return "foot contacts: a leg joint is missing";
   const FootContactSettings& c = settings;
@@ -58,7 +59,7 @@ std::string FootContactJob::validate() const {
 
 bool FootContactJob::run() const {
   if (!validate().empty()) return false;
-  const double dt = clip->secondsPerFrame();
+  const double dt = ownFrameGrid(*clip).secondsPerFrame;
   for (int side = 0; side < 2; ++side) {
     const LegJoints& leg = legs[side];
     const float length = restLegLength(*skeleton, leg);

@@ -40,6 +40,7 @@ float lockWeight(const std::vector<ContactInterval>& contacts, int f, int blend,
 
 std::string FootLockJob::validate() const {
   if (!skeleton || !clip || !contacts[0] || !contacts[1] || !output) return "foot locking: missing input or output";
+  if (!hasOwnFrameRate(*clip)) return "foot locking: the clip has no frame rate of its own";
   for (const LegJoints& l : legs)
     if (!l.valid(skeleton->size())) return "foot locking: a leg joint is missing";
   if (blendFrames < 0) return "foot locking: blendFrames must be >= 0";
@@ -66,7 +67,7 @@ bool FootLockJob::run() const {
                                           std::vector<glm::vec4>{});
   std::vector<glm::mat4> world;
   for (int f = 0; f < frames; ++f) {
-    const float time = clip->frameToTime(f);
+    const float time = ownFrameGrid(*clip).frameToTime(f);
     Pose pose = Pose::rest(s);
     sampleClip(*clip, time, pose);
     for (int side = 0; side < 2; ++side) {
@@ -116,7 +117,7 @@ bool FootLockJob::run() const {
                                     }),
                      out.channels.end());
   for (Channel& c : baked) out.channels.push_back(std::move(c));
-  if (out.frameTime <= 0.0) out.frameTime = clip->secondsPerFrame();
+  if (out.frameTime <= 0.0) out.frameTime = ownFrameGrid(*clip).secondsPerFrame;
   *output = std::move(out);
   return true;
 }

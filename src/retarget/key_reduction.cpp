@@ -98,6 +98,7 @@ int keyTotal(const Clip& c) {
 
 std::string KeyReductionJob::validate() const {
   if (!skeleton || !clip || !output) return "key reduction: missing input or output";
+  if (!hasOwnFrameRate(*clip)) return "key reduction: the clip has no frame rate of its own";
   if (!(settings.positionTolerance > 0.0f) || !std::isfinite(settings.positionTolerance) ||
       !(settings.angleTolerance > 0.0f) || !std::isfinite(settings.angleTolerance))
     return "key reduction: tolerances must be positive and finite";
@@ -111,7 +112,7 @@ bool KeyReductionJob::run() const {
   const Skeleton& s = *skeleton;
   const int frames = clipFrameCount(*clip);
   std::vector<float> frameTimes;
-  for (int f = 0; f < frames; ++f) frameTimes.push_back(clip->frameToTime(f));
+  for (int f = 0; f < frames; ++f) frameTimes.push_back(ownFrameGrid(*clip).frameToTime(f));
   std::vector<std::vector<glm::vec3>> reference(frames);
   std::vector<Pose> referencePose(frames);
   std::vector<glm::mat4> world;

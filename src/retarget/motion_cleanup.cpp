@@ -44,6 +44,7 @@ std::string detectFootContacts(const Skeleton& skeleton, const Clip& clip, const
 
 std::string MotionCleanupJob::validate() const {
   if (!skeleton || !clip || !contacts || !output) return "clean up: missing input or output";
+  if (!hasOwnFrameRate(*clip)) return "clean up: the clip has no frame rate of its own";
   for (int side = 0; side < 2; ++side)
     if (!legs[side].valid(skeleton->size())) return "clean up: needs both legs of a humanoid";
   if (std::string bad = contacts->validate(); !bad.empty()) return "clean up: " + bad;

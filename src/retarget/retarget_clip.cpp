@@ -68,7 +68,7 @@ glm::quat restAlignment(const Skeleton& s, const Skeleton& t, const BoneMap& map
 }  // namespace
 
 int clipFrameCount(const Clip& clip) {
-  const long long last = clip.nearestFrame(clip.duration());
+  const long long last = ownFrameGrid(clip).nearestFrame(clip.duration());
   return static_cast<int>(std::max(0LL, last)) + 1;
 }
 
@@ -121,7 +121,7 @@ Result<FootFloors> footFloors(const Skeleton& source, const Clip& clip, const Hu
   std::vector<glm::mat4> world;
   for (int f = 0, n = clipFrameCount(clip); f < n; ++f) {
     pose = Pose::rest(source);
-    sampleClip(clip, clip.frameToTime(f), pose);
+    sampleClip(clip, ownFrameGrid(clip).frameToTime(f), pose);
     computeWorld(source, pose, world);
     float low = 0.0f;
     if (!lowestFoot(world, sourceHumanoid, low)) return Result<FootFloors>::failure("no feet to find the take's floor from");
@@ -135,6 +135,7 @@ Result<FootFloors> footFloors(const Skeleton& source, const Clip& clip, const Hu
 
 std::string RetargetJob::validate() const {
   if (!source || !target || !sourceClip || !map || !output) return "retarget: missing input or output";
+  if (!hasOwnFrameRate(*sourceClip)) return "retarget: the source clip has no frame rate of its own";
   if (source->empty() || target->empty()) return "retarget: empty skeleton";
   const std::string m = map->validate(*source, *target);
   if (!m.empty()) return m;
@@ -173,7 +174,7 @@ bool RetargetJob::run() const {
   const int frames = clipFrameCount(*sourceClip);
   Clip out;
   out.name = sourceClip->name;
-  out.frameTime = sourceClip->secondsPerFrame();
+  out.frameTime = ownFrameGrid(*sourceClip).secondsPerFrame;
   std::vector<int> channelOf(t.size(), -1);
   for (int j = 0; j < t.size(); ++j) {
     if (pairOfTarget[j] < 0) continue;
@@ -203,7 +204,7 @@ bool RetargetJob::run() const {
   std::vector<glm::quat> rotT(t.size());
   std::vector<glm::mat4> worldT(t.size());
   for (int f = 0; f < frames; ++f) {
-    const float time = sourceClip->frameToTime(f);
+    const float time = ownFrameGrid(*sourceClip).frameToTime(f);
     sourcePose = Pose::rest(s);
     sampleClip(*sourceClip, time, sourcePose);
     computeWorld(s, sourcePose, worldS);

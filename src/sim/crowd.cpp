@@ -176,7 +176,7 @@ Clip bakeCrowdMember(const Skeleton& skeleton, const Clip& clip, const CrowdClip
   last = std::min(last, run.frames - 1);
   for (long long f = first; f <= last; ++f) {
     crowdMemberPose(skeleton, clip, motion, run.at(f, member), pose);
-    const float time = out.frameToTime(f);
+    const float time = ownFrameGrid(out).frameToTime(f);
     for (int j = 0; j < n; ++j) {
       if (slot[j] < 0) continue;
       const Transform& t = pose.local[j];

@@ -1,4 +1,5 @@
 #include "sim/crowd_scene.h"
+#include "io/scene_files.h"
 
 #include <cmath>
 #include <filesystem>
@@ -32,7 +33,7 @@ Result<CrowdBake> bakeCrowd(const CrowdSettings& crowd, const Scene& character, 
   const Clip& clip = character.clips[static_cast<size_t>(crowd.clip)];
   CrowdBake bake;
   bake.motion = analyseCrowdClip(character.skeleton, clip, crowd);
-  Result<CrowdRun> run = runCrowd(crowd, bake.motion, clip.secondsPerFrame(), last + 1);
+  Result<CrowdRun> run = runCrowd(crowd, bake.motion, character.frameGrid(crowd.clip).secondsPerFrame, last + 1);
   if (!run) return Result<CrowdBake>::failure(run.error());
   bake.run = std::move(run.value());
   bake.clips.reserve(static_cast<size_t>(crowd.members));

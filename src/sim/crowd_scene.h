@@ -4,7 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "io/scene.h"
+#include "io/input_limits.h"
+#include "scene/scene.h"
 #include "sim/crowd.h"
 
 namespace kinema {

@@ -4,7 +4,7 @@
 
 #include "core/mesh.h"
 #include "core/skeleton.h"
-#include "io/scene.h"
+#include "scene/scene.h"
 
 namespace kinema {
 

@@ -297,10 +297,11 @@ Result<Clip> bakeRagdoll(const Skeleton& skeleton, const Clip& clip, const Ragdo
   if (lastFrame < firstFrame) return Result<Clip>::failure("the last frame is before the first");
   if (lastFrame - firstFrame > 1000000) return Result<Clip>::failure("more than 1,000,000 frames to bake");
   if (std::string e = settings.validate(skeleton); !e.empty()) return Result<Clip>::failure(e);
+  if (!hasOwnFrameRate(clip)) return Result<Clip>::failure("the clip has no frame rate of its own (frame_time)");
   RagdollBakeReport rep;
   rep.bodies = static_cast<int>(bodies.size());
   const long long start = std::max(firstFrame, settings.startFrame);
-  const float dt = static_cast<float>(clip.secondsPerFrame());
+  const float dt = static_cast<float>(ownFrameGrid(clip).secondsPerFrame);
   std::vector<Channel> rotations(bodies.size()), translation(1);
   for (size_t b = 0; b < bodies.size(); ++b)
     rotations[b] = Channel(bodies[b].joint, ChannelTarget::Rotation, Interpolation::Linear, {}, {});
@@ -310,13 +311,13 @@ Result<Clip> bakeRagdoll(const Skeleton& skeleton, const Clip& clip, const Ragdo
   SamplingCache cache;
   Pose pose = Pose::rest(skeleton);
   for (long long f = firstFrame; f <= lastFrame; ++f) {
-    const float t = clip.frameToTime(f);
+    const float t = ownFrameGrid(clip).frameToTime(f);
     pose = Pose::rest(skeleton);
     sampleClip(clip, t, pose, cache);
     if (f == start) {
       Pose previous = Pose::rest(skeleton);
       SamplingCache other;
-      sampleClip(clip, clip.frameToTime(f - 1), previous, other);
+      sampleClip(clip, ownFrameGrid(clip).frameToTime(f - 1), previous, other);
       Result<std::unique_ptr<Ragdoll>> made = Ragdoll::create(skeleton, settings, bodies, limits, pose, &previous, dt);
       if (!made) return Result<Clip>::failure(made.error());
       ragdoll = std::move(made.value());
@@ -345,7 +346,7 @@ Result<Clip> bakeRagdoll(const Skeleton& skeleton, const Clip& clip, const Ragdo
   if (ragdoll) rep.steps = ragdoll->stepsTaken();
   if (report) *report = rep;
   Clip out = clip;
-  if (out.frameTime <= 0.0) out.frameTime = clip.secondsPerFrame();
+  if (out.frameTime <= 0.0) out.frameTime = ownFrameGrid(clip).secondsPerFrame;
   auto baked = [&](const Channel& c) {
     if (c.joint == rootJoint && c.target == ChannelTarget::Translation) return true;
     if (c.target != ChannelTarget::Rotation && c.target != ChannelTarget::Euler) return false;

@@ -19,6 +19,7 @@ Result<SimulationBake> bakeSimulation(const SimulationBakeInput& in) {
   const IkRig& rig = in.rig ? *in.rig : noRig;
   SimulationBake out;
   out.clip = *in.clip;
+  out.clip.frameTime = frameGridOf(*in.clip, in.documentFrameRate).secondsPerFrame;  // what the bake counts in
   std::vector<int> keyed;
 
   // Spring chains first (one simulation; the chains do not touch each other).
@@ -39,7 +40,7 @@ Result<SimulationBake> bakeSimulation(const SimulationBakeInput& in) {
       Pose pose = Pose::rest(s);
       for (long long f = in.firstFrame; f <= in.lastFrame; ++f) {
         if (std::none_of(c.joints.begin(), c.joints.end(), [&](int j) { return rig.limitOf(j) != nullptr; })) break;
-        sampleClip(baked.value(), baked->frameToTime(f), pose, cache);
+        sampleClip(baked.value(), ownFrameGrid(baked.value()).frameToTime(f), pose, cache);
         for (int j : c.joints)
           if (const JointLimit* l = rig.limitOf(j))
             part.largestLimitExcess =
@@ -56,7 +57,7 @@ Result<SimulationBake> bakeSimulation(const SimulationBakeInput& in) {
   for (const RagdollSettings& settings : in.settings->ragdolls) {
     Pose start = Pose::rest(s);
     SamplingCache cache;
-    sampleClip(out.clip, out.clip.frameToTime(std::max(in.firstFrame, settings.startFrame)), start, cache);
+    sampleClip(out.clip, ownFrameGrid(out.clip).frameToTime(std::max(in.firstFrame, settings.startFrame)), start, cache);
     std::vector<RagdollBody> bodies;
     RagdollBodiesJob job;
     job.skeleton = &s;

@@ -29,6 +29,8 @@ struct SimulatedPart {
 struct SimulationBakeInput {
   const Skeleton* skeleton = nullptr;
   const Clip* clip = nullptr;
+  // The document's frame rate (Scene::frameRate): the clip's when it has none of its own.
+  double documentFrameRate = kDefaultFrameRate;
   const SimulationSettings* settings = nullptr;
   const IkRig* rig = nullptr;  // joint limits (optional)
   // Optional, to size ragdoll bodies by the skin (all three or none).

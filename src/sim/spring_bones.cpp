@@ -182,19 +182,20 @@ Result<Clip> bakeSpringBones(const Skeleton& skeleton, const Clip& clip, const s
     channels[b].target = ChannelTarget::Rotation;
     channels[b].interpolation = Interpolation::Linear;
   }
+  if (!hasOwnFrameRate(clip)) return Result<Clip>::failure("the clip has no frame rate of its own (frame_time)");
   SpringBoneState state;
   SamplingCache cache;
   Pose pose = Pose::rest(skeleton);
   SpringBoneJob job;
   job.skeleton = &skeleton;
   job.chains = &chains;
-  job.dt = static_cast<float>(clip.secondsPerFrame());
+  job.dt = static_cast<float>(ownFrameGrid(clip).secondsPerFrame);
   job.substeps = substeps;
   job.pose = &pose;
   job.state = &state;
   if (std::string e = job.validate(); !e.empty()) return Result<Clip>::failure(e);
   for (long long f = firstFrame; f <= lastFrame; ++f) {
-    const float t = clip.frameToTime(f);
+    const float t = ownFrameGrid(clip).frameToTime(f);
     pose = Pose::rest(skeleton);
     sampleClip(clip, t, pose, cache);
     if (!job.run()) return Result<Clip>::failure("the simulation failed at frame " + std::to_string(f));
@@ -205,7 +206,7 @@ Result<Clip> bakeSpringBones(const Skeleton& skeleton, const Clip& clip, const s
     }
   }
   Clip out = clip;
-  if (out.frameTime <= 0.0) out.frameTime = clip.secondsPerFrame();
+  if (out.frameTime <= 0.0) out.frameTime = ownFrameGrid(clip).secondsPerFrame;
   out.channels.erase(std::remove_if(out.channels.begin(), out.channels.end(),
                                     [&](const Channel& c) {
                                       return (c.target == ChannelTarget::Rotation || c.target == ChannelTarget::Euler) &&

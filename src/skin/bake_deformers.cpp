@@ -232,7 +232,7 @@ bool BakeDeformersJob::run() const {
     for (size_t c = 0; c < src.clips.size(); ++c) {
       const Clip& clip = src.clips[c];
       const double end = clip.duration();
-      const double frames = std::floor(end / clip.secondsPerFrame() + 1e-9);
+      const double frames = std::floor(end / src.frameGrid(static_cast<int>(c)).secondsPerFrame + 1e-9);
       const long long count = std::min<long long>(static_cast<long long>(frames) + 1, maxSamplesPerClip);
       std::vector<double> times;
       for (long long f = 0; f < count; ++f)

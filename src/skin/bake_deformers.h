@@ -2,7 +2,7 @@
 #include <string>
 #include <vector>
 
-#include "io/scene.h"
+#include "scene/scene.h"
 
 namespace kinema {
 

@@ -1,7 +1,7 @@
 #pragma once
 #include <string>
 
-#include "io/scene.h"
+#include "scene/scene.h"
 #include "skin/automatic_weights.h"
 
 namespace kinema {

@@ -254,9 +254,9 @@ TEST(Clip, DurationIsTheLastKeyOverAllChannels) {
 TEST(Clip, FrameToTimeIsFrameTimesFrameTimeInDouble) {
   Clip clip;
   clip.frameTime = 1.0 / 30.0;
-  EXPECT_EQ(clip.frameToTime(0), 0.0f);
-  EXPECT_EQ(clip.frameToTime(30), 1.0f);
-  EXPECT_EQ(clip.frameToTime(90), 3.0f);
+  EXPECT_EQ(ownFrameGrid(clip).frameToTime(0), 0.0f);
+  EXPECT_EQ(ownFrameGrid(clip).frameToTime(30), 1.0f);
+  EXPECT_EQ(ownFrameGrid(clip).frameToTime(90), 3.0f);
   // Frame N at N x Frame Time, multiplied in double (Frame Time is a double read from the
   // file) and rounded once to float. A float product float(N) * float(frameTime) differs
   // for some N; make sure such N exist in the range checked, so the check can fail.
@@ -265,7 +265,7 @@ TEST(Clip, FrameToTimeIsFrameTimesFrameTimeInDouble) {
     clip.frameTime = ft;
     for (long long n = 0; n < 20000; ++n) {
       const float want = static_cast<float>(static_cast<double>(n) * ft);
-      ASSERT_EQ(clip.frameToTime(n), want) << "frame " << n << " frame time " << ft;
+      ASSERT_EQ(ownFrameGrid(clip).frameToTime(n), want) << "frame " << n << " frame time " << ft;
       if (static_cast<float>(n) * static_cast<float>(ft) != want) ++floatProductDiffers;
     }
   }
@@ -281,17 +281,17 @@ TEST(Clip, SamplingAtFrameToTimeReturnsThatFramesKey) {
   const int frames = 2000;
   Channel c = channel(0, ChannelTarget::Translation, {}, {});
   for (int f = 0; f < frames; ++f) {
-    c.times.push_back(clip.frameToTime(f));
+    c.times.push_back(ownFrameGrid(clip).frameToTime(f));
     c.values.push_back({static_cast<float>(f), static_cast<float>(f % 7), -0.5f * f, 0});
   }
   clip.channels.push_back(c);
   ASSERT_EQ(clip.validate(s), "");
   Pose p = Pose::rest(s);
   for (int f = 0; f < frames; ++f) {
-    sampleClip(clip, clip.frameToTime(f), p);
+    sampleClip(clip, ownFrameGrid(clip).frameToTime(f), p);
     ASSERT_EQ(p.local[0].translation, glm::vec3(c.values[f])) << "frame " << f;
   }
-  EXPECT_EQ(clip.duration(), clip.frameToTime(frames - 1));
+  EXPECT_EQ(clip.duration(), ownFrameGrid(clip).frameToTime(frames - 1));
 }
 
 // ---------------------------------------------------------------------------------------

@@ -208,7 +208,13 @@ TEST_F(Cli, KinemaFileEvaluatesLikeTheBvhItCameFrom) {
        "values":[[0,0,0,1],[0,0,0.70710678,0.70710678]]}]}]})");
   ASSERT_EQ(kinema("pose '" + path + "' --time 0.5 --json"), 0) << err_;
   EXPECT_VEC3_NEAR(position(json()["joints"][1]), glm::vec3(-1, 2, 3), 1e-6f);
-  // No frame grid in this clip: --frame counts at 30 frames per second.
+  // No frame rate in this clip or the file: --frame counts at the document's default 24 fps.
+  ASSERT_EQ(kinema("pose '" + path + "' --frame 12 --json"), 0) << err_;
+  EXPECT_NEAR(json()["time"].get<double>(), 0.5, 1e-12);
+  // With the document's "frame_rate" set, frames count at that rate: frame 15 of 30 fps is 0.5 s.
+  std::string text = readFile(path);
+  text.insert(text.find("\"clips\""), "\"frame_rate\":30,");
+  writeFile(path, text);
   ASSERT_EQ(kinema("pose '" + path + "' --frame 15 --json"), 0) << err_;
   EXPECT_NEAR(json()["time"].get<double>(), 0.5, 1e-12);
 }

@@ -14,7 +14,7 @@
 #include "anim/sampling.h"
 #include "io/image.h"
 #include "io/kinema_file.h"
-#include "io/scene.h"
+#include "io/scene_files.h"
 #include "skin/default_character_scene.h"
 #include "cli/simulate_cli_fixture.h"
 #include "test_support.h"
@@ -81,7 +81,7 @@ TEST_F(CrowdCli, AKinemaOutGetsAClipPerMemberThatReplaysTheCrowd) {
     for (int m = 0; m < 10; ++m) {
       const Clip& c = back->clips[1 + m];
       Pose pose = Pose::rest(back->skeleton);
-      sampleClip(c, c.frameToTime(f), pose);
+      sampleClip(c, ownFrameGrid(c).frameToTime(f), pose);
       // The walk's drift is taken out: the hips keep the character's height, on the ground plane.
       EXPECT_NEAR(pose.local[hips].translation.y, height, 1e-4f);
       at.push_back(pose.local[hips].translation);

@@ -6,7 +6,7 @@
 #include "anim/scalar_property.h"
 #include "core/forward_kinematics.h"
 #include "io/kinema_file.h"
-#include "io/scene.h"
+#include "io/scene_files.h"
 #include "skin/default_character_scene.h"
 #include "skin/scene_deformation.h"
 #include "test_support.h"

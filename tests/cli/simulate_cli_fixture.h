@@ -8,7 +8,7 @@
 #include <string>
 
 #include "io/kinema_file.h"
-#include "io/scene.h"
+#include "scene/scene.h"
 #include "test_support.h"
 
 namespace kinema::test {

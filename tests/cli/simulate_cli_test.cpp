@@ -12,7 +12,7 @@
 #include "core/default_character.h"
 #include "core/forward_kinematics.h"
 #include "io/kinema_file.h"
-#include "io/scene.h"
+#include "io/scene_files.h"
 #include "sim/spring_bones.h"
 #include "cli/simulate_cli_fixture.h"
 #include "test_support.h"
@@ -41,7 +41,7 @@ Scene tailedCharacter(bool withRagdoll) {
   std::vector<glm::vec4> values;
   for (int f = 0; f <= 48; f += 8) {
     const glm::quat q = glm::angleAxis((f % 16 == 0 ? 0.6f : -0.6f), glm::vec3(0, 1, 0));
-    times.push_back(clip.frameToTime(f));
+    times.push_back(ownFrameGrid(clip).frameToTime(f));
     values.emplace_back(q.x, q.y, q.z, q.w);
   }
   clip.channels.emplace_back(hips, ChannelTarget::Rotation, Interpolation::Linear, times, values);
@@ -94,15 +94,15 @@ TEST_F(SimulateCli, EveryFrameKeysReplayTheSpringChain) {
   SamplingCache a, b;
   for (int f = 0; f <= 48; ++f) {
     Pose expected = Pose::rest(scene.skeleton), baked = Pose::rest(scene.skeleton);
-    sampleClip(clip, clip.frameToTime(f), expected, a);
+    sampleClip(clip, ownFrameGrid(clip).frameToTime(f), expected, a);
     SpringBoneJob job;
     job.skeleton = &scene.skeleton;
     job.chains = &scene.simulation.springChains;
-    job.dt = static_cast<float>(clip.secondsPerFrame());
+    job.dt = static_cast<float>(ownFrameGrid(clip).secondsPerFrame);
     job.pose = &expected;
     job.state = &state;
     ASSERT_TRUE(job.run());
-    sampleClip(back->clips[0], clip.frameToTime(f), baked, b);
+    sampleClip(back->clips[0], ownFrameGrid(clip).frameToTime(f), baked, b);
     for (int joint : scene.simulation.springChains[0].joints)
       EXPECT_SAME_ROTATION(baked.local[joint].rotation, expected.local[joint].rotation, 1e-6f) << "frame " << f;
   }
@@ -121,8 +121,8 @@ TEST_F(SimulateCli, ReducedKeysStayWithinTheTolerance) {
   SamplingCache ca, cb;
   for (int f = 0; f <= 48; ++f) {
     Pose pe = Pose::rest(e->skeleton), pr = Pose::rest(r->skeleton);
-    sampleClip(e->clips[0], e->clips[0].frameToTime(f), pe, ca);
-    sampleClip(r->clips[0], r->clips[0].frameToTime(f), pr, cb);
+    sampleClip(e->clips[0], ownFrameGrid(e->clips[0]).frameToTime(f), pe, ca);
+    sampleClip(r->clips[0], ownFrameGrid(r->clips[0]).frameToTime(f), pr, cb);
     const std::vector<glm::mat4> we = computeWorld(e->skeleton, pe), wr = computeWorld(r->skeleton, pr);
     for (int joint = 0; joint < e->skeleton.size(); ++joint)
       EXPECT_LE(glm::length(glm::vec3(we[joint][3] - wr[joint][3])), 0.002f + 1e-5f) << "frame " << f;

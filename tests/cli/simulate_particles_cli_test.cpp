@@ -9,7 +9,7 @@
 
 #include "io/image.h"
 #include "io/kinema_file.h"
-#include "io/scene.h"
+#include "io/scene_files.h"
 #include "test_support.h"
 
 namespace kinema::test {
@@ -21,6 +21,7 @@ constexpr int kSize = 96;
 // system whose particles stand still where they are born, at (0.5, 1.5, 0), one a frame.
 Scene stillSparks() {
   Scene scene;
+  scene.frameRate = 30.0;  // no clip: frames count at the document's rate
   scene.skeleton.addJoint("root", -1, Transform{});
   scene.skeleton.addJoint("top", 0, Transform::fromTranslation({0, 2, 0}));
   ParticleSystemSettings s;
@@ -31,7 +32,7 @@ Scene stillSparks() {
   ParticleEmitter e;
   e.position = {0.5f, 1.5f, 0.0f};
   e.speed = {0.0f, 0.0f, RandomDistribution::Uniform};
-  e.rate = {30.0f, 0.0f, RandomDistribution::Uniform};  // 1/30 s frames: one a frame
+  e.rate = {30.0f, 0.0f, RandomDistribution::Uniform};  // 30 fps frames: one a frame
   e.lifetime = {100.0f, 0.0f, RandomDistribution::Uniform};
   s.emitters.push_back(e);
   scene.simulation.particles.push_back(s);

@@ -12,7 +12,7 @@
 #include "editor/model/document_files.h"
 #include "io/image.h"
 #include "io/kinema_file.h"
-#include "io/scene.h"
+#include "io/scene_files.h"
 
 namespace kinema::test {
 namespace {
@@ -277,7 +277,7 @@ TEST_F(AnimationDisplayE2e, OnionSkinShowsTheBodysGhostsOnTheDefaultCharacter) {
   int checked = 0;
   for (long long frame : {10LL, 15LL}) {
     Pose pose = Pose::rest(sc.skeleton);
-    sampleClip(sc.clips[0], sc.clips[0].frameToTime(frame), pose);
+    sampleClip(sc.clips[0], sc.frameGrid(0).frameToTime(frame), pose);
     const std::vector<glm::mat4> world = computeWorld(sc.skeleton, pose);
     // Along the ghost's forearm (lower arm to hand), where the arm's axis is.
     const glm::dvec3 elbow = glm::dvec3(world[sc.skeleton.find("LowerArm.L")][3]);

@@ -16,7 +16,7 @@
 #include "editor/model/pose_edits.h"
 #include "editor/model/timeline.h"
 #include "io/gltf_reader.h"
-#include "io/scene.h"
+#include "io/scene_files.h"
 #include "test_support.h"
 
 namespace kinema {
@@ -117,9 +117,9 @@ TEST(ClipList, NewAppendsAnEmptyActiveClipAndUndoRestoresTheOldOne) {
   EXPECT_EQ(s.doc.activeClip(), 3);
   const Clip& made = s.doc.scene().clips[3];
   EXPECT_TRUE(made.channels.empty());
-  EXPECT_DOUBLE_EQ(made.framesPerSecond(), 24.0);
-  EXPECT_EQ(made.nearestFrame(made.playStart()), kNewClipStartFrame);
-  EXPECT_EQ(made.nearestFrame(made.playEnd()), kNewClipEndFrame);
+  EXPECT_DOUBLE_EQ(s.doc.scene().frameGrid(3).framesPerSecond(), 24.0);
+  EXPECT_EQ(s.doc.scene().frameGrid(3).nearestFrame(made.playStart()), kNewClipStartFrame);
+  EXPECT_EQ(s.doc.scene().frameGrid(3).nearestFrame(made.playEnd()), kNewClipEndFrame);
   EXPECT_EQ(s.doc.historyLabels().back(), "New clip Action");
   ASSERT_EQ(newClip(s.doc), "");
   EXPECT_EQ(s.doc.scene().clips[4].name, "Action.001");

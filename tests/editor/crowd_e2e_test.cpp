@@ -8,7 +8,7 @@
 #include "anim/sampling.h"
 #include "editor/model/crowd_edits.h"
 #include "editor/model/document.h"
-#include "io/scene.h"
+#include "io/scene_files.h"
 
 namespace kinema::test {
 namespace {
@@ -59,15 +59,15 @@ TEST_F(CrowdE2e, TwoHundredCesiumMenWalkAroundAnObstacleBakedSavedReopened) {
   ASSERT_TRUE(crowd == back->simulation.crowds.at(0));
   ASSERT_EQ(addCrowdEdit(doc, crowd), "");
   const Clip walk = doc.scene().clips[0];  // a copy: the bake adds clips
-  ASSERT_EQ(bakeCrowdEdit(doc, 0, 0, walk.nearestFrame(walk.duration())), "");
+  ASSERT_EQ(bakeCrowdEdit(doc, 0, 0, ownFrameGrid(walk).nearestFrame(walk.duration())), "");
   for (int m : {0, 77, 199}) {
     const Clip& expected = doc.scene().clips[1 + m];
     const Clip& got = back->clips[1 + m];
     ASSERT_EQ(got.name, expected.name);
-    for (long long f = 0; f <= walk.nearestFrame(walk.duration()); f += 7) {
+    for (long long f = 0; f <= ownFrameGrid(walk).nearestFrame(walk.duration()); f += 7) {
       Pose pe = Pose::rest(doc.skeleton()), pb = Pose::rest(back->skeleton);
-      sampleClip(expected, expected.frameToTime(f), pe);
-      sampleClip(got, got.frameToTime(f), pb);
+      sampleClip(expected, ownFrameGrid(expected).frameToTime(f), pe);
+      sampleClip(got, ownFrameGrid(got).frameToTime(f), pb);
       for (int j = 0; j < doc.skeleton().size(); ++j)
         ASSERT_LT(glm::distance(pe.local[j].translation, pb.local[j].translation), 1e-4f) << m << " " << f << " " << j;
     }

@@ -303,7 +303,7 @@ TEST(CurveEditor, DraggingARotationKeyInTheEulerViewTurnsOnlyThatAngle) {
   Clip clip;
   clip.frameTime = 1.0 / 30;
   clip.channels.push_back(rotationChannel({0.0f, 1.0f}, {xyzQuat(0, 0, 0), xyzQuat(0.2, 0.1, 0.4)}));
-  moveCurveKeys(clip, {{0, 2, 1}}, {float(0.4 * kDeg)}, {1.0f}, 0.0f, float(0.3 * kDeg), RotationView::Euler,
+  moveCurveKeys(clip, ownFrameGrid(clip), {{0, 2, 1}}, {float(0.4 * kDeg)}, {1.0f}, 0.0f, float(0.3 * kDeg), RotationView::Euler,
                 EulerOrder::XYZ);
   const glm::vec4 v = clip.channels[0].values[1];
   EXPECT_NEAR(std::abs(glm::dot(glm::dquat(v.w, v.x, v.y, v.z), xyzQuat(0.2, 0.1, 0.7))), 1.0, 1e-6);
@@ -312,7 +312,7 @@ TEST(CurveEditor, DraggingARotationKeyInTheEulerViewTurnsOnlyThatAngle) {
   Clip t;
   t.frameTime = 1.0 / 30;
   t.channels.push_back(translationChannel());
-  moveCurveKeys(t, {{0, 1, 1}}, {1.0f}, {2.0f}, 0.0f, 0.25f, RotationView::Euler, EulerOrder::XYZ);
+  moveCurveKeys(t, ownFrameGrid(t), {{0, 1, 1}}, {1.0f}, {2.0f}, 0.0f, 0.25f, RotationView::Euler, EulerOrder::XYZ);
   EXPECT_FLOAT_EQ(t.channels[0].values[1].y, 1.5f);
 }
 
@@ -348,13 +348,13 @@ TEST(CurveEditor, KeyEditsAreUndoStepsRestoredExactly) {
   ASSERT_EQ(doc.beginDrag("Move keys"), "");
   for (float dt : {0.05f, 0.12f}) {
     doc.updateDrag([&](DocumentEdit& e) {
-      moveCurveKeys(e.clips[0], {{0, 1, 2}}, {3.0f}, {1.0f}, dt, 0.5f, RotationView::Euler, EulerOrder::XYZ);
+      moveCurveKeys(e.clips[0], ownFrameGrid(e.clips[0]), {{0, 1, 2}}, {3.0f}, {1.0f}, dt, 0.5f, RotationView::Euler, EulerOrder::XYZ);
       return std::string();
     });
   }
   doc.commitDrag();
   const Channel moved = doc.scene().clips[0].channels[0];
-  EXPECT_FLOAT_EQ(moved.times[2], doc.scene().clips[0].frameToTime(24));
+  EXPECT_FLOAT_EQ(moved.times[2], ownFrameGrid(doc.scene().clips[0]).frameToTime(24));
   EXPECT_FLOAT_EQ(moved.values[2].y, 3.5f);
   EXPECT_EQ(doc.historyPosition(), 2);
   ASSERT_TRUE(doc.undo());
@@ -373,10 +373,10 @@ TEST(CurveEditor, MovingAKeyPastItsNeighbourKeepsTheSelectionOnIt) {
   clip.channels.push_back(translationChannel());
   // Key 1 (frame 10) moved 15 frames right: lands at frame 25, between keys 2 and 3.
   const std::vector<CurveKeyRef> out =
-      moveCurveKeys(clip, {{0, 1, 1}}, {1.0f}, {1.0f}, 0.5f, 0.0f, RotationView::Euler, EulerOrder::XYZ);
+      moveCurveKeys(clip, ownFrameGrid(clip), {{0, 1, 1}}, {1.0f}, {1.0f}, 0.5f, 0.0f, RotationView::Euler, EulerOrder::XYZ);
   ASSERT_EQ(out.size(), 1u);
   EXPECT_EQ(out[0].key, 2);
-  EXPECT_FLOAT_EQ(clip.channels[0].times[2], clip.frameToTime(25));
+  EXPECT_FLOAT_EQ(clip.channels[0].times[2], ownFrameGrid(clip).frameToTime(25));
   EXPECT_FLOAT_EQ(clip.channels[0].values[2].y, 1.0f);
 }
 

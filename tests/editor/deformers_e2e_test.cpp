@@ -12,7 +12,7 @@
 #include "core/forward_kinematics.h"
 #include "editor/model/deformer_edits.h"
 #include "editor/model/document.h"
-#include "io/scene.h"
+#include "io/scene_files.h"
 #include "skin/default_character_scene.h"
 #include "skin/scene_deformation.h"
 
@@ -83,7 +83,7 @@ TEST_F(DeformersE2e, LatticePointAndSmileKeyedPlayedSavedReopenedExported) {
   ASSERT_NE(x, nullptr);
   ASSERT_EQ(x->times.size(), 2u);
   // The timeline starts at frame 1 (Blender's): keyed there and 20 frames on.
-  EXPECT_EQ(clip.nearestFrame(x->times[1]) - clip.nearestFrame(x->times[0]), 20);
+  EXPECT_EQ(file->frameGrid(0).nearestFrame(x->times[1]) - file->frameGrid(0).nearestFrame(x->times[0]), 20);
   EXPECT_NEAR(x->values[0].x, rest.x, 1e-6);
   // The point went right by about 40 pixels at its depth (the G move's path ends there).
   EXPECT_NEAR(x->values[1].x - rest.x, pixels * camera.unitsPerPixel(rest), 0.25 * pixels * camera.unitsPerPixel(rest));
@@ -106,7 +106,7 @@ TEST_F(DeformersE2e, LatticePointAndSmileKeyedPlayedSavedReopenedExported) {
   ASSERT_EQ(back["lattice_edit"]["selected"].size(), 27u);
   const long long frame = back["timeline"]["frame"];
   const glm::dvec3 shown = vec3(back["lattice_edit"]["selected_positions"][point]);
-  const double t = clip.frameToTime(frame);
+  const double t = file->frameGrid(0).frameToTime(frame);
   const double expectedX = t <= x->times[0] ? x->values[0].x
                            : t >= x->times[1]
                                ? x->values[1].x
@@ -131,9 +131,9 @@ TEST_F(DeformersE2e, LatticePointAndSmileKeyedPlayedSavedReopenedExported) {
   Result<Scene> gltf = loadScene(exported);
   ASSERT_TRUE(gltf) << gltf.error();
   ASSERT_FALSE(gltf->clips.empty());
-  const long long first = clip.nearestFrame(smile->times[0]), last = clip.nearestFrame(smile->times[1]);
+  const long long first = file->frameGrid(0).nearestFrame(smile->times[0]), last = file->frameGrid(0).nearestFrame(smile->times[1]);
   ASSERT_EQ(last - first, 20);
-  const std::vector<std::vector<float>> weights = sampleMorphWeights(gltf.value(), 0, clip.frameToTime(first + 10));
+  const std::vector<std::vector<float>> weights = sampleMorphWeights(gltf.value(), 0, file->frameGrid(0).frameToTime(first + 10));
   ASSERT_FALSE(weights.empty());
   ASSERT_GE(weights[0].size(), 2u);
   EXPECT_NEAR(weights[0][1], 0.5 * (w0 + w1), 1e-4);

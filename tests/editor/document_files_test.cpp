@@ -10,6 +10,7 @@
 #include "editor/model/document_files.h"
 #include "editor/model/pose_edits.h"
 #include "test_support.h"
+#include "io/scene_files.h"
 
 namespace kinema {
 namespace {

@@ -93,18 +93,18 @@ TEST(DopeSheet, ClickShiftClickAndBoxSelect) {
 
   // Frames 4 .. 11 on rows 1-2 (Root, A): Root@10, A@5, A@10; the corners in either order.
   const std::vector<KeyColumn> box = {{0, at(10)}, {1, at(5)}, {1, at(10)}};
-  EXPECT_EQ(columnsInBox(clip, rows, 4, 11, 1, 2), box);
-  EXPECT_EQ(columnsInBox(clip, rows, 11, 4, 2, 1), box);
-  s.box(columnsInBox(clip, rows, 4, 11, 1, 2), BoxSelectMode::Replace);
+  EXPECT_EQ(columnsInBox(ownFrameGrid(clip), rows, 4, 11, 1, 2), box);
+  EXPECT_EQ(columnsInBox(ownFrameGrid(clip), rows, 11, 4, 2, 1), box);
+  s.box(columnsInBox(ownFrameGrid(clip), rows, 4, 11, 1, 2), BoxSelectMode::Replace);
   EXPECT_EQ(s.columns(), box);
   // The summary row alone takes in every joint: frames 9.5 .. 10.5 hold Root@10, A@10, B@10.3.
-  s.box(columnsInBox(clip, rows, 9.5, 10.5, 0, 0), BoxSelectMode::Extend);
+  s.box(columnsInBox(ownFrameGrid(clip), rows, 9.5, 10.5, 0, 0), BoxSelectMode::Extend);
   EXPECT_EQ(s.columns(), (std::vector<KeyColumn>{{0, at(10)}, {1, at(5)}, {1, at(10)}, {2, at(10.3)}}));
-  s.box(columnsInBox(clip, rows, 10, 10, 1, 3), BoxSelectMode::Subtract);
+  s.box(columnsInBox(ownFrameGrid(clip), rows, 10, 10, 1, 3), BoxSelectMode::Subtract);
   EXPECT_EQ(s.columns(), (std::vector<KeyColumn>{{1, at(5)}, {2, at(10.3)}}));
   // A box on no rows or frames with no keys selects nothing.
-  EXPECT_TRUE(columnsInBox(clip, rows, 13, 19, 0, 3).empty());
-  EXPECT_TRUE(columnsInBox(clip, rows, 0, 30, 5, 9).empty());
+  EXPECT_TRUE(columnsInBox(ownFrameGrid(clip), rows, 13, 19, 0, 3).empty());
+  EXPECT_TRUE(columnsInBox(ownFrameGrid(clip), rows, 0, 30, 5, 9).empty());
   s.clear();
   EXPECT_TRUE(s.empty());
 }
@@ -138,18 +138,18 @@ TEST(DopeSheet, ViewMapsPixelsToFramesAndRows) {
   v.pixelsPerFrame = 12;
   int row = -1;
   float time = 0;
-  ASSERT_TRUE(hitKeyColumn(rows, v, clip, glm::vec2(410 + 14 * 12 + 4, 517 + 50), 7, row, time));
+  ASSERT_TRUE(hitKeyColumn(rows, v, ownFrameGrid(clip), glm::vec2(410 + 14 * 12 + 4, 517 + 50), 7, row, time));
   EXPECT_EQ(row, 2);
   EXPECT_EQ(time, at(12));
-  EXPECT_FALSE(hitKeyColumn(rows, v, clip, glm::vec2(410 + 14 * 12 + 9, 517 + 50), 7, row, time));
-  EXPECT_FALSE(hitKeyColumn(rows, v, clip, glm::vec2(410 + 14 * 12, 517 + 90), 7, row, time));  // row 4: none
+  EXPECT_FALSE(hitKeyColumn(rows, v, ownFrameGrid(clip), glm::vec2(410 + 14 * 12 + 9, 517 + 50), 7, row, time));
+  EXPECT_FALSE(hitKeyColumn(rows, v, ownFrameGrid(clip), glm::vec2(410 + 14 * 12, 517 + 90), 7, row, time));  // row 4: none
 }
 
 TEST(DopeSheet, MovingSnapsEachKeyToTheNearestFrame) {
   Clip clip = testScene().clips[0];
   std::vector<KeyColumn> moved;
   // Root's column at 10 by +5.4 frames: 15.4 -> 15, in both of Root's channels.
-  moveKeyColumns(clip, {{0, at(10)}}, 5.4, &moved);
+  moveKeyColumns(clip, ownFrameGrid(clip), {{0, at(10)}}, 5.4, &moved);
   EXPECT_EQ(framesOf(clip.channels[0]), (std::vector<double>{0, 15, 20}));
   EXPECT_EQ(framesOf(clip.channels[1]), (std::vector<double>{0, 15}));
   EXPECT_EQ(clip.channels[0].values[1], glm::vec4(1, 0, 0, 0));
@@ -157,11 +157,11 @@ TEST(DopeSheet, MovingSnapsEachKeyToTheNearestFrame) {
   EXPECT_TRUE(clip.channels[0].keys.empty()) << "a channel-wide channel stays compact";
   EXPECT_EQ(moved, (std::vector<KeyColumn>{{0, at(15)}}));
   // B's key off the grid (10.3) by +2: 12.3 -> 12.
-  moveKeyColumns(clip, {{2, at(10.3)}}, 2.0, &moved);
+  moveKeyColumns(clip, ownFrameGrid(clip), {{2, at(10.3)}}, 2.0, &moved);
   EXPECT_EQ(framesOf(clip.channels[3]), (std::vector<double>{12}));
   EXPECT_EQ(clip.channels[3].times[0], at(12));
   // By -0.4 a key on the grid stays where it is.
-  moveKeyColumns(clip, {{0, at(20)}}, -0.4);
+  moveKeyColumns(clip, ownFrameGrid(clip), {{0, at(20)}}, -0.4);
   EXPECT_EQ(framesOf(clip.channels[0]), (std::vector<double>{0, 15, 20}));
   EXPECT_TRUE(clip.validate(testScene().skeleton).empty());
 }
@@ -172,7 +172,7 @@ TEST(DopeSheet, MovingKeysPastEachOtherNeverLosesAMovingKey) {
   // A's 10 and 12 by +2: 10 lands where 12 was while 12 moves on to 14. Moving one key at a
   // time would have replaced 12 with 10 and then moved that to 14.
   Clip clip = start;
-  moveKeyColumns(clip, {{1, at(10)}, {1, at(12)}}, 2.0);
+  moveKeyColumns(clip, ownFrameGrid(clip), {{1, at(10)}, {1, at(12)}}, 2.0);
   const Channel& a = clip.channels[2];
   EXPECT_EQ(framesOf(a), (std::vector<double>{5, 12, 14}));
   EXPECT_EQ(a.values[1], a0.values[1]);
@@ -180,7 +180,7 @@ TEST(DopeSheet, MovingKeysPastEachOtherNeverLosesAMovingKey) {
   // A's 5 (Step) and 10 by +7: 5 jumps past 10 to 12, replacing the key there that stays
   // (Blender), 10 goes to 17; the settings travel with the keys.
   clip = start;
-  moveKeyColumns(clip, {{1, at(5)}, {1, at(10)}}, 7.0);
+  moveKeyColumns(clip, ownFrameGrid(clip), {{1, at(5)}, {1, at(10)}}, 7.0);
   const Channel& b = clip.channels[2];
   EXPECT_EQ(framesOf(b), (std::vector<double>{12, 17}));
   EXPECT_EQ(b.values[0], a0.values[0]);
@@ -189,7 +189,7 @@ TEST(DopeSheet, MovingKeysPastEachOtherNeverLosesAMovingKey) {
   EXPECT_EQ(b.keys[1].interpolation, Interpolation::Linear);
   // 10 and 12 by -5 pass back over 5, which stays and is replaced by 10's key landing on it.
   clip = start;
-  moveKeyColumns(clip, {{1, at(10)}, {1, at(12)}}, -5.0);
+  moveKeyColumns(clip, ownFrameGrid(clip), {{1, at(10)}, {1, at(12)}}, -5.0);
   EXPECT_EQ(framesOf(clip.channels[2]), (std::vector<double>{5, 7}));
   EXPECT_EQ(clip.channels[2].values[0], a0.values[1]);
   EXPECT_EQ(clip.channels[2].values[1], a0.values[2]);
@@ -209,13 +209,13 @@ TEST(DopeSheet, DeleteRemovesEveryChannelKeyOfTheColumns) {
 TEST(DopeSheet, CopyPasteAtAnotherFrameOntoTheSameOrOtherJoints) {
   const Scene scene = testScene();
   Clip clip = scene.clips[0];
-  const KeyClipboard copied = copyKeyColumns(clip, {{1, at(5)}, {1, at(10)}});
+  const KeyClipboard copied = copyKeyColumns(clip, ownFrameGrid(clip), {{1, at(5)}, {1, at(10)}});
   ASSERT_EQ(copied.keys.size(), 2u);
   EXPECT_DOUBLE_EQ(copied.keys[0].frameOffset, 0.0);
   EXPECT_NEAR(copied.keys[1].frameOffset, 5.0, 1e-4);
   std::vector<KeyColumn> pasted;
   // At frame 30: A gets keys at 30 and 35 with the copied values and settings.
-  ASSERT_EQ(pasteKeys(clip, scene.skeleton, copied, 30, {}, &pasted), "");
+  ASSERT_EQ(pasteKeys(clip, ownFrameGrid(clip), scene.skeleton, copied, 30, {}, &pasted), "");
   const Channel& a = clip.channels[2];
   EXPECT_EQ(framesOf(a), (std::vector<double>{5, 10, 12, 30, 35}));
   EXPECT_EQ(a.values[3], scene.clips[0].channels[2].values[0]);
@@ -223,19 +223,19 @@ TEST(DopeSheet, CopyPasteAtAnotherFrameOntoTheSameOrOtherJoints) {
   EXPECT_EQ(a.keys[3].interpolation, Interpolation::Step);
   EXPECT_EQ(pasted, (std::vector<KeyColumn>{{1, at(30)}, {1, at(35)}}));
   // Onto the selected joints: B has no rotation channel, one is made.
-  ASSERT_EQ(pasteKeys(clip, scene.skeleton, copied, 2, {2}), "");
+  ASSERT_EQ(pasteKeys(clip, ownFrameGrid(clip), scene.skeleton, copied, 2, {2}), "");
   ASSERT_EQ(clip.channels.size(), 5u);
   EXPECT_EQ(clip.channels[4].joint, 2);
   EXPECT_EQ(clip.channels[4].target, ChannelTarget::Rotation);
   EXPECT_EQ(framesOf(clip.channels[4]), (std::vector<double>{2, 7}));
   EXPECT_TRUE(clip.validate(scene.skeleton).empty());
   // Keys of two joints cannot go onto three; an empty clipboard says so.
-  const KeyClipboard two = copyKeyColumns(clip, {{0, at(0)}, {1, at(5)}});
-  EXPECT_NE(pasteKeys(clip, scene.skeleton, two, 0, {0, 1, 2}), "");
-  EXPECT_NE(pasteKeys(clip, scene.skeleton, KeyClipboard{}, 0, {}), "");
+  const KeyClipboard two = copyKeyColumns(clip, ownFrameGrid(clip), {{0, at(0)}, {1, at(5)}});
+  EXPECT_NE(pasteKeys(clip, ownFrameGrid(clip), scene.skeleton, two, 0, {0, 1, 2}), "");
+  EXPECT_NE(pasteKeys(clip, ownFrameGrid(clip), scene.skeleton, KeyClipboard{}, 0, {}), "");
   // Pasting onto a key that exists replaces its value.
   Clip again = scene.clips[0];
-  ASSERT_EQ(pasteKeys(again, scene.skeleton, copyKeyColumns(again, {{1, at(12)}}), 5, {}), "");
+  ASSERT_EQ(pasteKeys(again, ownFrameGrid(again), scene.skeleton, copyKeyColumns(again, ownFrameGrid(again), {{1, at(12)}}), 5, {}), "");
   EXPECT_EQ(framesOf(again.channels[2]), (std::vector<double>{5, 10, 12}));
   EXPECT_EQ(again.channels[2].values[0], scene.clips[0].channels[2].values[2]);
 }
@@ -257,7 +257,7 @@ TEST(DopeSheet, EachEditIsOneUndoStepThatRestoresTheClipExactly) {
   EXPECT_EQ(doc.historyPosition(), 2);
 
   s.set({{1, at(5)}});
-  const KeyClipboard copied = copyKeyColumns(doc.scene().clips[0], s.columns());
+  const KeyClipboard copied = copyKeyColumns(doc.scene().clips[0], ownFrameGrid(doc.scene().clips[0]), s.columns());
   ASSERT_EQ(pasteKeysEdit(doc, 0, s, copied, 40, {}), "");
   EXPECT_EQ(framesOf(doc.scene().clips[0].channels[2]), (std::vector<double>{5, 12, 40}));
   const Clip pastedClip = doc.scene().clips[0];

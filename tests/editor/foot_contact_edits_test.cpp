@@ -31,8 +31,8 @@ Scene standingScene(int frames = 30) {
   clip.frameTime = 1.0 / 30.0;
   Channel root(0, ChannelTarget::Translation, Interpolation::Linear, {}, {});
   for (int f = 0; f < frames; ++f) {
-    root.times.push_back(clip.frameToTime(f));
-    root.values.push_back(glm::vec4(scene.skeleton.rest[0].translation + glm::vec3(0.1f * clip.frameToTime(f), 0, 0), 0));
+    root.times.push_back(ownFrameGrid(clip).frameToTime(f));
+    root.values.push_back(glm::vec4(scene.skeleton.rest[0].translation + glm::vec3(0.1f * ownFrameGrid(clip).frameToTime(f), 0, 0), 0));
   }
   clip.channels.push_back(root);
   scene.clips.push_back(clip);

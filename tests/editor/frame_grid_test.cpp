@@ -15,7 +15,7 @@
 #include "editor/model/motion_path.h"
 #include "editor/model/onion_skin.h"
 #include "editor/model/timeline.h"
-#include "io/scene.h"
+#include "scene/scene.h"
 #include "test_support.h"
 
 namespace kinema {
@@ -33,22 +33,26 @@ Scene gltfLikeScene() {
   const float t31 = static_cast<float>(31.0 / 24.0);
   clip.channels.push_back(Channel{0, ChannelTarget::Translation, Interpolation::Linear, {0.0f, t31, 2.0f},
                                   {glm::vec4(0), glm::vec4(31, 0, 0, 0), glm::vec4(48, 0, 0, 0)}});
-  EXPECT_EQ(clip.frameTime, 0.0);  // as glTF clips come in
+  EXPECT_EQ(clip.frameTime, 0.0);  // no rate of its own: it counts at the document's
   scene.clips.push_back(clip);
   return scene;
 }
 
 float rootX(const std::vector<glm::mat4>& world) { return world[0][3].x; }
 
-TEST(FrameGrid, AClipWithoutAGridCountsAtTwentyFourFps) {
+TEST(FrameGrid, AClipWithoutAGridCountsAtTheDocumentsRate) {
   Clip clip;
-  EXPECT_DOUBLE_EQ(clip.secondsPerFrame(), 1.0 / 24.0);  // Blender's default
-  EXPECT_DOUBLE_EQ(clip.framesPerSecond(), 24.0);
-  EXPECT_FLOAT_EQ(clip.frameToTime(31), 31.0f / 24.0f);
-  EXPECT_EQ(clip.nearestFrame(1.3), 31);  // 31.2
-  EXPECT_DOUBLE_EQ(clip.timeToFrame(0.5), 12.0);
+  EXPECT_EQ(ownFrameGrid(clip).secondsPerFrame, 0.0);  // no rate of its own
+  EXPECT_FALSE(hasOwnFrameRate(clip));
+  EXPECT_DOUBLE_EQ(frameGridOf(clip, 30.0).secondsPerFrame, 1.0 / 30.0);  // the document's
+  EXPECT_DOUBLE_EQ(frameGridOf(clip, 0.0).secondsPerFrame, 1.0 / 24.0);   // an unusable rate: the default
+  EXPECT_DOUBLE_EQ(frameGridOf(clip, kDefaultFrameRate).secondsPerFrame, 1.0 / 24.0);  // Blender's default
+  EXPECT_DOUBLE_EQ(frameGridOf(clip, kDefaultFrameRate).framesPerSecond(), 24.0);
+  EXPECT_FLOAT_EQ(frameGridOf(clip, kDefaultFrameRate).frameToTime(31), 31.0f / 24.0f);
+  EXPECT_EQ(frameGridOf(clip, kDefaultFrameRate).nearestFrame(1.3), 31);  // 31.2
+  EXPECT_DOUBLE_EQ(frameGridOf(clip, kDefaultFrameRate).timeToFrame(0.5), 12.0);
   clip.frameTime = 1.0 / 30.0;  // a clip's own grid wins
-  EXPECT_EQ(clip.nearestFrame(1.3), 39);
+  EXPECT_EQ(frameGridOf(clip, kDefaultFrameRate).nearestFrame(1.3), 39);
 }
 
 // Regression: before, the dope sheet, curve editor, onion skin, motion path and motion
@@ -72,24 +76,24 @@ TEST(FrameGrid, TimelineDopeSheetCurveEditorAndOnionSkinAgreeOnAGltfClip) {
   // and moving it two frames lands on frame 33 = 33/24 s.
   const std::vector<DopeSheetRow> rows = dopeSheetRows(clip);
   ASSERT_EQ(rows.size(), 2u);
-  EXPECT_NEAR(clip.timeToFrame(rows[1].times[1]), 31.0, 1e-4);
-  const std::vector<KeyColumn> box = columnsInBox(clip, rows, 31.0, 31.0, 1, 1);
+  EXPECT_NEAR(frameGridOf(clip, kDefaultFrameRate).timeToFrame(rows[1].times[1]), 31.0, 1e-4);
+  const std::vector<KeyColumn> box = columnsInBox(frameGridOf(clip, kDefaultFrameRate), rows, 31.0, 31.0, 1, 1);
   ASSERT_EQ(box.size(), 1u);
   EXPECT_FLOAT_EQ(box[0].time, t31);
   Clip moved = clip;
-  moveKeyColumns(moved, box, 2.0);
+  moveKeyColumns(moved, frameGridOf(moved, kDefaultFrameRate), box, 2.0);
   EXPECT_FLOAT_EQ(moved.channels[0].times[1], 33.0f / 24.0f);
 
   // Curve editor: a key dragged to 1.3 s snaps to frame 31 (31.2 rounds down), not 1.3 s
   // (frame 39 of 30 fps).
-  EXPECT_FLOAT_EQ(snapToFrame(clip, 1.3f), t31);
+  EXPECT_FLOAT_EQ(snapToFrame(frameGridOf(clip, kDefaultFrameRate), 1.3f), t31);
 
   // Onion skin: one ghost each side of frame 31, one frame apart: frames 30 and 32, posed
   // at 30/24 and 32/24 s (the root at x = 30 and 32).
   OnionSkinSettings onion;
   onion.enabled = true;
   onion.before = onion.after = onion.step = 1;
-  const std::vector<GhostFrame> ghosts = ghostFrames(onion, clip.nearestFrame(s.time), clip.nearestFrame(clip.duration()) + 1);
+  const std::vector<GhostFrame> ghosts = ghostFrames(onion, frameGridOf(clip, kDefaultFrameRate).nearestFrame(s.time), frameGridOf(clip, kDefaultFrameRate).nearestFrame(clip.duration()) + 1);
   ASSERT_EQ(ghosts.size(), 2u);
   EXPECT_EQ(ghosts[0].frame, 30);
   EXPECT_EQ(ghosts[1].frame, 32);
@@ -119,8 +123,8 @@ TEST(FrameGrid, SettingTheRateInTheTimelineIsSavedAndEveryViewFollows) {
   const Clip& clip = s.doc.scene().clips[0];
   EXPECT_DOUBLE_EQ(clip.frameTime, 1.0 / 30.0);
   EXPECT_EQ(frameAtTime(s, 1.3), 39);
-  EXPECT_FLOAT_EQ(snapToFrame(clip, 1.3f), static_cast<float>(39.0 / 30.0));
-  EXPECT_NEAR(clip.timeToFrame(1.3f), 39.0, 1e-4);
+  EXPECT_FLOAT_EQ(snapToFrame(frameGridOf(clip, kDefaultFrameRate), 1.3f), static_cast<float>(39.0 / 30.0));
+  EXPECT_NEAR(frameGridOf(clip, kDefaultFrameRate).timeToFrame(1.3f), 39.0, 1e-4);
   // Saved with the clip (.kinema frame_time) and read back.
   const std::string dir = test::makeTempDir(), path = dir + "/rate.kinema";
   ASSERT_EQ(saveDocumentAs(s.doc, path), "");
@@ -130,9 +134,9 @@ TEST(FrameGrid, SettingTheRateInTheTimelineIsSavedAndEveryViewFollows) {
   test::runCommand("rm -rf '" + dir + "'");
 }
 
-// The file of issue 17's report: Fox.glb's clips have no frame grid. At every key of its
-// first clip the timeline's frame, the dope sheet's column and the curve editor's snapped
-// frame are round(t * 24).
+// The file of issue 17's report: Fox.glb keeps no frame rate, but its first clip's keys lie on
+// the 24 fps grid (read as its rate). At every key the timeline's frame, the dope sheet's
+// column and the curve editor's snapped frame are round(t * 24).
 TEST(FrameGrid, FoxFramesAgreeAcrossTheViews) {
   KINEMA_REQUIRE_SHARED_DATA();
   Result<Document> opened = openDocument(test::sharedDataDir() + "/gltf/Fox.glb");
@@ -142,23 +146,70 @@ TEST(FrameGrid, FoxFramesAgreeAcrossTheViews) {
   resetTimeline(s);
   ASSERT_FALSE(s.doc.scene().clips.empty());
   const Clip& clip = s.doc.scene().clips[0];
-  ASSERT_EQ(clip.frameTime, 0.0) << "Fox.glb's clips have no frame grid";
+  ASSERT_EQ(clip.frameTime, 1.0 / 24.0) << "Fox.glb's first clip's keys lie on the 24 fps grid";
   const std::vector<DopeSheetRow> rows = dopeSheetRows(clip);
   ASSERT_GT(rows.size(), 1u);
   int checked = 0;
   for (float t : rows[0].times) {
     const long long expected = std::llround(double(t) * 24.0);
     EXPECT_EQ(frameAtTime(s, t), expected) << "timeline at " << t;
-    EXPECT_EQ(std::llround(clip.timeToFrame(t)), expected) << "dope sheet at " << t;
-    EXPECT_EQ(clip.nearestFrame(snapToFrame(clip, t)), expected) << "curve editor at " << t;
+    EXPECT_EQ(std::llround(frameGridOf(clip, kDefaultFrameRate).timeToFrame(t)), expected) << "dope sheet at " << t;
+    EXPECT_EQ(frameGridOf(clip, kDefaultFrameRate).nearestFrame(snapToFrame(frameGridOf(clip, kDefaultFrameRate), t)), expected) << "curve editor at " << t;
     goToFrame(s, expected);
-    EXPECT_EQ(clip.nearestFrame(s.time), expected) << "onion skin's current frame at " << t;
+    EXPECT_EQ(frameGridOf(clip, kDefaultFrameRate).nearestFrame(s.time), expected) << "onion skin's current frame at " << t;
     ++checked;
   }
   EXPECT_GT(checked, 10);
   // The report's case: 1.3 s is frame 31 in the timeline and in the dope sheet.
   EXPECT_EQ(frameAtTime(s, 1.3), 31);
-  EXPECT_EQ(std::llround(clip.timeToFrame(1.3)), 31);
+  EXPECT_EQ(std::llround(frameGridOf(clip, kDefaultFrameRate).timeToFrame(1.3)), 31);
+}
+
+// Issue 38's report in the editor: the retargeted glTF of a 120 fps take opens with frame 240
+// at the take's 2.0 s (its rate kept in the file), where it was 10.0 s at 24 fps.
+TEST(FrameGrid, ARetargetedGltfOpensOnItsSourcesFrames) {
+  KINEMA_REQUIRE_SHARED_DATA();
+  const std::string dir = test::makeTempDir(), out = dir + "/onto.glb";
+  ASSERT_EQ(test::runCommand(std::string(KINEMA_BINARY) + " retarget '" + test::sharedDataDir() +
+                             "/bvh/cmu_01_01_first720.bvh' '" + test::sharedDataDir() + "/gltf/CesiumMan.glb' --out '" + out +
+                             "'"),
+            0);
+  Result<Document> opened = openDocument(out);
+  ASSERT_TRUE(opened.ok()) << opened.error();
+  EditorState s;
+  s.doc = std::move(opened.value());
+  resetTimeline(s);
+  goToFrame(s, 240);
+  EXPECT_NEAR(s.time, 240 * 0.0083333, 1e-6);
+  EXPECT_NEAR(timelineFps(s), 1.0 / 0.0083333, 1e-6);
+  EXPECT_EQ(rangeEndFrame(s), 719);  // the take's 720 frames
+  test::runCommand("rm -rf '" + dir + "'");
+}
+
+// The document's rate: a clip without its own counts at it, Set Document Frame Rate is one undo
+// step, and a clip with its own rate keeps counting at that.
+TEST(FrameGrid, TheDocumentsRateCountsClipsWithoutOne) {
+  EditorState s;
+  s.doc = Document(gltfLikeScene());
+  resetTimeline(s);
+  s.doc.edit("Set document frame rate", [](DocumentEdit& e) {
+    e.frameRate = 30.0;
+    return std::string();
+  });
+  EXPECT_EQ(s.doc.scene().frameRate, 30.0);
+  EXPECT_DOUBLE_EQ(timelineFps(s), 30.0);
+  goToFrame(s, 30);
+  EXPECT_DOUBLE_EQ(s.time, static_cast<float>(1.0));
+  ASSERT_TRUE(s.doc.undo());
+  EXPECT_EQ(s.doc.scene().frameRate, kDefaultFrameRate);
+  EXPECT_DOUBLE_EQ(timelineFps(s), 24.0);
+  ASSERT_TRUE(s.doc.redo());
+  EXPECT_EQ(s.doc.scene().frameRate, 30.0);
+  EXPECT_NE(s.doc.edit("Bad rate", [](DocumentEdit& e) {
+    e.frameRate = 0.0;
+    return std::string();
+  }), "");
+  EXPECT_EQ(s.doc.scene().frameRate, 30.0);
 }
 
 }  // namespace

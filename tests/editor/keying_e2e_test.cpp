@@ -11,7 +11,7 @@
 #include "editor/model/document_files.h"
 #include "editor/e2e_harness.h"
 #include "io/image.h"
-#include "io/scene.h"
+#include "io/scene_files.h"
 
 namespace kinema::test {
 namespace {

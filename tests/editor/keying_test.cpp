@@ -73,7 +73,7 @@ TEST(Keying, RotationInterpolationMapsToOnesTheEngineAccepts) {
     p.interpolation = i;
     Pose pose = doc.pose();
     pose.local[1].scale = glm::vec3(1.5f);
-    ASSERT_GT(keyJoints(clips, c, doc.skeleton(), pose, {0, 1, 2}, 0.5f, p), 0);
+    ASSERT_GT(keyJoints(clips, c, doc.skeleton(), pose, {0, 1, 2}, 0.5f, p, documentFrameGrid(kDefaultFrameRate)), 0);
     EXPECT_EQ(clips[c].validate(doc.skeleton()), "") << toString(i);
   }
 }
@@ -91,7 +91,8 @@ TEST(Keying, FirstKeyCreatesActionAndUndoRedoRestoreClipsExactly) {
   EXPECT_EQ(clip, 0);
   const Clip& c = doc.scene().clips[0];
   EXPECT_EQ(c.name, "Action");
-  EXPECT_DOUBLE_EQ(c.frameTime, 1.0 / 24.0);
+  EXPECT_DOUBLE_EQ(c.frameTime, 0.0);  // no rate of its own: the document's, 24 fps
+  EXPECT_DOUBLE_EQ(doc.scene().frameGrid(0).secondsPerFrame, 1.0 / 24.0);
   EXPECT_TRUE(c.hasRange);
   EXPECT_FLOAT_EQ(c.rangeStart, 1.0f / 24.0f);
   EXPECT_FLOAT_EQ(c.rangeEnd, 250.0f / 24.0f);
@@ -128,7 +129,7 @@ TEST(Keying, ScaleIsKeyedWhereItDiffersFromRestUnlessLocRotOnly) {
   pose.local[2].scale = glm::vec3(2.0f);
   std::vector<Clip> clips;
   int c = -1;
-  keyJoints(clips, c, doc.skeleton(), pose, {1, 2}, 0.0f, KeyPreferences{});
+  keyJoints(clips, c, doc.skeleton(), pose, {1, 2}, 0.0f, KeyPreferences{}, documentFrameGrid(kDefaultFrameRate));
   EXPECT_EQ(channel(clips[c], 1, ChannelTarget::Scale), nullptr);
   ASSERT_NE(channel(clips[c], 2, ChannelTarget::Scale), nullptr);
   EXPECT_EQ(glm::vec3(channel(clips[c], 2, ChannelTarget::Scale)->values[0]), glm::vec3(2.0f));
@@ -136,7 +137,7 @@ TEST(Keying, ScaleIsKeyedWhereItDiffersFromRestUnlessLocRotOnly) {
   locRot.locRotOnly = true;
   std::vector<Clip> other;
   int d = -1;
-  keyJoints(other, d, doc.skeleton(), pose, {2}, 0.0f, locRot);
+  keyJoints(other, d, doc.skeleton(), pose, {2}, 0.0f, locRot, documentFrameGrid(kDefaultFrameRate));
   EXPECT_EQ(channel(other[d], 2, ChannelTarget::Scale), nullptr);
   EXPECT_EQ(other[d].channels.size(), 2u);
 }

@@ -55,16 +55,16 @@ TEST(MotionPath, RangeIsTheClipOrAroundTheCurrentFrameClamped) {
   const Scene scene = threeJointScene();
   MotionPathSettings s;
   long long first = -1, last = -1;
-  motionPathRange(s, scene.clips[0], 12, first, last);
+  motionPathRange(s, scene.clips[0], ownFrameGrid(scene.clips[0]), 12, first, last);
   EXPECT_EQ(first, 0);
   EXPECT_EQ(last, 60);
   s.wholeClip = false;
   s.before = 20;
   s.after = 5;
-  motionPathRange(s, scene.clips[0], 12, first, last);
+  motionPathRange(s, scene.clips[0], ownFrameGrid(scene.clips[0]), 12, first, last);
   EXPECT_EQ(first, 0);  // 12 - 20 clamped
   EXPECT_EQ(last, 17);
-  motionPathRange(s, scene.clips[0], 58, first, last);
+  motionPathRange(s, scene.clips[0], ownFrameGrid(scene.clips[0]), 58, first, last);
   EXPECT_EQ(first, 38);
   EXPECT_EQ(last, 60);  // 63 clamped
   EXPECT_TRUE(computeMotionPath(scene, 0, 7, 0, 10).points.empty());  // no such joint

@@ -16,7 +16,7 @@
 #include "anim/sampling.h"
 #include "editor/e2e_harness.h"
 #include "io/kinema_file.h"
-#include "io/scene.h"
+#include "io/scene_files.h"
 #include "test_support.h"
 
 namespace kinema::test {

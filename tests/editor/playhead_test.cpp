@@ -122,7 +122,7 @@ TEST(Playhead, AFileWithoutAPlayheadOpensOnTheClipsStartPosedFromTheClip) {
   // A playback range starting on frame 3: the playhead starts there, x = 5 + 5 * 3/24.
   Scene ranged = movingRootScene();
   ranged.clips[0].hasRange = true;
-  ranged.clips[0].rangeStart = ranged.clips[0].frameToTime(3);
+  ranged.clips[0].rangeStart = ranged.frameGrid(0).frameToTime(3);
   ranged.clips[0].rangeEnd = 1.0f;
   EditorState r;
   r.doc = Document(ranged);

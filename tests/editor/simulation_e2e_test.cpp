@@ -7,7 +7,7 @@
 #include "anim/sampling.h"
 #include "editor/model/document.h"
 #include "editor/model/simulation_edits.h"
-#include "io/scene.h"
+#include "io/scene_files.h"
 
 namespace kinema::test {
 namespace {
@@ -56,7 +56,7 @@ TEST_F(SimulationE2e, FoxsTailMadeDynamicPlayedBakedUndoneRedoneExported) {
   const int tail = sk.find("b_Tail01_012");
   ASSERT_EQ(addSpringChainEdit(doc, defaultSpringChain(sk, dynamicChainFrom(sk, {tail}, tail))), "");
   const Clip& clip = doc.scene().clips[0];
-  const long long last = clip.nearestFrame(clip.duration());
+  const long long last = ownFrameGrid(clip).nearestFrame(clip.duration());
   ASSERT_EQ(bakeSimulationEdit(doc, 0, 0, last), "");
   const Clip& expected = doc.scene().clips[0];
 
@@ -73,8 +73,8 @@ TEST_F(SimulationE2e, FoxsTailMadeDynamicPlayedBakedUndoneRedoneExported) {
   SamplingCache a, b;
   for (long long f = 0; f <= last; f += 5) {
     Pose pe = Pose::rest(sk), pb = Pose::rest(back->skeleton);
-    sampleClip(expected, clip.frameToTime(f), pe, a);
-    sampleClip(back->clips[0], clip.frameToTime(f), pb, b);
+    sampleClip(expected, ownFrameGrid(clip).frameToTime(f), pe, a);
+    sampleClip(back->clips[0], ownFrameGrid(clip).frameToTime(f), pb, b);
     const std::vector<std::pair<int, int>> pairs = {{tail, backTail}, {sk.find("b_Tail02_013"), backTail2}};
     for (const auto& [je, jb] : pairs)
       EXPECT_GT(std::abs(glm::dot(pe.local[je].rotation, pb.local[jb].rotation)), 1.0f - 1e-6f) << "frame " << f;

@@ -88,7 +88,7 @@ TEST(SimulationEdits, LiveSpringsShowTheSamePoseHoweverTheFrameIsReached) {
   const Clip& clip = doc.scene().clips[0];
   auto poseAt = [&](LiveSprings& live, long long frame) {
     Pose pose = Pose::rest(s);
-    sampleClip(clip, clip.frameToTime(frame), pose);
+    sampleClip(clip, ownFrameGrid(clip).frameToTime(frame), pose);
     applyLiveSprings(live, doc, 0, 0, frame, pose);
     return pose;
   };
@@ -103,7 +103,7 @@ TEST(SimulationEdits, LiveSpringsShowTheSamePoseHoweverTheFrameIsReached) {
   Result<Clip> baked = bakeSpringBones(s, clip, settings.springChains, 0, 30);
   ASSERT_TRUE(baked);
   Pose keyed = Pose::rest(s);
-  sampleClip(baked.value(), clip.frameToTime(30), keyed);
+  sampleClip(baked.value(), ownFrameGrid(clip).frameToTime(30), keyed);
   for (int j : chain.joints) {
     EXPECT_EQ(viaSteps.local[j].rotation, viaJump.local[j].rotation) << s.names[j];
     EXPECT_EQ(viaBack.local[j].rotation, viaJump.local[j].rotation) << s.names[j];
@@ -111,7 +111,7 @@ TEST(SimulationEdits, LiveSpringsShowTheSamePoseHoweverTheFrameIsReached) {
   }
   // The tail did swing: it is not where the clip alone puts it.
   Pose still = Pose::rest(s);
-  sampleClip(clip, clip.frameToTime(30), still);
+  sampleClip(clip, ownFrameGrid(clip).frameToTime(30), still);
   EXPECT_LT(std::abs(glm::dot(still.local[chain.joints[0]].rotation, viaJump.local[chain.joints[0]].rotation)), 0.9999f);
   EXPECT_EQ(stepped.framesSimulated, 31);
   EXPECT_EQ(back.framesSimulated, 41 + 31);
@@ -133,7 +133,7 @@ TEST(SimulationEdits, RagdollFromAFrameFallsAndIsOneStep) {
   EXPECT_EQ(bake.parts[0].kind, "ragdoll");
   EXPECT_LT(bake.parts[0].largestLimitExcess, 2.0f * 0.01745329f);
   Pose end = Pose::rest(s);
-  sampleClip(doc.scene().clips[0], doc.scene().clips[0].frameToTime(84), end);
+  sampleClip(doc.scene().clips[0], ownFrameGrid(doc.scene().clips[0]).frameToTime(84), end);
   EXPECT_LT(end.local[s.find("Hips")].translation.y, 0.5f) << "fallen";
   EXPECT_EQ(doc.historyLabels().size(), 1u);
   ASSERT_TRUE(doc.undo());
@@ -190,7 +190,7 @@ TEST(SimulationEdits, ACollisionCapsuleIsOneUndoStepAndKeepsTheTailOut) {
     float nearest = 1e9f;
     for (long long f = 0; baked && f <= 48; ++f) {
       Pose pose = Pose::rest(s);
-      sampleClip(baked.value(), clip.frameToTime(f), pose);
+      sampleClip(baked.value(), ownFrameGrid(clip).frameToTime(f), pose);
       const std::vector<glm::mat4> world = computeWorld(s, pose);
       const glm::vec3 a = glm::vec3(world[hips] * glm::vec4(bar.a, 1.0f)), b = glm::vec3(world[hips] * glm::vec4(bar.b, 1.0f));
       for (int k = 1; k <= 3; ++k) nearest = std::min(nearest, segmentDistance(glm::vec3(world[s.find("Tail" + std::to_string(k))][3]), a, b));
@@ -231,8 +231,8 @@ TEST(SimulationEdits, ARagdollWithoutAClipFallsFromThePoseOnScreenIntoANewAction
   // the hips have fallen (lower than they stood).
   const Clip& clip = doc.scene().clips[0];
   Pose start = Pose::rest(s), end = Pose::rest(s);
-  sampleClip(clip, clip.frameToTime(1), start);
-  sampleClip(clip, clip.frameToTime(73), end);
+  sampleClip(clip, ownFrameGrid(clip).frameToTime(1), start);
+  sampleClip(clip, ownFrameGrid(clip).frameToTime(73), end);
   const int hips = s.find("Hips");
   const float standing = glm::vec3(computeWorld(s, Pose::rest(s))[hips][3]).y;
   EXPECT_NEAR(glm::vec3(computeWorld(s, start)[hips][3]).y, standing, 0.02f);

@@ -148,7 +148,7 @@ TEST(Timeline, PlaybackPosesFromTheSamplingFormAndFollowsEditsWhilePlaying) {
   Clip clip;
   clip.frameTime = 1.0 / 24.0;
   std::vector<float> times;
-  for (int k = 0; k < 48; ++k) times.push_back(clip.frameToTime(k));
+  for (int k = 0; k < 48; ++k) times.push_back(ownFrameGrid(clip).frameToTime(k));
   for (int j = 0; j < kJoints; ++j) {
     Channel t(j, ChannelTarget::Translation, Interpolation::Linear, times, {});
     Channel r(j, ChannelTarget::Rotation, Interpolation::Linear, times, {});

@@ -79,7 +79,7 @@ TEST(EditorState, PlaybackWrapsWhenLoopingAndStopsOtherwise) {
   clip.frameTime = 0.5;
   scene.clips.push_back(clip);
   s.doc = Document(scene);
-  EXPECT_EQ(s.doc.scene().clips[0].nearestFrame(s.duration()), 4);  // frames 0..4, 0.5 s apart
+  EXPECT_EQ(ownFrameGrid(s.doc.scene().clips[0]).nearestFrame(s.duration()), 4);  // frames 0..4, 0.5 s apart
   s.playing = true;
   s.time = 1.5;
   advancePlayback(s, 1.0);

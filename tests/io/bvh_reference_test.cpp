@@ -41,7 +41,7 @@ std::vector<glm::mat4> worldAtFrame(const BvhData& d, int frame) {
   const Skeleton skel = d.skeleton();
   const Clip clip = d.clip();
   Pose pose = Pose::rest(skel);
-  sampleClip(clip, clip.frameToTime(frame), pose);
+  sampleClip(clip, ownFrameGrid(clip).frameToTime(frame), pose);
   return computeWorld(skel, pose);
 }
 
@@ -137,7 +137,7 @@ TEST(BvhReference, WorldMatricesMatchThreeJs) {
     ASSERT_FALSE(d.joints.empty());
     ASSERT_LT(frame, d.frameCount);
     const Clip clip = d.clip();
-    EXPECT_NEAR(clip.frameToTime(frame), ref["time"].get<double>(), 1e-4);
+    EXPECT_NEAR(ownFrameGrid(clip).frameToTime(frame), ref["time"].get<double>(), 1e-4);
     const std::vector<glm::mat4> world = worldAtFrame(d, frame);
 
     const nlohmann::json& joints = ref["joints"];

@@ -43,7 +43,7 @@ std::vector<glm::mat4> worldFromClip(const BvhData& d, int frame) {
   const Skeleton skel = d.skeleton();
   const Clip clip = d.clip();
   Pose pose = Pose::rest(skel);
-  sampleClip(clip, clip.frameToTime(frame), pose);
+  sampleClip(clip, ownFrameGrid(clip).frameToTime(frame), pose);
   return computeWorld(skel, pose);
 }
 
@@ -385,7 +385,7 @@ TEST(BvhStructure, FrameNIsAtNTimesFrameTime) {
   EXPECT_DOUBLE_EQ(d.frameTime, 0.25);
   const Clip clip = d.clip();
   EXPECT_DOUBLE_EQ(clip.frameTime, 0.25);
-  EXPECT_FLOAT_EQ(clip.frameToTime(2), 0.5f);
+  EXPECT_FLOAT_EQ(ownFrameGrid(clip).frameToTime(2), 0.5f);
   EXPECT_FLOAT_EQ(clip.duration(), 0.5f);
   for (const Channel& ch : clip.channels) {
     ASSERT_EQ(ch.times.size(), 3u);
@@ -444,7 +444,7 @@ TEST(BvhFormat, CrlfTabsLeadingDotNamesOnBraceLinesAndBlankMotionLines) {
     EXPECT_EQ(d.joints[1].line, 5);
     EXPECT_EQ(d.frameCount, 2);
     EXPECT_DOUBLE_EQ(d.frameTime, 0.0083333);
-    EXPECT_FLOAT_EQ(d.clip().frameToTime(1), 0.0083333f);
+    EXPECT_FLOAT_EQ(ownFrameGrid(d.clip()).frameToTime(1), 0.0083333f);
     // Frame 1: Hips at (1,2,3) turned Rx(90) (y -> z). Chest = (1,2,3) + (0,0,2) = (1,2,5);
     // its End Site (0,1,0) -> (0,0,1): (1,2,6).
     for (const auto& w : {worldFromFrame(d, 1), worldFromClip(d, 1)}) {

@@ -119,7 +119,7 @@ TEST(BvhWriter, HandBuiltSkeletonText) {
       "}\n"
       "MOTION\n"
       "Frames: 1\n"
-      "Frame Time: 0.0333333333\n"
+      "Frame Time: 0.0416666667\n"  // no clip: one frame at the default 24 fps
       "1.000000 2.000000 3.000000 0.000000 0.000000 90.000000 0.000000 0.000000 0.000000 0.000000 0.000000 0.000000\n";
   EXPECT_EQ(text.value(), expected);
   ASSERT_EQ(report.size(), 1u);
@@ -134,7 +134,7 @@ TEST(BvhWriter, FrameRateComesFromTheKeysWhenTheClipHasNone) {
   clip.channels.push_back(Channel(0, ChannelTarget::Translation, Interpolation::Linear, {0.0f, 0.05f, 0.2f},
                                   {{0, 0, 0, 0}, {1, 0, 0, 0}, {4, 0, 0, 0}}));
   bool uniform = false;
-  EXPECT_NEAR(bvhFrameTime(&clip, 0.0, &uniform), 0.05, 1e-7);
+  EXPECT_NEAR(bvhFrameTime(&clip, BvhWriteOptions{}, &uniform), 0.05, 1e-7);
   EXPECT_TRUE(uniform);
   const Result<std::string> text = bvhText(s, &clip, {});
   ASSERT_TRUE(text.ok());
@@ -143,13 +143,14 @@ TEST(BvhWriter, FrameRateComesFromTheKeysWhenTheClipHasNone) {
   EXPECT_EQ(back->frameCount, 5);  // 0, 0.05, 0.1, 0.15, 0.2; linear: x = 20 t
   EXPECT_NEAR(back->framePose(2).local[0].translation.x, 2.0f, 1e-5);
 
-  clip.channels[0].times = {0.0f, 0.05f, 0.12f};
+  // Keys on no grid (not even 100 or 120 fps's) are sampled at the document's rate.
+  clip.channels[0].times = {0.0f, 0.05f, 0.1234f};
   std::vector<std::string> report;
-  EXPECT_NEAR(bvhFrameTime(&clip, 0.0, &uniform), 1.0 / 30.0, 1e-9);
+  EXPECT_NEAR(bvhFrameTime(&clip, BvhWriteOptions{}, &uniform), 1.0 / 24.0, 1e-9);
   EXPECT_FALSE(uniform);
   ASSERT_TRUE(bvhText(s, &clip, {}, &report).ok());
   EXPECT_TRUE(std::any_of(report.begin(), report.end(),
-                          [](const std::string& l) { return l.find("sampled at 30 fps") != std::string::npos; }));
+                          [](const std::string& l) { return l.find("sampled at the document's 24 fps") != std::string::npos; }));
   BvhWriteOptions at60;
   at60.frameRate = 60.0;
   EXPECT_NE(bvhText(s, &clip, at60)->find("Frame Time: 0.0166666667\n"), std::string::npos);

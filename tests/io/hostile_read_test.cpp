@@ -21,7 +21,7 @@
 #include "io/json_document.h"
 #include "io/kinema_file.h"
 #include "io/message_text.h"
-#include "io/scene.h"
+#include "io/scene_files.h"
 #include "io/text_file.h"
 #include "io/hostile_files.h"
 #include "test_support.h"

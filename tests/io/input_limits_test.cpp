@@ -11,7 +11,7 @@
 
 #include "io/bvh.h"
 #include "io/kinema_file.h"
-#include "io/scene.h"
+#include "io/scene_files.h"
 #include "io/text_file.h"
 #include "test_support.h"
 

@@ -181,7 +181,7 @@ TEST(KinemaFileModifiers, GltfExportBakesTheModifiedMotion) {
   ASSERT_EQ(back.value().skeleton.names, scene.skeleton.names);
   double largest = 0.0, modified = 0.0;
   for (int f = 0; f <= 30; ++f) {
-    const float t = scene.clips[0].frameToTime(f);
+    const float t = ownFrameGrid(scene.clips[0]).frameToTime(f);
     // The local rotation of the arm and translation of the root, as both programs play them.
     Pose a = Pose::rest(scene.skeleton), b = Pose::rest(back.value().skeleton);
     sampleClip(scene.clips[0], t, a);
@@ -207,7 +207,7 @@ TEST(KinemaFileModifiers, BvhExportWritesTheModifiedMotion) {
   read.skeleton = back.value().skeleton();
   read.clips = {back.value().clip()};
   for (int f = 0; f <= 30; ++f) {
-    const float t = scene.clips[0].frameToTime(f);
+    const float t = ownFrameGrid(scene.clips[0]).frameToTime(f);
     const std::vector<glm::vec3> pa = positions(scene, t), pb = positions(read, t);
     ASSERT_EQ(pa.size(), 2u);
     ASSERT_GE(pb.size(), 2u);

@@ -14,7 +14,7 @@
 #include "core/default_character.h"
 #include "core/rotation.h"
 #include "io/bvh.h"
-#include "io/scene.h"
+#include "io/scene_files.h"
 #include "test_support.h"
 
 namespace kinema {

@@ -3,7 +3,7 @@
 // chain of eight skinned joints (eight influences per vertex), morph targets with
 // names, a textured material, a node order that differs from the joint order, and
 // clips with every interpolation family (some exact in glTF, some not).
-#include "io/scene.h"
+#include "scene/scene.h"
 
 namespace kinema::test {
 

@@ -3,7 +3,7 @@
 // front of them; a body ghost blends once per pixel however many of its surfaces overlap.
 #include <gtest/gtest.h>
 
-#include "io/scene.h"
+#include "scene/scene.h"
 #include "render/headless_renderer.h"
 
 namespace kinema {

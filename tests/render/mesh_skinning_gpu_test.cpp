@@ -20,6 +20,7 @@
 #include "render/mesh_renderer.h"
 #include "skin/scene_deformation.h"
 #include "test_support.h"
+#include "io/scene_files.h"
 
 namespace kinema {
 namespace {

@@ -10,7 +10,7 @@
 #include "io/bvh.h"
 #include "io/gltf_reader.h"
 #include "io/message_text.h"
-#include "io/scene.h"
+#include "io/scene_files.h"
 #include "retarget/bone_map.h"
 #include "test_support.h"
 

@@ -27,7 +27,7 @@ Clip holdRest(int frames, Hips hips) {
   clip.frameTime = 1.0 / 30.0;
   Channel root(0, ChannelTarget::Translation, Interpolation::Linear, {}, {});
   for (int f = 0; f < frames; ++f) {
-    root.times.push_back(clip.frameToTime(f));
+    root.times.push_back(ownFrameGrid(clip).frameToTime(f));
     root.values.push_back(glm::vec4(hips(f), 0.0f));
   }
   clip.channels.push_back(std::move(root));
@@ -58,7 +58,7 @@ TEST(RetargetFootContacts, LiftedFootEndsAndRestartsItsContact) {
   for (int f = 0; f < 60; ++f) {
     const float u = f < 20 || f > 39 ? 0.0f : std::sin(3.14159265f * (f - 20) / 20.0f);
     const glm::quat q = axisAngle(glm::vec3(1, 0, 0), -0.87f * u * u);
-    swing.times.push_back(clip.frameToTime(f));
+    swing.times.push_back(ownFrameGrid(clip).frameToTime(f));
     swing.values.push_back(glm::vec4(q.x, q.y, q.z, q.w));
   }
   clip.channels.push_back(std::move(swing));

@@ -45,8 +45,8 @@ TEST(RetargetKeyReduction, EveryFrameWithinTolerance) {
       float worstPos = 0.0f, worstDeg = 0.0f;
       for (int f = 0; f < clipFrameCount(clip); ++f) {
         Pose a = Pose::rest(s), b = Pose::rest(s);
-        sampleClip(clip, clip.frameToTime(f), a);
-        sampleClip(out, clip.frameToTime(f), b);
+        sampleClip(clip, ownFrameGrid(clip).frameToTime(f), a);
+        sampleClip(out, ownFrameGrid(clip).frameToTime(f), b);
         const std::vector<glm::mat4> wa = computeWorld(s, a), wb = computeWorld(s, b);
         for (int j = 0; j < s.size(); ++j) {
           worstPos = std::max(worstPos, glm::length(positionOf(wa[j]) - positionOf(wb[j])));
@@ -79,7 +79,7 @@ TEST(RetargetKeyReduction, StraightMotionKeepsItsEnds) {
   Channel move(0, ChannelTarget::Translation, Interpolation::Linear, {}, {});
   Channel turn(s.find("UpperArm.L"), ChannelTarget::Rotation, Interpolation::Linear, {}, {});
   for (int f = 0; f < 50; ++f) {
-    const float t = clip.frameToTime(f);
+    const float t = ownFrameGrid(clip).frameToTime(f);
     move.times.push_back(t);
     move.values.push_back(glm::vec4(s.rest[0].translation + glm::vec3(0.3f * t, 0.0f, -0.7f * t), 0.0f));
     const glm::quat q = axisAngle(glm::vec3(0, 0, 1), 1.2f * t);  // 1.2 rad/s: 2 rad in all, < pi

@@ -15,6 +15,7 @@
 #include "retarget/retarget_motion.h"
 #include "retarget/retarget_test_support.h"
 #include "test_support.h"
+#include "io/scene_files.h"
 
 namespace kinema::test {
 namespace {
@@ -28,7 +29,7 @@ Clip slidingStand(const Skeleton& s, int frames) {
   clip.frameTime = 1.0 / 30.0;
   Channel root(0, ChannelTarget::Translation, Interpolation::Linear, {}, {});
   for (int f = 0; f < frames; ++f) {
-    const float t = clip.frameToTime(f);
+    const float t = ownFrameGrid(clip).frameToTime(f);
     root.times.push_back(t);
     root.values.push_back(glm::vec4(s.rest[0].translation + glm::vec3(kSlide * t, 0, 0), 0));
   }

@@ -10,7 +10,7 @@
 #include "core/default_character.h"
 #include "core/forward_kinematics.h"
 #include "io/kinema_file.h"
-#include "io/scene.h"
+#include "io/scene_files.h"
 #include "retarget/retarget_test_support.h"
 #include "test_support.h"
 
@@ -172,13 +172,34 @@ TEST_F(RetargetCli, PlantedFeetLandOnTheCharactersFloor) {
     ASSERT_FALSE(scene->clips.empty());
     const Clip& clip = scene->clips[0];
     float lowest = 1e9f;
-    for (long long f = 0, n = clip.nearestFrame(clip.duration()); f <= n; ++f) {
+    for (long long f = 0, n = ownFrameGrid(clip).nearestFrame(clip.duration()); f <= n; ++f) {
       Pose pose = Pose::rest(scene->skeleton);
-      sampleClip(clip, clip.frameToTime(f), pose);
+      sampleClip(clip, ownFrameGrid(clip).frameToTime(f), pose);
       const std::vector<glm::mat4> world = computeWorld(scene->skeleton, pose);
       for (int j : feet) lowest = std::min(lowest, world[j][3].y);
     }
     EXPECT_NEAR(lowest, restLowest, 1e-4f * (top - restLowest));
+  }
+}
+
+// Issue 38's report: frame 240 of a 120 fps take, retargeted and saved as glTF (which keeps no
+// rate of its own), is the take's 2.0 s, not 240 frames at a fallback rate.
+TEST_F(RetargetCli, TheOutputKeepsTheSourcesFrameRate) {
+  KINEMA_REQUIRE_SHARED_DATA();
+  const std::string source = sharedDataDir() + "/bvh/cmu_01_01_first720.bvh";
+  const std::string target = sharedDataDir() + "/gltf/CesiumMan.glb";
+  for (const char* ext : {".glb", ".kinema"}) {
+    const std::string out = dir_ + "/onto" + ext;
+    ASSERT_EQ(kinema("'" + source + "' '" + target + "' --out '" + out + "'"), 0) << err_;
+    std::string json;
+    ASSERT_EQ(runCommand(std::string(KINEMA_BINARY) + " pose '" + source + "' --frame 240 --json", &json), 0);
+    const double sourceTime = nlohmann::json::parse(json)["time"].get<double>();
+    EXPECT_NEAR(sourceTime, 240 * 0.0083333, 1e-9);  // the file's Frame Time
+    ASSERT_EQ(runCommand(std::string(KINEMA_BINARY) + " pose '" + out + "' --frame 240 --json", &json), 0);
+    EXPECT_DOUBLE_EQ(nlohmann::json::parse(json)["time"].get<double>(), sourceTime) << ext;
+    Result<Scene> back = loadScene(out);
+    ASSERT_TRUE(back.ok()) << back.error();
+    EXPECT_NEAR(back->clips[0].frameTime, 0.0083333, 1e-12) << ext;
   }
 }
 

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/default_character.h"
-#include "io/scene.h"
+#include "io/scene_files.h"
 #include "retarget/retarget_clip.h"
 #include "retarget/retarget_test_support.h"
 #include "test_support.h"

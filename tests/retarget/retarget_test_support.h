@@ -26,7 +26,7 @@ inline Clip makeSmoothTake(const Skeleton& s, int frames, std::mt19937& rng, flo
     const float a = amplitude * (0.5f + 0.5f * std::abs(u(rng))), w = 2.0f + 3.0f * std::abs(u(rng)), ph = 3.0f * u(rng);
     Channel c(j, ChannelTarget::Rotation, Interpolation::Linear, {}, {});
     for (int f = 0; f < frames; ++f) {
-      const float t = static_cast<float>(clip.frameToTime(f));
+      const float t = static_cast<float>(ownFrameGrid(clip).frameToTime(f));
       const glm::quat q = s.rest[j].rotation * axisAngle(axis, a * std::sin(w * t + ph));
       c.times.push_back(t);
       c.values.push_back(glm::vec4(q.x, q.y, q.z, q.w));
@@ -35,7 +35,7 @@ inline Clip makeSmoothTake(const Skeleton& s, int frames, std::mt19937& rng, flo
   }
   Channel root(0, ChannelTarget::Translation, Interpolation::Linear, {}, {});
   for (int f = 0; f < frames; ++f) {
-    const float t = static_cast<float>(clip.frameToTime(f));
+    const float t = static_cast<float>(ownFrameGrid(clip).frameToTime(f));
     root.times.push_back(t);
     root.values.push_back(glm::vec4(s.rest[0].translation + glm::vec3(0.1f * std::sin(3.0f * t), 0.05f * std::sin(6.0f * t), speed * t), 0.0f));
   }
@@ -46,7 +46,7 @@ inline Clip makeSmoothTake(const Skeleton& s, int frames, std::mt19937& rng, flo
 // World matrices of every joint at frame f of the clip's frame grid.
 inline std::vector<glm::mat4> worldAtFrame(const Skeleton& s, const Clip& clip, int f) {
   Pose pose = Pose::rest(s);
-  sampleClip(clip, clip.frameToTime(f), pose);
+  sampleClip(clip, ownFrameGrid(clip).frameToTime(f), pose);
   return computeWorld(s, pose);
 }
 

@@ -147,7 +147,7 @@ TEST(Crowd, ABakedMemberClipReplaysTheRun) {
   EXPECT_EQ(clip.validate(s.skeleton), "");
   for (long long f : {5LL, 17LL, 40LL}) {
     Pose pose = Pose::rest(s.skeleton);
-    sampleClip(clip, clip.frameToTime(f), pose);
+    sampleClip(clip, ownFrameGrid(clip).frameToTime(f), pose);
     const CrowdMemberState& st = bake->run.at(f, 7);
     // The hips stand 1 m above the member's place (the walker's drift-free root).
     EXPECT_VEC3_NEAR(pose.local[0].translation, st.position + glm::vec3(0, 1, 0), 1e-4f);

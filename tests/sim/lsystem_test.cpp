@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/forward_kinematics.h"
-#include "io/scene.h"
+#include "io/scene_files.h"
 #include "sim/lsystem_derivation.h"
 #include "sim/lsystem_skeleton.h"
 #include "skin/linear_blend_skinning.h"

@@ -206,20 +206,20 @@ TEST(Ragdoll, ABakedClipReplaysTheSimulationFromItsStartFrame) {
   SamplingCache cache;
   for (int f : {0, 5, 9}) {
     Pose animated = Pose::rest(s), replay = Pose::rest(s);
-    sampleClip(clip, clip.frameToTime(f), animated, cache);
-    sampleClip(baked.value(), clip.frameToTime(f), replay, cache);
+    sampleClip(clip, ownFrameGrid(clip).frameToTime(f), animated, cache);
+    sampleClip(baked.value(), ownFrameGrid(clip).frameToTime(f), replay, cache);
     EXPECT_VEC3_NEAR(replay.local[0].translation, animated.local[0].translation, 1e-6f);
   }
   Pose pose = Pose::rest(s), previous = Pose::rest(s);
-  sampleClip(clip, clip.frameToTime(10), pose, cache);
-  sampleClip(clip, clip.frameToTime(9), previous, cache);
+  sampleClip(clip, ownFrameGrid(clip).frameToTime(10), pose, cache);
+  sampleClip(clip, ownFrameGrid(clip).frameToTime(9), previous, cache);
   Result<std::unique_ptr<Ragdoll>> r = Ragdoll::create(s, settings, bodies, limits, pose, &previous, 1.0f / 30.0f);
   ASSERT_TRUE(r);
   for (int f = 11; f <= 60; ++f) r.value()->step(1.0f / 30.0f);
   Pose expected = Pose::rest(s), replay = Pose::rest(s);
-  sampleClip(clip, clip.frameToTime(60), expected, cache);
+  sampleClip(clip, ownFrameGrid(clip).frameToTime(60), expected, cache);
   r.value()->writePose(expected);
-  sampleClip(baked.value(), clip.frameToTime(60), replay, cache);
+  sampleClip(baked.value(), ownFrameGrid(clip).frameToTime(60), replay, cache);
   for (const RagdollBody& b : bodies)
     EXPECT_LT(std::abs(glm::dot(replay.local[b.joint].rotation, expected.local[b.joint].rotation)), 1.0f + 1e-6f);
   for (const RagdollBody& b : bodies)

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/forward_kinematics.h"
-#include "io/scene.h"
+#include "io/scene_files.h"
 #include "skin/scene_deformation.h"
 #include "test_support.h"
 

@@ -16,6 +16,7 @@
 
 #include "core/forward_kinematics.h"
 #include "test_support.h"
+#include "io/scene_files.h"
 
 namespace kinema {
 namespace {

@@ -100,7 +100,7 @@ void addAnimationEditorCommands(std::vector<Command>& out) {
   out.push_back(dopeSheet("dopesheet.copy_keys", "Copy Keys", keys::C, kModCtrl, "the selected key columns")
                     .run([](CommandContext& c) {
                       DopeSheetState& ds = c.state.dopeSheet;
-                      ds.clipboard = copyKeyColumns(editedClip(c.state), ds.selection.columns());
+                      ds.clipboard = copyKeyColumns(editedClip(c.state), timelineGrid(c.state), ds.selection.columns());
                       c.state.statusMessage = ds.clipboard.empty()
                                                   ? "Copy keys: select keys first"
                                                   : "Copied " + std::to_string(ds.clipboard.keys.size()) + " key(s)";
@@ -113,7 +113,7 @@ void addAnimationEditorCommands(std::vector<Command>& out) {
   out.push_back(dopeSheet("dopesheet.frame_all", "Frame All Keys", keys::HOME, 0, "the whole clip fills the dope sheet")
                     .run([](CommandContext& c) {
                       const Clip& clip = editedClip(c.state);
-                      c.state.dopeSheet.view.frameRange(0.0, std::max(clip.timeToFrame(clip.duration()), 1.0));
+                      c.state.dopeSheet.view.frameRange(0.0, std::max(timelineGrid(c.state).timeToFrame(clip.duration()), 1.0));
                     }));
   out.push_back(CommandDef("curves.frame_all", "Fit Curves").key(keys::HOME).scope(CommandScope::CurveEditor)
                     .hint("the shown curves fill the curve editor")

@@ -47,7 +47,7 @@ std::string chooseClip(Document& doc, int clip) {
 }
 
 std::string newClip(Document& doc) {
-  Clip clip = newActionClip();
+  Clip clip = newActionClip(doc.scene().frameGrid(-1));
   clip.name = uniqueClipName(doc.scene().clips, clip.name);
   return doc.edit("New clip " + clip.name, [&](DocumentEdit& e) {
     e.clips.push_back(clip);

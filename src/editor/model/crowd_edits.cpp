@@ -145,10 +145,11 @@ bool updateCrowdPreview(CrowdPreview& p, const Document& doc, int index, double 
   }
   if (!p.character) return false;
   const Clip& clip = p.character->clips[crowd.clip];
-  const long long frame = std::clamp(clip.nearestFrame(time), 0LL, 100000LL);
+  const FrameGrid grid = p.character->frameGrid(crowd.clip);
+  const long long frame = std::clamp(grid.nearestFrame(time), 0LL, 100000LL);
   if (p.run.frames <= frame) {  // run on past the frame asked for (at least the clip, or twice as far as before)
-    const long long frames = std::max({frame + 1, 2 * p.run.frames, clip.nearestFrame(clip.duration()) + 1, 120LL});
-    Result<CrowdRun> run = runCrowd(crowd, p.motion, clip.secondsPerFrame(), frames);
+    const long long frames = std::max({frame + 1, 2 * p.run.frames, grid.nearestFrame(clip.duration()) + 1, 120LL});
+    Result<CrowdRun> run = runCrowd(crowd, p.motion, grid.secondsPerFrame, frames);
     ++p.runs;
     if (!run) {
       p.error = run.error();

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "io/scene.h"
+#include "scene/scene.h"
 #include "sim/crowd.h"
 
 namespace kinema {

@@ -267,7 +267,7 @@ void panView(CurveView& v, const PlotRect& r, glm::vec2 d) {
   v.t0 += dt, v.t1 += dt, v.v0 += dv, v.v1 += dv;
 }
 
-float snapToFrame(const Clip& clip, float time) { return clip.frameToTime(clip.nearestFrame(time)); }
+float snapToFrame(const FrameGrid& grid, float time) { return grid.frameToTime(grid.nearestFrame(time)); }
 
 float keyDisplayValue(const Channel& ch, int key, int component, RotationView view, EulerOrder order) {
   const glm::vec4& v = ch.values[key];
@@ -304,7 +304,7 @@ void setKeyDisplayValue(Channel& ch, int key, int component, RotationView view, 
   v = toVec(q);
 }
 
-std::vector<CurveKeyRef> moveCurveKeys(Clip& clip, const std::vector<CurveKeyRef>& keys, const std::vector<float>& start,
+std::vector<CurveKeyRef> moveCurveKeys(Clip& clip, const FrameGrid& grid, const std::vector<CurveKeyRef>& keys, const std::vector<float>& start,
                                        const std::vector<float>& scales, float dt, float dvDisplay, RotationView view,
                                        EulerOrder order) {
   std::vector<CurveKeyRef> out = keys;
@@ -338,7 +338,7 @@ std::vector<CurveKeyRef> moveCurveKeys(Clip& clip, const std::vector<CurveKeyRef
     for (const auto& e : newIndex)
       if (e.first == id) index = e.second;
     if (index < 0) {
-      index = moveKey(ch, k.key, snapToFrame(clip, ch.times[k.key] + dt));
+      index = moveKey(ch, k.key, snapToFrame(grid, ch.times[k.key] + dt));
       newIndex.push_back({id, index});
     }
     out[i].key = index;

@@ -159,7 +159,7 @@ void zoomView(CurveView& view, const PlotRect& rect, glm::vec2 anchor, float fac
 void panView(CurveView& view, const PlotRect& rect, glm::vec2 pixelDelta);
 
 // Nearest frame of the clip's grid (Clip::secondsPerFrame, the timeline's), as a time.
-float snapToFrame(const Clip& clip, float time);
+float snapToFrame(const FrameGrid& grid, float time);
 
 // Sets a key's component to a display value (degrees for angles: displayUnitScale):
 // vectors directly; quaternion components renormalise the quaternion; Euler angles of a
@@ -172,7 +172,7 @@ float keyDisplayValue(const Channel& channel, int key, int component, RotationVi
 // each key's displayToValueScale from `scales`, one per key). `start` holds the keys'
 // original display values (the drag restarts from the state at its beginning). Returns the
 // keys' refs after the move (indices change when keys pass each other).
-std::vector<CurveKeyRef> moveCurveKeys(Clip& clip, const std::vector<CurveKeyRef>& keys, const std::vector<float>& start,
+std::vector<CurveKeyRef> moveCurveKeys(Clip& clip, const FrameGrid& grid, const std::vector<CurveKeyRef>& keys, const std::vector<float>& start,
                                        const std::vector<float>& scales, float dt, float dvDisplay, RotationView view,
                                        EulerOrder order);
 

@@ -155,7 +155,7 @@ void Document::markModified() { savedReachable_ = false; }
 
 Document::Snapshot Document::capture() const {
   return Snapshot{scene_.skeleton.names, pose_.local, scene_.ik.limits, targets_, skinning_, scene_.clips, activeClip_,
-                  scene_.simulation};
+                  scene_.simulation, scene_.frameRate};
 }
 
 void Document::restore(const Snapshot& s) {
@@ -168,12 +168,13 @@ void Document::restore(const Snapshot& s) {
   scene_.clips = s.clips;
   activeClip_ = s.activeClip;
   scene_.simulation = s.simulation;
+  scene_.frameRate = s.frameRate;
   syncSkinning();
 }
 
 DocumentEdit Document::editView() {
   return DocumentEdit{scene_.skeleton, scene_.skeleton.names, pose_, scene_.ik.limits, targets_, skinning_,
-                      scene_.clips, activeClip_, scene_.simulation};
+                      scene_.clips, activeClip_, scene_.simulation, scene_.frameRate};
 }
 
 std::string Document::runChange(const std::function<std::string(DocumentEdit&)>& change, bool /*driven*/) {
@@ -205,6 +206,8 @@ std::string Document::runChange(const std::function<std::string(DocumentEdit&)>&
   }
   if (!scene_.simulation.empty())
     if (std::string bad = scene_.simulation.validate(scene_.skeleton); !bad.empty()) return "simulation: " + bad;
+  if (!(scene_.frameRate >= kMinFrameRate && scene_.frameRate <= kMaxFrameRate))
+    return "the frame rate must be 1 to 1000 frames per second";
   // A change that removed clips without choosing another leaves the last one active.
   activeClip_ = std::clamp(activeClip_, 0, std::max(static_cast<int>(scene_.clips.size()) - 1, 0));
   syncSkinning();
@@ -225,7 +228,7 @@ std::string Document::runChange(const std::function<std::string(DocumentEdit&)>&
       if (!sameBits(poseBefore[j], pose_.local[j])) changed.push_back(j);
     ScenePlayhead at = playhead();
     if (keyJoints(scene_.clips, at.clip, scene_.skeleton, pose_, changed, static_cast<float>(at.time),
-                  autoKey.preferences) > 0) {
+                  autoKey.preferences, scene_.frameGrid(-1)) > 0) {
       activeClip_ = at.clip;  // a new "Action" when the scene had no clip
       const int clip = at.clip;
       const std::string bad = scene_.clips[clip].validate(scene_.skeleton);
@@ -275,6 +278,11 @@ EditRecord Document::diff(const std::string& label, const Snapshot& before) cons
     r.simulationChanged = true;
     r.simulationBefore = std::make_shared<const SimulationSettings>(before.simulation);
     r.simulationAfter = std::make_shared<const SimulationSettings>(scene_.simulation);
+  }
+  if (before.frameRate != scene_.frameRate) {
+    r.frameRateChanged = true;
+    r.frameRateBefore = before.frameRate;
+    r.frameRateAfter = scene_.frameRate;
   }
   if (before.activeClip != activeClip_) {
     r.activeClipChanged = true;
@@ -382,6 +390,7 @@ void Document::apply(const EditRecord& r, bool forward) {
   if (r.limitsChanged) scene_.ik.limits = forward ? r.limitsAfter : r.limitsBefore;
   if (r.targetsChanged) targets_ = forward ? r.targetsAfter : r.targetsBefore;
   if (r.simulationChanged) scene_.simulation = forward ? *r.simulationAfter : *r.simulationBefore;
+  if (r.frameRateChanged) scene_.frameRate = forward ? r.frameRateAfter : r.frameRateBefore;
   if (r.meshesBefore && r.meshesAfter) {
     const SceneMeshes& m = forward ? *r.meshesAfter : *r.meshesBefore;
     scene_.meshes = m.meshes;

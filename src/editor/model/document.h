@@ -9,7 +9,7 @@
 #include "editor/model/joint_selection.h"
 #include "editor/model/key_preferences.h"
 #include "editor/model/pose_ik_target.h"
-#include "io/scene.h"
+#include "scene/scene.h"
 
 namespace kinema {
 
@@ -33,6 +33,7 @@ struct DocumentEdit {
   std::vector<Clip>& clips;            // the scene's clips: keys, ranges, names (validated after the change)
   int& activeClip;                     // the clip the timeline plays and edits (clamped into clips after the change)
   SimulationSettings& simulation;      // dynamic chains and ragdolls (validated after the change)
+  double& frameRate;                   // the document's frame rate (Scene::frameRate; kMinFrameRate..kMaxFrameRate)
 };
 
 // The scene being edited plus everything the editor adds to it: the working pose, the IK
@@ -167,6 +168,7 @@ class Document {
     std::vector<Clip> clips;
     int activeClip = 0;
     SimulationSettings simulation;
+    double frameRate = kDefaultFrameRate;
   };
   struct Drag {
     std::string label;

@@ -10,6 +10,7 @@
 #include "io/gltf_writer.h"
 #include "io/kinema_file.h"
 #include "io/text_file.h"
+#include "io/scene_files.h"
 
 namespace kinema {
 
@@ -83,17 +84,9 @@ std::string exportDocument(const Document& doc, const std::string& path, std::ve
   try {
     if (bvhClip < 0) bvhClip = doc.activeClip();
     if (bvhClip >= static_cast<int>(scene.clips.size())) bvhClip = 0;
-    if (ext == ".bvh") {
-      const size_t clips = scene.clips.size();
-      if (clips > 1 && report)
-        report->push_back("BVH holds one clip: wrote '" + scene.clips[bvhClip].name + "' (clip " +
-                          std::to_string(bvhClip + 1) + " of " + std::to_string(clips) + "), the other " +
-                          std::to_string(clips - 1) + " not written");
-      return saveBvh(path, scene.skeleton, &scene.clips[bvhClip], BvhWriteOptions{}, report);
-    }
-    GltfWriteOptions options;
-    options.binary = ext == ".glb";
-    return saveGltf(path, scene, options, report);
+    SceneSaveOptions options;  // saveScene reports what the format drops (BVH: the other clips, meshes)
+    options.bvhClip = bvhClip;
+    return saveScene(path, scene, options, report);
   } catch (const std::exception& e) {
     return path + ": not exported: " + e.what();
   }

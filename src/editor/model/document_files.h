@@ -4,6 +4,7 @@
 
 #include "core/result.h"
 #include "editor/model/document.h"
+#include "io/scene_files.h"
 
 namespace kinema {
 

@@ -96,7 +96,7 @@ std::vector<KeyColumn> columnsOfCell(const std::vector<DopeSheetRow>& rows, int 
   return out;
 }
 
-std::vector<KeyColumn> columnsInBox(const Clip& clip, const std::vector<DopeSheetRow>& rows, double frameA,
+std::vector<KeyColumn> columnsInBox(const FrameGrid& grid, const std::vector<DopeSheetRow>& rows, double frameA,
                                     double frameB, int rowA, int rowB) {
   // Edges included, with a little slack for key times that are frames in float seconds.
   const double f0 = std::min(frameA, frameB) - 1e-4, f1 = std::max(frameA, frameB) + 1e-4;
@@ -106,7 +106,7 @@ std::vector<KeyColumn> columnsInBox(const Clip& clip, const std::vector<DopeShee
     const bool inRows = (static_cast<int>(r) >= r0 && static_cast<int>(r) <= r1) || (r0 == 0 && r1 >= 0);
     if (!inRows) continue;
     for (float t : rows[r].times) {
-      const double f = clip.timeToFrame(t);
+      const double f = grid.timeToFrame(t);
       if (f >= f0 && f <= f1) out.push_back({rows[r].joint, t});
     }
   }
@@ -187,14 +187,14 @@ void DopeSheetView::frameRange(double first, double last) {
   firstFrame = first - 1.0;
 }
 
-bool hitKeyColumn(const std::vector<DopeSheetRow>& rows, const DopeSheetView& view, const Clip& clip, glm::vec2 p,
+bool hitKeyColumn(const std::vector<DopeSheetRow>& rows, const DopeSheetView& view, const FrameGrid& grid, glm::vec2 p,
                   float radius, int& row, float& time) {
   const int r = view.rowAt(p.y);
   if (r < 0 || r >= static_cast<int>(rows.size()) || p.y < view.y || p.x < view.x) return false;
   double best = radius;
   bool found = false;
   for (float t : rows[r].times) {
-    const double d = std::abs(view.frameToX(clip.timeToFrame(t)) - p.x);
+    const double d = std::abs(view.frameToX(grid.timeToFrame(t)) - p.x);
     if (d <= best) {
       best = d;
       row = r;
@@ -207,12 +207,12 @@ bool hitKeyColumn(const std::vector<DopeSheetRow>& rows, const DopeSheetView& vi
 
 // ---- clip edits ----
 
-void moveKeyColumns(Clip& clip, const std::vector<KeyColumn>& columnsIn, double frameOffset,
+void moveKeyColumns(Clip& clip, const FrameGrid& grid, const std::vector<KeyColumn>& columnsIn, double frameOffset,
                     std::vector<KeyColumn>* moved) {
   const std::vector<KeyColumn> columns = sortedUnique(columnsIn);
   std::vector<KeyColumn> out;
   const auto target = [&](float t) {
-    return clip.frameToTime(std::llround(clip.timeToFrame(t) + frameOffset));
+    return grid.frameToTime(std::llround(grid.timeToFrame(t) + frameOffset));
   };
   for (Channel& ch : clip.channels) {
     if (ch.joint < 0) continue;
@@ -241,7 +241,7 @@ void deleteKeyColumns(Clip& clip, const std::vector<KeyColumn>& columnsIn) {
   removeEmptyChannels(clip);
 }
 
-KeyClipboard copyKeyColumns(const Clip& clip, const std::vector<KeyColumn>& columnsIn) {
+KeyClipboard copyKeyColumns(const Clip& clip, const FrameGrid& grid, const std::vector<KeyColumn>& columnsIn) {
   const std::vector<KeyColumn> columns = sortedUnique(columnsIn);
   KeyClipboard out;
   double first = 0.0;
@@ -251,7 +251,7 @@ KeyClipboard copyKeyColumns(const Clip& clip, const std::vector<KeyColumn>& colu
       if (!inColumns(columns, ch.joint, ch.times[k])) continue;
       CopiedKey c;
       c.joint = ch.joint;
-      c.frameOffset = clip.timeToFrame(ch.times[k]);
+      c.frameOffset = grid.timeToFrame(ch.times[k]);
       c.target = ch.target;
       c.property = ch.property;
       c.eulerOrder = ch.eulerOrder;
@@ -266,7 +266,7 @@ KeyClipboard copyKeyColumns(const Clip& clip, const std::vector<KeyColumn>& colu
   return out;
 }
 
-std::string pasteKeys(Clip& clip, const Skeleton& skeleton, const KeyClipboard& clipboard, long long frame,
+std::string pasteKeys(Clip& clip, const FrameGrid& grid, const Skeleton& skeleton, const KeyClipboard& clipboard, long long frame,
                       const std::vector<int>& ontoJoints, std::vector<KeyColumn>* pasted) {
   if (clipboard.empty()) return "Paste keys: copy keys first (Ctrl+C in the dope sheet)";
   std::set<int> copiedSet;
@@ -289,7 +289,7 @@ std::string pasteKeys(Clip& clip, const Skeleton& skeleton, const KeyClipboard& 
       if (to < 0 || to >= skeleton.size()) return "Paste keys: joint " + std::to_string(to) + " does not exist";
   std::vector<KeyColumn> out;
   for (const CopiedKey& c : clipboard.keys) {
-    const float t = clip.frameToTime(frame + std::llround(c.frameOffset));
+    const float t = grid.frameToTime(frame + std::llround(c.frameOffset));
     for (int joint : destination[c.joint]) {
       auto it = std::find_if(clip.channels.begin(), clip.channels.end(), [&](const Channel& ch) {
         return ch.joint == joint && ch.target == c.target && ch.property == c.property;
@@ -336,7 +336,7 @@ std::string moveKeysEdit(Document& doc, int clipIndex, KeyColumnSelection& selec
   if (selection.empty()) return "Move keys: select keys first";
   std::vector<KeyColumn> moved;
   const std::string error = clipEdit(doc, "Move " + keysPhrase(selection), clipIndex, [&](Clip& clip, const Skeleton&) {
-    moveKeyColumns(clip, selection.columns(), frameOffset, &moved);
+    moveKeyColumns(clip, doc.scene().frameGrid(clipIndex), selection.columns(), frameOffset, &moved);
     return std::string();
   });
   if (error.empty()) selection.set(moved);
@@ -357,7 +357,7 @@ std::string pasteKeysEdit(Document& doc, int clipIndex, KeyColumnSelection& sele
                           long long frame, const std::vector<int>& ontoJoints) {
   std::vector<KeyColumn> pasted;
   const std::string error = clipEdit(doc, "Paste " + countPhrase(clipboard.keys.size(), "key") + " at frame " + std::to_string(frame), clipIndex, [&](Clip& clip, const Skeleton& skeleton) {
-    return pasteKeys(clip, skeleton, clipboard, frame, ontoJoints, &pasted);
+    return pasteKeys(clip, doc.scene().frameGrid(clipIndex), skeleton, clipboard, frame, ontoJoints, &pasted);
   });
   if (error.empty()) selection.set(pasted);
   return error;
@@ -380,7 +380,7 @@ std::string KeyMoveDrag::update(Document& doc, KeyColumnSelection& selection, do
   offset_ = frameOffset;
   std::vector<KeyColumn> moved;
   const std::string error = doc.updateDrag([&](DocumentEdit& e) {
-    moveKeyColumns(e.clips[clip_], start_, frameOffset, &moved);
+    moveKeyColumns(e.clips[clip_], doc.scene().frameGrid(clip_), start_, frameOffset, &moved);
     return std::string();
   });
   if (error.empty()) selection.set(moved);

@@ -43,7 +43,7 @@ std::vector<KeyColumn> allKeyColumns(const Clip& clip);
 std::vector<KeyColumn> columnsOfCell(const std::vector<DopeSheetRow>& rows, int row, float time);
 // The key columns whose frame lies in [min(frameA, frameB), max] on rows min(rowA, rowB) ..
 // max (the summary row takes in every joint at its times).
-std::vector<KeyColumn> columnsInBox(const Clip& clip, const std::vector<DopeSheetRow>& rows, double frameA,
+std::vector<KeyColumn> columnsInBox(const FrameGrid& grid, const std::vector<DopeSheetRow>& rows, double frameA,
                                     double frameB, int rowA, int rowB);
 
 // The selected key columns (sorted, unique). Not undo steps, as the joint selection.
@@ -97,7 +97,7 @@ struct DopeSheetView {
 };
 
 // The diamond under pixel p within `radius` pixels (nearest), as row and key time; false when none.
-bool hitKeyColumn(const std::vector<DopeSheetRow>& rows, const DopeSheetView& view, const Clip& clip, glm::vec2 p,
+bool hitKeyColumn(const std::vector<DopeSheetRow>& rows, const DopeSheetView& view, const FrameGrid& grid, glm::vec2 p,
                   float radius, int& row, float& time);
 
 // Copied keys: per channel key, its joint, the channel's identity and the key's value and
@@ -122,16 +122,16 @@ struct KeyClipboard {
 // frame (Blender's snap to nearest frame). All moving keys are taken out before any is put
 // back, so a key never replaces another that is itself moving; a moved key landing on a
 // key that stays replaces it. `moved` gets the columns at their new times.
-void moveKeyColumns(Clip& clip, const std::vector<KeyColumn>& columns, double frameOffset,
+void moveKeyColumns(Clip& clip, const FrameGrid& grid, const std::vector<KeyColumn>& columns, double frameOffset,
                     std::vector<KeyColumn>* moved = nullptr);
 // Deletes every key of the columns; channels left without keys are removed.
 void deleteKeyColumns(Clip& clip, const std::vector<KeyColumn>& columns);
-KeyClipboard copyKeyColumns(const Clip& clip, const std::vector<KeyColumn>& columns);
+KeyClipboard copyKeyColumns(const Clip& clip, const FrameGrid& grid, const std::vector<KeyColumn>& columns);
 // Pastes with the earliest copied key at `frame` (offsets kept, snapped to whole frames),
 // into the channels of the same joint and target (created when missing). `ontoJoints`
 // empty: onto the joints they were copied from; else the copied joints, in index order, go
 // to these joints in order (one copied joint goes to each of them). Returns "" or an error.
-std::string pasteKeys(Clip& clip, const Skeleton& skeleton, const KeyClipboard& clipboard, long long frame,
+std::string pasteKeys(Clip& clip, const FrameGrid& grid, const Skeleton& skeleton, const KeyClipboard& clipboard, long long frame,
                       const std::vector<int>& ontoJoints, std::vector<KeyColumn>* pasted = nullptr);
 
 // ---- The same as undo steps of the document's clip `clipIndex` ----

@@ -56,10 +56,13 @@ struct EditRecord {
   // Dynamic chains and ragdolls (the scene's simulation settings), whole, when they changed.
   bool simulationChanged = false;
   std::shared_ptr<const SimulationSettings> simulationBefore, simulationAfter;
+  // The document's frame rate (Scene::frameRate), when it changed.
+  bool frameRateChanged = false;
+  double frameRateBefore = 0.0, frameRateAfter = 0.0;
 
   bool empty() const { return pose.empty() && names.empty() && !limitsChanged && !targetsChanged && !skinningChanged &&
                         !meshesBefore && clips.empty() && !activeClipChanged &&
-                        !simulationChanged; }
+                        !simulationChanged && !frameRateChanged; }
 };
 
 // A linear undo history: entries [0, position) are applied, [position, size) can be redone.

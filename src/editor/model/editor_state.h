@@ -7,6 +7,7 @@
 #include "anim/playback_sampling_job.h"
 #include "core/pose.h"
 #include "editor/model/document.h"
+#include "io/input_limits.h"
 #include "editor/model/bottom_panels.h"
 #include "editor/model/motion_control.h"
 #include "editor/model/motion_path.h"
@@ -28,7 +29,7 @@
 #include "editor/model/viewport_quality.h"
 #include "editor/model/window_redraw.h"
 #include "editor/model/panel_state.h"
-#include "io/scene.h"
+#include "scene/scene.h"
 #include "render/camera.h"
 
 namespace kinema {

@@ -6,7 +6,7 @@
 #include <cstring>
 #include <filesystem>
 
-#include "io/scene.h"
+#include "io/scene_files.h"
 
 namespace kinema {
 

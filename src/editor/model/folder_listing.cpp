@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <system_error>
 
-#include "io/scene.h"
+#include "io/scene_files.h"
 
 namespace kinema {
 

@@ -47,21 +47,21 @@ KeySettings keySettingsFor(const KeyPreferences& preferences, ChannelTarget targ
   return s;
 }
 
-Clip newActionClip() {
+Clip newActionClip(const FrameGrid& grid) {
   Clip c;
-  c.name = kNewClipName;
-  c.frameTime = 1.0 / kDefaultFrameRate;
+  c.name = kNewClipName;  // no rate of its own: it counts at the document's
   c.hasRange = true;
-  c.rangeStart = c.frameToTime(kNewClipStartFrame);
-  c.rangeEnd = c.frameToTime(kNewClipEndFrame);
+  c.rangeStart = grid.frameToTime(kNewClipStartFrame);
+  c.rangeEnd = grid.frameToTime(kNewClipEndFrame);
   return c;
 }
 
 int keyJoints(std::vector<Clip>& clips, int& clip, const Skeleton& skeleton, const Pose& pose,
-              const std::vector<int>& joints, float time, const KeyPreferences& preferences) {
+              const std::vector<int>& joints, float time, const KeyPreferences& preferences,
+              const FrameGrid& newClipGrid) {
   if (joints.empty()) return 0;
   if (clip < 0 || clip >= static_cast<int>(clips.size())) {
-    clips.push_back(newActionClip());
+    clips.push_back(newActionClip(newClipGrid));
     clip = static_cast<int>(clips.size()) - 1;
   }
   Clip& c = clips[clip];
@@ -110,7 +110,7 @@ namespace {
 // "frame 12" on the clip's frame grid (a first key makes a new action: its grid).
 std::string keyTimePhrase(const Document& doc, int clip, float time) {
   const bool exists = clip >= 0 && clip < static_cast<int>(doc.scene().clips.size());
-  return "frame " + std::to_string(std::llround((exists ? doc.scene().clips[clip] : newActionClip()).timeToFrame(time)));
+  return "frame " + std::to_string(std::llround(doc.scene().frameGrid(exists ? clip : -1).timeToFrame(time)));
 }
 }  // namespace
 
@@ -125,7 +125,7 @@ std::string insertKeys(Document& doc, int& clip, float time, const std::vector<i
                                          keyTimePhrase(doc, clip, time),
                                      [&](DocumentEdit& e) {
     const int clipsBefore = static_cast<int>(e.clips.size());
-    keyJoints(e.clips, target, e.skeleton, e.pose, joints, time, preferences);
+    keyJoints(e.clips, target, e.skeleton, e.pose, joints, time, preferences, documentFrameGrid(e.frameRate));
     if (static_cast<int>(e.clips.size()) > clipsBefore) e.activeClip = target;  // the new "Action" plays
     return std::string();
   });
@@ -167,7 +167,7 @@ std::string keyScalarProperties(Document& doc, int& clip, int joint,
   int keyed = clip;
   const std::string error = doc.edit(label, [&](DocumentEdit& e) {
     if (keyed < 0 || keyed >= static_cast<int>(e.clips.size())) {
-      e.clips.push_back(newActionClip());
+      e.clips.push_back(newActionClip(documentFrameGrid(e.frameRate)));
       keyed = static_cast<int>(e.clips.size()) - 1;
       e.activeClip = keyed;
     }

@@ -21,16 +21,17 @@ Interpolation rotationInterpolation(Interpolation preferred);
 // The settings a new key of `target` carries under `preferences`.
 KeySettings keySettingsFor(const KeyPreferences& preferences, ChannelTarget target);
 
-// A new empty clip as the first key creates it: "Action", kDefaultFrameRate (24 fps),
-// range frames 1..250.
-Clip newActionClip();
+// A new empty clip as the first key creates it: "Action", without a rate of its own (it
+// counts at the document's, Scene::frameRate), range frames 1..250 on `grid` (the document's).
+Clip newActionClip(const FrameGrid& grid);
 
 // Keys the joints' local transforms of `pose` at `time` into clips[clip]; when `clip` is
-// not a clip of `clips`, a new "Action" is appended and `clip` set to it. Translation and
+// not a clip of `clips`, a new "Action" (on `newClipGrid`, the document's) is appended and `clip` set to it. Translation and
 // rotation always; scale where it differs from the rest pose or is keyed already (unless
 // locRotOnly). Returns the number of keys written.
 int keyJoints(std::vector<Clip>& clips, int& clip, const Skeleton& skeleton, const Pose& pose,
-              const std::vector<int>& joints, float time, const KeyPreferences& preferences);
+              const std::vector<int>& joints, float time, const KeyPreferences& preferences,
+              const FrameGrid& newClipGrid);
 // Deletes the keys of the joints' channels at `time` (findKey: within kKeyTimeTolerance).
 // Returns how many.
 int deleteJointKeys(Clip& clip, const std::vector<int>& joints, float time);

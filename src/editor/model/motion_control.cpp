@@ -94,7 +94,7 @@ std::string applyMotionControl(Document& doc, int clip, int joint, MotionControl
   MotionControlJob job;
   job.path = &c.channels[index];
   job.profile = profile;
-  job.frameTime = c.secondsPerFrame();
+  job.frameTime = doc.scene().frameGrid(clip).secondsPerFrame;
   const std::string error = job.validate();
   if (!error.empty()) return "Motion control: " + error;
   Channel baked;

@@ -8,6 +8,7 @@
 #include "editor/model/document.h"
 #include "retarget/motion_cleanup.h"
 #include "retarget/retarget_motion.h"
+#include "io/scene_files.h"
 
 namespace kinema {
 

@@ -9,7 +9,7 @@
 
 #include "core/result.h"
 #include "io/input_limits.h"
-#include "io/scene.h"
+#include "scene/scene.h"
 #include "io/up_axis.h"
 #include "retarget/bone_map.h"
 

@@ -9,12 +9,12 @@
 
 namespace kinema {
 
-void motionPathRange(const MotionPathSettings& s, const Clip& clip, long long current, long long& first,
+void motionPathRange(const MotionPathSettings& s, const Clip& clip, const FrameGrid& grid, long long current, long long& first,
                      long long& last) {
-  const long long count = clip.nearestFrame(clip.duration()) + 1;
+  const long long count = grid.nearestFrame(clip.duration()) + 1;
   if (s.wholeClip) {
-    first = clip.nearestFrame(clip.playStart());
-    last = clip.nearestFrame(clip.playEnd());
+    first = grid.nearestFrame(clip.playStart());
+    last = grid.nearestFrame(clip.playEnd());
   } else {
     first = current - std::max(s.before, 0);
     last = current + std::max(s.after, 0);
@@ -29,7 +29,8 @@ MotionPath computeMotionPath(const Scene& scene, int clip, int joint, long long 
       last < first)
     return path;
   const Clip& c = scene.clips[clip];
-  const double dt = c.secondsPerFrame();
+  const FrameGrid grid = scene.frameGrid(clip);
+  const double dt = grid.secondsPerFrame;
   // A key "is at" a frame when it is within half a frame of it (keys of frame-based clips are exact).
   std::vector<float> keyTimes;
   for (const Channel& ch : c.channels)
@@ -40,7 +41,7 @@ MotionPath computeMotionPath(const Scene& scene, int clip, int joint, long long 
   Pose pose = Pose::rest(scene.skeleton);
   std::vector<glm::mat4> world;
   for (long long f = first; f <= last; ++f) {
-    const double t = c.frameToTime(f);
+    const double t = grid.frameToTime(f);
     pose = Pose::rest(scene.skeleton);
     sampleClip(c, static_cast<float>(t), pose, cache);
     computeWorld(scene.skeleton, pose, world);

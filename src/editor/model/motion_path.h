@@ -2,7 +2,7 @@
 #include <vector>
 
 #include "core/math.h"
-#include "io/scene.h"
+#include "scene/scene.h"
 
 namespace kinema {
 
@@ -23,7 +23,7 @@ struct MotionPath {
 };
 
 // The frames the path covers: [first, last] clamped to the clip's frames 0 .. frameCount - 1.
-void motionPathRange(const MotionPathSettings& settings, const Clip& clip, long long current, long long& first,
+void motionPathRange(const MotionPathSettings& settings, const Clip& clip, const FrameGrid& grid, long long current, long long& first,
                      long long& last);
 
 // Samples the clip (over the rest pose, as playback does) at every frame from `first` to

@@ -41,7 +41,7 @@ std::vector<std::vector<glm::mat4>> ghostPoses(const Scene& scene, int clip, con
   out.resize(ghosts.size());
   for (size_t g = 0; g < ghosts.size(); ++g) {
     Pose pose = Pose::rest(scene.skeleton);
-    sampleClip(c, c.frameToTime(ghosts[g].frame), pose, cache);
+    sampleClip(c, scene.frameGrid(clip).frameToTime(ghosts[g].frame), pose, cache);
     computeWorld(scene.skeleton, pose, out[g]);
   }
   return out;

@@ -2,7 +2,7 @@
 #include <vector>
 
 #include "core/math.h"
-#include "io/scene.h"
+#include "scene/scene.h"
 
 namespace kinema {
 

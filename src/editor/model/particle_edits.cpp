@@ -67,7 +67,8 @@ const std::vector<ParticleState>* liveParticlesAt(LiveParticles& live, const Doc
     return nullptr;
   }
   const Clip* clip = clipIndex >= 0 && clipIndex < static_cast<int>(scene.clips.size()) ? &scene.clips[clipIndex] : nullptr;
-  const double frameTime = clip ? clip->secondsPerFrame() : 1.0 / 30.0;
+  const FrameGrid grid = scene.frameGrid(clip ? clipIndex : -1);
+  const double frameTime = grid.secondsPerFrame;
   // Without a clip the joints stand in the working pose, whose revision then is an input.
   const long long key = clip ? doc.changeCount() * 1024 + clipIndex : doc.changeCount() ^ (doc.poseRevision() << 20);
   SamplingCache cache;
@@ -77,7 +78,7 @@ const std::vector<ParticleState>* liveParticlesAt(LiveParticles& live, const Doc
       return;
     }
     Pose pose = Pose::rest(scene.skeleton);
-    sampleClip(*clip, clip->frameToTime(f), pose, cache);
+    sampleClip(*clip, grid.frameToTime(f), pose, cache);
     world = computeWorld(scene.skeleton, pose);
   };
   live.frame = std::max(0LL, frame);

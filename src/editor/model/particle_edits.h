@@ -23,7 +23,7 @@ std::string addParticleEmitterEdit(Document& doc, int joint, int* index = nullpt
 std::string setParticleSystemEdit(Document& doc, int index, const ParticleSystemSettings& settings);
 std::string removeParticleSystemEdit(Document& doc, int index);
 
-// The particles played live: simulated from frame 0 on the clip's frame grid (1/30 s without
+// The particles played live: simulated from frame 0 on the clip's frame grid (the document's rate without
 // one), joint emitters following the clip sampled at each frame (the working pose without a
 // clip). Owned by the editor state; any document change starts again from frame 0.
 struct LiveParticles {

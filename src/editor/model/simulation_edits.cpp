@@ -194,6 +194,7 @@ Result<SimulationBake> bake(const Document& doc, const Clip& clip, const Simulat
   SimulationBakeInput in;
   in.skeleton = &scene.skeleton;
   in.clip = &clip;
+  in.documentFrameRate = scene.frameRate;
   in.settings = &settings;
   in.rig = &doc.rig();
   if (!scene.meshes.empty()) {
@@ -235,7 +236,7 @@ std::string ragdollFromFrameEdit(Document& doc, int clip, int root, long long fr
     std::vector<int> all(static_cast<size_t>(scene.skeleton.size()));
     for (int j = 0; j < scene.skeleton.size(); ++j) all[static_cast<size_t>(j)] = j;
     keyJoints(withAction, created, scene.skeleton, doc.pose(), all,
-              static_cast<float>(newActionClip().frameToTime(std::max(0LL, frame))), KeyPreferences{});
+              scene.frameGrid(-1).frameToTime(std::max(0LL, frame)), KeyPreferences{}, scene.frameGrid(-1));
     clip = static_cast<int>(scene.clips.size());
   }
   const Clip& source = newClip ? withAction.front() : scene.clips[clip];
@@ -275,6 +276,7 @@ void applyLiveSprings(LiveSprings& live, const Document& doc, int clipIndex, lon
     return;
   }
   const Clip& clip = scene.clips[clipIndex];
+  const FrameGrid grid = scene.frameGrid(clipIndex);
   frame = std::max(frame, startFrame);
   // Another clip, an edit, another start or a step backwards: simulate again from the start.
   if (live.clip != clipIndex || live.changeCount != doc.changeCount() || live.startFrame != startFrame || frame < live.frame) {
@@ -292,14 +294,14 @@ void applyLiveSprings(LiveSprings& live, const Document& doc, int clipIndex, lon
     Pose step = Pose::rest(scene.skeleton);
     job.skeleton = &scene.skeleton;
     job.chains = &chains;
-    job.dt = static_cast<float>(clip.secondsPerFrame());
+    job.dt = static_cast<float>(grid.secondsPerFrame);
     job.pose = &step;
     job.state = &live.state;
     if (!job.validate().empty()) return;
     SamplingCache cache;
     for (long long f = live.frame + 1; f <= frame; ++f) {
       step = Pose::rest(scene.skeleton);
-      sampleClip(clip, clip.frameToTime(f), step, cache);
+      sampleClip(clip, grid.frameToTime(f), step, cache);
       job.run();
       ++live.framesSimulated;
     }

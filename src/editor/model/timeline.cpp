@@ -41,15 +41,9 @@ void poseAtPlayhead(EditorState& s) {
   s.animatedPoseRevision = s.doc.poseRevision();
 }
 
-// The edited clip's frame grid (Clip::secondsPerFrame); without a clip, the grid of the
-// "Action" the first key creates, so that frame numbers stay when it appears.
-const Clip& timelineGrid(const EditorState& s) {
-  static const Clip action = newActionClip();
-  const Clip* clip = editedClip(s);
-  return clip ? *clip : action;
-}
+FrameGrid timelineGrid(const EditorState& s) { return s.doc.scene().frameGrid(s.hasMotion() ? s.clip : -1); }
 
-double timelineFrameTime(const EditorState& s) { return timelineGrid(s).secondsPerFrame(); }
+double timelineFrameTime(const EditorState& s) { return timelineGrid(s).secondsPerFrame; }
 double timelineFps(const EditorState& s) { return timelineGrid(s).framesPerSecond(); }
 long long frameAtTime(const EditorState& s, double time) { return timelineGrid(s).nearestFrame(time); }
 double timeOfFrame(const EditorState& s, long long frame) { return timelineGrid(s).frameToTime(frame); }
@@ -126,12 +120,12 @@ void advanceTimeline(EditorState& s, double dt) {
 std::string setFrameRange(EditorState& s, long long start, long long end) {
   if (start > end) return "the start frame must not be after the end frame";
   if (std::llabs(start) > 100000000LL || std::llabs(end) > 100000000LL) return "frames must be within +-100000000";
-  const Clip& grid = timelineGrid(s);
+  const FrameGrid grid = timelineGrid(s);
   const float startTime = grid.frameToTime(start), endTime = grid.frameToTime(end);
   int clip = s.clip;
   const std::string error = s.doc.edit("Set frame range to " + std::to_string(start) + "-" + std::to_string(end), [&](DocumentEdit& e) {
     if (clip < 0 || clip >= static_cast<int>(e.clips.size())) {
-      e.clips.push_back(newActionClip());
+      e.clips.push_back(newActionClip(grid));
       clip = e.activeClip = static_cast<int>(e.clips.size()) - 1;
     }
     Clip& c = e.clips[clip];
@@ -151,18 +145,19 @@ std::string setFrameRate(EditorState& s, double fps) {
   // without "time stretching".
   const long long start = rangeStartFrame(s), end = rangeEndFrame(s), frame = currentFrame(s);
   int clip = s.clip;
+  const FrameGrid grid = timelineGrid(s);
   char rate[32];
   std::snprintf(rate, sizeof rate, "%g", fps);
   const std::string error = s.doc.edit(std::string("Set frame rate to ") + rate + " fps", [&](DocumentEdit& e) {
     if (clip < 0 || clip >= static_cast<int>(e.clips.size())) {
-      e.clips.push_back(newActionClip());
+      e.clips.push_back(newActionClip(grid));
       clip = e.activeClip = static_cast<int>(e.clips.size()) - 1;
     }
     Clip& c = e.clips[clip];
     c.frameTime = 1.0 / fps;
     c.hasRange = true;
-    c.rangeStart = c.frameToTime(start);
-    c.rangeEnd = c.frameToTime(end);
+    c.rangeStart = ownFrameGrid(c).frameToTime(start);
+    c.rangeEnd = ownFrameGrid(c).frameToTime(end);
     return std::string();
   });
   if (!error.empty()) return error;

@@ -12,16 +12,16 @@ struct EditorState;
 // frame range and rate of the edited clip (EditorState::clip; saved in .kinema as the clip's
 // hasRange/rangeStart/rangeEnd and frameTime), play/pause, step, jump and scrub. Without a
 // clip it shows Blender's defaults (frames 1..250 at 24 fps) so a user can start keying;
-// the first key creates the clip ("Action", keying.h). Frame N is at time N *
-// Clip::secondsPerFrame() (a glTF clip without a frame grid: at kDefaultFrameRate, the rate
-// the dope sheet, curve editor and onion skin count in too).
+// the first key creates the clip ("Action", keying.h). Frame N is at time N seconds per
+// frame of Scene::frameGrid: the clip's own rate, else the document's (Scene::frameRate), the
+// grid the dope sheet, curve editor and onion skin count in too.
 // Changing the frame poses the document from the clip with Document::setAnimatedPose: not
 // an undo step, joints the clip does not animate keep their pose.
 
-// The clip whose frame grid the timeline counts in (Clip::secondsPerFrame, the grid every
-// panel shares): the edited clip, or without one a new "Action" (24 fps, keying.h), so frame
-// numbers stay when the first key creates it.
-const Clip& timelineGrid(const EditorState& state);
+// The frame grid the timeline counts in (Scene::frameGrid, the grid every panel shares): the
+// edited clip's, or without one the document's rate, the rate of the "Action" the first key
+// creates (keying.h), so frame numbers stay when it appears.
+FrameGrid timelineGrid(const EditorState& state);
 double timelineFrameTime(const EditorState& state);  // seconds per frame of timelineGrid
 double timelineFps(const EditorState& state);
 long long frameAtTime(const EditorState& state, double time);  // the nearest frame

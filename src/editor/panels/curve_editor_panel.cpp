@@ -157,7 +157,7 @@ void keyPropertiesStrip(EditorState& state, const Clip& clip) {
       editSelectedKeys(state, "Key easing", [&](KeySettings& ks) { ks.easingMode = EasingMode(mode); });
   }
   // The first selected key's time (frames) and value.
-  int frame = static_cast<int>(clip.nearestFrame(ch.times[k.key]));
+  int frame = static_cast<int>(timelineGrid(state).nearestFrame(ch.times[k.key]));
   ImGui::SameLine();
   ImGui::SetNextItemWidth(60);
   const bool retimed = ImGui::InputInt("##frame", &frame, 0, 0, ImGuiInputTextFlags_EnterReturnsTrue);
@@ -165,9 +165,10 @@ void keyPropertiesStrip(EditorState& state, const Clip& clip) {
   if (retimed) {
     const int clipIndex = state.clip;
     std::vector<CurveKeyRef> moved;
+    const FrameGrid grid = timelineGrid(state);
     const std::string error = state.doc.edit("Key time", [&](DocumentEdit& e) {
       Channel& c = e.clips[clipIndex].channels[k.channel];
-      const int to = moveKey(c, k.key, e.clips[clipIndex].frameToTime(frame));
+      const int to = moveKey(c, k.key, grid.frameToTime(frame));
       moved.push_back({k.channel, k.component, to});
       return std::string();
     });
@@ -300,7 +301,7 @@ void drawCurveEditorPanel(CommandContext& ctx) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->PushClipRect(ImVec2(plot.x, plot.y), ImVec2(plot.x + plot.w, plot.y + plot.h), true);
   dl->AddRectFilled(ImVec2(plot.x, plot.y), ImVec2(plot.x + plot.w, plot.y + plot.h), IM_COL32(40, 40, 40, 255));
-  drawGrid(dl, view, plot, clip.secondsPerFrame());
+  drawGrid(dl, view, plot, timelineGrid(state).secondsPerFrame);
 
   const glm::vec2 mouse(io.MousePos.x, io.MousePos.y);
   auto screen = [&](float t, float v) {
@@ -479,7 +480,7 @@ void drawCurveEditorPanel(CommandContext& ctx) {
         for (const ValueRange& range : ce.dragRanges) scales.push_back(displayToValueScale(range, ce.normalized));
         std::vector<CurveKeyRef> moved;
         state.doc.updateDrag([&](DocumentEdit& e) {
-          moved = moveCurveKeys(e.clips[clipIndex], ce.dragStartKeys, ce.dragStartValues, scales, d.x, d.y,
+          moved = moveCurveKeys(e.clips[clipIndex], timelineGrid(state), ce.dragStartKeys, ce.dragStartValues, scales, d.x, d.y,
                                 ce.rotationView, ce.eulerOrder);
           return std::string();
         });
@@ -493,7 +494,7 @@ void drawCurveEditorPanel(CommandContext& ctx) {
         // The plot's offset (normalized in that view) back to display units.
         const float scale = s ? displayToValueScale(s->range, ce.normalized) : 1.0f;
         const glm::vec2 offset(ce.dragHandleStart.x + d.x, ce.dragHandleStart.y + d.y * scale);
-        const float fps = static_cast<float>(clip.framesPerSecond());
+        const float fps = static_cast<float>(timelineGrid(state).framesPerSecond());
         state.doc.updateDrag([&](DocumentEdit& e) {
           dragCurveHandle(e.clips[clipIndex].channels[h.key.channel], h, offset, ce.rotationView, ce.eulerOrder, fps);
           return std::string();

@@ -65,7 +65,7 @@ void handleModalKeys(EditorState& state, DopeSheetState& ds) {
 
 // Mouse gestures: click / Shift-click select, drags move keys or draw a box, the wheel
 // zooms about the mouse (Shift+wheel scrolls rows), middle drag pans, the ruler scrubs.
-void handleMouse(EditorState& state, const Clip& clip, const std::vector<DopeSheetRow>& rows, DopeSheetState& ds,
+void handleMouse(EditorState& state, const std::vector<DopeSheetRow>& rows, DopeSheetState& ds,
                  bool hovered, const PanelRect& rulerRect) {
   const ImGuiIO& io = ImGui::GetIO();
   const glm::vec2 mouse(io.MousePos.x, io.MousePos.y);
@@ -102,7 +102,7 @@ void handleMouse(EditorState& state, const Clip& clip, const std::vector<DopeShe
     if (ds.gesture == G::Press && moved) {
       int row = -1;
       float time = 0.0f;
-      if (hitKeyColumn(rows, view, clip, ds.pressMouse, kHitRadius, row, time)) {
+      if (hitKeyColumn(rows, view, timelineGrid(state), ds.pressMouse, kHitRadius, row, time)) {
         const std::string error = ds.move.begin(state.doc, state.clip, ds.selection);
         if (!error.empty()) {
           showEditorError(state, error);
@@ -121,7 +121,7 @@ void handleMouse(EditorState& state, const Clip& clip, const std::vector<DopeShe
         reportDopeSheetEdit(state, "", "Moved keys");
       } else if (ds.gesture == G::Box) {
         const std::vector<KeyColumn> inside =
-            columnsInBox(clip, rows, view.xToFrame(ds.pressMouse.x), view.xToFrame(mouse.x), view.rowAt(ds.pressMouse.y),
+            columnsInBox(timelineGrid(state), rows, view.xToFrame(ds.pressMouse.x), view.xToFrame(mouse.x), view.rowAt(ds.pressMouse.y),
                          view.rowAt(mouse.y));
         ds.selection.box(inside, io.KeyShift || ds.pressExtend ? BoxSelectMode::Extend
                                  : io.KeyCtrl                 ? BoxSelectMode::Subtract
@@ -130,7 +130,7 @@ void handleMouse(EditorState& state, const Clip& clip, const std::vector<DopeShe
         // A click: on a diamond select it (Shift: toggle), on nothing deselect all.
         int row = -1;
         float time = 0.0f;
-        if (hitKeyColumn(rows, view, clip, ds.pressMouse, kHitRadius, row, time)) {
+        if (hitKeyColumn(rows, view, timelineGrid(state), ds.pressMouse, kHitRadius, row, time)) {
           if (!ds.pressExtend) ds.selection.set(columnsOfCell(rows, row, time));
         } else if (!ds.pressExtend) {
           ds.selection.clear();
@@ -178,7 +178,7 @@ void handleMouse(EditorState& state, const Clip& clip, const std::vector<DopeShe
     ds.pressExtend = io.KeyShift;
     int row = -1;
     float time = 0.0f;
-    if (hitKeyColumn(rows, view, clip, mouse, kHitRadius, row, time)) {
+    if (hitKeyColumn(rows, view, timelineGrid(state), mouse, kHitRadius, row, time)) {
       const std::vector<KeyColumn> cell = columnsOfCell(rows, row, time);
       // Pressing an unselected diamond selects it (Shift: adds it); pressing a selected
       // one keeps the selection, so that a drag moves all of it.
@@ -222,7 +222,7 @@ void drawDopeSheetPanel(EditorState& state) {
   const PanelRect ruler{view.x, r.y, view.width, kDopeSheetRulerHeight};
   if (hovered || ds.gesture != DopeSheetState::Gesture::None) {
     handleModalKeys(state, ds);
-    handleMouse(state, clip, rows, ds, hovered, ruler);
+    handleMouse(state, rows, ds, hovered, ruler);
   }
   // After this frame's edits (the rows again only when there were some).
   if (!state.hasMotion()) {
@@ -230,6 +230,7 @@ void drawDopeSheetPanel(EditorState& state) {
     return;
   }
   const Clip& shown = state.doc.scene().clips[state.clip];
+  const FrameGrid grid = timelineGrid(state);
   std::vector<DopeSheetRow> edited;
   if (state.doc.changeCount() != changeBefore) edited = dopeSheetRows(shown);
   const std::vector<DopeSheetRow>& shownRows = state.doc.changeCount() != changeBefore ? edited : rows;
@@ -239,7 +240,7 @@ void drawDopeSheetPanel(EditorState& state) {
   dl->PushClipRect(ImVec2(r.x, r.y), ImVec2(right, bottom), true);
   dl->AddRectFilled(ImVec2(r.x, r.y), ImVec2(right, bottom), rgba(42, 42, 42));
   // The clip's playback range, lighter (Blender darkens outside the scene's range).
-  const double x0 = view.frameToX(shown.timeToFrame(shown.playStart())), x1 = view.frameToX(shown.timeToFrame(shown.playEnd()));
+  const double x0 = view.frameToX(grid.timeToFrame(shown.playStart())), x1 = view.frameToX(grid.timeToFrame(shown.playEnd()));
   dl->AddRectFilled(ImVec2(std::max(float(x0), view.x), view.y), ImVec2(std::min(float(x1), right), bottom), rgba(52, 52, 52));
   for (int i = 0; i < static_cast<int>(shownRows.size()); ++i) {
     const float cy = view.rowCenterY(i), top = cy - view.rowHeight * 0.5f;
@@ -267,10 +268,10 @@ void drawDopeSheetPanel(EditorState& state) {
     const float cy = view.rowCenterY(i);
     if (cy < view.y || cy > bottom + view.rowHeight) continue;
     const std::vector<float>& times = shownRows[i].times;
-    auto it = std::lower_bound(times.begin(), times.end(), shown.frameToTime(static_cast<long long>(std::floor(firstVisible))));
-    for (; it != times.end() && shown.timeToFrame(*it) <= lastVisible; ++it) {
+    auto it = std::lower_bound(times.begin(), times.end(), grid.frameToTime(static_cast<long long>(std::floor(firstVisible))));
+    for (; it != times.end() && grid.timeToFrame(*it) <= lastVisible; ++it) {
       const bool selected = ds.selection.containsAll(columnsOfCell(shownRows, i, *it));
-      const float x = static_cast<float>(view.frameToX(shown.timeToFrame(*it)));
+      const float x = static_cast<float>(view.frameToX(grid.timeToFrame(*it)));
       drawDiamond(dl, ImVec2(x, cy), i == 0 ? kDiamondRadius + 1 : kDiamondRadius,
                   selected ? rgba(255, 160, 40) : rgba(205, 205, 205), rgba(0, 0, 0, 200));
     }
@@ -285,7 +286,7 @@ void drawDopeSheetPanel(EditorState& state) {
   }
   dl->PopClipRect();
   // The current frame: a blue line with its number in the ruler.
-  const double frameNow = shown.timeToFrame(state.time);
+  const double frameNow = grid.timeToFrame(state.time);
   const float xNow = static_cast<float>(view.frameToX(frameNow));
   if (xNow >= view.x && xNow <= right) {
     dl->AddLine(ImVec2(xNow, view.y), ImVec2(xNow, bottom), rgba(70, 140, 255), 2.0f);

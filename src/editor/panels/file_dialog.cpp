@@ -9,7 +9,7 @@
 #include <filesystem>
 
 #include "editor/panels/item_names.h"
-#include "io/scene.h"
+#include "scene/scene.h"
 
 namespace kinema {
 

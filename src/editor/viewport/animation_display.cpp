@@ -62,14 +62,15 @@ void buildAnimationDisplay(const EditorState& state, const std::vector<char>& sh
   }
   const Scene& scene = state.doc.scene();
   const Clip& clip = scene.clips[state.clip];
-  const long long current = clip.nearestFrame(state.time);
+  const FrameGrid grid = scene.frameGrid(state.clip);
+  const long long current = grid.nearestFrame(state.time);
   if (state.onionSkin.enabled) {
-    display.ghosts = ghostFrames(state.onionSkin, current, clip.nearestFrame(clip.duration()) + 1);
+    display.ghosts = ghostFrames(state.onionSkin, current, grid.nearestFrame(clip.duration()) + 1);
     display.ghostPoses = ghostPoses(scene, state.clip, display.ghosts);
     display.ghostBodies = ghostsShowBodies(state.onionSkin, scene);
     if (display.ghostBodies) {
       for (const GhostFrame& g : display.ghosts)
-        display.ghostMorphWeights.push_back(sampleMorphWeights(scene, state.clip, clip.frameToTime(g.frame)));
+        display.ghostMorphWeights.push_back(sampleMorphWeights(scene, state.clip, grid.frameToTime(g.frame)));
     } else {
       display.ghostLists = buildGhostDrawLists(scene.skeleton.parents, shownJoints, display.ghosts, display.ghostPoses);
     }
@@ -77,7 +78,7 @@ void buildAnimationDisplay(const EditorState& state, const std::vector<char>& sh
   const int joint = state.doc.selection.active();
   if (state.motionPath.enabled && joint >= 0) {
     long long first = 0, last = -1;
-    motionPathRange(state.motionPath, clip, current, first, last);
+    motionPathRange(state.motionPath, clip, grid, current, first, last);
     const AnimationDisplay::PathKey key{state.doc.changeCount(), state.clip, joint, first, last,
                                         clip.channels.size(), clip.duration()};
     if (!(key == display.pathKey)) {
@@ -94,7 +95,7 @@ void buildAnimationDisplay(const EditorState& state, const std::vector<char>& sh
     const int index = translationChannelIndex(clip, joint);
     if (index >= 0) {
       const Channel& path = clip.channels[index];
-      const int frames = static_cast<int>(clip.nearestFrame(path.endTime()) - clip.nearestFrame(path.startTime()));
+      const int frames = static_cast<int>(grid.nearestFrame(path.endTime()) - grid.nearestFrame(path.startTime()));
       display.ticks = equalTimeTicks(path, mc.profile, std::clamp(frames, 1, 2000));
       // The channel is in the parent's space: placed by the parent's current world transform.
       const int parent = scene.skeleton.parents[joint];

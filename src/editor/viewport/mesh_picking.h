@@ -2,7 +2,7 @@
 #include <vector>
 
 #include "editor/viewport/viewport_view.h"
-#include "io/scene.h"
+#include "scene/scene.h"
 #include "skin/scene_deformation.h"
 
 namespace kinema {

@@ -146,13 +146,14 @@ json dopeSheetJson(const EditorState& s) {
   json rows = json::array(), selected = json::array();
   if (s.hasMotion()) {
     const Clip& clip = s.doc.scene().clips[s.clip];
+    const FrameGrid grid = s.doc.scene().frameGrid(s.clip);
     for (const DopeSheetRow& r : dopeSheetRows(clip)) {
       json frames = json::array();
-      for (float t : r.times) frames.push_back(clip.timeToFrame(t));
+      for (float t : r.times) frames.push_back(grid.timeToFrame(t));
       rows.push_back({{"joint", r.joint < 0 ? json("Summary") : jointName(s, r.joint)}, {"frames", frames}});
     }
     for (const KeyColumn& c : ds.selection.columns())
-      selected.push_back({{"joint", jointName(s, c.joint)}, {"frame", clip.timeToFrame(c.time)}});
+      selected.push_back({{"joint", jointName(s, c.joint)}, {"frame", grid.timeToFrame(c.time)}});
   }
   out["rows"] = rows;
   out["selected"] = selected;
@@ -166,7 +167,8 @@ void addAnimationDisplayState(const EditorState& s, json& out) {
   json ghosts = json::array();
   if (o.enabled && s.hasMotion()) {
     const Clip& clip = s.doc.scene().clips[s.clip];
-    for (const GhostFrame& g : ghostFrames(o, clip.nearestFrame(s.time), clip.nearestFrame(clip.duration()) + 1))
+    const FrameGrid grid = s.doc.scene().frameGrid(s.clip);
+    for (const GhostFrame& g : ghostFrames(o, grid.nearestFrame(s.time), grid.nearestFrame(clip.duration()) + 1))
       ghosts.push_back({{"frame", g.frame}, {"offset", g.offset}, {"color", json::array({g.color.r, g.color.g, g.color.b, g.color.a})}});
   }
   out["onion_skin"] = {{"enabled", o.enabled}, {"before", o.before}, {"after", o.after}, {"step", o.step},

@@ -10,8 +10,6 @@
 #include "core/skeleton.h"
 #include "deform/deformer_stack.h"
 #include "ik/ik_rig.h"
-#include "io/input_limits.h"
-#include "io/up_axis.h"
 #include "sim/simulation_settings.h"
 
 namespace kinema {
@@ -29,6 +27,9 @@ struct ScenePlayhead {
 // and the meshes it shows.
 struct Scene {
   std::string source;  // the path it came from, for messages and titles
+  // The document's frame rate (frames per second, kMinFrameRate..kMaxFrameRate; .kinema
+  // "frame_rate"): the rate of every clip that has none of its own (Clip::frameTime 0).
+  double frameRate = kDefaultFrameRate;
   Skeleton skeleton;
   std::vector<Clip> clips;
   IkRig ik;  // joint limits and saved IK targets (optional in files)
@@ -63,6 +64,12 @@ struct Scene {
   // extra UV sets...), one line each, for the user to see.
   std::vector<std::string> warnings;
 
+  // The frame grid clip `clip` counts in (frameGridOf with this document's rate); the
+  // document's own grid for an index that names no clip. Every "frame N" goes through here.
+  FrameGrid frameGrid(int clip) const {
+    return clip >= 0 && clip < static_cast<int>(clips.size()) ? frameGridOf(clips[clip], frameRate)
+                                                               : documentFrameGrid(frameRate);
+  }
   // The file index of each joint: nodeOfJoint when present, else the joint index.
   int fileIndexOf(int joint) const { return nodeOfJoint.empty() ? joint : nodeOfJoint[joint]; }
   // Instance i's deformer stack, or null when it has none (no deformers at all).
@@ -76,6 +83,11 @@ struct Scene {
   }
 };
 
+// A copy of clip `clip` that carries the grid it counts in (Clip::frameTime set from
+// Scene::frameGrid): what the jobs below the scene layer need, which count in a clip's own
+// rate (ownFrameGrid). An index that names no clip gives an empty clip at the document's rate.
+Clip clipOnItsGrid(const Scene& scene, int clip);
+
 // An image that failed to decode on loading (the reader warned): no pixels at all.
 inline bool isUndecodedImage(const TextureImage& image) {
   return image.width == 0 && image.height == 0 && image.rgba.empty();
@@ -85,14 +97,5 @@ inline bool isUndecodedImage(const TextureImage& image) {
 // that loads with such a warning also converts. `dropped` gets the removed image indices.
 Scene withoutUndecodedImages(const Scene& scene, std::vector<int>* dropped = nullptr);
 bool hasUndecodedImages(const Scene& scene);
-
-// A path's extension with its dot, lower-cased (".glb"), or "" when it has none.
-std::string lowerExtension(const std::string& path);
-
-// Loads .bvh, .kinema, .gltf or .glb, chosen by the file's extension.
-Result<Scene> loadScene(const std::string& path, const InputLimits& limits = {});
-// The same, reading a .bvh file as `bvhUp`-up (other formats are Y-up by definition: glTF
-// says so, .kinema files are Kinema's own).
-Result<Scene> loadScene(const std::string& path, const InputLimits& limits, UpAxis bvhUp);
 
 }  // namespace kinema
