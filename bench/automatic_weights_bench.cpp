@@ -9,7 +9,7 @@
 #include "core/forward_kinematics.h"
 #include "skin/automatic_weights.h"
 #include "skin/default_body_mesh.h"
-#include "skin/default_character_scene.h"
+#include "scene/default_character_scene.h"
 
 namespace {
 

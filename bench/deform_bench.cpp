@@ -14,8 +14,8 @@
 
 #include "deform/deformer_stack.h"
 #include "core/forward_kinematics.h"
-#include "skin/default_character_scene.h"
-#include "skin/scene_deformation.h"
+#include "scene/default_character_scene.h"
+#include "evaluation/scene_deformation.h"
 
 namespace {
 

@@ -20,7 +20,7 @@
 #include "render/offscreen_target.h"
 #include "render/skeleton_renderer.h"
 #include "render/skeleton_view.h"
-#include "skin/default_character_scene.h"
+#include "scene/default_character_scene.h"
 #include "io/scene_files.h"
 
 namespace {

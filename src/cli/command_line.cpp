@@ -5,7 +5,7 @@
 #include <iostream>
 
 #include "anim/channel_modifiers.h"
-#include "skin/default_character_scene.h"
+#include "scene/default_character_scene.h"
 #include "io/json_number.h"
 #include "io/scene_files.h"
 

@@ -10,7 +10,7 @@
 
 #include "cli/command_line.h"
 #include "io/scene_files.h"
-#include "skin/bake_deformers.h"
+#include "bake/bake_deformers.h"
 
 namespace kinema::cli {
 

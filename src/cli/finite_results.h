@@ -4,7 +4,7 @@
 
 #include "core/math.h"
 #include "scene/scene.h"
-#include "skin/scene_deformation.h"
+#include "evaluation/scene_deformation.h"
 
 namespace kinema::cli {
 

@@ -9,6 +9,8 @@
 #include "io/gltf_writer.h"
 #include "io/kinema_file.h"
 #include "sim/lsystem_derivation.h"
+#include "io/lsystem_grammar_file.h"
+#include "scene/lsystem_scene.h"
 #include "sim/lsystem_skeleton.h"
 #include "io/scene_files.h"
 

@@ -3,7 +3,7 @@
 // (build target `update-assets`; a test checks the committed files match).
 #include <cstdio>
 
-#include "skin/default_character_scene.h"
+#include "scene/default_character_scene.h"
 #include "io/kinema_file.h"
 
 int main(int argc, char** argv) {

@@ -15,7 +15,7 @@
 #include "render/loose_joints.h"
 #include "render/particle_overlay.h"
 #include "render/skeleton_view.h"
-#include "skin/scene_deformation.h"
+#include "evaluation/scene_deformation.h"
 
 namespace kinema::cli {
 

@@ -4,7 +4,7 @@
 #include <cstdio>
 
 #include "io/json_number.h"
-#include "sim/crowd_scene.h"
+#include "bake/crowd_scene.h"
 
 namespace kinema::cli {
 

@@ -1,5 +1,5 @@
 #pragma once
-// `kinema simulate` on a file's crowds (simulation.crowds; sim/crowd_scene.h).
+// `kinema simulate` on a file's crowds (simulation.crowds; bake/crowd_scene.h).
 #include <string>
 
 #include <nlohmann/json.hpp>

@@ -8,7 +8,7 @@
 #include "cli/finite_results.h"
 #include "core/forward_kinematics.h"
 #include "io/json_number.h"
-#include "skin/scene_deformation.h"
+#include "evaluation/scene_deformation.h"
 #include "io/scene_files.h"
 
 namespace kinema::cli {

@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "core/text_lines.h"  // splitLines, trim, UTF-8: text helpers the readers share
+
 namespace kinema {
 
 // Reads a whole file; returns an empty string on success or "PATH: reason" on failure.
@@ -17,20 +19,5 @@ std::string readFileBytes(const std::string& path, std::vector<unsigned char>& o
 // "" when `path` names a regular file Kinema may read; otherwise why not, without the path
 // ("is a FIFO (named pipe), not a regular file", "is on /proc, not a regular file", ...).
 std::string notARegularFile(const std::string& path);
-
-// Splits on \n, \r\n and lone \r; the line ends are dropped.
-void splitLines(const std::string& text, std::vector<std::string>& lines);
-bool isBlank(const std::string& s);
-std::string trim(const std::string& s);
-
-}  // namespace kinema
-
-namespace kinema {
-
-// True when `s` is well-formed UTF-8 (JSON and glTF text must be).
-bool isValidUtf8(const std::string& s);
-// Text from older tools (BVH exporters) is often Latin-1: returns `s` unchanged when it is
-// valid UTF-8, else reads each byte as a Latin-1 character and encodes it as UTF-8.
-std::string toUtf8(const std::string& s);
 
 }  // namespace kinema

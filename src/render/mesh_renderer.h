@@ -9,7 +9,7 @@
 #include "render/camera.h"
 #include "render/screen_culling.h"
 #include "render/shader_program.h"
-#include "skin/scene_deformation.h"
+#include "evaluation/scene_deformation.h"
 
 namespace kinema {
 

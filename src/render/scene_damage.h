@@ -6,7 +6,7 @@
 #include "render/overlay_draw_list.h"
 #include "render/pixel_rect.h"
 #include "render/skeleton_draw_list.h"
-#include "skin/scene_deformation.h"
+#include "evaluation/scene_deformation.h"
 
 namespace kinema {
 

@@ -1,4 +1,5 @@
 #include "sim/lsystem_grammar.h"
+#include "core/text_lines.h"
 
 #include <algorithm>
 #include <cctype>
@@ -6,7 +7,6 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "io/text_file.h"
 
 namespace kinema {
 
@@ -161,13 +161,6 @@ Result<LSystemGrammar> parseLSystemGrammar(const std::string& text, const std::s
   if (std::string bad = shareProbabilities(g, source); !bad.empty()) return R::failure(bad);
   if (std::string bad = g.validate(); !bad.empty()) return R::failure(source + ": " + bad);
   return g;
-}
-
-Result<LSystemGrammar> loadLSystemGrammar(const std::string& path) {
-  std::string text;
-  if (std::string bad = readTextFile(path, text, size_t(16) << 20); !bad.empty())
-    return Result<LSystemGrammar>::failure(bad);
-  return parseLSystemGrammar(text, path);
 }
 
 }  // namespace kinema

@@ -43,6 +43,5 @@ struct LSystemGrammar {
 //   start S              the start symbol (default: the first rule's symbol)
 // Errors are one line, "SOURCE:LINE: what was expected".
 Result<LSystemGrammar> parseLSystemGrammar(const std::string& text, const std::string& source);
-Result<LSystemGrammar> loadLSystemGrammar(const std::string& path);
 
 }  // namespace kinema

@@ -4,7 +4,7 @@
 
 #include "core/mesh.h"
 #include "core/skeleton.h"
-#include "scene/scene.h"
+#include "core/result.h"
 
 namespace kinema {
 
@@ -54,9 +54,5 @@ struct LSystemTubeJob {
   std::string validate() const;
   bool run(std::string& error);
 };
-
-// The plant as a scene: the skeleton, the tube mesh on the root joint with its skin and a
-// bark-green material, no clips. `radius` <= 0 means a tenth of the segment length.
-Result<Scene> makeLSystemScene(const std::string& symbols, double angleDegrees, float segmentLength, float radius);
 
 }  // namespace kinema

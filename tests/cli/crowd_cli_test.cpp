@@ -15,7 +15,7 @@
 #include "io/image.h"
 #include "io/kinema_file.h"
 #include "io/scene_files.h"
-#include "skin/default_character_scene.h"
+#include "scene/default_character_scene.h"
 #include "cli/simulate_cli_fixture.h"
 #include "test_support.h"
 

@@ -7,8 +7,8 @@
 #include "core/forward_kinematics.h"
 #include "io/kinema_file.h"
 #include "io/scene_files.h"
-#include "skin/default_character_scene.h"
-#include "skin/scene_deformation.h"
+#include "scene/default_character_scene.h"
+#include "evaluation/scene_deformation.h"
 #include "test_support.h"
 
 namespace kinema::test {

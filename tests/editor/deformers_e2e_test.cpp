@@ -13,8 +13,8 @@
 #include "editor/model/deformer_edits.h"
 #include "editor/model/document.h"
 #include "io/scene_files.h"
-#include "skin/default_character_scene.h"
-#include "skin/scene_deformation.h"
+#include "scene/default_character_scene.h"
+#include "evaluation/scene_deformation.h"
 
 namespace kinema::test {
 namespace {

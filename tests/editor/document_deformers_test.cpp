@@ -5,7 +5,7 @@
 #include "core/forward_kinematics.h"
 #include "editor/model/deformer_edits.h"
 #include "editor/model/document.h"
-#include "skin/default_character_scene.h"
+#include "scene/default_character_scene.h"
 
 namespace kinema {
 namespace {

@@ -8,8 +8,8 @@
 #include "editor/model/deformer_edits.h"
 #include "editor/model/editor_state.h"
 #include "editor/model/lattice_editing.h"
-#include "skin/default_character_scene.h"
-#include "skin/scene_deformation.h"
+#include "scene/default_character_scene.h"
+#include "evaluation/scene_deformation.h"
 
 namespace kinema {
 namespace {

@@ -13,7 +13,7 @@
 #include "editor/model/key_codes.h"
 #include "editor/viewport/lattice_cage.h"
 #include "editor/viewport/viewport_tools.h"
-#include "skin/default_character_scene.h"
+#include "scene/default_character_scene.h"
 #include "viewport_test_views.h"
 
 namespace kinema {

@@ -7,7 +7,7 @@
 #include "editor/model/editor_state.h"
 #include "editor/model/property_keying.h"
 #include "editor/model/shape_keys.h"
-#include "skin/default_character_scene.h"
+#include "scene/default_character_scene.h"
 
 namespace kinema {
 namespace {

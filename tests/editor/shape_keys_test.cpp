@@ -7,8 +7,8 @@
 
 #include "editor/model/shape_keys.h"
 #include "core/forward_kinematics.h"
-#include "skin/default_character_scene.h"
-#include "skin/scene_deformation.h"
+#include "scene/default_character_scene.h"
+#include "evaluation/scene_deformation.h"
 
 namespace kinema {
 namespace {

@@ -20,7 +20,7 @@
 #include "cli/command_line.h"
 #include "cli/ik_command.h"
 #include "io/kinema_file.h"
-#include "skin/default_character_scene.h"
+#include "scene/default_character_scene.h"
 
 namespace {
 

@@ -5,7 +5,7 @@
 
 #include "core/forward_kinematics.h"
 #include "io/kinema_file.h"
-#include "skin/scene_deformation.h"
+#include "evaluation/scene_deformation.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);

@@ -1,7 +1,7 @@
 // assets/ is made by the project's own code (target update-assets); it must stay in sync.
 #include "core/default_character.h"
 #include "io/kinema_file.h"
-#include "skin/default_character_scene.h"
+#include "scene/default_character_scene.h"
 #include "test_support.h"
 
 namespace kinema::test {

@@ -8,7 +8,7 @@
 
 #include "anim/scalar_property.h"
 #include "io/kinema_file.h"
-#include "skin/default_character_scene.h"
+#include "scene/default_character_scene.h"
 
 namespace kinema {
 namespace {

@@ -14,8 +14,8 @@
 #include "core/forward_kinematics.h"
 #include "render/gl_context.h"
 #include "render/mesh_renderer.h"
-#include "skin/default_character_scene.h"
-#include "skin/scene_deformation.h"
+#include "scene/default_character_scene.h"
+#include "evaluation/scene_deformation.h"
 
 namespace kinema {
 namespace {

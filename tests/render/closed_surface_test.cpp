@@ -6,7 +6,7 @@
 
 #include "render/camera.h"
 #include "render/closed_surface.h"
-#include "skin/default_character_scene.h"
+#include "scene/default_character_scene.h"
 
 namespace kinema {
 namespace {

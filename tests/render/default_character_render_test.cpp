@@ -9,7 +9,7 @@
 #include "render/image_compare.h"
 #include "render/headless_renderer.h"
 #include "render/skeleton_view.h"
-#include "skin/default_character_scene.h"
+#include "scene/default_character_scene.h"
 #include "test_support.h"
 
 namespace kinema {

@@ -18,7 +18,7 @@
 #include "render/camera.h"
 #include "render/gl_context.h"
 #include "render/mesh_renderer.h"
-#include "skin/scene_deformation.h"
+#include "evaluation/scene_deformation.h"
 #include "test_support.h"
 #include "io/scene_files.h"
 

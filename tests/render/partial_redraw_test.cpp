@@ -16,8 +16,8 @@
 #include "render/scene_damage.h"
 #include "render/skeleton_view.h"
 #include "render/viewport_target.h"
-#include "skin/default_character_scene.h"
-#include "skin/scene_deformation.h"
+#include "scene/default_character_scene.h"
+#include "evaluation/scene_deformation.h"
 
 namespace kinema {
 namespace {

@@ -8,7 +8,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "sim/crowd.h"
-#include "sim/crowd_scene.h"
+#include "bake/crowd_scene.h"
 #include "test_support.h"
 
 namespace kinema {

@@ -10,6 +10,8 @@
 #include "core/forward_kinematics.h"
 #include "io/scene_files.h"
 #include "sim/lsystem_derivation.h"
+#include "io/lsystem_grammar_file.h"
+#include "scene/lsystem_scene.h"
 #include "sim/lsystem_skeleton.h"
 #include "skin/linear_blend_skinning.h"
 #include "test_support.h"

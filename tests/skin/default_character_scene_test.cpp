@@ -3,7 +3,7 @@
 #include "core/forward_kinematics.h"
 #include "io/kinema_file.h"
 #include "skin/default_body_mesh.h"
-#include "skin/default_character_scene.h"
+#include "scene/default_character_scene.h"
 #include "test_support.h"
 
 namespace kinema::test {

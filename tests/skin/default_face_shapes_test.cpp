@@ -5,7 +5,7 @@
 
 #include <limits>
 
-#include "skin/default_character_scene.h"
+#include "scene/default_character_scene.h"
 #include "skin/default_face_shapes.h"
 #include "test_support.h"
 

@@ -10,7 +10,7 @@
 
 #include "core/forward_kinematics.h"
 #include "io/scene_files.h"
-#include "skin/scene_deformation.h"
+#include "evaluation/scene_deformation.h"
 #include "test_support.h"
 
 namespace kinema {

@@ -2,7 +2,7 @@
 // through the job itself, glTF semantics on a hand-built scene (the skinned node's own
 // transform ignored, unskinned instances moved by their node, per-instance method),
 // and validate().
-#include "skin/scene_deformation.h"
+#include "evaluation/scene_deformation.h"
 
 #include <gtest/gtest.h>
 

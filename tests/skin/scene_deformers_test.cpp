@@ -7,8 +7,8 @@
 
 #include "anim/scalar_property.h"
 #include "core/forward_kinematics.h"
-#include "skin/bake_deformers.h"
-#include "skin/scene_deformation.h"
+#include "bake/bake_deformers.h"
+#include "evaluation/scene_deformation.h"
 #include "test_support.h"
 
 namespace kinema {

@@ -6,7 +6,7 @@
 
 #include "core/forward_kinematics.h"
 #include "editor/model/document.h"
-#include "sim/crowd_scene.h"
+#include "bake/crowd_scene.h"
 
 namespace kinema {
 

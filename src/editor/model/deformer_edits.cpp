@@ -7,7 +7,7 @@
 #include "anim/scalar_property.h"
 #include "core/forward_kinematics.h"
 #include "editor/model/keying.h"
-#include "skin/scene_deformation.h"
+#include "evaluation/scene_deformation.h"
 
 namespace kinema {
 namespace {

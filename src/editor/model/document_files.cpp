@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "skin/default_character_scene.h"
+#include "scene/default_character_scene.h"
 #include "io/atomic_write.h"
 #include "io/bvh_writer.h"
 #include "io/gltf_writer.h"

@@ -9,7 +9,7 @@
 #include "editor/model/editor_state.h"
 #include "editor/model/keying.h"
 #include "editor/model/timeline.h"
-#include "skin/scene_deformation.h"
+#include "evaluation/scene_deformation.h"
 
 namespace kinema {
 

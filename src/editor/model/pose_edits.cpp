@@ -7,7 +7,7 @@
 #include "editor/model/ik_posing.h"
 #include "editor/model/mirror_names.h"
 #include "editor/model/pose_clipboard.h"
-#include "skin/default_character_scene.h"
+#include "scene/default_character_scene.h"
 
 namespace kinema {
 

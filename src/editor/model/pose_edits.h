@@ -34,7 +34,7 @@ glm::quat limitedLocalRotation(const DocumentEdit& e, int joint, const glm::quat
 // How mesh instance `instance` is skinned (linear blend or dual quaternion); one undo step.
 std::string setMeshSkinning(Document& doc, int instance, SkinningMethod method);
 // Pose > Bind to Skeleton with Automatic Weights (Ctrl+P): every unskinned mesh instance
-// bound to the skeleton at its rest pose (skin/default_character_scene.h), one undo step.
+// bound to the skeleton at its rest pose (scene/default_character_scene.h), one undo step.
 std::string bindUnskinnedMeshes(Document& doc, AutomaticWeightsMethod method = AutomaticWeightsMethod::Capsule);
 
 // IK targets. The returned string is "" or the error; addIkTarget puts the new index in

@@ -6,8 +6,8 @@
 #include "anim/scalar_property.h"
 #include "editor/model/keying.h"
 #include "editor/model/timeline.h"
-#include "skin/bake_deformers.h"
-#include "skin/scene_deformation.h"
+#include "bake/bake_deformers.h"
+#include "evaluation/scene_deformation.h"
 
 namespace kinema {
 namespace {

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "editor/model/motion_control.h"
-#include "skin/scene_deformation.h"
+#include "evaluation/scene_deformation.h"
 
 namespace kinema {
 

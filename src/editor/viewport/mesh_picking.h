@@ -3,7 +3,7 @@
 
 #include "editor/viewport/viewport_view.h"
 #include "scene/scene.h"
-#include "skin/scene_deformation.h"
+#include "evaluation/scene_deformation.h"
 
 namespace kinema {
 

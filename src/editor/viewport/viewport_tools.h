@@ -4,7 +4,7 @@
 #include "editor/model/editor_state.h"
 #include "editor/model/input_events.h"
 #include "editor/viewport/picking.h"
-#include "skin/scene_deformation.h"
+#include "evaluation/scene_deformation.h"
 #include "editor/viewport/rotate_gizmo.h"
 #include "editor/viewport/viewport_view.h"
 #include "render/skeleton_draw_list.h"

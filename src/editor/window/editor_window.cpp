@@ -45,7 +45,7 @@
 #include "render/scene_damage.h"
 #include "render/viewport_target.h"
 #include "render/skeleton_view.h"
-#include "skin/scene_deformation.h"
+#include "evaluation/scene_deformation.h"
 
 namespace kinema {
 

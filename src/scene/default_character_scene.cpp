@@ -1,4 +1,4 @@
-#include "skin/default_character_scene.h"
+#include "scene/default_character_scene.h"
 
 #include <map>
 

@@ -1,4 +1,4 @@
-#include "skin/bake_deformers.h"
+#include "bake/bake_deformers.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include "anim/sampling.h"
 #include "anim/scalar_property.h"
 #include "core/forward_kinematics.h"
-#include "skin/scene_deformation.h"
+#include "evaluation/scene_deformation.h"
 #include "skin/skinning_matrices.h"
 
 namespace kinema {

@@ -1,4 +1,4 @@
-#include "skin/scene_deformation.h"
+#include "evaluation/scene_deformation.h"
 
 #include <algorithm>
 #include <cmath>

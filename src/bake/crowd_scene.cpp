@@ -1,4 +1,4 @@
-#include "sim/crowd_scene.h"
+#include "bake/crowd_scene.h"
 #include "io/scene_files.h"
 
 #include <cmath>
