@@ -2,8 +2,36 @@
 
 namespace kinema {
 
+namespace {
+// The whole decimal number text[begin, end) (1 to 9 digits), or -1.
+int smallIndex(const std::string& text, size_t begin, size_t end) {
+  if (end <= begin || end - begin > 9) return -1;
+  int k = 0;
+  for (size_t i = begin; i < end; ++i) {
+    if (text[i] < '0' || text[i] > '9') return -1;
+    k = k * 10 + (text[i] - '0');
+  }
+  return k;
+}
+}  // namespace
+
 ScalarProperty parseScalarProperty(const std::string& property) {
   ScalarProperty out;
+  static const std::string ikTargets = "ik/targets/";
+  if (property.compare(0, ikTargets.size(), ikTargets) == 0) {
+    static const std::string position = "/position.";
+    const size_t slash = property.find('/', ikTargets.size());
+    if (slash == std::string::npos || property.compare(slash, position.size(), position) != 0 ||
+        slash + position.size() + 1 != property.size())
+      return out;
+    const int k = smallIndex(property, ikTargets.size(), slash);
+    const char c = property.back();
+    if (k < 0 || c < 'x' || c > 'z') return out;
+    out.kind = ScalarPropertyKind::IkTargetPosition;
+    out.ikTarget = k;
+    out.component = c - 'x';
+    return out;
+  }
   static const std::string weights = "weights/";
   static const std::string deformers = "deformers/";
   if (property.compare(0, weights.size(), weights) == 0) {
@@ -29,6 +57,10 @@ ScalarProperty parseScalarProperty(const std::string& property) {
 }
 
 std::string morphWeightProperty(int target) { return "weights/" + std::to_string(target); }
+
+std::string ikTargetPositionProperty(int target, int component) {
+  return "ik/targets/" + std::to_string(target) + "/position." + static_cast<char>('x' + component);
+}
 
 std::string deformerParameterProperty(const std::string& deformer, const std::string& parameter) {
   return "deformers/" + deformer + "/" + parameter;

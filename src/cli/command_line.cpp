@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "anim/channel_modifiers.h"
+#include "evaluation/scene_evaluation_job.h"
 #include "scene/default_character_scene.h"
 #include "io/json_number.h"
 #include "io/scene_files.h"
@@ -48,20 +49,19 @@ std::string clipIndexError(const Scene& scene, int clip) {
          std::to_string(clips) + " clip" + (clips == 1 ? "" : "s") + ")";
 }
 
+double contractTime(const Scene& scene, int clip, double time) {
+  if (clip < 0 || clip >= static_cast<int>(scene.clips.size())) return time;
+  const Clip& c = scene.clips[clip];
+  // The contract clamps --time to the clip: keys clamp by themselves, but noise and
+  // cycles go on past the last key, so a modified clip is evaluated at the clamped time.
+  if (!hasChannelModifiers(c)) return time;
+  float first = 0.0f;
+  for (const Channel& ch : c.channels) first = std::min(first, ch.startTime());
+  return std::clamp(time, double(first), double(std::max(first, c.duration())));
+}
+
 Pose sampledPose(const Scene& scene, int clip, double time) {
-  Pose pose = Pose::rest(scene.skeleton);
-  if (clip >= 0 && clip < static_cast<int>(scene.clips.size())) {
-    const Clip& c = scene.clips[clip];
-    // The contract clamps --time to the clip: keys clamp by themselves, but noise and
-    // cycles go on past the last key, so a modified clip is sampled at the clamped time.
-    if (hasChannelModifiers(c)) {
-      float first = 0.0f;
-      for (const Channel& ch : c.channels) first = std::min(first, ch.startTime());
-      time = std::clamp(time, double(first), double(std::max(first, c.duration())));
-    }
-    sampleClip(c, static_cast<float>(time), pose);
-  }
-  return pose;
+  return evaluatedPose(scene, clip, contractTime(scene, clip, time));  // every stage (evaluation/)
 }
 
 nlohmann::ordered_json jointsJson(const Skeleton& skeleton, const std::vector<glm::mat4>& world) {

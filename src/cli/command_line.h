@@ -42,7 +42,11 @@ InputLimits inputLimits(bool allowOutsidePaths);
 // clips evaluates to its rest pose); otherwise the one-line error.
 std::string clipIndexError(const Scene& scene, int clip);
 
-// The local pose at `time` in clip `clip`, or the rest pose when the file has no clips.
+// The time the subcommands evaluate for --time T: T, clamped to the clip's keys when the clip
+// has channel modifiers (they act past the last key; the contract clamps).
+double contractTime(const Scene& scene, int clip, double time);
+// The local pose at `time` in clip `clip` through the evaluation pipeline (every stage:
+// evaluation/scene_evaluation_job.h), or the rest pose when the file has no clips.
 Pose sampledPose(const Scene& scene, int clip, double time);
 
 // The "joints" array of the contract: name, parent, world (16 numbers, column-major).

@@ -16,6 +16,7 @@
 #include "render/particle_overlay.h"
 #include "render/skeleton_view.h"
 #include "evaluation/scene_deformation.h"
+#include "evaluation/scene_evaluation_job.h"
 
 namespace kinema::cli {
 
@@ -58,8 +59,20 @@ struct Sample {
   double time = 0.0;
 };
 
-std::vector<glm::mat4> posedWorld(const Scene& scene, int clip, double time) {
-  return computeWorld(scene.skeleton, sampledPose(scene, clip, time));
+// The evaluation pipeline's model-space pose; `context` carries the dynamic chains from one
+// frame of a sequence to the next.
+std::vector<glm::mat4> posedWorld(const Scene& scene, int clip, double time, EvaluationContext& context) {
+  Pose pose;
+  std::vector<glm::mat4> world;
+  SceneEvaluationJob job;
+  job.scene = &scene;
+  job.clip = clip;
+  job.time = contractTime(scene, clip, time);
+  job.context = &context;
+  job.pose = &pose;
+  job.world = &world;
+  job.run();
+  return world;
 }
 
 // The CPU deformation, run only to name the mesh and joint when the GPU's vertices are
@@ -231,8 +244,9 @@ int runRenderOn(const RenderOptions& o, const Scene* given) {
   std::vector<std::vector<ParticleState>> particles(samples.size());
   if (!scene.simulation.particles.empty()) {
     ParticlePlayback playback;
+    EvaluationContext context;
     const auto jointsAt = [&](long long f, std::vector<glm::mat4>& world) {
-      world = posedWorld(scene, o.clip, static_cast<double>(f) * frameTime);
+      world = posedWorld(scene, o.clip, static_cast<double>(f) * frameTime, context);
     };
     for (size_t k = 0; k < samples.size(); ++k) {
       const double shown = sequence ? static_cast<double>(samples[k].frame) : std::round(samples[k].time / frameTime);
@@ -245,8 +259,9 @@ int runRenderOn(const RenderOptions& o, const Scene* given) {
   const HeadlessBackend backend = o.backend == "osmesa" ? HeadlessBackend::OsMesa : HeadlessBackend::Egl;
   // Poses first (a non-finite one is the file's fault, whatever the GL), then the GL.
   std::vector<std::vector<glm::mat4>> worlds;
+  EvaluationContext context;
   for (const Sample& s : samples) {
-    worlds.push_back(posedWorld(scene, o.clip, s.time));
+    worlds.push_back(posedWorld(scene, o.clip, s.time, context));
     if (const std::string bad = nonFiniteWorldError(scene, worlds.back(), s.time); !bad.empty()) return badInput(bad);
   }
   RenderSizeLimit largest;

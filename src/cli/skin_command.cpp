@@ -8,7 +8,7 @@
 #include "cli/finite_results.h"
 #include "core/forward_kinematics.h"
 #include "io/json_number.h"
-#include "evaluation/scene_deformation.h"
+#include "evaluation/scene_evaluation_job.h"
 #include "io/scene_files.h"
 
 namespace kinema::cli {
@@ -40,20 +40,22 @@ int runSkin(const SkinOptions& o) {
     for (MeshInstance& inst : scene.meshInstances)
       inst.skinning = o.method == "dq" ? SkinningMethod::DualQuaternion : SkinningMethod::LinearBlend;
   const double time = o.frameOption->count() ? static_cast<double>(o.frame) * scene.frameGrid(o.clip).secondsPerFrame : o.time;
-  const std::vector<glm::mat4> world = computeWorld(scene.skeleton, sampledPose(scene, o.clip, time));
-  if (const std::string bad = nonFiniteWorldError(scene, world, time); !bad.empty()) return badInput(bad);
-  const std::vector<std::vector<float>> weights = sampleMorphWeights(scene, o.clip, time);
+  // Every stage of the evaluation (evaluation/scene_evaluation_job.h), meshes included.
+  Pose pose;
+  std::vector<glm::mat4> world;
   std::vector<DeformedPrimitive> deformed;
-  SceneDeformationJob job;
+  SceneEvaluationJob job;
   job.scene = &scene;
+  job.clip = o.clip;
+  job.time = contractTime(scene, o.clip, time);
+  job.pose = &pose;
   job.world = &world;
-  job.morphWeights = &weights;
-  const std::vector<DeformerStack> stacks = sampleDeformerStacks(scene, o.clip, time);
-  job.deformers = &stacks;
+  job.meshes = &deformed;
   job.skinnedOnly = true;
-  job.out = &deformed;
   if (const std::string bad = job.validate(); !bad.empty()) return badInput(scene.source + ": " + bad);
-  if (!job.run()) return badInput(scene.source + ": the meshes could not be deformed");
+  const bool ran = job.run();
+  if (const std::string bad = nonFiniteWorldError(scene, world, time); !bad.empty()) return badInput(bad);
+  if (!ran) return badInput(scene.source + ": the meshes could not be deformed");
   if (const std::string bad = nonFiniteVerticesError(scene, deformed, time); !bad.empty()) return badInput(bad);
 
   if (o.json) {

@@ -7,6 +7,7 @@
 
 #include "anim/sampling.h"
 #include "io/atomic_write.h"
+#include "evaluation/scene_evaluation_job.h"
 
 namespace kinema {
 
@@ -224,10 +225,26 @@ Result<std::string> bvhText(const Skeleton& sk, const Clip* clip, const BvhWrite
   };
   Pose pose = Pose::rest(sk);
   SamplingCache cache;
+  EvaluationContext context;  // the scene's dynamics step forward through the frames once
+  const bool evaluated = options.scene && &options.scene->skeleton == &sk && clip &&
+                         options.clipIndex >= 0 && options.clipIndex < static_cast<int>(options.scene->clips.size()) &&
+                         &options.scene->clips[options.clipIndex] == clip;
   std::vector<glm::vec3> previous(n, glm::vec3(0.0f));
   for (long long f = 0; f < frames; ++f) {
     pose.local = sk.rest;
-    if (clip) sampleClip(*clip, timeOfFrame(f), pose, cache);
+    if (evaluated) {
+      // Every stage of the scene's evaluation (evaluation/scene_evaluation_job.h): BVH holds
+      // only frames, so IK targets and dynamic chains are baked into them too.
+      SceneEvaluationJob job;
+      job.scene = options.scene;
+      job.clip = options.clipIndex;
+      job.time = timeOfFrame(f);
+      job.context = &context;
+      job.pose = &pose;
+      job.run();
+    } else if (clip) {
+      sampleClip(*clip, timeOfFrame(f), pose, cache);
+    }
     bool first = true;
     for (int j : columnsOf) {
       const Transform& t = pose.local[j];

@@ -7,6 +7,7 @@
 #include "core/result.h"
 #include "core/rotation.h"
 #include "core/skeleton.h"
+#include "scene/scene.h"
 
 namespace kinema {
 
@@ -18,6 +19,10 @@ struct BvhWriteOptions {
   // The document's frame rate (Scene::frameRate): a clip's rate when it has none of its own
   // and its keys lie on no grid.
   double documentFrameRate = kDefaultFrameRate;
+  // The scene `clip` is clips[clipIndex] of (optional): each frame is then evaluated through
+  // the scene's pipeline (modifiers, keyed IK targets, dynamic chains), else `clip` is sampled.
+  const Scene* scene = nullptr;
+  int clipIndex = -1;
   // Called every few hundred frames with (frames written, total), for progress lines.
   std::function<void(long long, long long)> progress;
 };

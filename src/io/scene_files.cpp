@@ -84,6 +84,8 @@ std::string saveScene(const std::string& path, const Scene& scene, const SceneSa
     bvh.frameRate = options.frameRate;
     bvh.documentFrameRate = scene.frameRate;
     bvh.progress = options.progress;
+    bvh.scene = &scene;
+    bvh.clipIndex = clip;
     error = saveBvh(path, scene.skeleton, scene.clips.empty() ? nullptr : &scene.clips[clip], bvh, &lines);
   } else if (ext == ".gltf" || ext == ".glb") {
     GltfWriteOptions gltf;

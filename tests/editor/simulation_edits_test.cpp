@@ -87,9 +87,17 @@ TEST(SimulationEdits, LiveSpringsShowTheSamePoseHoweverTheFrameIsReached) {
   ASSERT_EQ(addSpringChainEdit(doc, chain), "");
   const Clip& clip = doc.scene().clips[0];
   auto poseAt = [&](LiveSprings& live, long long frame) {
-    Pose pose = Pose::rest(s);
-    sampleClip(clip, ownFrameGrid(clip).frameToTime(frame), pose);
-    applyLiveSprings(live, doc, 0, 0, frame, pose);
+    Pose pose;
+    SceneEvaluationJob job;  // as the timeline evaluates (timeline.cpp, poseAtPlayhead)
+    job.scene = &doc.scene();
+    job.clip = 0;
+    job.time = doc.scene().frameGrid(0).frameToTime(frame);
+    job.stages.dynamics = live.enabled;
+    job.dynamicsStartFrame = 0;
+    job.revision = doc.changeCount();
+    job.context = &live.context;
+    job.pose = &pose;
+    EXPECT_TRUE(job.run());
     return pose;
   };
   LiveSprings stepped, jumped, back;
@@ -113,8 +121,8 @@ TEST(SimulationEdits, LiveSpringsShowTheSamePoseHoweverTheFrameIsReached) {
   Pose still = Pose::rest(s);
   sampleClip(clip, ownFrameGrid(clip).frameToTime(30), still);
   EXPECT_LT(std::abs(glm::dot(still.local[chain.joints[0]].rotation, viaJump.local[chain.joints[0]].rotation)), 0.9999f);
-  EXPECT_EQ(stepped.framesSimulated, 31);
-  EXPECT_EQ(back.framesSimulated, 41 + 31);
+  EXPECT_EQ(stepped.context.dynamics.framesSimulated, 31);
+  EXPECT_EQ(back.context.dynamics.framesSimulated, 41 + 31);
   // Off: the clip's pose alone.
   LiveSprings off;
   off.enabled = false;

@@ -122,16 +122,22 @@ const std::vector<glm::mat4>& Document::worldTransforms() const {
   return world_;
 }
 
+IkRig Document::savedRig() const {
+  IkRig rig = scene_.ik;
+  // The chain length is saved both as the root it resolves to (for other readers) and as
+  // itself, with the solver, pinned and active flags.
+  for (const PoseIkTarget& t : targets_) {
+    rig.targets.push_back(t.resolved(scene_.skeleton));
+    rig.targetOptions.push_back({t.solver, t.chainLength, t.pinned, t.active});
+  }
+  return rig;
+}
+
 Scene Document::sceneForSaving() const {
   Scene s = scene_;
   s.pose = pose_;
   if (playheadTime_ || activeClip_ != 0) s.playhead = playhead();
-  // The chain length is saved both as the root it resolves to (for other readers) and as
-  // itself, with the solver, pinned and active flags.
-  for (const PoseIkTarget& t : targets_) {
-    s.ik.targets.push_back(t.resolved(s.skeleton));
-    s.ik.targetOptions.push_back({t.solver, t.chainLength, t.pinned, t.active});
-  }
+  s.ik = savedRig();
   // glTF scenes report and export the file's node names: a renamed joint renames its node.
   for (int j = 0; j < s.skeleton.size() && j < static_cast<int>(s.nodeOfJoint.size()); ++j) {
     const int node = s.nodeOfJoint[j];

@@ -68,6 +68,9 @@ class Document {
   // The scene as it is saved: skeleton names (and the glTF node names of renamed
   // joints), pose, limits and targets written back.
   Scene sceneForSaving() const;
+  // The scene's IK data as a file keeps it: the limits and the targets with their options
+  // (what the evaluation's IK stage solves; scene().ik holds the limits alone).
+  IkRig savedRig() const;
 
   // The file this document was opened from or last saved to ("" for a new one).
   const std::string& path() const { return path_; }

@@ -6,6 +6,7 @@
 #include "anim/sampling.h"
 #include "core/forward_kinematics.h"
 #include "editor/model/onion_skin.h"
+#include "evaluation/scene_evaluation_job.h"
 
 namespace kinema {
 
@@ -23,7 +24,8 @@ void motionPathRange(const MotionPathSettings& s, const Clip& clip, const FrameG
   last = std::clamp(last, 0LL, count - 1);
 }
 
-MotionPath computeMotionPath(const Scene& scene, int clip, int joint, long long first, long long last) {
+MotionPath computeMotionPath(const Scene& scene, int clip, int joint, long long first, long long last,
+                             const IkRig* rig) {
   MotionPath path;
   if (clip < 0 || clip >= static_cast<int>(scene.clips.size()) || joint < 0 || joint >= scene.skeleton.size() ||
       last < first)
@@ -37,14 +39,20 @@ MotionPath computeMotionPath(const Scene& scene, int clip, int joint, long long 
     if (ch.joint == joint) keyTimes.insert(keyTimes.end(), ch.times.begin(), ch.times.end());
   std::sort(keyTimes.begin(), keyTimes.end());
   path.joint = joint;
-  SamplingCache cache;
-  Pose pose = Pose::rest(scene.skeleton);
+  EvaluationContext context;  // the dynamics stage steps forward through the frames once
+  Pose pose;
   std::vector<glm::mat4> world;
   for (long long f = first; f <= last; ++f) {
     const double t = grid.frameToTime(f);
-    pose = Pose::rest(scene.skeleton);
-    sampleClip(c, static_cast<float>(t), pose, cache);
-    computeWorld(scene.skeleton, pose, world);
+    SceneEvaluationJob job;  // every stage, over the rest pose (evaluation/scene_evaluation_job.h)
+    job.scene = &scene;
+    job.clip = clip;
+    job.time = t;
+    job.rig = rig;
+    job.context = &context;
+    job.pose = &pose;
+    job.world = &world;
+    job.run();
     path.frames.push_back(f);
     path.points.push_back(glm::vec3(world[joint][3]));
     const auto k = std::lower_bound(keyTimes.begin(), keyTimes.end(), static_cast<float>(t - 0.5 * dt));

@@ -29,6 +29,8 @@ void motionPathRange(const MotionPathSettings& settings, const Clip& clip, const
 // Samples the clip (over the rest pose, as playback does) at every frame from `first` to
 // `last` and records `joint`'s world position by forward kinematics. Empty when the clip or
 // the joint does not exist or the range is empty.
-MotionPath computeMotionPath(const Scene& scene, int clip, int joint, long long first, long long last);
+// Every stage of the evaluation at each frame; `rig` (null: scene.ik) holds the IK targets.
+MotionPath computeMotionPath(const Scene& scene, int clip, int joint, long long first, long long last,
+                             const IkRig* rig = nullptr);
 
 }  // namespace kinema

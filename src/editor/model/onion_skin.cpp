@@ -33,16 +33,31 @@ bool ghostsShowBodies(const OnionSkinSettings& s, const Scene& scene) {
   return s.bodies && !scene.meshInstances.empty();
 }
 
-std::vector<std::vector<glm::mat4>> ghostPoses(const Scene& scene, int clip, const std::vector<GhostFrame>& ghosts) {
+std::vector<std::vector<glm::mat4>> ghostPoses(const Scene& scene, int clip, const std::vector<GhostFrame>& ghosts,
+                                               const EvaluationStages& stages, long long dynamicsStartFrame,
+                                               long long revision, const IkRig* rig) {
   std::vector<std::vector<glm::mat4>> out;
   if (clip < 0 || clip >= static_cast<int>(scene.clips.size())) return out;
-  const Clip& c = scene.clips[clip];
-  SamplingCache cache;
   out.resize(ghosts.size());
-  for (size_t g = 0; g < ghosts.size(); ++g) {
-    Pose pose = Pose::rest(scene.skeleton);
-    sampleClip(c, scene.frameGrid(clip).frameToTime(ghosts[g].frame), pose, cache);
-    computeWorld(scene.skeleton, pose, out[g]);
+  // Earliest frame first: the dynamics stage then steps forward through all of them once.
+  std::vector<size_t> order(ghosts.size());
+  for (size_t g = 0; g < order.size(); ++g) order[g] = g;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return ghosts[a].frame < ghosts[b].frame; });
+  EvaluationContext context;
+  Pose pose;
+  for (size_t g : order) {
+    SceneEvaluationJob job;
+    job.scene = &scene;
+    job.clip = clip;
+    job.time = scene.frameGrid(clip).frameToTime(ghosts[g].frame);
+    job.stages = stages;
+    job.rig = rig;
+    job.dynamicsStartFrame = dynamicsStartFrame;
+    job.revision = revision;
+    job.context = &context;
+    job.pose = &pose;
+    job.world = &out[g];
+    job.run();
   }
   return out;
 }

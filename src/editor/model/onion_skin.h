@@ -3,6 +3,7 @@
 
 #include "core/math.h"
 #include "scene/scene.h"
+#include "evaluation/scene_evaluation_job.h"
 
 namespace kinema {
 
@@ -39,8 +40,13 @@ std::vector<GhostFrame> ghostFrames(const OnionSkinSettings& settings, long long
 // bones: settings.bodies and the scene has a mesh instance to draw.
 bool ghostsShowBodies(const OnionSkinSettings& settings, const Scene& scene);
 
-// World transforms of every joint at each ghost's frame: the clip sampled over the rest
-// pose (what playback shows), then forward kinematics.
-std::vector<std::vector<glm::mat4>> ghostPoses(const Scene& scene, int clip, const std::vector<GhostFrame>& ghosts);
+// World transforms of every joint at each ghost's frame: the evaluation pipeline over the rest
+// pose (what playback shows; evaluation/scene_evaluation_job.h) with `stages` and the dynamics'
+// start frame (LLONG_MIN: the clip's range start), scene revision and IK rig (null: scene.ik)
+// as the timeline has them.
+std::vector<std::vector<glm::mat4>> ghostPoses(const Scene& scene, int clip, const std::vector<GhostFrame>& ghosts,
+                                               const EvaluationStages& stages = {},
+                                               long long dynamicsStartFrame = LLONG_MIN, long long revision = 0,
+                                               const IkRig* rig = nullptr);
 
 }  // namespace kinema

@@ -267,48 +267,4 @@ std::string ragdollFromFrameEdit(Document& doc, int clip, int root, long long fr
   return error;
 }
 
-void applyLiveSprings(LiveSprings& live, const Document& doc, int clipIndex, long long startFrame, long long frame, Pose& pose) {
-  const Scene& scene = doc.scene();
-  const std::vector<SpringBoneChain>& chains = scene.simulation.springChains;
-  if (!live.enabled || chains.empty() || clipIndex < 0 || clipIndex >= static_cast<int>(scene.clips.size()) ||
-      pose.size() != scene.skeleton.size()) {
-    live.frame = LLONG_MIN;
-    return;
-  }
-  const Clip& clip = scene.clips[clipIndex];
-  const FrameGrid grid = scene.frameGrid(clipIndex);
-  frame = std::max(frame, startFrame);
-  // Another clip, an edit, another start or a step backwards: simulate again from the start.
-  if (live.clip != clipIndex || live.changeCount != doc.changeCount() || live.startFrame != startFrame || frame < live.frame) {
-    live.state.reset();
-    live.clip = clipIndex;
-    live.changeCount = doc.changeCount();
-    live.startFrame = startFrame;
-    live.frame = startFrame - 1;
-    live.joints.clear();
-    for (const SpringBoneChain& c : chains) live.joints.insert(live.joints.end(), c.joints.begin(), c.joints.end());
-    live.rotations.assign(live.joints.size(), glm::quat(1, 0, 0, 0));
-  }
-  if (frame > live.frame) {
-    SpringBoneJob job;
-    Pose step = Pose::rest(scene.skeleton);
-    job.skeleton = &scene.skeleton;
-    job.chains = &chains;
-    job.dt = static_cast<float>(grid.secondsPerFrame);
-    job.pose = &step;
-    job.state = &live.state;
-    if (!job.validate().empty()) return;
-    SamplingCache cache;
-    for (long long f = live.frame + 1; f <= frame; ++f) {
-      step = Pose::rest(scene.skeleton);
-      sampleClip(clip, grid.frameToTime(f), step, cache);
-      job.run();
-      ++live.framesSimulated;
-    }
-    for (size_t i = 0; i < live.joints.size(); ++i) live.rotations[i] = step.local[live.joints[i]].rotation;
-    live.frame = frame;
-  }
-  for (size_t i = 0; i < live.joints.size(); ++i) pose.local[live.joints[i]].rotation = live.rotations[i];
-}
-
 }  // namespace kinema

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "evaluation/scene_evaluation_job.h"
 #include "sim/simulation_bake.h"
 
 namespace kinema {
@@ -55,21 +56,12 @@ std::string bakeSimulationEdit(Document& doc, int clip, long long first, long lo
 std::string ragdollFromFrameEdit(Document& doc, int clip, int root, long long frame, long long last,
                                  SimulationBake* result = nullptr);
 
-// Spring bones played live: the chains simulated frame by frame on the clip's grid from
-// the playback range's start, so a frame always shows the same pose at a given frame rate;
-// going backwards simulates again from the start. Owned by the editor state.
+// Spring bones played live: the evaluation's dynamics stage (evaluation/dynamics_stage.h),
+// whose state this context carries from frame to frame; off, the clip plays without them.
+// Owned by the editor state.
 struct LiveSprings {
   bool enabled = true;
-  SpringBoneState state;
-  int clip = -1;
-  long long changeCount = -1, startFrame = LLONG_MIN, frame = LLONG_MIN;
-  std::vector<int> joints;          // the chains' joints
-  std::vector<glm::quat> rotations; // their simulated local rotations at `frame`
-  long long framesSimulated = 0;    // total, for tests and the state dump
+  EvaluationContext context;
 };
-
-// Poses the document's chains at whole frame `frame` of clip `clip` into `pose` (which holds
-// the clip's pose there); nothing without chains or when live springs are off.
-void applyLiveSprings(LiveSprings& live, const Document& doc, int clip, long long startFrame, long long frame, Pose& pose);
 
 }  // namespace kinema

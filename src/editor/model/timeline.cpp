@@ -6,6 +6,7 @@
 
 #include "editor/model/editor_state.h"
 #include "editor/model/keying.h"
+#include "evaluation/scene_evaluation_job.h"
 
 namespace kinema {
 
@@ -29,14 +30,28 @@ const PlaybackClip& playbackClip(EditorState& s, const Clip& clip, int joints) {
 void poseAtPlayhead(EditorState& s) {
   const Clip* clip = editedClip(s);
   if (!clip) return;
-  Pose pose = s.doc.pose();
-  // Playing: the sampling form, built once (same values to 1e-6); a single frame (scrub,
-  // step, pause, edit) samples the clip directly rather than build it.
-  if (!s.playing || !samplePlayback(playbackClip(s, *clip, pose.size()), static_cast<float>(s.time), pose,
-                                    s.playbackSampler.context))
-    sampleClip(*clip, static_cast<float>(s.time), pose);
-  // Dynamic chains swing behind the clip, simulated frame by frame from the range's start.
-  applyLiveSprings(s.liveSprings, s.doc, s.clip, rangeStartFrame(s), currentFrame(s), pose);
+  // The evaluation pipeline over the working pose (joints the clip does not animate keep it).
+  // Playing: stage 1 in its sampling form, built once (same values to 1e-6); a single frame
+  // (scrub, step, pause, edit) samples the clip directly rather than build it. Dynamic
+  // chains swing behind the clip, simulated frame by frame from the range's start.
+  Pose pose;
+  SceneEvaluationJob job;
+  job.scene = &s.doc.scene();
+  job.clip = s.clip;
+  job.time = s.time;
+  job.base = &s.doc.pose();
+  const IkRig rig = s.doc.savedRig();  // the document keeps its targets apart from scene().ik
+  job.rig = &rig;
+  job.stages.dynamics = s.liveSprings.enabled;
+  job.dynamicsStartFrame = rangeStartFrame(s);
+  job.revision = s.doc.changeCount();
+  job.context = &s.liveSprings.context;
+  if (s.playing) {
+    job.playback = &playbackClip(s, *clip, s.doc.pose().size());
+    job.playbackContext = &s.playbackSampler.context;
+  }
+  job.pose = &pose;
+  if (!job.run()) return;
   s.doc.setAnimatedPose(pose);
   s.animatedPoseRevision = s.doc.poseRevision();
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "editor/model/motion_control.h"
+#include "editor/model/timeline.h"
 #include "evaluation/scene_deformation.h"
 
 namespace kinema {
@@ -66,7 +67,11 @@ void buildAnimationDisplay(const EditorState& state, const std::vector<char>& sh
   const long long current = grid.nearestFrame(state.time);
   if (state.onionSkin.enabled) {
     display.ghosts = ghostFrames(state.onionSkin, current, grid.nearestFrame(clip.duration()) + 1);
-    display.ghostPoses = ghostPoses(scene, state.clip, display.ghosts);
+    EvaluationStages stages;  // as the timeline evaluates the current frame (timeline.cpp)
+    stages.dynamics = state.liveSprings.enabled;
+    const IkRig rig = state.doc.savedRig();
+    display.ghostPoses =
+        ghostPoses(scene, state.clip, display.ghosts, stages, rangeStartFrame(state), state.doc.changeCount(), &rig);
     display.ghostBodies = ghostsShowBodies(state.onionSkin, scene);
     if (display.ghostBodies) {
       for (const GhostFrame& g : display.ghosts)
@@ -82,7 +87,8 @@ void buildAnimationDisplay(const EditorState& state, const std::vector<char>& sh
     const AnimationDisplay::PathKey key{state.doc.changeCount(), state.clip, joint, first, last,
                                         clip.channels.size(), clip.duration()};
     if (!(key == display.pathKey)) {
-      display.path = computeMotionPath(scene, state.clip, joint, first, last);
+      const IkRig rig = state.doc.savedRig();
+      display.path = computeMotionPath(scene, state.clip, joint, first, last, &rig);
       display.pathKey = key;
     }
     addMotionPathOverlay(display.path, state.motionPath.color, overlay);

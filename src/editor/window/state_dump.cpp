@@ -239,7 +239,7 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
     for (const RagdollSettings& r : doc.scene().simulation.ragdolls)
       ragdolls.push_back({{"name", r.name}, {"root", jointName(s, r.root)}, {"start_frame", r.startFrame}});
     json sim = {{"spring_chains", chains}, {"ragdolls", ragdolls}, {"live", s.liveSprings.enabled},
-                {"live_frames_simulated", s.liveSprings.framesSimulated}, {"window", s.simulationWindowOpen},
+                {"live_frames_simulated", s.liveSprings.context.dynamics.framesSimulated}, {"window", s.simulationWindowOpen},
                 {"stiff_springs_window", s.stiffSpringsWindowOpen}};
     if (s.lastBake) {
       json parts = json::array();
