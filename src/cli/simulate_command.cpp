@@ -77,6 +77,7 @@ CLI::App* addSimulateCommand(CLI::App& app, SimulateOptions& o) {
 std::string saveSimulatedScene(const std::string& out, const Scene& scene, int clip, std::vector<std::string>& report) {
   SceneSaveOptions options;
   options.bvhClip = clip;
+  options.bvhStages.dynamics = false;  // the clip holds the chains' bake: not simulated again
   return saveScene(out, scene, options, &report);
 }
 

@@ -239,6 +239,7 @@ Result<std::string> bvhText(const Skeleton& sk, const Clip* clip, const BvhWrite
       job.scene = options.scene;
       job.clip = options.clipIndex;
       job.time = timeOfFrame(f);
+      job.stages = options.stages;
       job.context = &context;
       job.pose = &pose;
       job.run();

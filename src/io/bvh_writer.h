@@ -7,6 +7,7 @@
 #include "core/result.h"
 #include "core/rotation.h"
 #include "core/skeleton.h"
+#include "evaluation/scene_evaluation_job.h"
 #include "scene/scene.h"
 
 namespace kinema {
@@ -23,6 +24,7 @@ struct BvhWriteOptions {
   // the scene's pipeline (modifiers, keyed IK targets, dynamic chains), else `clip` is sampled.
   const Scene* scene = nullptr;
   int clipIndex = -1;
+  EvaluationStages stages;  // the stages each frame goes through
   // Called every few hundred frames with (frames written, total), for progress lines.
   std::function<void(long long, long long)> progress;
 };

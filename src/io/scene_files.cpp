@@ -86,6 +86,7 @@ std::string saveScene(const std::string& path, const Scene& scene, const SceneSa
     bvh.progress = options.progress;
     bvh.scene = &scene;
     bvh.clipIndex = clip;
+    bvh.stages = options.bvhStages;
     error = saveBvh(path, scene.skeleton, scene.clips.empty() ? nullptr : &scene.clips[clip], bvh, &lines);
   } else if (ext == ".gltf" || ext == ".glb") {
     GltfWriteOptions gltf;

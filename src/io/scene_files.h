@@ -6,6 +6,7 @@
 
 #include "core/result.h"
 #include "core/rotation.h"
+#include "evaluation/scene_evaluation_job.h"
 #include "io/input_limits.h"
 #include "io/up_axis.h"
 #include "scene/scene.h"
@@ -28,6 +29,10 @@ struct SceneSaveOptions {
   EulerOrder bvhRotationOrder = EulerOrder::ZXY;
   // The clip a BVH file holds (BVH holds one motion); an index that names no clip: clip 0.
   int bvhClip = 0;
+  // BVH: the evaluation stages each frame goes through (BVH holds only frames, so the scene's
+  // keyed IK targets and live dynamic chains are baked into them); a clip that already holds
+  // its simulation's bake turns dynamics off.
+  EvaluationStages bvhStages;
   // BVH: called every few hundred frames with (frames written, total).
   std::function<void(long long, long long)> progress;
 };
