@@ -53,7 +53,7 @@ TEST(EditLabels, EachStepNamesWhatItDidAndToWhat) {
                                      "Clear rotation of 3 joints",
                                      "Insert keys on LowerArm.L and Hand.L at frame 12",
                                      "Set frame range to 1-48",
-                                     "Set frame rate to 30 fps",
+                                     "Set document frame rate to 30 fps",  // the Action has no rate of its own
                                      "Move 2 keys",
                                      "Delete 2 keys",
                                  }));

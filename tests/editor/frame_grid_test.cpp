@@ -119,18 +119,21 @@ TEST(FrameGrid, SettingTheRateInTheTimelineIsSavedAndEveryViewFollows) {
   EditorState s;
   s.doc = Document(gltfLikeScene());
   resetTimeline(s);
-  ASSERT_EQ(setFrameRate(s, 30.0), "");  // the timeline's fps field
+  ASSERT_TRUE(timelineRateIsTheDocuments(s));  // the clip has no rate of its own
+  ASSERT_EQ(setFrameRate(s, 30.0), "");  // the timeline's fps field: the document's rate
   const Clip& clip = s.doc.scene().clips[0];
-  EXPECT_DOUBLE_EQ(clip.frameTime, 1.0 / 30.0);
+  EXPECT_DOUBLE_EQ(clip.frameTime, 0.0);
+  EXPECT_DOUBLE_EQ(s.doc.scene().frameRate, 30.0);
+  EXPECT_EQ(s.doc.historyLabels().back(), "Set document frame rate to 30 fps");
   EXPECT_EQ(frameAtTime(s, 1.3), 39);
-  EXPECT_FLOAT_EQ(snapToFrame(frameGridOf(clip, kDefaultFrameRate), 1.3f), static_cast<float>(39.0 / 30.0));
-  EXPECT_NEAR(frameGridOf(clip, kDefaultFrameRate).timeToFrame(1.3f), 39.0, 1e-4);
-  // Saved with the clip (.kinema frame_time) and read back.
+  EXPECT_FLOAT_EQ(snapToFrame(s.doc.scene().frameGrid(0), 1.3f), static_cast<float>(39.0 / 30.0));
+  EXPECT_NEAR(s.doc.scene().frameGrid(0).timeToFrame(1.3f), 39.0, 1e-4);
+  // Saved with the document (.kinema frame_rate) and read back.
   const std::string dir = test::makeTempDir(), path = dir + "/rate.kinema";
   ASSERT_EQ(saveDocumentAs(s.doc, path), "");
   Result<Document> back = openDocument(path);
   ASSERT_TRUE(back.ok()) << back.error();
-  EXPECT_DOUBLE_EQ(back.value().scene().clips[0].frameTime, 1.0 / 30.0);
+  EXPECT_DOUBLE_EQ(back.value().scene().frameRate, 30.0);  // .kinema frame_rate
   test::runCommand("rm -rf '" + dir + "'");
 }
 
@@ -210,6 +213,22 @@ TEST(FrameGrid, TheDocumentsRateCountsClipsWithoutOne) {
     return std::string();
   }), "");
   EXPECT_EQ(s.doc.scene().frameRate, 30.0);
+}
+
+// A clip with its own rate (BVH's, say) keeps it its own: the fps field sets it, not the document's.
+TEST(FrameGrid, TheFpsFieldSetsAClipsOwnRateWhenItHasOne) {
+  Scene scene = gltfLikeScene();
+  scene.clips[0].frameTime = 1.0 / 120.0;
+  EditorState s;
+  s.doc = Document(scene);
+  resetTimeline(s);
+  ASSERT_FALSE(timelineRateIsTheDocuments(s));
+  goToFrame(s, 240);
+  ASSERT_EQ(setFrameRate(s, 60.0), "");
+  EXPECT_DOUBLE_EQ(s.doc.scene().clips[0].frameTime, 1.0 / 60.0);
+  EXPECT_EQ(s.doc.scene().frameRate, kDefaultFrameRate);
+  EXPECT_EQ(currentFrame(s), 240);  // the playhead keeps its frame number
+  EXPECT_EQ(s.doc.historyLabels().back(), "Set frame rate to 60 fps");
 }
 
 }  // namespace

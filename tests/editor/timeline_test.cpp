@@ -77,7 +77,7 @@ TEST(Timeline, PlaybackLoopsOrStopsAtTheRangeEnd) {
   EXPECT_DOUBLE_EQ(s.time, timeOfFrame(s, currentFrame(s)));
 }
 
-TEST(Timeline, RangeAndRateLiveInTheClipAndAreUndoable) {
+TEST(Timeline, RangeLivesInTheClipTheRateInTheDocumentAndBothAreUndoable) {
   EditorState s = newState();
   ASSERT_EQ(setFrameRange(s, 5, 40), "");
   ASSERT_EQ(s.doc.scene().clips.size(), 1u);  // the range needs a clip: "Action"
@@ -94,7 +94,7 @@ TEST(Timeline, RangeAndRateLiveInTheClipAndAreUndoable) {
   EXPECT_EQ(rangeStartFrame(s), 5);  // the range keeps its frame numbers
   EXPECT_EQ(rangeEndFrame(s), 40);
   EXPECT_NE(setFrameRate(s, 0.0), "");
-  // Saved in .kinema with the clip.
+  // Saved in .kinema: the range with the clip, the rate as the document's (the Action has none).
   const std::string path = test::makeTempDir() + "/range.kinema";
   ASSERT_EQ(saveDocumentAs(s.doc, path), "");
   Result<Document> back = openDocument(path);
@@ -102,7 +102,8 @@ TEST(Timeline, RangeAndRateLiveInTheClipAndAreUndoable) {
   ASSERT_EQ(back.value().scene().clips.size(), 1u);
   EXPECT_FLOAT_EQ(back.value().scene().clips[0].rangeStart, 5.0f / 30);
   EXPECT_FLOAT_EQ(back.value().scene().clips[0].rangeEnd, 40.0f / 30);
-  EXPECT_NEAR(back.value().scene().clips[0].frameTime, 1.0 / 30, 1e-9);
+  EXPECT_EQ(back.value().scene().clips[0].frameTime, 0.0);
+  EXPECT_EQ(back.value().scene().frameRate, 30.0);
   ASSERT_TRUE(s.doc.undo());
   EXPECT_DOUBLE_EQ(timelineFps(s), 24.0);
   ASSERT_TRUE(s.doc.undo());

@@ -154,20 +154,36 @@ std::string setFrameRange(EditorState& s, long long start, long long end) {
   return error;
 }
 
+bool timelineRateIsTheDocuments(const EditorState& s) {
+  return !s.hasMotion() || !hasOwnFrameRate(s.doc.scene().clips[s.clip]);
+}
+
 std::string setFrameRate(EditorState& s, double fps) {
-  if (!std::isfinite(fps) || fps < 1.0 || fps > 1000.0) return "the frame rate must be 1 to 1000 frames per second";
-  // The range keeps its frame numbers; keys keep their times (seconds), as in Blender
-  // without "time stretching".
-  const long long start = rangeStartFrame(s), end = rangeEndFrame(s), frame = currentFrame(s);
-  int clip = s.clip;
-  const FrameGrid grid = timelineGrid(s);
+  if (!std::isfinite(fps) || fps < kMinFrameRate || fps > kMaxFrameRate) return "the frame rate must be 1 to 1000 frames per second";
+  const long long frame = currentFrame(s);
   char rate[32];
   std::snprintf(rate, sizeof rate, "%g", fps);
+  if (timelineRateIsTheDocuments(s)) {
+    // The document's rate: clips without their own keep their ranges' frame numbers.
+    const FrameGrid before = documentFrameGrid(s.doc.scene().frameRate), after = documentFrameGrid(fps);
+    const std::string error = s.doc.edit(std::string("Set document frame rate to ") + rate + " fps", [&](DocumentEdit& e) {
+      e.frameRate = fps;
+      for (Clip& c : e.clips) {
+        if (hasOwnFrameRate(c) || !c.hasRange) continue;
+        c.rangeStart = after.frameToTime(before.nearestFrame(c.rangeStart));
+        c.rangeEnd = after.frameToTime(before.nearestFrame(c.rangeEnd));
+      }
+      return std::string();
+    });
+    if (!error.empty()) return error;
+    goToFrame(s, frame);
+    return {};
+  }
+  // The clip's own rate. The range keeps its frame numbers; keys keep their times (seconds),
+  // as in Blender without "time stretching".
+  const long long start = rangeStartFrame(s), end = rangeEndFrame(s);
+  const int clip = s.clip;
   const std::string error = s.doc.edit(std::string("Set frame rate to ") + rate + " fps", [&](DocumentEdit& e) {
-    if (clip < 0 || clip >= static_cast<int>(e.clips.size())) {
-      e.clips.push_back(newActionClip(grid));
-      clip = e.activeClip = static_cast<int>(e.clips.size()) - 1;
-    }
     Clip& c = e.clips[clip];
     c.frameTime = 1.0 / fps;
     c.hasRange = true;
@@ -176,7 +192,6 @@ std::string setFrameRate(EditorState& s, double fps) {
     return std::string();
   });
   if (!error.empty()) return error;
-  s.clip = clip;
   goToFrame(s, frame);
   return {};
 }

@@ -66,10 +66,15 @@ void syncDocumentPlayhead(EditorState& state);
 // last call. The clip list's commands, undo, redo and evaluateEditorPose call it.
 void followDocumentClip(EditorState& state);
 
-// The frame range and rate are part of the clip (undo steps; a clip is created when the
-// scene has none). Errors are one line for the status bar.
+// The frame range is part of the clip (an undo step; a clip is created when the scene has
+// none). The rate (the timeline's fps field) is the edited clip's own when it has one (BVH,
+// a rate set on it before); otherwise the document's (Scene::frameRate, Blender's scene
+// rate), which every clip without its own counts at: their ranges keep their frame numbers.
+// Keys keep their times either way. Errors are one line for the status bar.
 std::string setFrameRange(EditorState& state, long long start, long long end);
 std::string setFrameRate(EditorState& state, double fps);
+// True when the timeline's rate is the document's (the edited clip has none of its own).
+bool timelineRateIsTheDocuments(const EditorState& state);
 
 // The keying commands at the playhead with the document's key preferences (doc.autoKey.
 // preferences), one undo step each; a status line back ("" when nothing to say).

@@ -119,6 +119,10 @@ void drawTimelinePanel(CommandContext& ctx) {
   int fps = static_cast<int>(std::lround(timelineFps(state)));
   ImGui::SetNextItemWidth(scaled(state, 28));
   if (ImGui::InputInt("##fps", &fps, 0, 0, enter)) status(setFrameRate(state, fps));
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(timelineRateIsTheDocuments(state)
+                          ? "The document's frame rate: every clip without a rate of its own counts at it"
+                          : "This clip's own frame rate (from its file, or set here)");
   recordItem("Timeline/Fps");
   ImGui::SameLine();
   if (ImGui::Checkbox("Loop", &state.loop)) saveEditorPreferences(state);  // also in Edit > Preferences
