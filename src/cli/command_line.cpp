@@ -1,6 +1,7 @@
 #include "cli/command_line.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <CLI/CLI.hpp>
 #include <iostream>
 
@@ -47,6 +48,21 @@ std::string clipIndexError(const Scene& scene, int clip) {
   if (clip == 0 || (clip > 0 && clip < clips)) return {};
   return scene.source + ": --clip " + std::to_string(clip) + " does not exist (the file has " +
          std::to_string(clips) + " clip" + (clips == 1 ? "" : "s") + ")";
+}
+
+bool parseReduce(const std::string& text, double& pos, double& deg) {
+  const size_t comma = text.find(',');
+  auto number = [](const std::string& s, double& out) {
+    if (s.empty()) return false;
+    char* end = nullptr;
+    out = std::strtod(s.c_str(), &end);
+    return end == s.c_str() + s.size();
+  };
+  if (comma == std::string::npos) {
+    deg = kDefaultReduceDegrees;
+    return number(text, pos);
+  }
+  return number(text.substr(0, comma), pos) && number(text.substr(comma + 1), deg);
 }
 
 double contractTime(const Scene& scene, int clip, double time) {

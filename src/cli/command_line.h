@@ -42,6 +42,11 @@ InputLimits inputLimits(bool allowOutsidePaths);
 // clips evaluates to its rest pose); otherwise the one-line error.
 std::string clipIndexError(const Scene& scene, int clip);
 
+// --reduce POS[,DEG] of `retarget` and `simulate`: two numbers (ranges are checked as bad
+// input), DEG kDefaultReduceDegrees when left out. False when the text is not that.
+constexpr double kDefaultReduceDegrees = 0.5;
+bool parseReduce(const std::string& text, double& pos, double& deg);
+
 // The time the subcommands evaluate for --time T: T, clamped to the clip's keys when the clip
 // has channel modifiers (they act past the last key; the contract clamps).
 double contractTime(const Scene& scene, int clip, double time);

@@ -24,24 +24,8 @@ namespace kinema::cli {
 namespace {
 
 constexpr float kDegree = 0.01745329251994329577f;
-constexpr float kDefaultReduceDegrees = 1.0f;
 
 
-// "POS" or "POS,DEG" as numbers (any value; ranges are checked as bad input).
-bool parseReduce(const std::string& text, double& pos, double& deg) {
-  const size_t comma = text.find(',');
-  auto number = [](const std::string& s, double& out) {
-    if (s.empty()) return false;
-    char* end = nullptr;
-    out = std::strtod(s.c_str(), &end);
-    return end == s.c_str() + s.size();
-  };
-  if (comma == std::string::npos) {
-    deg = kDefaultReduceDegrees;
-    return number(text, pos);
-  }
-  return number(text.substr(0, comma), pos) && number(text.substr(comma + 1), deg);
-}
 
 // The clip --clip names: an index, or a clip's name.
 int chooseClip(const Scene& scene, const std::string& wanted, std::string& error) {

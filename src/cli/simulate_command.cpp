@@ -40,20 +40,6 @@ bool parseFrames(const std::string& text, long long& first, long long& last) {
   return integer(text.substr(0, colon), first) && integer(text.substr(colon + 1), last);
 }
 
-bool parseReduce(const std::string& text, double& pos, double& deg) {
-  const size_t comma = text.find(',');
-  auto number = [](const std::string& s, double& out) {
-    if (s.empty()) return false;
-    char* end = nullptr;
-    out = std::strtod(s.c_str(), &end);
-    return end == s.c_str() + s.size();
-  };
-  if (comma == std::string::npos) {
-    deg = 0.5;
-    return number(text, pos);
-  }
-  return number(text.substr(0, comma), pos) && number(text.substr(comma + 1), deg);
-}
 
 }  // namespace
 

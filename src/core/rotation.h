@@ -49,5 +49,9 @@ glm::quat sameHemisphere(const glm::quat& q, const glm::quat& reference);
 glm::quat slerpShortest(const glm::quat& a, const glm::quat& b, float t);
 // Normalises q; a zero or non-finite quaternion becomes identity.
 glm::quat safeNormalize(const glm::quat& q);
+// The rotation of an affine matrix (a world or local transform): its 3x3 part with each
+// column's scale divided out (a zero column is left as it is), as a unit quaternion
+// (safeNormalize: identity for a degenerate matrix).
+glm::quat rotationOf(const glm::mat4& m);
 
 }  // namespace kinema

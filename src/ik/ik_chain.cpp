@@ -3,14 +3,11 @@
 #include <algorithm>
 
 #include "core/forward_kinematics.h"
+#include "core/rotation.h"
 
 namespace kinema::ik_detail {
 
 namespace {
-glm::quat rotationOf(const glm::mat4& m) {
-  const glm::mat3 r(glm::normalize(glm::vec3(m[0])), glm::normalize(glm::vec3(m[1])), glm::normalize(glm::vec3(m[2])));
-  return safeNormalize(glm::quat_cast(r));
-}
 }  // namespace
 
 std::string IkChain::begin(const IkProblem& problem, const IkSettings& settings) {

@@ -180,6 +180,30 @@ glm::quat normalizeIfNeeded(const glm::quat& q) {
   return safeNormalize(q);  // glm::normalize overflows to zero for components near 1e20 and up
 }
 
+// The optional "translation", "rotation" ([x, y, z, w], normalised) and "scale" members of a
+// joint or pose entry at `p`, over what `t` holds.
+bool readTransform(Reader& r, const Json& j, const std::string& p, Transform& t) {
+  const Json* v;
+  if ((v = r.member(j, p, "translation", false)) && !r.floats(*v, p + ".translation", 3, &t.translation.x))
+    return false;
+  if ((v = r.member(j, p, "rotation", false))) {
+    float q[4];
+    if (!r.floats(*v, p + ".rotation", 4, q)) return false;
+    if (q[0] == 0 && q[1] == 0 && q[2] == 0 && q[3] == 0) return r.fail(p + ".rotation", "zero quaternion");
+    t.rotation = normalizeIfNeeded(glm::quat(q[3], q[0], q[1], q[2]));
+  }
+  if ((v = r.member(j, p, "scale", false)) && !r.floats(*v, p + ".scale", 3, &t.scale.x)) return false;
+  return true;
+}
+
+// The transform's members as readTransform reads them, into `j`.
+void writeTransform(const Transform& t, Json& j) {
+  j["translation"] = vec(&t.translation.x, 3);
+  const float q[4] = {t.rotation.x, t.rotation.y, t.rotation.z, t.rotation.w};
+  j["rotation"] = vec(q, 4);
+  j["scale"] = vec(&t.scale.x, 3);
+}
+
 bool readSkeleton(Reader& r, const Json& root, Skeleton& s) {
   const Json* sk = r.member(root, "", "skeleton", true);
   if (!sk) return false;
@@ -204,15 +228,7 @@ bool readSkeleton(Reader& r, const Json& root, Skeleton& s) {
     if (parent < -1 || parent >= static_cast<long long>(i))
       return r.fail(p + ".parent", "parent " + std::to_string(parent) + " must be -1 or an earlier joint (0.." +
                                        std::to_string(static_cast<long long>(i) - 1) + ")");
-    if ((v = r.member(j, p, "translation", false)) && !r.floats(*v, p + ".translation", 3, &t.translation.x))
-      return false;
-    if ((v = r.member(j, p, "rotation", false))) {
-      float q[4];
-      if (!r.floats(*v, p + ".rotation", 4, q)) return false;
-      if (q[0] == 0 && q[1] == 0 && q[2] == 0 && q[3] == 0) return r.fail(p + ".rotation", "zero quaternion");
-      t.rotation = normalizeIfNeeded(glm::quat(q[3], q[0], q[1], q[2]));
-    }
-    if ((v = r.member(j, p, "scale", false)) && !r.floats(*v, p + ".scale", 3, &t.scale.x)) return false;
+    if (!readTransform(r, j, p, t)) return false;
     if (!r.jointIndex.emplace(name, s.size()).second)
       return r.fail(p + ".name", "joint name '" + cutForMessage(name) + "' is used twice");
     s.addJoint(name, static_cast<int>(parent), t);
@@ -543,17 +559,7 @@ bool readPose(Reader& r, const Json& root, Scene& scene) {
     if (!readJointName(r, j, p, "joint", s, true, joint)) return false;
     if (seen[joint]) return r.fail(p + ".joint", "joint '" + cutForMessage(s.names[joint]) + "' is listed twice");
     seen[joint] = true;
-    Transform& t = pose.local[joint];
-    const Json* v;
-    if ((v = r.member(j, p, "translation", false)) && !r.floats(*v, p + ".translation", 3, &t.translation.x))
-      return false;
-    if ((v = r.member(j, p, "rotation", false))) {
-      float q[4];
-      if (!r.floats(*v, p + ".rotation", 4, q)) return false;
-      if (q[0] == 0 && q[1] == 0 && q[2] == 0 && q[3] == 0) return r.fail(p + ".rotation", "zero quaternion");
-      t.rotation = normalizeIfNeeded(glm::quat(q[3], q[0], q[1], q[2]));
-    }
-    if ((v = r.member(j, p, "scale", false)) && !r.floats(*v, p + ".scale", 3, &t.scale.x)) return false;
+    if (!readTransform(r, j, p, pose.local[joint])) return false;
   }
   scene.pose = std::move(pose);
   return true;
@@ -597,10 +603,7 @@ Json poseToJson(const Scene& scene) {
     const Transform& t = scene.pose.local[i];
     Json j;
     j["joint"] = scene.skeleton.names[i];
-    j["translation"] = vec(&t.translation.x, 3);
-    const float q[4] = {t.rotation.x, t.rotation.y, t.rotation.z, t.rotation.w};
-    j["rotation"] = vec(q, 4);
-    j["scale"] = vec(&t.scale.x, 3);
+    writeTransform(t, j);
     list.push_back(std::move(j));
   }
   return list;
@@ -1820,10 +1823,7 @@ std::string toKinemaJson(const Scene& scene) {
     Json j;
     j["name"] = s.names[i];
     j["parent"] = s.parents[i];
-    j["translation"] = vec(&t.translation.x, 3);
-    const float q[4] = {t.rotation.x, t.rotation.y, t.rotation.z, t.rotation.w};
-    j["rotation"] = vec(q, 4);
-    j["scale"] = vec(&t.scale.x, 3);
+    writeTransform(t, j);
     joints.push_back(std::move(j));
   }
   root["skeleton"]["joints"] = std::move(joints);

@@ -152,11 +152,6 @@ int lowestCommonAncestor(const Skeleton& s, int a, int b) {
   return -1;
 }
 
-bool isAncestor(const Skeleton& s, int ancestor, int joint) {
-  for (int j = s.parents[joint]; j >= 0; j = s.parents[j])
-    if (j == ancestor) return true;
-  return false;
-}
 
 // The spine chain is the path from the hips (exclusive) to the joint where the arms meet
 // (inclusive): one joint is the spine, two are spine and chest, three or more put the
@@ -188,7 +183,7 @@ bool chainInOrder(const Skeleton& s, const HumanoidMap& m, std::initializer_list
   for (HumanoidBone b : chain) {
     const int j = m[b];
     if (j < 0) continue;
-    if (last >= 0 && !isAncestor(s, last, j)) return false;
+    if (last >= 0 && !(last != j && s.isInSubtree(j, last))) return false;
     last = j;
   }
   return true;
@@ -247,8 +242,8 @@ HumanoidMap byNames(const Skeleton& s) {
     const int hub = lowestCommonAncestor(s, armL, armR);
     if (hub < 0 || !assignSpine(s, m, hub)) return HumanoidMap{};
     for (HumanoidBone b : {HumanoidBone::Neck, HumanoidBone::Head})
-      if (m.has(b) && !isAncestor(s, hub, m[b])) m[b] = -1;
-    if (m.has(HumanoidBone::Neck) && m.has(HumanoidBone::Head) && !isAncestor(s, m[HumanoidBone::Neck], m[HumanoidBone::Head]))
+      if (m.has(b) && !(hub != m[b] && s.isInSubtree(m[b], hub))) m[b] = -1;
+    if (m.has(HumanoidBone::Neck) && m.has(HumanoidBone::Head) && !(m[HumanoidBone::Neck] != m[HumanoidBone::Head] && s.isInSubtree(m[HumanoidBone::Head], m[HumanoidBone::Neck])))
       m[HumanoidBone::Neck] = -1;
   }
   if (!consistent(s, m)) return HumanoidMap{};
@@ -473,7 +468,7 @@ std::string BoneMap::validate(const Skeleton& source, const Skeleton& target) co
   }
   for (const BonePair& a : pairs)
     for (const BonePair& b : pairs)
-      if (isAncestor(source, a.source, b.source) && isAncestor(target, b.target, a.target))
+      if ((a.source != b.source && source.isInSubtree(b.source, a.source)) && (b.target != a.target && target.isInSubtree(a.target, b.target)))
         return "incompatible skeletons: source '" + source.names[a.source] + "' is above '" + source.names[b.source] +
                "' but target '" + target.names[a.target] + "' is below '" + target.names[b.target] + "'";
   return {};

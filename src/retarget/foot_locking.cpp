@@ -6,15 +6,12 @@
 #include "core/forward_kinematics.h"
 #include "ik/ik_solver.h"
 #include "retarget/retarget_clip.h"
+#include "core/rotation.h"
 
 namespace kinema {
 
 namespace {
 
-glm::quat rotationOf(const glm::mat4& m) {
-  const glm::mat3 r(glm::normalize(glm::vec3(m[0])), glm::normalize(glm::vec3(m[1])), glm::normalize(glm::vec3(m[2])));
-  return safeNormalize(glm::quat_cast(r));
-}
 
 // How strongly frame f is locked by one of the contacts (smooth ramps outside them) and
 // which contact it is locked to (-1: none).

@@ -9,17 +9,6 @@ namespace kinema {
 
 namespace {
 
-glm::quat rotationOf(const glm::mat4& m) {
-  const glm::mat3 r(glm::normalize(glm::vec3(m[0])), glm::normalize(glm::vec3(m[1])), glm::normalize(glm::vec3(m[2])));
-  return safeNormalize(glm::quat_cast(r));
-}
-
-bool isAncestor(const Skeleton& s, int ancestor, int joint) {
-  for (int j = s.parents[joint]; j >= 0; j = s.parents[j])
-    if (j == ancestor) return true;
-  return false;
-}
-
 // An orthonormal frame from one or two directions (columns: a, then b made perpendicular).
 bool frameOf(const glm::vec3& a, const glm::vec3& b, glm::mat3& out) {
   const float la = glm::length(a);
@@ -39,10 +28,10 @@ glm::quat restAlignment(const Skeleton& s, const Skeleton& t, const BoneMap& map
   // The nearest mapped pairs below this one (no other mapped pair in between).
   std::vector<const BonePair*> below;
   for (const BonePair& q : map.pairs) {
-    if (!isAncestor(s, me.source, q.source) || !isAncestor(t, me.target, q.target)) continue;
+    if (!(me.source != q.source && s.isInSubtree(q.source, me.source)) || !(me.target != q.target && t.isInSubtree(q.target, me.target))) continue;
     bool direct = true;
     for (const BonePair& r : map.pairs)
-      if (&r != &q && isAncestor(s, me.source, r.source) && isAncestor(s, r.source, q.source)) direct = false;
+      if (&r != &q && (me.source != r.source && s.isInSubtree(r.source, me.source)) && (r.source != q.source && s.isInSubtree(q.source, r.source))) direct = false;
     if (direct) below.push_back(&q);
   }
   if (below.empty()) {

@@ -38,14 +38,6 @@ glm::mat4 rigidInverse(const glm::mat4& m) {
 }
 
 // The rotation of an affine matrix whose columns may carry a scale.
-glm::quat rotationOf(const glm::mat4& m) {
-  glm::mat3 r(m);
-  for (int c = 0; c < 3; ++c) {
-    const float len = glm::length(r[c]);
-    if (len > 0.0f) r[c] /= len;
-  }
-  return glm::normalize(glm::quat_cast(r));
-}
 // Each joint's rigid frame in the world (scale dropped).
 std::vector<glm::mat4> rigidFrames(const Skeleton& s, const Pose& pose) {
   std::vector<glm::mat4> world = computeWorld(s, pose);

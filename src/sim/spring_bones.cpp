@@ -13,14 +13,6 @@ namespace {
 bool finite(float v) { return std::isfinite(v); }
 
 // The rotation of an affine matrix whose columns may carry a uniform scale.
-glm::quat rotationOf(const glm::mat4& m) {
-  glm::mat3 r(m);
-  for (int c = 0; c < 3; ++c) {
-    const float len = glm::length(r[c]);
-    if (len > 0.0f) r[c] /= len;
-  }
-  return glm::normalize(glm::quat_cast(r));
-}
 
 // Where joint `i` of the chain has its tail, in the joint's own space: the next chain joint,
 // else the first child, else the joint's own bone (from its parent) continued as far again.

@@ -6,7 +6,7 @@
 #include <set>
 
 #include "core/forward_kinematics.h"
-#include "editor/model/ik_posing.h"
+#include "ik/ik_posing_job.h"
 #include "editor/model/keying.h"
 
 namespace kinema {

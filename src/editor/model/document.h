@@ -8,20 +8,13 @@
 #include "editor/model/edit_history.h"
 #include "editor/model/joint_selection.h"
 #include "editor/model/key_preferences.h"
-#include "editor/model/pose_ik_target.h"
+#include "ik/ik_posing_job.h"
+#include "ik/pose_ik_target.h"
 #include "scene/scene.h"
 
 namespace kinema {
 
 // Per target, what the last IK solve did (for the status bar).
-struct IkTargetReport {
-  int target = -1;  // index into Document::ikTargets(), -1 for the auto-IK drag target
-  int iterations = 0;
-  float error = 0.0f;        // effector distance to the target after the solve
-  double milliseconds = 0.0; // time spent solving it
-  bool converged = false;
-};
-
 // The parts of a document an edit may change, handed to an edit's change function.
 struct DocumentEdit {
   const Skeleton& skeleton;            // read-only (use names for renames)

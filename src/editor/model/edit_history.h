@@ -6,7 +6,7 @@
 #include "anim/clip.h"
 #include "core/mesh.h"
 #include "core/transform.h"
-#include "editor/model/pose_ik_target.h"
+#include "ik/pose_ik_target.h"
 #include "deform/deformer_stack.h"
 #include "ik/joint_limits.h"
 #include "sim/simulation_settings.h"

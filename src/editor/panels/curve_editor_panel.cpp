@@ -17,6 +17,7 @@
 #include "editor/panels/editor_panels.h"
 #include "editor/panels/item_names.h"
 #include "editor/panels/panel_layout.h"
+#include "editor/model/curve_key_edits.h"
 #include "editor/model/timeline.h"
 
 namespace kinema {
@@ -57,11 +58,7 @@ void reposeAtCurrentFrame(EditorState& state) { poseAtPlayhead(state); }
 void editSelectedKeys(EditorState& state, const char* label, const std::function<void(KeySettings&)>& change) {
   CurveEditorState& ce = state.curveEditor;
   int skipped = 0;
-  const int clip = state.clip;
-  const std::string error = state.doc.edit(label, [&](DocumentEdit& e) {
-    skipped = changeKeySettings(e.clips[clip], ce.selected, change);
-    return std::string();
-  });
+  const std::string error = editCurveKeySettings(state.doc, state.clip, ce.selected, label, change, &skipped);
   if (!error.empty()) showEditorError(state, error);
   else if (skipped > 0) state.statusMessage = std::to_string(skipped) + " key(s) left alone: the interpolation does not suit their channel";
   reposeAtCurrentFrame(state);
@@ -120,13 +117,8 @@ void keyPropertiesStrip(EditorState& state, const Clip& clip) {
       recordFrame(std::string("Curve Editor/") + "TCB"[i], 70);
       if (slid) {
         if (!state.doc.dragging()) state.doc.beginDrag("Key TCB");
-        const std::vector<CurveKeyRef> keys = state.curveEditor.selected;
-        const int clipIndex = state.clip;
-        state.doc.updateDrag([&](DocumentEdit& e) {
-          changeKeySettings(e.clips[clipIndex], keys, [&](KeySettings& ks) {
-            (i == 0 ? ks.tension : i == 1 ? ks.continuity : ks.bias) = tcb[i];
-          });
-          return std::string();
+        dragCurveKeySettings(state.doc, state.clip, state.curveEditor.selected, [&](KeySettings& ks) {
+          (i == 0 ? ks.tension : i == 1 ? ks.continuity : ks.bias) = tcb[i];
         });
         reposeAtCurrentFrame(state);
       }
@@ -163,17 +155,10 @@ void keyPropertiesStrip(EditorState& state, const Clip& clip) {
   const bool retimed = ImGui::InputInt("##frame", &frame, 0, 0, ImGuiInputTextFlags_EnterReturnsTrue);
   recordItem("Curve Editor/Key frame");
   if (retimed) {
-    const int clipIndex = state.clip;
-    std::vector<CurveKeyRef> moved;
-    const FrameGrid grid = timelineGrid(state);
-    const std::string error = state.doc.edit("Key time", [&](DocumentEdit& e) {
-      Channel& c = e.clips[clipIndex].channels[k.channel];
-      const int to = moveKey(c, k.key, grid.frameToTime(frame));
-      moved.push_back({k.channel, k.component, to});
-      return std::string();
-    });
+    CurveKeyRef moved;
+    const std::string error = setCurveKeyFrame(state.doc, state.clip, k, timelineGrid(state), frame, moved);
     if (!error.empty()) showEditorError(state, error);
-    else ce.selected = moved;
+    else ce.selected = {moved};
     reposeAtCurrentFrame(state);
   }
   // Angles in degrees (displayUnitScale), as the properties panel shows them.
@@ -189,11 +174,7 @@ void keyPropertiesStrip(EditorState& state, const Clip& clip) {
     ImGui::TextDisabled("deg");
   }
   if (revalued) {
-    const int clipIndex = state.clip;
-    const std::string error = state.doc.edit("Key value", [&](DocumentEdit& e) {
-      setKeyDisplayValue(e.clips[clipIndex].channels[k.channel], k.key, k.component, ce.rotationView, ce.eulerOrder, value);
-      return std::string();
-    });
+    const std::string error = setCurveKeyValue(state.doc, state.clip, k, ce.rotationView, ce.eulerOrder, value);
     if (!error.empty()) showEditorError(state, error);
     reposeAtCurrentFrame(state);
   }
@@ -479,11 +460,8 @@ void drawCurveEditorPanel(CommandContext& ctx) {
         std::vector<float> scales;
         for (const ValueRange& range : ce.dragRanges) scales.push_back(displayToValueScale(range, ce.normalized));
         std::vector<CurveKeyRef> moved;
-        state.doc.updateDrag([&](DocumentEdit& e) {
-          moved = moveCurveKeys(e.clips[clipIndex], timelineGrid(state), ce.dragStartKeys, ce.dragStartValues, scales, d.x, d.y,
-                                ce.rotationView, ce.eulerOrder);
-          return std::string();
-        });
+        dragCurveKeys(state.doc, clipIndex, timelineGrid(state), ce.dragStartKeys, ce.dragStartValues, scales, d.x, d.y,
+                      ce.rotationView, ce.eulerOrder, moved);
         if (!moved.empty()) ce.selected = moved;
       } else {
         CurveHandle h;
@@ -495,10 +473,7 @@ void drawCurveEditorPanel(CommandContext& ctx) {
         const float scale = s ? displayToValueScale(s->range, ce.normalized) : 1.0f;
         const glm::vec2 offset(ce.dragHandleStart.x + d.x, ce.dragHandleStart.y + d.y * scale);
         const float fps = static_cast<float>(timelineGrid(state).framesPerSecond());
-        state.doc.updateDrag([&](DocumentEdit& e) {
-          dragCurveHandle(e.clips[clipIndex].channels[h.key.channel], h, offset, ce.rotationView, ce.eulerOrder, fps);
-          return std::string();
-        });
+        dragCurveKeyHandle(state.doc, clipIndex, h, offset, ce.rotationView, ce.eulerOrder, fps);
       }
     }
     // Esc or a right click cancels (back to the start, nothing recorded), as in the 3D view.

@@ -1,4 +1,4 @@
-#include "editor/model/pose_ik_target.h"
+#include "ik/pose_ik_target.h"
 
 #include <cstring>
 
