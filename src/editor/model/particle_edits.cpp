@@ -3,9 +3,9 @@
 
 #include <algorithm>
 
-#include "anim/sampling.h"
 #include "core/forward_kinematics.h"
 #include "editor/model/document.h"
+#include "evaluation/scene_evaluation_job.h"
 
 namespace kinema {
 
@@ -71,15 +71,26 @@ const std::vector<ParticleState>* liveParticlesAt(LiveParticles& live, const Doc
   const double frameTime = grid.secondsPerFrame;
   // Without a clip the joints stand in the working pose, whose revision then is an input.
   const long long key = clip ? doc.changeCount() * 1024 + clipIndex : doc.changeCount() ^ (doc.poseRevision() << 20);
-  SamplingCache cache;
+  // Joint emitters follow the evaluation pipeline's pose at each frame (the frames come in
+  // order, so one context steps the dynamic chains forward once).
+  EvaluationContext context;
+  const IkRig rig = doc.savedRig();
+  Pose pose;
   const auto jointsAt = [&](long long f, std::vector<glm::mat4>& world) {
     if (!clip) {
       world = doc.worldTransforms();
       return;
     }
-    Pose pose = Pose::rest(scene.skeleton);
-    sampleClip(*clip, grid.frameToTime(f), pose, cache);
-    world = computeWorld(scene.skeleton, pose);
+    SceneEvaluationJob job;
+    job.scene = &scene;
+    job.clip = clipIndex;
+    job.time = grid.frameToTime(f);
+    job.rig = &rig;
+    job.revision = doc.changeCount();
+    job.context = &context;
+    job.pose = &pose;
+    job.world = &world;
+    job.run();
   };
   live.frame = std::max(0LL, frame);
   const std::vector<ParticleState>& states = live.playback.at(scene.simulation.particles, frameTime, live.frame, jointsAt, key);
