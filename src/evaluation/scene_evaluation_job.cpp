@@ -9,20 +9,18 @@ namespace kinema {
 
 namespace {
 bool hasClip(const Scene& scene, int clip) { return clip >= 0 && clip < static_cast<int>(scene.clips.size()); }
-}  // namespace
 
-namespace {
+// Stages 1 to 5 into `pose` (which holds the base): the playback form of stage 1 when given
+// (it declines a clip it cannot sample), else the clip with the cache's cursors.
 void animatedPose(const Scene& scene, const IkRig& rig, int clip, double time, const EvaluationStages& stages,
                   Pose& pose, SamplingCache* cache, const PlaybackClip* playback, PlaybackContext* playbackContext) {
   if (!hasClip(scene, clip)) return;
   // 1, 2: keys and channel modifiers (both forms play both).
   const Clip& c = scene.clips[clip];
-  if (playback && playbackContext && samplePlayback(*playback, static_cast<float>(time), pose, *playbackContext)) {
-  } else if (cache) {
-    sampleClip(c, static_cast<float>(time), pose, *cache);
-  } else {
-    sampleClip(c, static_cast<float>(time), pose);
-  }
+  const bool played =
+      playback && playbackContext && samplePlayback(*playback, static_cast<float>(time), pose, *playbackContext);
+  if (!played && cache) sampleClip(c, static_cast<float>(time), pose, *cache);
+  if (!played && !cache) sampleClip(c, static_cast<float>(time), pose);
   // 3, 4: layers and constraints have no data yet (issues 41 and 42): nothing to do.
   // 5: keyed IK targets.
   if (stages.ikTargets) solveKeyedIkTargets(scene, rig, clip, time, pose);
