@@ -40,8 +40,13 @@ void poseAtPlayhead(EditorState& s) {
   job.clip = s.clip;
   job.time = s.time;
   job.base = &s.doc.pose();
-  const IkRig rig = s.doc.savedRig();  // the document keeps its targets apart from scene().ik
-  job.rig = &rig;
+  // The document keeps its targets apart from scene().ik: a copy with them only when it has
+  // some (no allocation a frame otherwise).
+  IkRig rig;
+  if (!s.doc.ikTargets().empty()) {
+    rig = s.doc.savedRig();
+    job.rig = &rig;
+  }
   job.stages.dynamics = s.liveSprings.enabled;
   job.dynamicsStartFrame = rangeStartFrame(s);
   job.revision = s.doc.changeCount();
