@@ -1,6 +1,6 @@
 #pragma once
 // The .kinema "simulation.particles" array (docs/kinema-format.md): particle systems read
-// and written with an exact round trip. Kept apart from kinema_file.cpp, which calls these.
+// and written with an exact round trip. Called from io/kinema_file_simulation.cpp.
 #include <string>
 #include <vector>
 #include <nlohmann/json.hpp>
