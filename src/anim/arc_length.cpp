@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/gtc/constants.hpp>
 
 #include "anim/sampling.h"
 
@@ -9,7 +10,6 @@ namespace kinema {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 glm::dvec3 P(const Channel& path, double u) { return glm::dvec3(glm::vec3(sampleChannel(path, static_cast<float>(u)))); }
 
@@ -110,7 +110,7 @@ double distanceAt(const DistanceProfile& p, double t) {
   const double x = t / T;
   switch (p.kind) {
     case DistanceProfile::Kind::ConstantSpeed: return D * x;
-    case DistanceProfile::Kind::SineEase: return D * 0.5 * (1.0 - std::cos(kPi * x));
+    case DistanceProfile::Kind::SineEase: return D * 0.5 * (1.0 - std::cos(glm::pi<double>() * x));
     case DistanceProfile::Kind::ParabolicEase: {
       // Speed rises linearly to v0 over [0, a], stays v0, falls linearly to 0 over [d, 1];
       // v0 is fixed by the total: v0 (a/2 + (d - a) + (1 - d)/2) = D.

@@ -13,8 +13,6 @@ namespace kinema {
 
 namespace {
 
-bool finite(float v) { return std::isfinite(v); }
-
 // The gradient at lattice point i, uniform in [-1, 1].
 double gradient(uint64_t lattice, int64_t i) {
   const uint64_t h = mixBits(lattice ^ mixBits(static_cast<uint64_t>(i) * 0x9E3779B97F4A7C15ull));
@@ -97,9 +95,9 @@ std::string ChannelModifier::validate() const {
   if (components < 1 || components > 15) return "the components mask must be 1 to 15 (bits x, y, z, w)";
   switch (kind) {
     case ChannelModifierKind::Noise:
-      if (!finite(noise.strength) || noise.strength < 0) return "noise strength must be a finite number >= 0";
-      if (!finite(noise.scale) || !(noise.scale > 0)) return "noise scale must be a finite number > 0 (seconds)";
-      if (!finite(noise.phase)) return "noise phase must be finite";
+      if (!std::isfinite(noise.strength) || noise.strength < 0) return "noise strength must be a finite number >= 0";
+      if (!std::isfinite(noise.scale) || !(noise.scale > 0)) return "noise scale must be a finite number > 0 (seconds)";
+      if (!std::isfinite(noise.phase)) return "noise phase must be finite";
       if (noise.octaves < 1 || noise.octaves > 8) return "noise octaves must be 1 to 8";
       if (!(noise.roughness >= 0.0f && noise.roughness <= 1.0f)) return "noise roughness must be in [0, 1]";
       return "";
@@ -107,10 +105,10 @@ std::string ChannelModifier::validate() const {
       if (cycles.beforeCount < 0 || cycles.afterCount < 0) return "cycle counts must be >= 0 (0: forever)";
       return "";
     case ChannelModifierKind::Wave:
-      if (!finite(wave.amplitude) || !finite(wave.omega) || !finite(wave.phi) || !finite(wave.k.x) ||
-          !finite(wave.k.y) || !finite(wave.k.z))
+      if (!std::isfinite(wave.amplitude) || !std::isfinite(wave.omega) || !std::isfinite(wave.phi) || !std::isfinite(wave.k.x) ||
+          !std::isfinite(wave.k.y) || !std::isfinite(wave.k.z))
         return "wave amplitude, omega, k and phi must be finite";
-      if (!finite(wave.position.x) || !finite(wave.position.y) || !finite(wave.position.z))
+      if (!std::isfinite(wave.position.x) || !std::isfinite(wave.position.y) || !std::isfinite(wave.position.z))
         return "wave position (the joint's rest position) must be finite";
       return "";
   }

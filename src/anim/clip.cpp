@@ -1,4 +1,5 @@
 #include "anim/clip.h"
+#include "core/math.h"
 
 #include <algorithm>
 #include <cmath>
@@ -30,10 +31,6 @@ const EasingMode kModes[] = {EasingMode::In, EasingMode::Out, EasingMode::InOut}
 const HandleType kHandles[] = {HandleType::Free, HandleType::Aligned, HandleType::Vector, HandleType::Auto,
                                HandleType::AutoClamped};
 
-bool finite(const glm::vec4& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
-}
-
 bool suits(Interpolation i, ChannelTarget target) {
   if (target == ChannelTarget::Rotation)
     return i == Interpolation::Step || i == Interpolation::Linear || i == Interpolation::Nlerp ||
@@ -42,7 +39,6 @@ bool suits(Interpolation i, ChannelTarget target) {
   return i != Interpolation::Nlerp && i != Interpolation::Squad;
 }
 
-constexpr float kTwoPi = 6.28318530717958647692f;
 
 }  // namespace
 
@@ -168,14 +164,14 @@ std::string Clip::validate(const Skeleton& skeleton) const {
       const std::string key = where + " key " + std::to_string(k);
       if (!std::isfinite(ch.times[k])) return key + " has a non-finite time";
       if (k > 0 && !(ch.times[k] > ch.times[k - 1])) return key + " time is not after the previous key";
-      if (!finite(ch.values[k])) return key + " has a non-finite value";
+      if (!isFinite(ch.values[k])) return key + " has a non-finite value";
       if (ch.keys.empty()) continue;
       const KeySettings& s = ch.keys[k];
       if (!suits(s.interpolation, ch.target))
         return key + ": " + toString(s.interpolation) + " interpolation does not apply to " + toString(ch.target);
       if (!std::isfinite(s.tension) || !std::isfinite(s.continuity) || !std::isfinite(s.bias) ||
-          !finite(s.inTangent) || !finite(s.outTangent) || !std::isfinite(s.leftHandleTime) ||
-          !std::isfinite(s.rightHandleTime) || !finite(s.leftHandleValue) || !finite(s.rightHandleValue))
+          !isFinite(s.inTangent) || !isFinite(s.outTangent) || !std::isfinite(s.leftHandleTime) ||
+          !std::isfinite(s.rightHandleTime) || !isFinite(s.leftHandleValue) || !isFinite(s.rightHandleValue))
         return key + " has a non-finite tangent, handle or TCB setting";
       if (s.leftHandleTime > 0 || s.rightHandleTime < 0)
         return key + " has a Bezier handle on the wrong side of the key (left must be <= 0, right >= 0 seconds)";

@@ -1,4 +1,5 @@
 #include "anim/easing.h"
+#include "core/math.h"
 
 #include <cmath>
 
@@ -6,7 +7,6 @@ namespace kinema {
 
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
 
 // The "In" form of each function; Out and InOut are built from it by symmetry.
 float easeIn(EasingFunction f, float u, float period) {

@@ -1,4 +1,5 @@
 #include "anim/insert_keyframe.h"
+#include "core/math.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +8,6 @@ namespace kinema {
 
 namespace {
 
-constexpr float kTwoPi = 6.28318530717958647692f;
 
 Channel* findChannel(Clip& clip, int joint, ChannelTarget target) {
   for (Channel& c : clip.channels)

@@ -75,12 +75,12 @@ inline __m128 select(__m128 mask, __m128 ifTrue, __m128 ifFalse) {
   return _mm_or_ps(_mm_and_ps(mask, ifTrue), _mm_andnot_ps(mask, ifFalse));
 }
 
-// Rows longer than this (floats; 64 KiB) are read with software prefetches kPrefetchAhead
+// Rows longer than this (floats; 64 KiB) are read with software prefetches kPrefetchFloatsAhead
 // floats ahead on each of the two rows: a jump to a random time in a clip too large for the
 // caches (10,000 joints: 280 KiB a row) then keeps many cache-line fetches in flight, where
 // the hardware prefetcher, which restarts at every 4 KiB page, keeps few.
 constexpr int kPrefetchRowFloats = 16384;
-constexpr int kPrefetchAhead = 512;  // 2 KiB
+constexpr int kPrefetchFloatsAhead = 512;  // 2 KiB
 
 // One grid at fraction u between rows lo and lo + 1 (Interpolate), or row lo itself.
 template <bool Interpolate, bool Prefetch>
@@ -88,11 +88,11 @@ void sampleGrid(const PlaybackGrid& g, int lo, float u, Transform* out) {
   const float* a = g.rows.data() + static_cast<size_t>(lo) * g.rowFloats;
   const float* b = a + g.rowFloats;
   // The prefetches stop short of the rows' end (they never fault, but need not run past).
-  const float* prefetchEnd = a + (g.rowFloats > kPrefetchAhead ? g.rowFloats - kPrefetchAhead : 0);
+  const float* prefetchEnd = a + (g.rowFloats > kPrefetchFloatsAhead ? g.rowFloats - kPrefetchFloatsAhead : 0);
   auto prefetch = [&]() {
     if (!Prefetch || a >= prefetchEnd) return;
-    _mm_prefetch(reinterpret_cast<const char*>(a + kPrefetchAhead), _MM_HINT_T0);
-    if (Interpolate) _mm_prefetch(reinterpret_cast<const char*>(b + kPrefetchAhead), _MM_HINT_T0);
+    _mm_prefetch(reinterpret_cast<const char*>(a + kPrefetchFloatsAhead), _MM_HINT_T0);
+    if (Interpolate) _mm_prefetch(reinterpret_cast<const char*>(b + kPrefetchFloatsAhead), _MM_HINT_T0);
   };
   const int* joint = g.joints.data();
   const float* linear = g.linear.data();
@@ -225,16 +225,6 @@ void sampleGridAt(const PlaybackGrid& g, float time, int& cursor, Transform* out
   sampleGrid<true, false>(g, lo, (time - t[lo]) / (t[hi] - t[lo]), out);
 }
 
-void apply(const Channel& ch, const glm::vec4& v, Transform& t) {
-  switch (ch.target) {
-    case ChannelTarget::Translation: t.translation = glm::vec3(v); break;
-    case ChannelTarget::Scale: t.scale = glm::vec3(v); break;
-    case ChannelTarget::Rotation: t.rotation = glm::quat(v.w, v.x, v.y, v.z); break;
-    case ChannelTarget::Euler: t.rotation = eulerToQuat(glm::vec3(v), ch.eulerOrder); break;
-    case ChannelTarget::Scalar: break;
-  }
-}
-
 }  // namespace
 
 std::string PlaybackSamplingJob::validate() const {
@@ -256,7 +246,7 @@ bool PlaybackSamplingJob::run() const {
   for (size_t g = 0; g < clip->grids.size(); ++g) sampleGridAt(clip->grids[g], time, c.gridCursors[g], output);
   for (size_t i = 0; i < clip->channels.size(); ++i) {
     const Channel& ch = clip->channels[i];
-    apply(ch, ch.modifiers.empty() ? sampleChannel(ch, time, &c.channelCursors[i]) : sampleModifiedChannel(ch, time),
+    applyChannelValue(ch, ch.modifiers.empty() ? sampleChannel(ch, time, &c.channelCursors[i]) : sampleModifiedChannel(ch, time),
           output[ch.joint]);
   }
   return true;

@@ -71,16 +71,6 @@ glm::vec4 vectorSegment(const Channel& ch, const KeySettings& s, int lo, float t
   }
 }
 
-void apply(const Channel& ch, const glm::vec4& v, Transform& t) {
-  switch (ch.target) {
-    case ChannelTarget::Translation: t.translation = glm::vec3(v); break;
-    case ChannelTarget::Scale: t.scale = glm::vec3(v); break;
-    case ChannelTarget::Rotation: t.rotation = glm::quat(v.w, v.x, v.y, v.z); break;  // unit already
-    case ChannelTarget::Euler: t.rotation = eulerToQuat(glm::vec3(v), ch.eulerOrder); break;
-    case ChannelTarget::Scalar: break;
-  }
-}
-
 // A Linear segment from key lo to lo + 1 at fraction u: a straight line, or for rotations
 // the shortest-arc slerp of the (normalised) keys.
 inline glm::vec4 linearSegment(const Channel& ch, bool rotation, int lo, float u) {
@@ -136,7 +126,7 @@ glm::vec4 sampleAt(const Channel& ch, float time, int hi) {
 
 // How many channels ahead random access prefetches keys: enough to cover a memory access
 // while the channels in between are sampled.
-constexpr size_t kPrefetchAhead = 4;
+constexpr size_t kPrefetchChannelsAhead = 4;
 
 void sampleInto(const Clip& clip, float time, Pose& pose, int* cursors) {
   const unsigned joints = static_cast<unsigned>(pose.size());
@@ -150,7 +140,7 @@ void sampleInto(const Clip& clip, float time, Pose& pose, int* cursors) {
     const int n = ch.keyCount();
     if (ch.target == ChannelTarget::Scalar || static_cast<unsigned>(ch.joint) >= joints || n == 0) continue;
     if (!ch.modifiers.empty()) {  // procedural channels: the keyed curve, then the stack
-      apply(ch, sampleModifiedChannel(ch, time), out[ch.joint]);
+      applyChannelValue(ch, sampleModifiedChannel(ch, time), out[ch.joint]);
       continue;
     }
     int* cursor = cursors ? cursors + c : nullptr;
@@ -163,9 +153,9 @@ void sampleInto(const Clip& clip, float time, Pose& pose, int* cursors) {
       inside = hi > 0 && hi < n && times[hi - 1] != time;
     }
     guess = hi;
-    if (!cursors && c + kPrefetchAhead < count) {
+    if (!cursors && c + kPrefetchChannelsAhead < count) {
       // Random access runs on cache misses: fetch the keys a few channels ahead now.
-      const Channel& ahead = channels[c + kPrefetchAhead];
+      const Channel& ahead = channels[c + kPrefetchChannelsAhead];
       if (hi > 0 && hi < ahead.keyCount()) {
         __builtin_prefetch(ahead.times.data() + hi - 1);
         __builtin_prefetch(ahead.values.data() + hi - 1);
@@ -189,7 +179,7 @@ void sampleInto(const Clip& clip, float time, Pose& pose, int* cursors) {
         default: break;
       }
     }
-    apply(ch, sampleAt(ch, time, hi), t);
+    applyChannelValue(ch, sampleAt(ch, time, hi), t);
   }
 }
 

@@ -2,6 +2,7 @@
 #include <vector>
 
 #include "anim/clip.h"
+#include "core/rotation.h"
 
 namespace kinema {
 
@@ -12,6 +13,18 @@ namespace kinema {
 struct SamplingCache {
   std::vector<int> cursors;
 };
+
+// A sampled value `v` of `ch` into its joint's local transform `t` (rotations are unit
+// [x, y, z, w] already; Scalar channels belong to no transform and leave it alone).
+inline void applyChannelValue(const Channel& ch, const glm::vec4& v, Transform& t) {
+  switch (ch.target) {
+    case ChannelTarget::Translation: t.translation = glm::vec3(v); break;
+    case ChannelTarget::Scale: t.scale = glm::vec3(v); break;
+    case ChannelTarget::Rotation: t.rotation = glm::quat(v.w, v.x, v.y, v.z); break;
+    case ChannelTarget::Euler: t.rotation = eulerToQuat(glm::vec3(v), ch.eulerOrder); break;
+    case ChannelTarget::Scalar: break;
+  }
+}
 
 // The index of the first key after `time` (0: before the first key; keyCount(): at or
 // after the last), using and updating `cursor` when given.

@@ -8,6 +8,7 @@
 #include "anim/scalar_property.h"
 #include "core/forward_kinematics.h"
 #include "evaluation/scene_deformation.h"
+#include "evaluation/scene_evaluation_job.h"
 #include "skin/skinning_matrices.h"
 
 namespace kinema {
@@ -19,25 +20,35 @@ struct Shot {
   float time = 0.0f;
 };
 
+// The scene through the pipeline at (clip, time), the rest pose for clip -1; the shapes are
+// deltas between two evaluations of one pose, so the live chains (which would be simulated
+// from the clip's start for every shot) are left out.
+SceneEvaluationJob jobAt(const Scene& scene, int clip, double time, Pose& pose) {
+  SceneEvaluationJob job;
+  job.scene = &scene;
+  job.clip = clip;
+  job.time = time;
+  job.stages.dynamics = false;
+  job.pose = &pose;
+  return job;
+}
+
 std::vector<glm::mat4> worldAt(const Scene& scene, int clip, double time) {
-  Pose pose = Pose::rest(scene.skeleton);
-  if (clip >= 0 && clip < static_cast<int>(scene.clips.size())) sampleClip(scene.clips[clip], static_cast<float>(time), pose);
-  return computeWorld(scene.skeleton, pose);
+  Pose pose;
+  std::vector<glm::mat4> world;
+  SceneEvaluationJob job = jobAt(scene, clip, time, pose);
+  job.world = &world;
+  job.run();
+  return world;
 }
 
 // Every instance x primitive of `scene` at (clip, time), with its deformers (`deform`) or
 // without them; the scene's own sampled morph weights.
 bool deformAt(const Scene& scene, int clip, double time, bool deform, std::vector<DeformedPrimitive>& out) {
-  const std::vector<glm::mat4> world = worldAt(scene, clip, time);
-  const std::vector<std::vector<float>> weights = sampleMorphWeights(scene, clip, time);
-  const std::vector<DeformerStack> stacks =
-      deform ? sampleDeformerStacks(scene, clip, time) : std::vector<DeformerStack>(scene.meshInstances.size());
-  SceneDeformationJob job;
-  job.scene = &scene;
-  job.world = &world;
-  job.morphWeights = &weights;
-  job.deformers = &stacks;
-  job.out = &out;
+  Pose pose;
+  SceneEvaluationJob job = jobAt(scene, clip, time, pose);
+  job.stages.deformers = deform;
+  job.meshes = &out;
   return job.run();
 }
 

@@ -1,8 +1,10 @@
 #include "bake/crowd_scene.h"
-#include "io/scene_files.h"
 
 #include <cmath>
 #include <filesystem>
+
+#include "evaluation/scene_poses.h"
+#include "io/scene_files.h"
 
 namespace kinema {
 
@@ -32,14 +34,19 @@ Result<CrowdBake> bakeCrowd(const CrowdSettings& crowd, const Scene& character, 
   if (first < 0 || last < first) return Result<CrowdBake>::failure("crowd '" + crowd.name + "': bad frame range");
   const Clip& clip = character.clips[static_cast<size_t>(crowd.clip)];
   CrowdBake bake;
-  bake.motion = analyseCrowdClip(character.skeleton, clip, crowd);
+  // The members move as the character's scene plays (keyed IK targets, modifiers), not as its
+  // bare keys; each member has its own clip time, so the live chains are left out.
+  EvaluationStages stages;
+  stages.dynamics = false;
+  ScenePoses poses(character, crowd.clip, stages);
+  bake.motion = analyseCrowdClip(character.skeleton, clip, crowd, &poses);
   Result<CrowdRun> run = runCrowd(crowd, bake.motion, character.frameGrid(crowd.clip).secondsPerFrame, last + 1);
   if (!run) return Result<CrowdBake>::failure(run.error());
   bake.run = std::move(run.value());
   bake.clips.reserve(static_cast<size_t>(crowd.members));
   for (int m = 0; m < crowd.members; ++m)
     bake.clips.push_back(bakeCrowdMember(character.skeleton, clip, bake.motion, bake.run, m, first, last,
-                                         crowdMemberName(crowd.name, m)));
+                                         crowdMemberName(crowd.name, m), &poses));
   return bake;
 }
 

@@ -13,6 +13,11 @@
 
 namespace kinema::cli {
 
+int usageError(const std::string& subcommand, const std::string& message) {
+  std::cerr << "kinema " << subcommand << ": " << message << "; see --help\n";
+  return kExitUsage;
+}
+
 int badInput(const std::string& message) {
   std::cerr << "kinema: " << message << "\n";
   return kExitBadInput;

@@ -21,6 +21,8 @@ constexpr int kExitUsage = 2;     // unknown flag or subcommand, malformed argum
 
 // Prints "kinema: MESSAGE" on stderr as one line and returns kExitBadInput.
 int badInput(const std::string& message);
+// Prints "kinema SUBCOMMAND: MESSAGE; see --help" on stderr and returns kExitUsage.
+int usageError(const std::string& subcommand, const std::string& message);
 
 // A file, or the default character when `path` is empty; .bvh files read as `bvhUp`-up.
 Result<Scene> loadSceneOrDefault(const std::string& path, const InputLimits& limits = {},

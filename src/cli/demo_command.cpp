@@ -28,11 +28,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-int usage(const std::string& message) {
-  std::cerr << "kinema demo: " << message << "; see --help\n";
-  return kExitUsage;
-}
-
 std::string presetNames() {
   std::string names;
   for (const TeachingCase& c : teachingPresets()) names += (names.empty() ? "" : ", ") + c.name;
@@ -328,11 +323,11 @@ int runDemo(const DemoOptions& o) {
   }
   int w = 0, h = 0;
   char tail = 0;
-  if (std::sscanf(o.size.c_str(), "%dx%d%c", &w, &h, &tail) != 2) return usage("--size '" + o.size + "' is not WxH");
+  if (std::sscanf(o.size.c_str(), "%dx%d%c", &w, &h, &tail) != 2) return usageError("demo", "--size '" + o.size + "' is not WxH");
   if (w < 160 || h < 120 || w > 4000 || h > 4000)
     return badInput("--size: expected 160 <= W <= 4000 and 120 <= H <= 4000, found '" + o.size + "'");
   if (o.maxSteps < 0) return badInput("--max-steps must be >= 0");
-  if (o.out.empty()) return usage("give --out DIR");
+  if (o.out.empty()) return usageError("demo", "give --out DIR");
   if (o.name == "solver-table") return runSolverTable(o, w, h);
   if (o.name == "life") return runLifeDemo(o.out, w, h);
   if (o.name == "boids") return runBoidsDemo(o.out, w, h);

@@ -56,11 +56,6 @@ bool withinReach(const glm::vec3& p) {
   return true;
 }
 
-int usage(const std::string& message) {
-  std::cerr << "kinema ik: " << message << "; see --help\n";
-  return kExitUsage;
-}
-
 }  // namespace
 
 CLI::App* addIkCommand(CLI::App& app, IkOptions& o) {
@@ -92,23 +87,23 @@ CLI::App* addIkCommand(CLI::App& app, IkOptions& o) {
 
 int runIk(const IkOptions& o) {
   const std::optional<IkSolver> solver = ikSolverFromString(o.solver);
-  if (!solver) return usage("--solver '" + o.solver + "' is not one of ccd, fabrik, jacobian-transpose, jacobian-pinv, jacobian-dls, jacobian-sdls, two-bone");
+  if (!solver) return usageError("ik", "--solver '" + o.solver + "' is not one of ccd, fabrik, jacobian-transpose, jacobian-pinv, jacobian-dls, jacobian-sdls, two-bone");
   if (o.effectors.size() != o.targets.size())
-    return usage("give one --target per --effector (" + std::to_string(o.effectors.size()) + " effectors, " +
+    return usageError("ik", "give one --target per --effector (" + std::to_string(o.effectors.size()) + " effectors, " +
                  std::to_string(o.targets.size()) + " targets)");
   if (!o.roots.empty() && o.roots.size() != o.effectors.size())
-    return usage("give --root once per --effector, or not at all");
+    return usageError("ik", "give --root once per --effector, or not at all");
   std::vector<glm::vec3> positions(o.targets.size());
   for (size_t i = 0; i < o.targets.size(); ++i) {
     const Parsed p = parseVec3(o.targets[i], positions[i]);
-    if (p == Parsed::Malformed) return usage("--target '" + o.targets[i] + "' is not X,Y,Z");
+    if (p == Parsed::Malformed) return usageError("ik", "--target '" + o.targets[i] + "' is not X,Y,Z");
     if (p == Parsed::NotFinite) return badInput("--target '" + o.targets[i] + "' is not a finite position");
     if (p == Parsed::TooFar) return badInput("--target '" + o.targets[i] + "' is too far: coordinates must be within 1e18");
   }
   glm::vec3 pole(0.0f);
   if (!o.pole.empty()) {
     const Parsed p = parseVec3(o.pole, pole);
-    if (p == Parsed::Malformed) return usage("--pole '" + o.pole + "' is not X,Y,Z");
+    if (p == Parsed::Malformed) return usageError("ik", "--pole '" + o.pole + "' is not X,Y,Z");
     if (p == Parsed::NotFinite) return badInput("--pole '" + o.pole + "' is not a finite position");
     if (p == Parsed::TooFar) return badInput("--pole '" + o.pole + "' is too far: coordinates must be within 1e18");
   }
@@ -155,7 +150,7 @@ int runIk(const IkOptions& o) {
     targets.push_back(t);
   }
   if (targets.empty()) targets = scene.ik.targets;  // the file's saved targets
-  if (targets.empty()) return usage("give --effector NAME --target X,Y,Z (or --rig FILE)");
+  if (targets.empty()) return usageError("ik", "give --effector NAME --target X,Y,Z (or --rig FILE)");
   for (const IkTarget& t : targets)  // the file's and the rig's targets as well as --target
     if (!withinReach(t.position) || (t.hasPole && !withinReach(t.pole)))
       return badInput(scene.source + ": the target of " + jointLabel(scene, t.effector) +

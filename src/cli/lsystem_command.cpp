@@ -18,11 +18,6 @@ namespace kinema::cli {
 
 namespace {
 
-int usage(const std::string& message) {
-  std::cerr << "kinema lsystem: " << message << "; see --help\n";
-  return kExitUsage;
-}
-
 // "0,0,1" -> {0, 0, 1}; false on anything but comma-separated whole numbers.
 bool parseChoices(const std::string& text, std::vector<int>& out) {
   out.clear();
@@ -55,9 +50,9 @@ CLI::App* addLSystemCommand(CLI::App& app, LSystemOptions& o) {
 int runLSystem(const LSystemOptions& o) {
   const std::string ext = lowerExtension(o.out);
   if (ext != ".kinema" && ext != ".gltf" && ext != ".glb")
-    return usage("cannot write '" + ext + "' files (use .kinema, .gltf or .glb)");
+    return usageError("lsystem", "cannot write '" + ext + "' files (use .kinema, .gltf or .glb)");
   LSystemDerivationJob job;
-  if (!parseChoices(o.choices, job.choices)) return usage("--choices '" + o.choices + "' is not a list like 0,0,1");
+  if (!parseChoices(o.choices, job.choices)) return usageError("lsystem", "--choices '" + o.choices + "' is not a list like 0,0,1");
   if (o.generations < 0 || o.generations > 10000)
     return badInput("--generations must be in 0 .. 10000, found " + std::to_string(o.generations));
   if (!(o.segmentLength > 0.0) || !std::isfinite(o.segmentLength))

@@ -6,24 +6,25 @@
 
 #include "cli/command_line.h"
 #include "core/forward_kinematics.h"
+#include "core/math.h"
+#include "evaluation/scene_poses.h"
 #include "io/bone_map_file.h"
 #include "io/bvh_writer.h"
 #include "io/gltf_writer.h"
 #include "io/json_number.h"
 #include "io/kinema_file.h"
+#include "io/scene_files.h"
 #include "retarget/foot_contacts.h"
 #include "retarget/foot_locking.h"
 #include "retarget/key_reduction.h"
 #include "retarget/motion_cleanup.h"
 #include "retarget/retarget_clip.h"
 #include "retarget/retarget_motion.h"
-#include "io/scene_files.h"
 
 namespace kinema::cli {
 
 namespace {
 
-constexpr float kDegree = 0.01745329251994329577f;
 
 
 
@@ -127,6 +128,8 @@ int runRetarget(const RetargetOptions& o) {
   RetargetMotionInput input;
   input.source = &source.skeleton;
   input.clip = &source.clips[clipIndex];
+  ScenePoses sourcePoses(source, clipIndex);  // the take as it plays: modifiers, keyed IK targets, live chains
+  input.sourcePoses = &sourcePoses;
   input.sourceHuman = sourceHuman ? &sourceHuman.value() : nullptr;
   input.target = &target.skeleton;
   input.targetHuman = targetHuman ? &targetHuman.value() : nullptr;

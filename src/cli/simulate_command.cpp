@@ -8,22 +8,22 @@
 #include <iostream>
 
 #include "cli/command_line.h"
-#include "cli/simulate_crowds.h"
 #include "cli/render_command.h"
+#include "cli/simulate_crowds.h"
 #include "cli/simulate_particles.h"
+#include "core/math.h"
 #include "io/bvh_writer.h"
 #include "io/gltf_writer.h"
 #include "io/json_number.h"
 #include "io/kinema_file.h"
+#include "io/scene_files.h"
 #include "sim/baked_keys.h"
 #include "sim/simulation_bake.h"
-#include "io/scene_files.h"
 
 namespace kinema::cli {
 
 namespace {
 
-constexpr float kDegree = 0.01745329251994329577f;
 
 
 // "A:B" as two integers; false on any other text.

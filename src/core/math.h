@@ -11,9 +11,18 @@
 
 namespace kinema {
 
+// π once, in float (the precision of the pose maths); kDegree is one degree in radians.
+constexpr float kPi = 3.14159265358979323846f;
+constexpr float kTwoPi = 2.0f * kPi;
+constexpr float kDegree = kPi / 180.0f;
+
 inline bool isFinite(const glm::vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
+inline bool isFinite(const glm::vec4& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
+}
+inline bool isFinite(const glm::mat4& m) { return isFinite(m[0]) && isFinite(m[1]) && isFinite(m[2]) && isFinite(m[3]); }
 inline bool isFinite(const glm::quat& q) {
   return std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z) && std::isfinite(q.w);
 }

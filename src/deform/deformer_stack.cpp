@@ -4,15 +4,10 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "core/math.h"
+
 namespace kinema {
 namespace {
-
-bool finiteMatrix(const glm::mat4& m) {
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r)
-      if (!std::isfinite(m[c][r])) return false;
-  return true;
-}
 
 // "point.12.y" -> 12, 1; false when the name is not a lattice point parameter.
 bool parsePointParameter(const std::string& name, int& point, int& component) {
@@ -63,7 +58,7 @@ bool fromString(const std::string& s, DeformerType& out) {
 std::string Deformer::validate(int jointCount) const {
   if (parentJoint < -1 || parentJoint >= jointCount)
     return "parent joint " + std::to_string(parentJoint) + " is not a joint of the skeleton";
-  if (!finiteMatrix(parentRest) || std::abs(glm::determinant(glm::mat3(parentRest))) < 1e-12f)
+  if (!isFinite(parentRest) || std::abs(glm::determinant(glm::mat3(parentRest))) < 1e-12f)
     return "parent rest matrix is not an invertible finite transform";
   for (size_t p = 0; p < weights.size(); ++p)
     for (size_t v = 0; v < weights[p].size(); ++v)

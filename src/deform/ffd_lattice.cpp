@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/math.h"
 #include "deform/bernstein.h"
 
 namespace kinema {
@@ -11,13 +12,6 @@ namespace {
 
 glm::mat3 boxMatrix(const FfdLattice& lattice) {
   return glm::mat3(lattice.axes[0], lattice.axes[1], lattice.axes[2]);
-}
-
-bool finiteMatrix(const glm::mat4& m) {
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r)
-      if (!std::isfinite(m[c][r])) return false;
-  return true;
 }
 
 }  // namespace
@@ -123,7 +117,7 @@ std::string FfdJob::validate() const {
   if (std::string e = lattice->validate(); !e.empty()) return "FfdJob: " + e;
   if (count < 0) return "FfdJob: negative point count";
   if (count > 0 && (!positions || !outPositions)) return "FfdJob: positions and outPositions are needed";
-  if (!finiteMatrix(frame) || std::abs(glm::determinant(glm::mat3(frame))) < 1e-12f)
+  if (!isFinite(frame) || std::abs(glm::determinant(glm::mat3(frame))) < 1e-12f)
     return "FfdJob: the lattice frame is not an invertible finite transform";
   return "";
 }

@@ -14,7 +14,8 @@ namespace {
 
 constexpr int kMaxDepth = 64;
 
-glm::quat rotationOf(const glm::mat4& m) {
+// core's rotationOf, with the solver's inlined renormalisation (this sits on the solve's hot path).
+glm::quat inlinedRotationOf(const glm::mat4& m) {
   const glm::mat3 r(glm::normalize(glm::vec3(m[0])), glm::normalize(glm::vec3(m[1])), glm::normalize(glm::vec3(m[2])));
   return ik_detail::renormalize(glm::quat_cast(r));
 }
@@ -44,7 +45,7 @@ struct PathWorld {
       for (int a = 0; a < 3; ++a)
         for (int b = 0; b < 3; ++b) rigid = rigid && std::abs(ltl[a][b] - (a == b ? 1.0f : 0.0f)) < 1e-6f;
     }
-    glm::quat q = identity ? glm::quat(1.0f, 0.0f, 0.0f, 0.0f) : rotationOf(placement);
+    glm::quat q = identity ? glm::quat(1.0f, 0.0f, 0.0f, 0.0f) : inlinedRotationOf(placement);
     count = 0;
     bool inPath = false;
     if (rigid) {

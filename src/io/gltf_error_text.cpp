@@ -15,12 +15,12 @@ namespace kinema {
 
 namespace {
 
-using Json = nlohmann::json;
+using GltfJson = nlohmann::json;
 
 bool startsWith(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
 
 // The objects of a glTF file in the order tinygltf reads them, each with its place name.
-void eachObject(const Json& root, const std::function<bool(const std::string&, const Json&)>& visit) {
+void eachObject(const GltfJson& root, const std::function<bool(const std::string&, const GltfJson&)>& visit) {
   static const std::pair<const char*, const char*> kArrays[] = {
       {"buffers", "buffer"},     {"bufferViews", "bufferView"}, {"accessors", "accessor"}, {"meshes", "mesh"},
       {"nodes", "node"},         {"scenes", "scene"},           {"materials", "material"},  {"images", "image"},
@@ -31,7 +31,7 @@ void eachObject(const Json& root, const std::function<bool(const std::string&, c
     const auto it = root.find(key);
     if (it == root.end() || !it->is_array()) continue;
     for (size_t i = 0; i < it->size(); ++i) {
-      const Json& o = (*it)[i];
+      const GltfJson& o = (*it)[i];
       if (!o.is_object()) continue;
       const std::string place = std::string(name) + " " + std::to_string(i);
       if (!visit(place, o)) return;
@@ -70,7 +70,7 @@ bool required(const std::string& place, const std::string& property) {
 }
 
 // Does `value` (absent when null) break the rule tinygltf's message `what` states?
-bool breaks(const Json* value, const std::string& property, const std::string& what, const std::string& place) {
+bool breaks(const GltfJson* value, const std::string& property, const std::string& what, const std::string& place) {
   if (what.find("missing") != std::string::npos) return !value && required(place, property);
   if (!value) return false;
   if (property == "byteStride" && what.find("Invalid") != std::string::npos) {
@@ -126,8 +126,8 @@ std::string GltfErrorText::error(const std::string& err) const {
             "data:image/png;base64,...)";
     std::string place;
     if (json && jsonTreeBytes(json, jsonLength) <= treeBudget) {
-      const Json root = Json::parse(json, json + jsonLength, nullptr, false);
-      eachObject(root, [&](const std::string& where, const Json& o) {
+      const GltfJson root = GltfJson::parse(json, json + jsonLength, nullptr, false);
+      eachObject(root, [&](const std::string& where, const GltfJson& o) {
         const auto uri = o.find("uri");
         if (uri == o.end() || !uri->is_string() || percentDecoded(uri->get<std::string>()) != decoded) return true;
         place = where + ": ";
@@ -156,9 +156,9 @@ std::string GltfErrorText::error(const std::string& err) const {
   }
   const std::string property = propertyOf(line);
   if (!property.empty() && json && jsonTreeBytes(json, jsonLength) <= treeBudget) {
-    const Json root = Json::parse(json, json + jsonLength, nullptr, false);
+    const GltfJson root = GltfJson::parse(json, json + jsonLength, nullptr, false);
     std::string found;
-    eachObject(root, [&](const std::string& place, const Json& o) {
+    eachObject(root, [&](const std::string& place, const GltfJson& o) {
       const auto it = o.find(property);
       if (!breaks(it == o.end() ? nullptr : &*it, property, line, place)) return true;
       found = place;

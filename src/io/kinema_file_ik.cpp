@@ -4,25 +4,25 @@
 
 #include <optional>
 
+#include "core/math.h"
 #include "io/json_number.h"
 
 namespace kinema::kinema_format {
 
 namespace {
 
-constexpr float kDeg = 3.14159265358979323846f / 180.0f;
 
 bool readDegrees(Reader& r, const Json& obj, const std::string& p, const char* key, float& out) {
   const Json* v = r.member(obj, p, key, true);
   double d = 0.0;
   if (!v || !r.number(*v, p + "." + key, d)) return false;
-  out = static_cast<float>(d) * kDeg;
+  out = static_cast<float>(d) * kDegree;
   return true;
 }
 
 Json degrees(const float* v, int n) {
   float d[3];
-  for (int i = 0; i < n; ++i) d[i] = v[i] / kDeg;
+  for (int i = 0; i < n; ++i) d[i] = v[i] / kDegree;
   if (n == 1) return Json(jsonFloat(d[0]));
   return vec(d, n);
 }
@@ -58,8 +58,8 @@ bool readLimit(Reader& r, const Json& j, const std::string& p, Scene& scene) {
     l.order = *o;
     if (!(v = r.member(j, p, "min_deg", true)) || !r.floats(*v, p + ".min_deg", 3, &l.eulerMin.x)) return false;
     if (!(v = r.member(j, p, "max_deg", true)) || !r.floats(*v, p + ".max_deg", 3, &l.eulerMax.x)) return false;
-    l.eulerMin *= kDeg;
-    l.eulerMax *= kDeg;
+    l.eulerMin *= kDegree;
+    l.eulerMax *= kDegree;
   } else {
     return r.fail(p + ".type", "'" + cutForMessage(type) + "' is not one of hinge, cone, euler");
   }

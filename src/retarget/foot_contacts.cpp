@@ -31,13 +31,16 @@ float restLegLength(const Skeleton& s, const LegJoints& leg) {
   return glm::length(p(leg.lowerLeg) - p(leg.upperLeg)) + glm::length(p(leg.foot) - p(leg.lowerLeg));
 }
 
-std::vector<std::vector<glm::vec3>> jointTracks(const Skeleton& s, const Clip& clip, const std::vector<int>& joints) {
+std::vector<std::vector<glm::vec3>> jointTracks(const Skeleton& s, const Clip& clip, const std::vector<int>& joints,
+                                                PoseSource* poses) {
   const int frames = clipFrameCount(clip);
   std::vector<std::vector<glm::vec3>> tracks(joints.size(), std::vector<glm::vec3>(frames));
   std::vector<glm::mat4> world;
+  ClipPoses bare(s, clip);
+  PoseSource& source = poses ? *poses : bare;
+  Pose pose = Pose::rest(s);
   for (int f = 0; f < frames; ++f) {
-    Pose pose = Pose::rest(s);
-    sampleClip(clip, ownFrameGrid(clip).frameToTime(f), pose);
+    source.poseAt(ownFrameGrid(clip).frameToTime(f), pose);
     computeWorld(s, pose, world);
     for (size_t k = 0; k < joints.size(); ++k) tracks[k][f] = glm::vec3(world[joints[k]][3]);
   }
@@ -65,7 +68,7 @@ bool FootContactJob::run() const {
     const float length = restLegLength(*skeleton, leg);
     std::vector<int> joints{leg.foot};
     if (leg.toes >= 0) joints.push_back(leg.toes);
-    const std::vector<std::vector<glm::vec3>> tracks = jointTracks(*skeleton, *clip, joints);
+    const std::vector<std::vector<glm::vec3>> tracks = jointTracks(*skeleton, *clip, joints, poses);
     const int frames = static_cast<int>(tracks[0].size());
     // Height above the joint's own lowest point, and horizontal speed (central differences).
     std::vector<float> lowest;

@@ -6,6 +6,7 @@
 
 #include "anim/clip.h"
 #include "anim/foot_contact_intervals.h"
+#include "anim/pose_source.h"
 #include "retarget/humanoid_bones.h"
 
 namespace kinema {
@@ -35,6 +36,7 @@ struct FootContactSettings {
 struct FootContactJob {
   const Skeleton* skeleton = nullptr;
   const Clip* clip = nullptr;  // sampled at its frames (clipFrameCount)
+  PoseSource* poses = nullptr;  // optional: the clip's poses (null: its keys alone; see anim/pose_source.h)
   LegJoints legs[2];           // left, right
   FootContactSettings settings;
   std::vector<ContactInterval>* output[2] = {nullptr, nullptr};  // written: per foot, in order
@@ -43,8 +45,10 @@ struct FootContactJob {
   bool run() const;
 };
 
-// World positions (Y up) of `joints` at every frame of the clip: tracks[k][frame].
-std::vector<std::vector<glm::vec3>> jointTracks(const Skeleton& skeleton, const Clip& clip, const std::vector<int>& joints);
+// World positions (Y up) of `joints` at every frame of the clip: tracks[k][frame]; the poses
+// from `poses` when given, else the clip's keys alone.
+std::vector<std::vector<glm::vec3>> jointTracks(const Skeleton& skeleton, const Clip& clip, const std::vector<int>& joints,
+                                                PoseSource* poses = nullptr);
 
 // Foot skate: the mean horizontal slide of the foot (ankle) joint per frame while in contact
 // (every frame of an interval after its first), as a share of the leg length, over both

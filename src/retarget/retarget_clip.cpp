@@ -101,16 +101,17 @@ bool lowestFoot(const std::vector<glm::mat4>& world, const HumanoidMap& humanoid
 }  // namespace
 
 Result<FootFloors> footFloors(const Skeleton& source, const Clip& clip, const HumanoidMap& sourceHumanoid,
-                              const Skeleton& target, const HumanoidMap& targetHumanoid) {
+                              const Skeleton& target, const HumanoidMap& targetHumanoid, PoseSource* sourcePoses) {
   FootFloors floors;
   if (!lowestFoot(computeWorld(target, Pose::rest(target)), targetHumanoid, floors.target))
     return Result<FootFloors>::failure("no feet to stand the target on");
   bool any = false;
+  ClipPoses bare(source, clip);
+  PoseSource& poses = sourcePoses ? *sourcePoses : bare;
   Pose pose = Pose::rest(source);
   std::vector<glm::mat4> world;
   for (int f = 0, n = clipFrameCount(clip); f < n; ++f) {
-    pose = Pose::rest(source);
-    sampleClip(clip, ownFrameGrid(clip).frameToTime(f), pose);
+    poses.poseAt(ownFrameGrid(clip).frameToTime(f), pose);
     computeWorld(source, pose, world);
     float low = 0.0f;
     if (!lowestFoot(world, sourceHumanoid, low)) return Result<FootFloors>::failure("no feet to find the take's floor from");
@@ -188,14 +189,15 @@ bool RetargetJob::run() const {
   bool anyFoot = false;
   std::vector<glm::mat3> rootParentRotation;
   if (targetRoot >= 0) rootParentRotation.reserve(frames);
+  ClipPoses bare(s, *sourceClip);
+  PoseSource& poses = sourcePoses ? *sourcePoses : bare;
   Pose sourcePose = Pose::rest(s);
   std::vector<glm::mat4> worldS;
   std::vector<glm::quat> rotT(t.size());
   std::vector<glm::mat4> worldT(t.size());
   for (int f = 0; f < frames; ++f) {
     const float time = ownFrameGrid(*sourceClip).frameToTime(f);
-    sourcePose = Pose::rest(s);
-    sampleClip(*sourceClip, time, sourcePose);
+    poses.poseAt(time, sourcePose);
     computeWorld(s, sourcePose, worldS);
     Pose targetPose = Pose::rest(t);
     for (int j = 0; j < t.size(); ++j) {

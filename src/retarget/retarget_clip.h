@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "anim/clip.h"
+#include "anim/pose_source.h"
 #include "core/result.h"
 #include "retarget/bone_map.h"
 
@@ -28,6 +29,9 @@ namespace kinema {
 struct RetargetJob {
   const Skeleton* source = nullptr;
   const Clip* sourceClip = nullptr;  // sampled at its frames 0 .. nearestFrame(duration)
+  // Optional: the source's poses at those times (null: sourceClip's keys alone). The CLI and
+  // the editor pass the pipeline's (evaluation/scene_poses.h): modifiers, keyed IK targets.
+  PoseSource* sourcePoses = nullptr;
   const Skeleton* target = nullptr;
   const BoneMap* map = nullptr;       // must validate against the two skeletons
   int sourceRoot = -1;                // the joints root motion goes between (-1: none);
@@ -57,12 +61,14 @@ Result<float> restHipHeight(const Skeleton& skeleton, const HumanoidMap& humanoi
 // The floors root heights are measured from (world Y, file units): the lowest any foot or
 // toe joint of `source` comes over `clip` (a take's rest pose may stand anywhere: BVH rests
 // often put the hips at the origin), and the lowest foot or toe joint of the target's rest
-// pose (a character stands on its floor). Fails when a reading has no feet.
+// pose (a character stands on its floor). Fails when a reading has no feet. `sourcePoses`
+// as RetargetJob's (null: the clip's keys alone).
 struct FootFloors {
   float source = 0.0f;
   float target = 0.0f;
 };
 Result<FootFloors> footFloors(const Skeleton& source, const Clip& clip, const HumanoidMap& sourceHumanoid,
-                              const Skeleton& target, const HumanoidMap& targetHumanoid);
+                              const Skeleton& target, const HumanoidMap& targetHumanoid,
+                              PoseSource* sourcePoses = nullptr);
 
 }  // namespace kinema

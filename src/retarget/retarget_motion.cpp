@@ -30,6 +30,7 @@ Result<RetargetedMotion> retargetMotion(const RetargetMotionInput& in) {
   RetargetJob job;
   job.source = &source;
   job.sourceClip = in.clip;
+  job.sourcePoses = in.sourcePoses;
   job.target = &target;
   job.map = &map;
   job.inPlace = in.inPlace;
@@ -45,7 +46,7 @@ Result<RetargetedMotion> retargetMotion(const RetargetMotionInput& in) {
     job.sourceRoot = sh->bones[HumanoidBone::Hips];
     job.targetRoot = th->bones[HumanoidBone::Hips];
     job.rootScale = ht.value() / hs.value();
-    const Result<FootFloors> floors = footFloors(source, *in.clip, sh->bones, target, th->bones);
+    const Result<FootFloors> floors = footFloors(source, *in.clip, sh->bones, target, th->bones, in.sourcePoses);
     if (!floors) return R::failure(in.sourceLabel + " onto " + in.targetLabel + ": " + floors.error());
     job.sourceFloor = floors->source;
     job.targetFloor = floors->target;

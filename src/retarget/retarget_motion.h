@@ -6,6 +6,7 @@
 #include <string>
 
 #include "anim/clip.h"
+#include "anim/pose_source.h"
 #include "core/result.h"
 #include "core/skeleton.h"
 #include "retarget/bone_map.h"
@@ -27,6 +28,7 @@ Result<AutomaticBoneMap> automaticBoneMap(const Result<HumanoidReading>& source,
 struct RetargetMotionInput {
   const Skeleton* source = nullptr;
   const Clip* clip = nullptr;
+  PoseSource* sourcePoses = nullptr;  // optional: the clip's poses (RetargetJob::sourcePoses)
   const HumanoidReading* sourceHuman = nullptr;
   const Skeleton* target = nullptr;
   const HumanoidReading* targetHuman = nullptr;

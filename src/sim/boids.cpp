@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/math.h"
+
 namespace kinema {
 
 namespace {
-
-bool finite3(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 // Signed distance from p to an axis-aligned box and the outward direction there.
 float boxDistance(const BoidBox& b, const glm::vec3& p, glm::vec3& normal) {
@@ -61,11 +61,11 @@ std::string BoidsSettings::validate() const {
     if (!(v >= 0.0f) || !std::isfinite(v)) return "weights, the avoidance distance and the cruise speed must be finite and >= 0";
   if (!(fieldOfViewDegrees > 0.0f && fieldOfViewDegrees <= 360.0f)) return "the field of view must be in (0, 360] degrees";
   if (cruiseSpeed > maxSpeed) return "the cruise speed must not pass the max speed";
-  if (!finite3(goal)) return "the goal is not finite";
+  if (!isFinite(goal)) return "the goal is not finite";
   for (const BoidSphere& s : spheres)
-    if (!finite3(s.centre) || !(s.radius > 0.0f) || !std::isfinite(s.radius)) return "an obstacle sphere needs a finite centre and radius > 0";
+    if (!isFinite(s.centre) || !(s.radius > 0.0f) || !std::isfinite(s.radius)) return "an obstacle sphere needs a finite centre and radius > 0";
   for (const BoidBox& b : boxes)
-    if (!finite3(b.min) || !finite3(b.max) || b.min.x > b.max.x || b.min.y > b.max.y || b.min.z > b.max.z)
+    if (!isFinite(b.min) || !isFinite(b.max) || b.min.x > b.max.x || b.min.y > b.max.y || b.min.z > b.max.z)
       return "an obstacle box needs finite corners with min <= max";
   return "";
 }

@@ -7,17 +7,17 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "core/forward_kinematics.h"
+#include "core/math.h"
 #include "core/random.h"
 
 namespace kinema {
 
 namespace {
 
-constexpr float kPi = 3.14159265358979323846f;
 
-glm::vec3 jointCentroid(const Skeleton& skeleton, const Clip& clip, float time) {
+glm::vec3 jointCentroid(const Skeleton& skeleton, PoseSource& poses, float time) {
   Pose pose = Pose::rest(skeleton);
-  sampleClip(clip, time, pose);
+  poses.poseAt(time, pose);
   const std::vector<glm::mat4> world = computeWorld(skeleton, pose);
   glm::vec3 sum(0.0f);
   for (const glm::mat4& m : world) sum += glm::vec3(m[3]);
@@ -28,13 +28,16 @@ glm::quat yawRotation(float yaw) { return glm::angleAxis(yaw, glm::vec3(0.0f, 1.
 
 }  // namespace
 
-CrowdClipMotion analyseCrowdClip(const Skeleton& skeleton, const Clip& clip, const CrowdSettings& settings) {
+CrowdClipMotion analyseCrowdClip(const Skeleton& skeleton, const Clip& clip, const CrowdSettings& settings,
+                                 PoseSource* poses) {
+  ClipPoses bare(skeleton, clip);
+  PoseSource& source = poses ? *poses : bare;
   CrowdClipMotion m;
   m.start = 0.0f;
   m.duration = std::max(0.0f, clip.duration());
   m.forwardYaw = glm::radians(settings.forwardDegrees);
   if (m.duration > 0.0f && !skeleton.empty()) {
-    glm::vec3 d = jointCentroid(skeleton, clip, m.start + m.duration) - jointCentroid(skeleton, clip, m.start);
+    glm::vec3 d = jointCentroid(skeleton, source, m.start + m.duration) - jointCentroid(skeleton, source, m.start);
     d.y = 0.0f;
     const glm::vec3 v = d / m.duration;
     if (glm::length(v) >= 1e-3f) {
@@ -132,9 +135,14 @@ Result<CrowdRun> runCrowd(const CrowdSettings& settings, const CrowdClipMotion& 
 }
 
 void crowdMemberPose(const Skeleton& skeleton, const Clip& clip, const CrowdClipMotion& motion,
-                     const CrowdMemberState& state, Pose& pose) {
-  pose = Pose::rest(skeleton);
-  sampleClip(clip, static_cast<float>(state.clipTime), pose);
+                     const CrowdMemberState& state, Pose& pose, PoseSource* poses) {
+  if (pose.size() != skeleton.size()) pose = Pose::rest(skeleton);
+  if (poses) {
+    poses->poseAt(state.clipTime, pose);
+  } else {
+    pose.local.assign(skeleton.rest.begin(), skeleton.rest.end());
+    sampleClip(clip, static_cast<float>(state.clipTime), pose);
+  }
   const glm::quat turn = yawRotation(state.yaw - motion.forwardYaw);
   const glm::vec3 drift = motion.drift * static_cast<float>(state.clipTime - motion.start);
   for (int j = 0; j < skeleton.size(); ++j) {
@@ -146,7 +154,7 @@ void crowdMemberPose(const Skeleton& skeleton, const Clip& clip, const CrowdClip
 }
 
 Clip bakeCrowdMember(const Skeleton& skeleton, const Clip& clip, const CrowdClipMotion& motion, const CrowdRun& run,
-                     int member, long long first, long long last, const std::string& name) {
+                     int member, long long first, long long last, const std::string& name, PoseSource* poses) {
   const int n = skeleton.size();
   std::vector<char> moved(static_cast<size_t>(n), 0), scaled(static_cast<size_t>(n), 0);
   for (int j = 0; j < n; ++j) moved[j] = skeleton.parents[j] < 0;
@@ -175,7 +183,7 @@ Clip bakeCrowdMember(const Skeleton& skeleton, const Clip& clip, const CrowdClip
   first = std::max(0LL, first);
   last = std::min(last, run.frames - 1);
   for (long long f = first; f <= last; ++f) {
-    crowdMemberPose(skeleton, clip, motion, run.at(f, member), pose);
+    crowdMemberPose(skeleton, clip, motion, run.at(f, member), pose, poses);
     const float time = ownFrameGrid(out).frameToTime(f);
     for (int j = 0; j < n; ++j) {
       if (slot[j] < 0) continue;

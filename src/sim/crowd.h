@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "anim/clip.h"
+#include "anim/pose_source.h"
 #include "core/pose.h"
 #include "core/result.h"
 #include "core/skeleton.h"
@@ -26,7 +27,8 @@ struct CrowdClipMotion {
 // Measures the clip's ground drift from the centroid of its joints at the first and last key
 // (a walk with root motion); a clip that moves less than 1 mm/s walks in place and uses
 // `settings`' stride speed (or its cruise speed) and forward angle.
-CrowdClipMotion analyseCrowdClip(const Skeleton& skeleton, const Clip& clip, const CrowdSettings& settings);
+CrowdClipMotion analyseCrowdClip(const Skeleton& skeleton, const Clip& clip, const CrowdSettings& settings,
+                                 PoseSource* poses = nullptr);
 
 struct CrowdMemberState {
   glm::vec3 position{0.0f}, velocity{0.0f};
@@ -61,15 +63,17 @@ Result<CrowdRun> runCrowd(const CrowdSettings& settings, const CrowdClipMotion& 
 double advanceCrowdClipTime(double clipTime, double dt, float groundSpeed, const CrowdClipMotion& motion);
 
 // A member's pose: the clip sampled at its clip time, its drift taken out, and each root joint
-// turned by (yaw - forwardYaw) about +Y and moved to the member's position.
+// turned by (yaw - forwardYaw) about +Y and moved to the member's position. Here and in
+// analyseCrowdClip and bakeCrowdMember, `poses` gives the clip's poses (the character's scene
+// through the pipeline: evaluation/scene_poses.h); null: the clip's keys alone.
 void crowdMemberPose(const Skeleton& skeleton, const Clip& clip, const CrowdClipMotion& motion,
-                     const CrowdMemberState& state, Pose& pose);
+                     const CrowdMemberState& state, Pose& pose, PoseSource* poses = nullptr);
 
 // One member as a clip of its own: a linear key per frame (frames first..last of the run, at
 // frame * frameTime seconds) on the translation and rotation of every root joint and every joint
 // the clip animates (and the scale where the clip animates it).
 Clip bakeCrowdMember(const Skeleton& skeleton, const Clip& clip, const CrowdClipMotion& motion, const CrowdRun& run,
-                     int member, long long first, long long last, const std::string& name);
+                     int member, long long first, long long last, const std::string& name, PoseSource* poses = nullptr);
 
 // "crowd_0007": the name of a member (its baked clip, its joints' prefix in a glTF of the crowd).
 std::string crowdMemberName(const std::string& crowdName, int member);

@@ -3,13 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/math.h"
 #include "core/random.h"
 
 namespace kinema {
 
 namespace {
-
-bool finite3(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 float draw(const RandomRange& r, SplitMix64& random) {
   const double x = r.distribution == RandomDistribution::Uniform ? r.mean + r.spread * random.uniform(-1.0, 1.0)
@@ -112,13 +111,13 @@ const char* toString(EmitterShape shape) {
 }
 
 std::string ParticleForces::validate() const {
-  if (!finite3(gravity) || !finite3(wind)) return "gravity and wind must be finite";
+  if (!isFinite(gravity) || !isFinite(wind)) return "gravity and wind must be finite";
   if (!(drag >= 0.0f) || !std::isfinite(drag)) return "drag must be a finite number >= 0 (per second)";
   if (!std::isfinite(groundHeight)) return "the ground height must be finite";
   if (!(restitution >= 0.0f && restitution <= 1.0f)) return "restitution must be in [0, 1]";
   if (!(friction >= 0.0f && friction <= 1.0f)) return "friction must be in [0, 1]";
   for (const ParticleSphere& s : spheres)
-    if (!finite3(s.centre) || !(s.radius > 0.0f) || !std::isfinite(s.radius)) return "a collision sphere needs a finite centre and radius > 0";
+    if (!isFinite(s.centre) || !(s.radius > 0.0f) || !std::isfinite(s.radius)) return "a collision sphere needs a finite centre and radius > 0";
   return "";
 }
 
@@ -133,7 +132,7 @@ std::string ParticleStepJob::validate() const {
   for (size_t i = 0; i < emitters->size(); ++i) {
     const ParticleEmitter& e = (*emitters)[i];
     const std::string which = "emitter " + std::to_string(i + 1) + ": ";
-    if (!finite3(e.position) || !finite3(e.direction) || glm::length(e.direction) < 1e-6f)
+    if (!isFinite(e.position) || !isFinite(e.direction) || glm::length(e.direction) < 1e-6f)
       return which + "needs a finite position and a non-zero direction";
     if (!(e.coneDegrees >= 0.0f && e.coneDegrees <= 180.0f)) return which + "the cone half-angle must be in [0, 180] degrees";
     for (const auto& [range, what] : {std::pair<const RandomRange*, const char*>{&e.speed, "speed"}, {&e.rate, "rate"}, {&e.lifetime, "lifetime"}})

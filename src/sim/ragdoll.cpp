@@ -285,7 +285,7 @@ float Ragdoll::largestSpeed() const {
 Result<Clip> bakeRagdoll(const Skeleton& skeleton, const Clip& clip, const RagdollSettings& settings,
                          const std::vector<RagdollBody>& bodies, const std::vector<JointLimit>& limits,
                          long long firstFrame, long long lastFrame, RagdollBakeReport* report,
-                         const std::function<void(long long frame)>& frameDone) {
+                         const std::function<void(long long frame)>& frameDone, PoseSource* poses) {
   if (lastFrame < firstFrame) return Result<Clip>::failure("the last frame is before the first");
   if (lastFrame - firstFrame > 1000000) return Result<Clip>::failure("more than 1,000,000 frames to bake");
   if (std::string e = settings.validate(skeleton); !e.empty()) return Result<Clip>::failure(e);
@@ -300,16 +300,16 @@ Result<Clip> bakeRagdoll(const Skeleton& skeleton, const Clip& clip, const Ragdo
   const int rootJoint = bodies.empty() ? -1 : bodies[0].joint;
   translation[0] = Channel(rootJoint, ChannelTarget::Translation, Interpolation::Linear, {}, {});
   std::unique_ptr<Ragdoll> ragdoll;
-  SamplingCache cache;
+  ClipPoses bare(skeleton, clip);
+  PoseSource& source = poses ? *poses : bare;
   Pose pose = Pose::rest(skeleton);
   for (long long f = firstFrame; f <= lastFrame; ++f) {
     const float t = ownFrameGrid(clip).frameToTime(f);
-    pose = Pose::rest(skeleton);
-    sampleClip(clip, t, pose, cache);
+    source.poseAt(t, pose);
     if (f == start) {
+      // The frame before, for the bodies' starting velocities.
       Pose previous = Pose::rest(skeleton);
-      SamplingCache other;
-      sampleClip(clip, ownFrameGrid(clip).frameToTime(f - 1), previous, other);
+      source.poseAt(ownFrameGrid(clip).frameToTime(f - 1), previous);
       Result<std::unique_ptr<Ragdoll>> made = Ragdoll::create(skeleton, settings, bodies, limits, pose, &previous, dt);
       if (!made) return Result<Clip>::failure(made.error());
       ragdoll = std::move(made.value());

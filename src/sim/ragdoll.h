@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "anim/clip.h"
+#include "anim/pose_source.h"
 #include "core/pose.h"
 #include "core/result.h"
 #include "ik/joint_limits.h"
@@ -75,6 +76,6 @@ struct RagdollBakeReport {
 Result<Clip> bakeRagdoll(const Skeleton& skeleton, const Clip& clip, const RagdollSettings& settings,
                          const std::vector<RagdollBody>& bodies, const std::vector<JointLimit>& limits,
                          long long firstFrame, long long lastFrame, RagdollBakeReport* report = nullptr,
-                         const std::function<void(long long frame)>& frameDone = {});
+                         const std::function<void(long long frame)>& frameDone = {}, PoseSource* poses = nullptr);
 
 }  // namespace kinema

@@ -4,12 +4,12 @@
 #include <cmath>
 
 #include "core/forward_kinematics.h"
+#include "core/math.h"
 #include "retarget/bone_map.h"
 
 namespace kinema {
 namespace {
 
-constexpr float kDeg = 3.14159265358979323846f / 180.0f;
 
 float distanceToSegment(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b) {
   const glm::vec3 ab = b - a;
@@ -155,7 +155,7 @@ std::vector<JointLimit> ragdollJointLimits(const Skeleton& s, const IkRig& rig) 
       if (glm::length(f) > 0.0f) forward = glm::normalize(f);
     }
     auto cone = [&](HumanoidBone b, float coneDeg, float twistDeg) {
-      if (m.has(b)) limits[m[b]] = JointLimit::cone(boneAxis(m[b]), coneDeg * kDeg, -twistDeg * kDeg, twistDeg * kDeg);
+      if (m.has(b)) limits[m[b]] = JointLimit::cone(boneAxis(m[b]), coneDeg * kDegree, -twistDeg * kDegree, twistDeg * kDegree);
     };
     // A hinge that swings the bone towards `towards` (world) by 0 to maxDeg.
     auto hinge = [&](HumanoidBone b, const glm::vec3& towards, float maxDeg) {
@@ -166,7 +166,7 @@ std::vector<JointLimit> ragdollJointLimits(const Skeleton& s, const IkRig& rig) 
       glm::vec3 axis = glm::cross(bone, towards);
       if (!(glm::length(axis) > 1e-4f)) return;
       axis = glm::transpose(r) * glm::normalize(axis);  // into the joint's rest frame
-      limits[j] = JointLimit::hinge(axis, 0.0f, maxDeg * kDeg);
+      limits[j] = JointLimit::hinge(axis, 0.0f, maxDeg * kDegree);
     };
     for (HumanoidBone b : {HumanoidBone::Spine, HumanoidBone::Chest, HumanoidBone::UpperChest}) cone(b, 20.0f, 15.0f);
     cone(HumanoidBone::Neck, 35.0f, 30.0f);

@@ -8,6 +8,31 @@
 
 namespace kinema {
 
+namespace {
+
+// The input's poses with what an earlier part baked (its joints' keys in `baked`) over them:
+// the motion a ragdoll after the spring chains moves on.
+class BakedKeysOver final : public PoseSource {
+ public:
+  BakedKeysOver(PoseSource& under, const Clip& baked, const std::vector<int>& joints) : under_(under) {
+    for (const Channel& c : baked.channels)
+      if (std::find(joints.begin(), joints.end(), c.joint) != joints.end() &&
+          (c.target == ChannelTarget::Rotation || c.target == ChannelTarget::Translation))
+        channels_.push_back(&c);
+  }
+  void poseAt(double time, Pose& pose) override {
+    under_.poseAt(time, pose);
+    for (const Channel* c : channels_)
+      applyChannelValue(*c, sampleChannel(*c, static_cast<float>(time)), pose.local[c->joint]);
+  }
+
+ private:
+  PoseSource& under_;
+  std::vector<const Channel*> channels_;
+};
+
+}  // namespace
+
 Result<SimulationBake> bakeSimulation(const SimulationBakeInput& in) {
   using R = Result<SimulationBake>;
   if (!in.skeleton || !in.clip || !in.settings) return R::failure("bakeSimulation: skeleton, clip and settings are needed");
@@ -25,7 +50,7 @@ Result<SimulationBake> bakeSimulation(const SimulationBakeInput& in) {
   // Spring chains first (one simulation; the chains do not touch each other).
   const std::vector<SpringBoneChain>& chains = in.settings->springChains;
   if (!chains.empty()) {
-    Result<Clip> baked = bakeSpringBones(s, out.clip, chains, in.firstFrame, in.lastFrame, in.springSubsteps);
+    Result<Clip> baked = bakeSpringBones(s, out.clip, chains, in.firstFrame, in.lastFrame, in.springSubsteps, in.poses);
     if (!baked) return R::failure(baked.error());
     for (const SpringBoneChain& c : chains) {
       SimulatedPart part;
@@ -55,9 +80,11 @@ Result<SimulationBake> bakeSimulation(const SimulationBakeInput& in) {
 
   // Then each ragdoll, over the clip as the chains left it.
   for (const RagdollSettings& settings : in.settings->ragdolls) {
+    ClipPoses bare(s, out.clip);
+    BakedKeysOver over(in.poses ? *in.poses : bare, out.clip, keyed);
+    PoseSource& poses = in.poses ? static_cast<PoseSource&>(over) : bare;
     Pose start = Pose::rest(s);
-    SamplingCache cache;
-    sampleClip(out.clip, ownFrameGrid(out.clip).frameToTime(std::max(in.firstFrame, settings.startFrame)), start, cache);
+    poses.poseAt(ownFrameGrid(out.clip).frameToTime(std::max(in.firstFrame, settings.startFrame)), start);
     std::vector<RagdollBody> bodies;
     RagdollBodiesJob job;
     job.skeleton = &s;
@@ -81,7 +108,7 @@ Result<SimulationBake> bakeSimulation(const SimulationBakeInput& in) {
     std::function<void(long long)> frameDone;
     if (in.progress) frameDone = [&](long long f) { in.progress(part, f); };
     Result<Clip> baked = bakeRagdoll(s, out.clip, settings, bodies, ragdollJointLimits(s, rig), in.firstFrame,
-                                     in.lastFrame, &report, frameDone);
+                                     in.lastFrame, &report, frameDone, &poses);
     if (!baked) return R::failure(baked.error());
     out.clip = std::move(baked.value());
     part.firstFrame = report.firstFrame;

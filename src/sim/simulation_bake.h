@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "anim/clip.h"
+#include "anim/pose_source.h"
 #include "core/mesh.h"
 #include "ik/ik_rig.h"
 #include "retarget/key_reduction.h"
@@ -29,6 +30,9 @@ struct SimulatedPart {
 struct SimulationBakeInput {
   const Skeleton* skeleton = nullptr;
   const Clip* clip = nullptr;
+  // Optional: the clip's poses, what the simulated parts move on (the CLI and the editor pass
+  // the pipeline's, dynamics off: evaluation/scene_poses.h); null: the clip's keys alone.
+  PoseSource* poses = nullptr;
   // The document's frame rate (Scene::frameRate): the clip's when it has none of its own.
   double documentFrameRate = kDefaultFrameRate;
   const SimulationSettings* settings = nullptr;

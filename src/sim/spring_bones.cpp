@@ -161,7 +161,7 @@ bool SpringBoneJob::run() const {
 }
 
 Result<Clip> bakeSpringBones(const Skeleton& skeleton, const Clip& clip, const std::vector<SpringBoneChain>& chains,
-                             long long firstFrame, long long lastFrame, int substeps) {
+                             long long firstFrame, long long lastFrame, int substeps, PoseSource* poses) {
   if (lastFrame < firstFrame) return Result<Clip>::failure("the last frame is before the first");
   if (lastFrame - firstFrame > 1000000) return Result<Clip>::failure("more than 1,000,000 frames to bake");
   for (const SpringBoneChain& c : chains)
@@ -176,7 +176,8 @@ Result<Clip> bakeSpringBones(const Skeleton& skeleton, const Clip& clip, const s
   }
   if (!hasOwnFrameRate(clip)) return Result<Clip>::failure("the clip has no frame rate of its own (frame_time)");
   SpringBoneState state;
-  SamplingCache cache;
+  ClipPoses bare(skeleton, clip);
+  PoseSource& source = poses ? *poses : bare;
   Pose pose = Pose::rest(skeleton);
   SpringBoneJob job;
   job.skeleton = &skeleton;
@@ -188,8 +189,7 @@ Result<Clip> bakeSpringBones(const Skeleton& skeleton, const Clip& clip, const s
   if (std::string e = job.validate(); !e.empty()) return Result<Clip>::failure(e);
   for (long long f = firstFrame; f <= lastFrame; ++f) {
     const float t = ownFrameGrid(clip).frameToTime(f);
-    pose = Pose::rest(skeleton);
-    sampleClip(clip, t, pose, cache);
+    source.poseAt(t, pose);
     if (!job.run()) return Result<Clip>::failure("the simulation failed at frame " + std::to_string(f));
     for (size_t b = 0; b < baked.size(); ++b) {
       const glm::quat q = pose.local[baked[b]].rotation;

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "anim/clip.h"
+#include "anim/pose_source.h"
 #include "core/pose.h"
 #include "core/result.h"
 
@@ -68,7 +69,9 @@ struct SpringBoneJob {
 // to lastFrame on its frame grid (Clip::frameToTime), simulated from firstFrame at rest, and each
 // chain joint gets a linear rotation channel with a key per frame (replacing its own rotation
 // channels). What the editor and `kinema simulate` write; the result edits like any clip.
+// The chains move on `poses` (the clip's motion, e.g. through the pipeline: evaluation/
+// scene_poses.h, dynamics off); null: the clip's keys alone.
 Result<Clip> bakeSpringBones(const Skeleton& skeleton, const Clip& clip, const std::vector<SpringBoneChain>& chains,
-                             long long firstFrame, long long lastFrame, int substeps = 4);
+                             long long firstFrame, long long lastFrame, int substeps = 4, PoseSource* poses = nullptr);
 
 }  // namespace kinema

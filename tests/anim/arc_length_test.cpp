@@ -7,7 +7,7 @@
 #include "anim_test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 Channel path(const std::vector<float>& times, const std::vector<glm::vec3>& points, Interpolation mode) {
   Channel c;

@@ -12,7 +12,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 ChannelModifier noise(float strength, float scale, int octaves, uint32_t seed) {
   ChannelModifier m;

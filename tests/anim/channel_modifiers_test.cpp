@@ -9,7 +9,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 Channel flatTranslation() { return Channel(0, ChannelTarget::Translation, Interpolation::Linear, {0.0f, 10.0f}, {glm::vec4(0.0f), glm::vec4(0.0f)}); }
 

@@ -6,7 +6,7 @@
 #include "anim/easing.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 const EasingFunction kAll[] = {EasingFunction::Sine, EasingFunction::Quad, EasingFunction::Cubic,
                                EasingFunction::Quart, EasingFunction::Quint, EasingFunction::Expo,

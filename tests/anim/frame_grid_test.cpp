@@ -6,7 +6,7 @@
 #include "anim/frame_grid.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // A clip with one translation channel keyed at `times`.
 Clip keyedAt(const std::vector<float>& times) {

@@ -7,7 +7,7 @@
 #include "anim_test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 using test::leftSlope;
 using test::rightSlope;

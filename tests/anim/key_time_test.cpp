@@ -7,7 +7,7 @@
 #include "anim/clip.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 Channel threeKeys() {
   return Channel(0, ChannelTarget::Translation, Interpolation::Linear, {0.0f, 0.5f, 1.0f},

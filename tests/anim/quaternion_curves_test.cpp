@@ -7,7 +7,7 @@
 #include "anim_test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 constexpr double kPi = 3.14159265358979323846;
 

@@ -11,7 +11,7 @@
 #include "anim/sampling.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 constexpr float kTolerance = 1e-6f;
 

@@ -10,7 +10,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 struct Gen {
   std::mt19937 rng;

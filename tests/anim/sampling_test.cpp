@@ -9,7 +9,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 constexpr double kPi = 3.14159265358979323846;
 

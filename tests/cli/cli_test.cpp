@@ -8,7 +8,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // Root at (1,2,3); frame 1 turns the root 90 degrees about Z. Arm is 2 up, its End Site 1 up.
 const char* kTwoFrames =

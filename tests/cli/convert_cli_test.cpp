@@ -8,7 +8,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 class ConvertCli : public ::testing::Test {
  protected:

@@ -20,7 +20,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // The default character (skinned) with a 1 s walk at 30 fps that moves its hips 1.2 m along
 // +Z and swings its upper legs; one crowd of `members` of itself around a sphere.
@@ -148,7 +148,7 @@ TEST_F(CrowdCli, BvhAndOtherFilesCharactersInAKinemaOutAreRefused) {
 }  // namespace kinema::test
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // --render draws the crowd: the members and the sphere, where `kinema render` of the same file
 // draws the file's own character alone; so the two pictures of frame 1 differ in many pixels.

@@ -12,7 +12,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 class DeformersCli : public ::testing::Test {
  protected:

@@ -11,7 +11,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 using Json = nlohmann::json;
 namespace fs = std::filesystem;
@@ -142,7 +142,7 @@ TEST(DemoCommand, SolverTableWritesEveryFormat) {
 }  // namespace kinema
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // ffmpeg is optional: with one on PATH (here a stand-in that records its arguments and
 // writes its output file) each solver gets a GIF and an MP4 made from its step images.
@@ -212,7 +212,7 @@ TEST(DemoCommand, TheGifKeepsTheFiguresColours) {
 }  // namespace kinema
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // Issue 23: `kinema demo stiff-springs`. The limits in numbers.json against the closed forms
 // computed here from the chain's parameters (w_max of a fixed-free chain of N masses), and the

@@ -9,7 +9,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // The root's translation is keyed at (0, 1, 0) at 0 s and 1 s; a wave adds
 // 0.2 cos(3 t + 0.5) to y only (k = 0: x plays no part). The arm hangs 0.3 m along x.

@@ -18,7 +18,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // The default character turning its hips to and fro over 48 frames at 24 fps, with a tail:
 // five 0.12 m bones behind the hips, and a ragdoll of the whole body from frame 30.

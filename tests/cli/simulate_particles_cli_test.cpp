@@ -13,7 +13,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 constexpr int kSize = 96;
 

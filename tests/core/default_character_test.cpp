@@ -8,7 +8,7 @@
 #include "core/forward_kinematics.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 bool endsWith(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;

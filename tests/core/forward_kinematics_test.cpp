@@ -12,7 +12,7 @@
 #include "core/forward_kinematics.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 glm::vec3 position(const glm::mat4& m) { return glm::vec3(m[3]); }
 

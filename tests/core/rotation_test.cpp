@@ -12,7 +12,7 @@
 // matrices written out by hand here (never against the library or glm::angleAxis).
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 constexpr double kPi = 3.14159265358979323846;
 const EulerOrder kAllOrders[] = {EulerOrder::XYZ, EulerOrder::XZY, EulerOrder::YXZ,
@@ -617,7 +617,7 @@ TEST(SafeNormalize, ZeroNaNAndInfinityGiveIdentity) {
 }  // namespace kinema
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // Found by fuzz_clip_sampling: a key quaternion with denormal-sized components normalised
 // to length 0.8 because its squared length underflowed.

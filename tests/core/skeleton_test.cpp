@@ -7,7 +7,7 @@
 #include "core/skeleton.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // hips
 // ├── spine ── head

@@ -13,7 +13,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 Deformer twist(float angle) {
   Deformer d;

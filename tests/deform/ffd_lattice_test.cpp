@@ -15,7 +15,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 double binomial(int n, int k) {
   double r = 1.0;

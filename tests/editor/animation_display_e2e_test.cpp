@@ -15,7 +15,7 @@
 #include "io/scene_files.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 using e2e::DumpCamera;
 using e2e::json;

@@ -5,7 +5,7 @@
 #include "editor/viewport/capsule_shape.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 float segmentDistance(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b) {
   const glm::vec3 d = b - a;

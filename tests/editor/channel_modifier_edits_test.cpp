@@ -8,7 +8,7 @@
 #include "editor/model/document.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // Root at (0, 1, 0); A 0.5 m above it. Channels: root translation, root rotation, A rotation.
 Scene testScene() {

@@ -10,7 +10,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // Two clips moving the root: "Walk" along X, "Run" along Z (2 units per second, 24 fps).
 Scene twoClips() {

@@ -20,7 +20,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // Three clips on a two-joint skeleton, each moving the root along its own axis over 1 s
 // (linear, 24 fps grid): "A" along X, "B" along Y, "C" along Z, 2 units at t = 1.

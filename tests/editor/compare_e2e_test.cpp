@@ -12,7 +12,7 @@
 #include "ik/solver_comparison.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 using namespace e2e;
 

@@ -7,7 +7,7 @@
 #include "editor/model/compare_mode.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 constexpr float kPi = 3.14159265358979f;
 

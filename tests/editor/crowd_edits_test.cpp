@@ -11,7 +11,7 @@
 #include "editor/model/document.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // The default character walking 1.2 m along +Z in 1 s at 30 fps (its hips move).
 Scene walker() {

@@ -15,7 +15,7 @@
 #include "editor/model/document.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = 180.0 / kPi;  // the Euler view shows angles in degrees

@@ -17,7 +17,7 @@
 #include "evaluation/scene_deformation.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 using namespace e2e;
 

@@ -8,7 +8,7 @@
 #include "editor/model/document_files.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // A clip with one rotation channel on `joint`: keys at 0 s and 1 s.
 Clip twoKeyClip(int joint, float angle) {

@@ -8,7 +8,7 @@
 #include "scene/default_character_scene.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 Deformer twist(const std::string& name, float angle) {
   Deformer d;
@@ -107,7 +107,7 @@ TEST(DocumentDeformers, KeyedParametersAreInterpolatedChannels) {
 }  // namespace kinema
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(DocumentDeformers, ASoftPullsCentreRadiusAndFalloffAreOneUndoStepAndKeepItsOffset) {
   Document doc(makeDefaultCharacterScene());
@@ -138,7 +138,7 @@ TEST(DocumentDeformers, ASoftPullsCentreRadiusAndFalloffAreOneUndoStepAndKeepIts
 }  // namespace kinema
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(DocumentDeformers, PlacementAndScopeEditsAreUndoStepsThatChangeWhatTheyName) {
   Document doc(makeDefaultCharacterScene());

@@ -13,7 +13,7 @@
 #include "io/scene_files.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 namespace fs = std::filesystem;
 

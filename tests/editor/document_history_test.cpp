@@ -13,7 +13,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // Everything an edit may change, as bytes: two documents compare equal exactly when their
 // names, pose, limits and IK targets are bitwise the same.
@@ -296,7 +296,7 @@ TEST(DocumentHistory, RandomEditSequencesUndoAndRedoExactly) {
 }  // namespace kinema
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // Same rotation (either sign of the quaternion).
 void expectSameRotation(const glm::quat& a, const glm::quat& b, const char* what) {
@@ -336,7 +336,7 @@ TEST(DocumentLimits, FkRotationsAndDragsStayWithinTheJointLimit) {
 }  // namespace kinema
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(DocumentSkinning, TheSkinningMethodIsAnUndoableEditOfTheMeshInstance) {
   Document doc = newDocument();  // the default character: one skinned body
@@ -364,7 +364,7 @@ TEST(DocumentSkinning, TheSkinningMethodIsAnUndoableEditOfTheMeshInstance) {
 }  // namespace kinema
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(DocumentSkinning, BindingAnUnskinnedMeshIsOneUndoStep) {
   // A two-bone chain up +Y and a 4-vertex quad along it on the root, not skinned.

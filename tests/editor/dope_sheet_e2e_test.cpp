@@ -15,7 +15,7 @@
 #include "editor/e2e_harness.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 using namespace e2e;
 

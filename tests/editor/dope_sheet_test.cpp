@@ -11,7 +11,7 @@
 #include "editor/model/keying.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 constexpr double kFt = 1.0 / 24.0;  // the clip's frame time
 float at(double frame) { return static_cast<float>(frame * kFt); }

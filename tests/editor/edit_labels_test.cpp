@@ -11,7 +11,7 @@
 #include "editor/model/timeline.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(EditLabels, JointsAndCountsReadAsWords) {
   const Document doc = newDocument();

@@ -17,7 +17,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 using json = nlohmann::json;
 using e2e::DumpCamera;

@@ -5,7 +5,7 @@
 #include "editor/model/editor_layout.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 LayoutMetrics metricsAt(float scale) {
   LayoutMetrics m;

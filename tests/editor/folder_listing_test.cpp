@@ -10,7 +10,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(FolderListing, FoldersFirstThenSupportedFilesSortedHiddenLeftOut) {
   const std::string dir = makeTempDir();

@@ -17,7 +17,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 using Intervals = std::vector<ContactInterval>;
 
@@ -293,7 +293,7 @@ TEST(FootContactEdits, ImportedClipKeepsItsMapAndContactsAndReopensTheMap) {
 }  // namespace kinema
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // The Import dialog's Clip combo: any clip of the file, not only its first (kinema retarget
 // --clip); the new clip is named after it and its saved map says which.

@@ -19,7 +19,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // A glTF-like clip (no frame grid) moving the root along X with x = 24 t: at 24 fps the
 // root's x is the frame number, which makes every view's frame easy to check by hand.

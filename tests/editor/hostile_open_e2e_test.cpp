@@ -12,7 +12,7 @@
 #include "io/message_text.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 using namespace e2e;
 using namespace hostile;

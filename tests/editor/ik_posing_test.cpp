@@ -9,7 +9,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 int joint(const Document& d, const char* name) { return d.skeleton().find(name); }
 

@@ -13,7 +13,7 @@
 #include "editor/window/imgui_damage.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 const ImTextureID kFont = reinterpret_cast<ImTextureID>(static_cast<intptr_t>(7));
 

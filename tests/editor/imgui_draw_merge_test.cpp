@@ -12,7 +12,7 @@
 #include "editor/window/imgui_backends.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // One triangle as drawn: its three vertices (position, uv, colour), clip rectangle, texture.
 struct DrawnTriangle {

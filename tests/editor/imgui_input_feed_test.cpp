@@ -13,7 +13,7 @@
 #include "editor/window/imgui_input_feed.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 InputEvent key(InputEventType type, int code, int mods = 0) {
   InputEvent e;

@@ -11,7 +11,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(InputScript, ParsesJsonLinesAndArraysSortedByFrame) {
   const std::string lines =

@@ -7,7 +7,7 @@
 #include "editor/model/joint_selection.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 using V = std::vector<int>;
 

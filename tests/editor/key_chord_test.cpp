@@ -6,7 +6,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(KeyChord, FormatsAsBlenderWritesThem) {
   EXPECT_EQ(formatChord({keys::Z, kModCtrl | kModShift}), "Ctrl+Shift+Z");

@@ -14,7 +14,7 @@
 #include "io/scene_files.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 using namespace e2e;
 

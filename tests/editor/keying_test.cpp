@@ -14,7 +14,7 @@
 #include "editor/model/pose_edits.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 int joint(const Document& d, const char* name) { return d.skeleton().find(name); }
 

@@ -8,7 +8,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 const KeyChord kR{keys::R, 0}, kShiftR{keys::R, kModShift}, kCtrlZ{keys::Z, kModCtrl};
 

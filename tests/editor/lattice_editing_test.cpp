@@ -12,7 +12,7 @@
 #include "evaluation/scene_deformation.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 struct LatticeFixture : ::testing::Test {
   EditorState state;

@@ -17,7 +17,7 @@
 #include "viewport_test_views.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 glm::vec2 pixelOf(const glm::vec3& p) { return {100 + 100 * p.x / (10 - p.z), 100 - 100 * p.y / (10 - p.z)}; }
 

@@ -3,7 +3,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 constexpr float kPi = 3.14159265358979f;
 

@@ -6,7 +6,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 Scene stripScene() {
   Scene s;

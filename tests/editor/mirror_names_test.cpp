@@ -4,7 +4,7 @@
 #include "editor/model/mirror_names.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(MirrorNames, SideMarkersFlip) {
   const std::pair<const char*, const char*> cases[] = {

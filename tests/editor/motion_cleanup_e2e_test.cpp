@@ -10,7 +10,7 @@
 #include "editor/model/motion_import.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 using namespace e2e;
 

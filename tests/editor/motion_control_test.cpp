@@ -6,7 +6,7 @@
 #include "editor/model/motion_control.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // An L-shaped path: 1 m along X in the first second, then 3 m along Y in the next (so the
 // keyed speed jumps from 1 to 3 m/s). Arc length from the start of a point on it: x + y.

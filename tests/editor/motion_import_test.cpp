@@ -12,7 +12,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 std::string cmuTake() { return test::sharedDataDir() + "/bvh/cmu_01_01_first720.bvh"; }
 

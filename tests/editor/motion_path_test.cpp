@@ -5,7 +5,7 @@
 #include "editor/model/motion_path.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // Three joints: root (translation keys), mid 1 m above it (Z rotation keys), tip 0.5 m above
 // mid. The tip's world position in closed form: root(t) + (0,1,0) + Rz(angle(t)) (0,0.5,0).

@@ -5,7 +5,7 @@
 #include "editor/model/onion_skin.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(OnionSkin, GhostFramesAroundTheCurrentFrameWithStepAndOrder) {
   OnionSkinSettings s;

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // root ─ spine ─ arm.L ─ hand.L
 //            └─ arm.R ─ hand.R

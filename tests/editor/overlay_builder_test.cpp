@@ -4,7 +4,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 int countColor(const OverlayDrawList& list, const glm::vec4& color) {
   int n = 0;

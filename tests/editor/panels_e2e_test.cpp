@@ -20,7 +20,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // Scripts start as the editor opens (no front view first); one event per frame from frame 3.
 struct Script : e2e::Script {
@@ -472,7 +472,7 @@ TEST_F(PanelsE2e, KillDashNineThenRestartOffersTheRecoveryFile) {
 }  // namespace kinema::test
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // Issue 9: a clip authored in the editor (UpperArm.L keyed at Rz(40) on frame 1 and Rz(-20)
 // on frame 24 with I, the Right key stepping between) goes out through File > Export as

@@ -9,7 +9,7 @@
 #include "editor/model/particle_edits.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // The default character whose hips slide 1 m along +x over 1 s at 30 fps.
 Scene sliding() {

@@ -12,7 +12,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 struct Chain {
   std::vector<int> parents{-1, 0, 1};

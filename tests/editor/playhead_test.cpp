@@ -17,7 +17,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 glm::quat rotationOf(const Document& doc, int joint) { return doc.pose().local[joint].rotation; }
 

@@ -8,7 +8,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // World positions by a straightforward FK: M(joint) = M(parent) * T * R * S.
 std::vector<glm::vec3> worldPositions(const Document& doc) {

@@ -7,7 +7,7 @@
 #include "editor/model/pose_edits.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 glm::quat rotZ(float degrees) { return glm::angleAxis(glm::radians(degrees), glm::vec3(0, 0, 1)); }
 

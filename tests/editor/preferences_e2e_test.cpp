@@ -11,7 +11,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 using e2e::json;
 using e2e::Script;

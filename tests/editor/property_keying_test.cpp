@@ -10,7 +10,7 @@
 #include "scene/default_character_scene.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 const Channel* scalar(const EditorState& s, const std::string& property) {
   if (!s.hasMotion()) return nullptr;

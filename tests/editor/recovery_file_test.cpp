@@ -14,7 +14,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 namespace fs = std::filesystem;
 

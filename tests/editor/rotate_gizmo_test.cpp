@@ -10,7 +10,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 constexpr float kPi = 3.14159265358979f;
 
@@ -235,7 +235,7 @@ TEST(RotateGizmo, WorldTurnBecomesTheLocalRotationUnderTheParent) {
 }  // namespace kinema::test
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // The default character as the editor first frames it (render/skeleton_view.h), in the
 // 3D view of the editor's 1600 x 1000 window (1040 x 917 pixels).

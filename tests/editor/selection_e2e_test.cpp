@@ -8,7 +8,7 @@
 #include "io/image.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 using namespace e2e;
 

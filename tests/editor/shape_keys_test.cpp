@@ -11,7 +11,7 @@
 #include "evaluation/scene_deformation.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(ShapeKeys, TheDefaultCharacterHasNamedShapes) {
   Document doc(makeDefaultCharacterScene());

@@ -11,7 +11,7 @@
 #include "editor/model/simulation_edits.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // The default character with a 4-joint tail behind its hips, turning its hips over 2 s at 24 fps.
 Scene tailed() {
@@ -152,7 +152,7 @@ TEST(SimulationEdits, RagdollFromAFrameFallsAndIsOneStep) {
 }  // namespace kinema
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // Distance from p to the segment a-b.
 float segmentDistance(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b) {
@@ -220,7 +220,7 @@ TEST(SimulationEdits, ACollisionCapsuleIsOneUndoStepAndKeepsTheTailOut) {
 }  // namespace kinema
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(SimulationEdits, ARagdollWithoutAClipFallsFromThePoseOnScreenIntoANewAction) {
   Scene scene = tailed();

@@ -6,7 +6,7 @@
 #include "editor/model/text_elision.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // A monospace measure: 7 px per character (UTF-8 continuation bytes add nothing).
 float mono(const std::string& s) {

@@ -5,7 +5,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(TranslateDrag, ViewPlaneDragKeepsDepthAndFollowsTheCursor) {
   const ViewportView persp = handView(false);

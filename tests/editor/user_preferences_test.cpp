@@ -9,7 +9,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 UserPreferences everythingChanged() {
   UserPreferences p;

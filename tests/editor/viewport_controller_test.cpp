@@ -4,7 +4,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(ViewportController, OrbitTurnsByTheConfiguredRateAndClampsElevation) {
   ViewportController c;

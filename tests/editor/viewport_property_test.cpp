@@ -8,7 +8,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 OrbitCamera randomCamera(std::mt19937& rng, bool ortho) {
   std::uniform_real_distribution<float> u(-1.0f, 1.0f);

@@ -11,7 +11,7 @@
 #include "render/image_compare.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 using namespace e2e;
 

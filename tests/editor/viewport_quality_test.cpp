@@ -6,7 +6,7 @@
 #include "editor/model/viewport_quality.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(ViewportQuality, StillPictureIsMultisampledAndMovingOneIsNot) {
   EXPECT_GE(kStillViewportSamples, 4);

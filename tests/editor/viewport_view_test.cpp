@@ -3,7 +3,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(ViewportView, PerspectiveProjectsByDepth) {
   const ViewportView v = handView(false);

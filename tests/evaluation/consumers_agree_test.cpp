@@ -2,7 +2,8 @@
 // noise modifier, a keyed IK target, a live spring chain, keyed morph weights, a bend
 // deformer); the pipeline's own result at one time is compared with what `kinema pose`,
 // `kinema skin`, `kinema render`, the editor's display and onion-skin ghost, the motion path
-// and a BVH export give for that time.
+// and a BVH export give for that time; the library's jobs below the pipeline (retargeting, the
+// simulation bakes, crowds) move on its poses when the CLI and the editor pass them.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -15,13 +16,17 @@
 #include "editor/model/onion_skin.h"
 #include "editor/model/timeline.h"
 #include "evaluation/scene_evaluation_job.h"
+#include "evaluation/scene_poses.h"
+#include "retarget/retarget_clip.h"
+#include "sim/crowd.h"
+#include "sim/simulation_bake.h"
 #include "io/image.h"
 #include "io/scene_files.h"
 #include "scene/default_character_scene.h"
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 constexpr long long kFrame = 18;  // at the document's 24 fps: 0.75 s
 
@@ -242,6 +247,136 @@ TEST_F(ConsumersAgree, KinemaRenderDrawsThePipelinesPose) {
   Result<Image> c = loadPng(dir_ + "/c.png");
   ASSERT_TRUE(c);
   EXPECT_FALSE(a->rgba == c->rgba);
+}
+
+// The stages the jobs below the pipeline see (ScenePoses): 1 to 5, the live chains left out.
+EvaluationStages withoutDynamics() {
+  EvaluationStages stages;
+  stages.dynamics = false;
+  return stages;
+}
+
+// The angle between two rotations (radians), accurate near 0 (acos of a dot product is not).
+float rotationAngle(const glm::quat& a, const glm::quat& b) {
+  const glm::quat d = glm::conjugate(a) * b;
+  return 2.0f * std::atan2(glm::length(glm::vec3(d.x, d.y, d.z)), std::abs(d.w));
+}
+
+// Retargeting a take onto its own skeleton with every joint mapped gives back its world
+// rotations (RetargetJob's rule with A = identity): the pipeline's when it is the source.
+TEST_F(ConsumersAgree, RetargetingMovesTheTargetAsThePipelinePlaysTheSource) {
+  Scene take = scene_;
+  take.clips[0].frameTime = 1.0 / 24.0;  // retargeting counts the source's own frames
+  const Skeleton& s = take.skeleton;
+  BoneMap map;
+  for (int j = 0; j < s.size(); ++j) map.pairs.push_back(BonePair{j, j});
+  auto retarget = [&](PoseSource* poses) {
+    Clip out;
+    RetargetJob job;
+    job.source = &s;
+    job.sourceClip = &take.clips[0];
+    job.sourcePoses = poses;
+    job.target = &s;
+    job.map = &map;
+    job.output = &out;
+    EXPECT_EQ(job.validate(), "");
+    EXPECT_TRUE(job.run());
+    return out;
+  };
+  ScenePoses poses(take, 0);
+  const Clip throughPipeline = retarget(&poses);
+  const Clip bare = retarget(nullptr);
+  Pose got = Pose::rest(s), plain = Pose::rest(s);
+  sampleClip(throughPipeline, static_cast<float>(time_), got);
+  sampleClip(bare, static_cast<float>(time_), plain);
+  const std::vector<glm::mat4> world = computeWorld(s, got), plainWorld = computeWorld(s, plain);
+  const int hand = s.find("LowerArm.R");
+  float worst = 0.0f;
+  for (int j = 0; j < s.size(); ++j)
+    worst = std::max(worst, rotationAngle(rotationOf(world[j]), rotationOf(expected_.world[j])));
+  EXPECT_LT(worst, 1e-4f) << "radians, the worst joint";
+  // The control: the bare keys leave the IK target's arm where the clip keys it.
+  EXPECT_GT(rotationAngle(rotationOf(plainWorld[hand]), rotationOf(expected_.world[hand])), 0.05f);
+}
+
+// A spring chain hung below the IK target's arm, baked on the pipeline's poses, swings as it
+// does when baked on a clip that holds those poses as keys.
+TEST_F(ConsumersAgree, TheSimulationBakeMovesOnThePipelinesPoses) {
+  Scene scene = scene_;
+  const Skeleton& s = scene.skeleton;
+  SpringBoneChain chain;
+  chain.name = "hand";
+  chain.joints = {s.find("Hand.R"), s.find("Fingertip.R")};
+  chain.stiffness = 20.0f;
+  scene.simulation.springChains = {chain};
+  // The reference clip: stages 1 to 5 of every frame as keys, nothing else.
+  Clip keys;
+  keys.frameTime = 1.0 / 24.0;
+  std::vector<Channel> rotation(s.size()), translation(s.size());
+  for (int j = 0; j < s.size(); ++j) {
+    rotation[j] = Channel(j, ChannelTarget::Rotation, Interpolation::Linear, {}, {});
+    translation[j] = Channel(j, ChannelTarget::Translation, Interpolation::Linear, {}, {});
+  }
+  for (long long f = 0; f <= kFrame; ++f) {
+    const float t = static_cast<float>(f) / 24.0f;
+    Pose pose = Pose::rest(s);
+    evaluateAnimatedPose(scene, 0, t, withoutDynamics(), pose);
+    for (int j = 0; j < s.size(); ++j) {
+      const Transform& x = pose.local[j];
+      rotation[j].times.push_back(t);
+      rotation[j].values.emplace_back(x.rotation.x, x.rotation.y, x.rotation.z, x.rotation.w);
+      translation[j].times.push_back(t);
+      translation[j].values.emplace_back(x.translation, 0.0f);
+    }
+  }
+  for (int j = 0; j < s.size(); ++j) keys.channels.push_back(rotation[j]), keys.channels.push_back(translation[j]);
+  auto bake = [&](const Clip& clip, PoseSource* poses) {
+    SimulationBakeInput in;
+    in.skeleton = &s;
+    in.clip = &clip;
+    in.poses = poses;
+    in.settings = &scene.simulation;
+    in.firstFrame = 0;
+    in.lastFrame = kFrame;
+    in.reduceKeys = false;
+    Result<SimulationBake> baked = bakeSimulation(in);
+    EXPECT_TRUE(baked.ok()) << baked.error();
+    Pose pose = Pose::rest(s);
+    if (baked) sampleClip(baked->clip, static_cast<float>(time_), pose);
+    return pose;
+  };
+  ScenePoses poses(scene, 0, withoutDynamics());
+  const Pose got = bake(scene.clips[0], &poses);
+  const Pose want = bake(keys, nullptr);
+  const Pose bare = bake(scene.clips[0], nullptr);
+  // The bake writes the chain's local rotations (the arm above it is the pipeline's to place).
+  for (int j : chain.joints)
+    EXPECT_LT(rotationAngle(got.local[j].rotation, want.local[j].rotation), 1e-4f) << s.names[j];
+  // The control: on the bare keys the arm swings differently, and the chain with it.
+  EXPECT_GT(rotationAngle(bare.local[chain.joints[0]].rotation, want.local[chain.joints[0]].rotation), 0.01f);
+}
+
+// A crowd member stands as the character's scene plays at its clip time (here at the origin,
+// facing forward, without drift: its pose is the pipeline's, stages 1 to 5).
+TEST_F(ConsumersAgree, CrowdMembersStandAsThePipelinePlaysTheCharacter) {
+  const Skeleton& s = scene_.skeleton;
+  CrowdClipMotion motion;
+  CrowdMemberState member;
+  member.clipTime = time_;
+  member.yaw = motion.forwardYaw;
+  ScenePoses poses(scene_, 0, withoutDynamics());
+  Pose got, bare;
+  crowdMemberPose(s, scene_.clips[0], motion, member, got, &poses);
+  crowdMemberPose(s, scene_.clips[0], motion, member, bare);
+  Pose want = Pose::rest(s);
+  evaluateAnimatedPose(scene_, 0, time_, withoutDynamics(), want);
+  ASSERT_EQ(got.size(), s.size());
+  for (int j = 0; j < s.size(); ++j) {
+    EXPECT_LT(glm::length(got.local[j].translation - want.local[j].translation), 1e-6f) << s.names[j];
+    EXPECT_LT(rotationAngle(got.local[j].rotation, want.local[j].rotation), 1e-5f) << s.names[j];
+  }
+  const int arm = s.find("UpperArm.R");
+  EXPECT_GT(rotationAngle(bare.local[arm].rotation, want.local[arm].rotation), 0.05f);
 }
 
 }  // namespace

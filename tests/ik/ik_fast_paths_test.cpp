@@ -21,7 +21,7 @@
 #include "ik_test_chains.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(IkFastPaths, ValidatePlainCheckSaysYesOnlyWhereTheFullChecksPass) {
   std::mt19937 rng(20);

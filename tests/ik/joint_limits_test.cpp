@@ -5,7 +5,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 const glm::quat kId(1.0f, 0.0f, 0.0f, 0.0f);
 constexpr float kDeg = glm::pi<float>() / 180.0f;

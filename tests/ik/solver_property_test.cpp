@@ -8,7 +8,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 struct Case {
   IkSolver solver;

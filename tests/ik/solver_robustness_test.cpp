@@ -6,7 +6,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 const IkSolver kIterative[] = {IkSolver::Ccd, IkSolver::Fabrik, IkSolver::JacobianTranspose, IkSolver::JacobianPinv,
                                IkSolver::JacobianDls, IkSolver::JacobianSdls};

@@ -6,7 +6,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 using test::planarArm;
 using test::wrap;

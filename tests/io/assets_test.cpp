@@ -5,7 +5,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(Assets, DefaultCharacterFileIsWhatTheCodeMakes) {
   const std::string path = std::string(KINEMA_SOURCE_DIR) + "/assets/default_character.kinema";

@@ -21,7 +21,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 using test::readFile;
 using test::writeFile;

@@ -14,7 +14,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 using test::makeTempDir;
 using test::runCommand;
@@ -690,7 +690,7 @@ TEST(BvhCli, MalformedFileGivesExitOneAndOneLine) {
 }  // namespace kinema
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(TextEncoding, Utf8ValidationMatchesTheStandard) {
   EXPECT_TRUE(isValidUtf8(""));

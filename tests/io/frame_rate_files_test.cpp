@@ -9,7 +9,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // A two-joint BVH of `frames` frames at `frameTime` seconds, the root moving 1 unit a frame.
 std::string movingBvh(int frames, const char* frameTime) {

@@ -6,7 +6,7 @@
 #include "io/gltf_curves.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 Channel line(std::vector<float> times, std::vector<float> xs, Interpolation mode) {
   std::vector<glm::vec4> values;

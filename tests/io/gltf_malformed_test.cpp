@@ -9,7 +9,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 using test::GltfTestFile;
 using nlohmann::json;

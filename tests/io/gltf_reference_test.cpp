@@ -19,7 +19,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 namespace fs = std::filesystem;
 using test::sharedDataDir;

@@ -14,7 +14,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 std::vector<std::string> filesUnder(const std::string& dir, const std::vector<std::string>& extensions) {
   std::vector<std::string> out;

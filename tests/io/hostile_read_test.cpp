@@ -27,7 +27,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 using test::makeTempDir;
 using test::writeFile;

@@ -28,7 +28,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 long envCount(const char* name, long fallback) {
   const char* text = std::getenv(name);

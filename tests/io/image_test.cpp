@@ -3,7 +3,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(Image, PngRoundTripIsExact) {
   Image img(5, 3);

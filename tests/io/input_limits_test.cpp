@@ -16,7 +16,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // A BVH chain of `joints` joints (each one channel), then `frames` frames of zeros.
 std::string bvhChain(int joints, int frames) {

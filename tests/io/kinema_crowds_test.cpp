@@ -10,7 +10,7 @@
 #include "io/kinema_refusals.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 Scene character() {
   Scene scene;

@@ -9,7 +9,7 @@
 #include "io/kinema_file.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 Scene legs() {
   Scene scene;

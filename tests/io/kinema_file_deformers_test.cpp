@@ -11,7 +11,7 @@
 #include "scene/default_character_scene.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 Scene twoJointsAndAQuad() {
   Scene scene;

@@ -7,7 +7,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(KinemaFileIk, LimitsAndTargetsRoundTrip) {
   Scene scene;

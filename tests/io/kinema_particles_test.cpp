@@ -9,7 +9,7 @@
 #include "io/kinema_refusals.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 Scene armed() {
   Scene scene;

@@ -10,7 +10,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 void expectSameAssets(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.nodeOfJoint, b.nodeOfJoint);

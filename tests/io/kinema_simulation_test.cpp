@@ -10,7 +10,7 @@
 #include "io/kinema_refusals.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // Hips -> Spine -> Tail1 -> Tail2 -> Tail3, plus Leg under the hips.
 Scene tailed() {

@@ -18,7 +18,7 @@
 #include "evaluation/scene_deformation.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 Deformer axisDeformer(const std::string& name, DeformerType type, AxisDeformerKind kind, DeformAxis axis,
                       glm::vec3 origin, float low, float high, float amount) {

@@ -7,7 +7,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(OrbitCamera, AnglesPlaceTheEyeWhereTheConventionSays) {
   OrbitCamera c;

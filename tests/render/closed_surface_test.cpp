@@ -9,7 +9,7 @@
 #include "scene/default_character_scene.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 struct Cube {
   std::vector<glm::vec3> positions;

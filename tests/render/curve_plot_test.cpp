@@ -5,7 +5,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(CurvePlot, DrawsCurvesAndKeysWhereTheDataIs) {
   PlotPanel p;

@@ -8,7 +8,7 @@
 #include "render/headless_renderer.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 constexpr int kSize = 200;
 

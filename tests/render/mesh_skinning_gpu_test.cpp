@@ -23,7 +23,7 @@
 #include "io/scene_files.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 using test::sharedDataDir;
 

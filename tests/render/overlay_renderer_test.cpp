@@ -10,7 +10,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 using Layer = OverlayDrawList::Layer;
 

@@ -20,7 +20,7 @@
 #include "evaluation/scene_deformation.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 constexpr int kWidth = 240, kHeight = 180;
 

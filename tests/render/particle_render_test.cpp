@@ -9,7 +9,7 @@
 #include "render/particle_overlay.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 constexpr int kWidth = 200, kHeight = 160;
 const glm::vec4 kMagenta(1.0f, 0.0f, 1.0f, 1.0f);

@@ -10,7 +10,7 @@
 #include "render/rect_clear.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 constexpr int kW = 64, kH = 48;
 

@@ -10,7 +10,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // Under -DKINEMA_SANITIZE=ON, Mesa unloads its driver at exit and LeakSanitizer then reports
 // the driver's own leftovers from an "<unknown module>" that no suppression can name, so

@@ -9,7 +9,7 @@
 #include "render/skeleton_renderer.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 constexpr int kX = 40, kY = 20, kW = 400, kH = 300;  // the view inside a larger framebuffer
 const PixelRect kWholeView{kX, kY, kX + kW, kY + kH};

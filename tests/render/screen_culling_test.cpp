@@ -10,7 +10,7 @@
 #include "render/screen_culling.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 constexpr int kX = 30, kY = 10, kW = 320, kH = 240;
 

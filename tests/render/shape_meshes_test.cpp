@@ -7,7 +7,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // Signed volume by the divergence theorem: positive when every triangle winds
 // counter-clockwise seen from outside.

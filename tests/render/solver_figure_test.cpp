@@ -6,7 +6,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 bool isWhite(const Image& img, glm::vec2 p) {
   const std::uint8_t* px = img.pixel(static_cast<int>(p.x), static_cast<int>(p.y));

@@ -12,7 +12,7 @@
 #include "render/headless_renderer.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 constexpr int kSize = 200;
 const glm::vec4 kBackground(0.2f, 0.2f, 0.2f, 1.0f);

@@ -15,7 +15,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 using Expected = std::map<std::string, std::string>;  // canonical bone -> joint name
 

@@ -18,7 +18,7 @@
 #include "io/scene_files.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 constexpr float kSlide = 0.1f;  // units per second, well under the contact speed threshold
 

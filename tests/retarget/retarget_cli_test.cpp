@@ -15,7 +15,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 class RetargetCli : public ::testing::Test {
  protected:

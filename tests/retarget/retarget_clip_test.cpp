@@ -9,7 +9,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 constexpr float kDegree = 0.01745329251994329577f;
 

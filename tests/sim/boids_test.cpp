@@ -12,7 +12,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(BoidsAllocation, PriorityGivesAvoidanceItsFullAccelerationWhenTheBudgetIsShort) {
   // Budget 10 m/s^2; avoidance asks 8 along x, separation 6 along y, alignment 5 along z.
@@ -183,7 +183,7 @@ TEST(Boids, FieldOfViewHidesMembersBehind) {
 }  // namespace kinema
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 TEST(BoidsDemo, WritesBothModesAndPriorityKeepsMembersOutOfObstacles) {
   const std::string dir = test::makeTempDir();

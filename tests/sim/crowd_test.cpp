@@ -12,7 +12,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 constexpr double kDt = 1.0 / 30.0;
 

@@ -11,7 +11,7 @@
 #include <cmath>
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 SpringChain oneMass(double k, double m) {
   SpringChain c;

@@ -8,7 +8,7 @@
 #include "sim/particle_system.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 ParticleSystemSettings fountain() {
   ParticleSystemSettings s = defaultParticleSystem(-1, 1.8f);

@@ -8,7 +8,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 ParticleState oneParticle(glm::vec3 p, glm::vec3 v) {
   ParticleState s;

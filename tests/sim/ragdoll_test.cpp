@@ -15,7 +15,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 constexpr float kDeg = 3.14159265f / 180.0f;
 

@@ -13,7 +13,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // Joints at given world positions (identity rotations), parents as listed.
 struct Rig {

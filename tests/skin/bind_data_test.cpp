@@ -12,7 +12,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 int countContaining(const std::vector<std::string>& lines, const std::string& part) {
   return static_cast<int>(std::count_if(lines.begin(), lines.end(),

@@ -7,7 +7,7 @@
 #include "test_support.h"
 
 namespace kinema::test {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 void expectNearMatrix(const glm::mat4& a, const glm::mat4& b, float tol, const std::string& what) {
   for (int c = 0; c < 4; ++c)

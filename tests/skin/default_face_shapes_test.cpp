@@ -10,7 +10,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 int nearestIndex(const std::vector<glm::vec3>& v, const glm::vec3& p) {
   int best = -1;

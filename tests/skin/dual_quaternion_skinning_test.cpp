@@ -15,7 +15,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 constexpr float kPi = 3.14159265358979f;
 

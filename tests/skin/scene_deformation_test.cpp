@@ -19,7 +19,7 @@
 #include "io/scene_files.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 namespace fs = std::filesystem;
 

@@ -12,7 +12,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 // One joint at (0, 0.5, 0) showing an unskinned triangle with one morph target, so the
 // instance moves rigidly by +0.5 in y.

@@ -13,7 +13,7 @@
 #include "test_support.h"
 
 namespace kinema {
-namespace {
+namespace KINEMA_UNITY_ID {
 
 void expectMat3Near(const glm::mat3& a, const glm::mat3& e, float tol, const char* what) {
   for (int c = 0; c < 3; ++c)

@@ -34,8 +34,6 @@ bool dopeSheetIdle(const CommandContext& c) {
          s.dopeSheet.gesture == DopeSheetState::Gesture::None && !s.doc.dragging();
 }
 
-const Clip& editedClip(const EditorState& s) { return s.doc.scene().clips[s.clip]; }
-
 void pasteKeys(EditorState& s, bool ontoSelectedJoints) {
   DopeSheetState& ds = s.dopeSheet;
   const long long frame = currentFrame(s);

@@ -67,5 +67,13 @@ class CommandDef {
 };
 // The document is hidden while Teach > Compare Solvers is open: no edits of it then.
 inline bool documentShown(const CommandContext& ctx) { return !ctx.state.compare.active; }
+// The enabled-when rules the command sets share: no drag under way; and no modal tool (grab,
+// rotate, box select) running; and a clip to edit. A joint selection.
+inline bool documentIdle(const CommandContext& c) { return documentShown(c) && !c.state.doc.dragging(); }
+inline bool documentIdleNoTool(const CommandContext& c) { return documentIdle(c) && c.state.tool.mode == ModalTool::None; }
+inline bool idleOnClip(const CommandContext& c) { return documentIdleNoTool(c) && c.state.hasMotion(); }
+inline bool hasJointSelection(const CommandContext& c) { return documentShown(c) && !c.state.doc.selection.empty(); }
+// The clip the timeline, dope sheet and curve editor edit (valid while hasMotion()).
+inline const Clip& editedClip(const EditorState& s) { return s.doc.scene().clips[s.clip]; }
 
 }  // namespace kinema

@@ -12,20 +12,17 @@ namespace kinema {
 
 namespace {
 
-bool idle(const CommandContext& c) {
-  return documentShown(c) && !c.state.doc.dragging() && c.state.tool.mode == ModalTool::None;
-}
 int crowdCount(const CommandContext& c) { return static_cast<int>(c.state.doc.scene().simulation.crowds.size()); }
 // The crowd the panel shows, kept inside the list.
 int activeCrowd(const CommandContext& c) { return std::clamp(c.state.crowds.active, 0, std::max(crowdCount(c) - 1, 0)); }
-bool hasCrowd(const CommandContext& c) { return idle(c) && crowdCount(c) > 0; }
+bool hasCrowd(const CommandContext& c) { return documentIdleNoTool(c) && crowdCount(c) > 0; }
 
 }  // namespace
 
 void addCrowdCommands(std::vector<Command>& out) {
   out.push_back(CommandDef("sim.add_crowd", "Add Crowd...").menu("Simulate", true)
                     .hint("a flock of boids that are instances of this character, playing its clip (edit it in the Crowd panel)")
-                    .enabled([](const CommandContext& c) { return idle(c) && !c.state.doc.skeleton().empty() && c.state.hasMotion(); })
+                    .enabled([](const CommandContext& c) { return documentIdleNoTool(c) && !c.state.doc.skeleton().empty() && c.state.hasMotion(); })
                     .run([](CommandContext& c) {
                       EditorState& s = c.state;
                       const CrowdSettings crowd = defaultCrowd(s.doc);

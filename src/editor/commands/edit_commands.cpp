@@ -11,8 +11,6 @@ namespace kinema {
 namespace {
 
 // Undo and redo wait for a drag to end (the drag is one step once committed).
-bool idle(const CommandContext& c) { return documentShown(c) && !c.state.doc.dragging(); }
-bool hasSelection(const CommandContext& c) { return documentShown(c) && !c.state.doc.selection.empty(); }
 bool hasClipboard(const CommandContext& c) { return documentShown(c) && !c.state.panels.clipboard.empty(); }
 
 void copySelection(EditorState& state) {
@@ -25,7 +23,7 @@ void copySelection(EditorState& state) {
 
 void addEditCommands(std::vector<Command>& out) {
   out.push_back(CommandDef("edit.undo", "Undo").menu("Edit").key(keys::Z, kModCtrl)
-                    .enabled([](const CommandContext& c) { return idle(c) && c.state.doc.canUndo(); })
+                    .enabled([](const CommandContext& c) { return documentIdle(c) && c.state.doc.canUndo(); })
                     .run([](CommandContext& c) {
                       const bool showedClip = c.state.doc.poseRevision() == c.state.animatedPoseRevision;
                       if (!c.state.doc.undo()) return;
@@ -35,7 +33,7 @@ void addEditCommands(std::vector<Command>& out) {
                       if (showedClip && !c.state.playing) poseAtPlayhead(c.state);
                     }));
   out.push_back(CommandDef("edit.redo", "Redo").menu("Edit").key(keys::Z, kModCtrl | kModShift).key(keys::Y, kModCtrl)
-                    .enabled([](const CommandContext& c) { return idle(c) && c.state.doc.canRedo(); })
+                    .enabled([](const CommandContext& c) { return documentIdle(c) && c.state.doc.canRedo(); })
                     .run([](CommandContext& c) {
                       const bool showedClip = c.state.doc.poseRevision() == c.state.animatedPoseRevision;
                       if (!c.state.doc.redo()) return;
@@ -44,7 +42,7 @@ void addEditCommands(std::vector<Command>& out) {
                       if (showedClip && !c.state.playing) poseAtPlayhead(c.state);
                     }));
   out.push_back(CommandDef("edit.copy_pose", "Copy Pose").menu("Edit", true).key(keys::C, kModCtrl)
-                    .hint("copy the selected joints' pose").enabled(hasSelection)
+                    .hint("copy the selected joints' pose").enabled(hasJointSelection)
                     .run([](CommandContext& c) { copySelection(c.state); }));
   out.push_back(CommandDef("edit.paste_pose", "Paste Pose").menu("Edit").key(keys::V, kModCtrl).enabled(hasClipboard)
                     .run([](CommandContext& c) {
@@ -57,7 +55,7 @@ void addEditCommands(std::vector<Command>& out) {
                     }));
   out.push_back(CommandDef("edit.clear_rotation", "Clear Rotation").menu("Edit", true).key(keys::R, kModAlt)
                     .scope(CommandScope::Viewport).hint("the selected joints back to their rest rotation")
-                    .enabled(hasSelection)
+                    .enabled(hasJointSelection)
                     .run([](CommandContext& c) {
                       showEditorError(c.state, clearRotations(c.state.doc, c.state.doc.selection.joints()));
                     }));

@@ -15,7 +15,7 @@ namespace kinema {
 namespace {
 
 bool latticeEditing(const CommandContext& c) { return documentShown(c) && c.state.lattice.active; }
-bool idle(const CommandContext& c) { return c.state.tool.mode == ModalTool::None && !c.state.doc.dragging(); }
+bool latticeToolIdle(const CommandContext& c) { return c.state.tool.mode == ModalTool::None && !c.state.doc.dragging(); }
 
 }  // namespace
 
@@ -24,7 +24,7 @@ void addLatticeCommands(std::vector<Command>& out) {
                     .hint("lattice edit mode on the active lattice: select its points, G moves them, I keys them")
                     .enabled([](const CommandContext& c) {
                       int instance = -1, deformer = -1;
-                      return documentShown(c) && idle(c) &&
+                      return documentShown(c) && latticeToolIdle(c) &&
                              (c.state.lattice.active || latticeToEdit(c.state, instance, deformer));
                     })
                     .checked([](const CommandContext& c) { return c.state.lattice.active; })
@@ -41,18 +41,18 @@ void addLatticeCommands(std::vector<Command>& out) {
                     }));
   out.push_back(CommandDef("lattice.grab", "Move Lattice Points").key(keys::G).scope(CommandScope::LatticeEdit)
                     .hint("move the selected points with the mouse (then X/Y/Z; auto-key or animated points: keyed)")
-                    .enabled([](const CommandContext& c) { return latticeEditing(c) && idle(c) && c.tools; })
+                    .enabled([](const CommandContext& c) { return latticeEditing(c) && latticeToolIdle(c) && c.tools; })
                     .run([](CommandContext& c) { c.tools->startLatticeGrab(c.state); }));
   out.push_back(CommandDef("lattice.insert_keyframe", "Insert Lattice Keys").key(keys::I).scope(CommandScope::LatticeEdit)
                     .hint("key the selected points at the current frame")
-                    .enabled([](const CommandContext& c) { return latticeEditing(c) && idle(c); })
+                    .enabled([](const CommandContext& c) { return latticeEditing(c) && latticeToolIdle(c); })
                     .run([](CommandContext& c) { c.state.statusMessage = keyLatticePoints(c.state); }));
   out.push_back(CommandDef("lattice.select_all", "Select All Lattice Points").key(keys::A).scope(CommandScope::LatticeEdit)
-                    .enabled([](const CommandContext& c) { return latticeEditing(c) && idle(c); })
+                    .enabled([](const CommandContext& c) { return latticeEditing(c) && latticeToolIdle(c); })
                     .run([](CommandContext& c) { selectAllLatticePoints(c.state); }));
   out.push_back(CommandDef("lattice.select_none", "Deselect Lattice Points").key(keys::A, kModAlt)
                     .scope(CommandScope::LatticeEdit)
-                    .enabled([](const CommandContext& c) { return latticeEditing(c) && idle(c); })
+                    .enabled([](const CommandContext& c) { return latticeEditing(c) && latticeToolIdle(c); })
                     .run([](CommandContext& c) { selectNoLatticePoints(c.state.lattice); }));
   out.push_back(CommandDef("anim.key_hovered_property", "Insert Keyframe on Property").key(keys::I)
                     .scope(CommandScope::Property)

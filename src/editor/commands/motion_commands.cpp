@@ -13,12 +13,6 @@ namespace kinema {
 
 namespace {
 
-bool onClip(const CommandContext& c) {
-  return documentShown(c) && c.state.hasMotion() && !c.state.doc.dragging() && c.state.tool.mode == ModalTool::None;
-}
-
-const Clip& editedClip(const EditorState& s) { return s.doc.scene().clips[s.clip]; }
-
 void reportContactEdit(EditorState& s, const std::string& error, const std::string& done) {
   reportDopeSheetEdit(s, error, done);  // error popup, or the status line and the frame shown again
 }
@@ -45,7 +39,7 @@ void addMotionCommands(std::vector<Command>& out) {
                     }));
   out.push_back(CommandDef("anim.apply_clean_up", "Apply Clean Up").menu("Animation")
                     .hint("lock the feet over the clip's contacts and thin its keys (one undo step)")
-                    .enabled(onClip)
+                    .enabled(idleOnClip)
                     .run([](CommandContext& c) {
                       EditorState& s = c.state;
                       CleanUpResult result;
@@ -57,11 +51,11 @@ void addMotionCommands(std::vector<Command>& out) {
                     }));
   out.push_back(CommandDef("anim.edit_bone_map", "Edit Bone Map of Clip...").menu("Animation")
                     .hint("the Import Motion dialog again, on the map this clip was retargeted through")
-                    .enabled([](const CommandContext& c) { return onClip(c) && !editedClip(c.state).sourceMap.empty(); })
+                    .enabled([](const CommandContext& c) { return idleOnClip(c) && !editedClip(c.state).sourceMap.empty(); })
                     .run([](CommandContext& c) { reopenMotionImport(c.state, c.state.clip); }));
   out.push_back(CommandDef("contacts.detect", "Detect Foot Contacts").menu("Animation/Foot Contacts")
                     .hint("find when each foot is planted (ankle and toe height and speed); replaces the clip's contacts")
-                    .enabled(onClip)
+                    .enabled(idleOnClip)
                     .run([](CommandContext& c) {
                       EditorState& s = c.state;
                       const std::string error = detectFootContactsEdit(s.doc, s.clip);
@@ -72,7 +66,7 @@ void addMotionCommands(std::vector<Command>& out) {
                     }));
   out.push_back(CommandDef("contacts.add", "Add Foot Contact").menu("Animation/Foot Contacts")
                     .hint("a contact on the chosen foot over the Clean Up window's frame range (overlapped ones join it)")
-                    .enabled(onClip)
+                    .enabled(idleOnClip)
                     .run([](CommandContext& c) {
                       EditorState& s = c.state;
                       int added = -1;
@@ -83,7 +77,7 @@ void addMotionCommands(std::vector<Command>& out) {
                     }));
   out.push_back(CommandDef("contacts.delete", "Delete Foot Contact").menu("Animation/Foot Contacts")
                     .hint("the contact selected on the timeline's contact strip")
-                    .enabled([](const CommandContext& c) { return onClip(c) && c.state.contactSelection.valid(editedClip(c.state)); })
+                    .enabled([](const CommandContext& c) { return idleOnClip(c) && c.state.contactSelection.valid(editedClip(c.state)); })
                     .run([](CommandContext& c) {
                       EditorState& s = c.state;
                       const FootContactSelection sel = s.contactSelection;

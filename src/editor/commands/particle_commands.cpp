@@ -9,7 +9,6 @@ namespace kinema {
 
 namespace {
 
-bool idle(const CommandContext& c) { return documentShown(c) && !c.state.doc.dragging(); }
 int systems(const CommandContext& c) { return static_cast<int>(c.state.doc.scene().simulation.particles.size()); }
 
 }  // namespace
@@ -17,7 +16,7 @@ int systems(const CommandContext& c) { return static_cast<int>(c.state.doc.scene
 void addParticleCommands(std::vector<Command>& out) {
   out.push_back(CommandDef("sim.add_particle_emitter", "Add Particle Emitter").menu("Simulate", true)
                     .hint("sparks from the active joint (or a fountain at the origin when none is active), played live")
-                    .enabled(idle)
+                    .enabled(documentIdle)
                     .run([](CommandContext& c) {
                       EditorState& s = c.state;
                       int index = -1;
@@ -35,7 +34,7 @@ void addParticleCommands(std::vector<Command>& out) {
                     .run([](CommandContext& c) { c.state.liveParticles.enabled = !c.state.liveParticles.enabled; }));
   out.push_back(CommandDef("sim.remove_particle_system", "Remove Particle System").menu("Simulate")
                     .hint("the particle system the Particles window shows")
-                    .enabled([](const CommandContext& c) { return idle(c) && c.state.particleSystem < systems(c); })
+                    .enabled([](const CommandContext& c) { return documentIdle(c) && c.state.particleSystem < systems(c); })
                     .run([](CommandContext& c) {
                       EditorState& s = c.state;
                       const std::string error = removeParticleSystemEdit(s.doc, s.particleSystem);

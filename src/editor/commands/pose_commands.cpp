@@ -17,7 +17,6 @@ namespace kinema {
 namespace {
 
 bool hasActiveJoint(const CommandContext& c) { return documentShown(c) && c.state.doc.selection.active() >= 0; }
-bool hasSelection(const CommandContext& c) { return documentShown(c) && !c.state.doc.selection.empty(); }
 bool hasActiveIkTarget(const CommandContext& c) { return documentShown(c) && activeIkTarget(c.state.doc) >= 0; }
 bool idleTool(const CommandContext& c) {
   return documentShown(c) && c.tools && c.state.tool.mode == ModalTool::None && !c.state.doc.dragging();
@@ -85,7 +84,7 @@ void addPoseCommands(std::vector<Command>& out) {
   // Keying (timeline.h): at the playhead, with the timeline's key preferences.
   out.push_back(CommandDef("anim.insert_keyframe", "Insert Keyframe").menu("Pose", true).key(keys::I)
                     .scope(CommandScope::Viewport).hint("key the selected joints at the current frame")
-                    .enabled(hasSelection)
+                    .enabled(hasJointSelection)
                     .run([](CommandContext& c) { c.state.statusMessage = keySelectedJoints(c.state); }));
   out.push_back(CommandDef("anim.insert_shape_keys", "Insert Shape Keys").menu("Pose")
                     .hint("key every morph target's weight (the shape sliders) at the current frame")
@@ -99,7 +98,7 @@ void addPoseCommands(std::vector<Command>& out) {
                     .run([](CommandContext& c) { c.state.statusMessage = keyAllJoints(c.state); }));
   out.push_back(CommandDef("anim.delete_keyframe", "Delete Keyframe").menu("Pose").key(keys::I, kModAlt)
                     .scope(CommandScope::Viewport).hint("the selected joints' keys at the current frame")
-                    .enabled(hasSelection)
+                    .enabled(hasJointSelection)
                     .run([](CommandContext& c) { c.state.statusMessage = deleteSelectedJointKeys(c.state); }));
   out.push_back(CommandDef("anim.auto_key", "Auto-key").menu("Pose").hint("every posing edit also keys (same undo step)")
                     .enabled(documentShown)

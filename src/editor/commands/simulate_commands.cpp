@@ -12,10 +12,6 @@ namespace kinema {
 
 namespace {
 
-bool idle(const CommandContext& c) {
-  return documentShown(c) && !c.state.doc.dragging() && c.state.tool.mode == ModalTool::None;
-}
-bool onClip(const CommandContext& c) { return idle(c) && c.state.hasMotion(); }
 
 std::string partsText(const SimulationBake& bake) {
   std::string text;
@@ -28,7 +24,7 @@ std::string partsText(const SimulationBake& bake) {
 void addSimulateCommands(std::vector<Command>& out) {
   out.push_back(CommandDef("sim.make_chain_dynamic", "Make Chain Dynamic").menu("Simulate")
                     .hint("spring bones: the selected joints (or one joint and the chain below it) swing behind the animation")
-                    .enabled([](const CommandContext& c) { return idle(c) && !c.state.doc.selection.empty(); })
+                    .enabled([](const CommandContext& c) { return documentIdleNoTool(c) && !c.state.doc.selection.empty(); })
                     .run([](CommandContext& c) {
                       EditorState& s = c.state;
                       const Skeleton& sk = s.doc.skeleton();
@@ -41,7 +37,7 @@ void addSimulateCommands(std::vector<Command>& out) {
   out.push_back(CommandDef("sim.remove_chain", "Remove Dynamic Chain").menu("Simulate")
                     .hint("the dynamic chain holding the active joint goes back to its keys alone")
                     .enabled([](const CommandContext& c) {
-                      return idle(c) && springChainOf(c.state.doc, c.state.doc.selection.active()) >= 0;
+                      return documentIdleNoTool(c) && springChainOf(c.state.doc, c.state.doc.selection.active()) >= 0;
                     })
                     .run([](CommandContext& c) {
                       EditorState& s = c.state;
@@ -52,7 +48,7 @@ void addSimulateCommands(std::vector<Command>& out) {
                     .hint("a capsule along the active joint's bone that the dynamic chains' tails stay out of (sized in Simulation Settings)")
                     .enabled([](const CommandContext& c) {
                       const int active = c.state.doc.selection.active();
-                      if (!idle(c) || active < 0) return false;
+                      if (!documentIdleNoTool(c) || active < 0) return false;
                       for (const SpringBoneChain& chain : c.state.doc.scene().simulation.springChains)
                         if (std::find(chain.joints.begin(), chain.joints.end(), active) == chain.joints.end()) return true;
                       return false;
@@ -74,7 +70,7 @@ void addSimulateCommands(std::vector<Command>& out) {
   out.push_back(CommandDef("sim.ragdoll_from_frame", "Ragdoll from Current Frame").menu("Simulate", true)
                     .hint("the character (or the active joint and what hangs below it) falls from this frame, baked to keys "
                           "(without a clip, from the pose on screen into a new Action)")
-                    .enabled([](const CommandContext& c) { return idle(c) && c.state.doc.skeleton().size() > 1; })
+                    .enabled([](const CommandContext& c) { return documentIdleNoTool(c) && c.state.doc.skeleton().size() > 1; })
                     .run([](CommandContext& c) {
                       EditorState& s = c.state;
                       const Skeleton& sk = s.doc.skeleton();
@@ -93,7 +89,7 @@ void addSimulateCommands(std::vector<Command>& out) {
                     }));
   out.push_back(CommandDef("sim.bake", "Bake Simulation").menu("Simulate")
                     .hint("every dynamic chain and ragdoll into keys over the playback range (one undo step)")
-                    .enabled([](const CommandContext& c) { return onClip(c) && c.state.doc.scene().simulation.hasBakedParts(); })
+                    .enabled([](const CommandContext& c) { return idleOnClip(c) && c.state.doc.scene().simulation.hasBakedParts(); })
                     .run([](CommandContext& c) {
                       EditorState& s = c.state;
                       SimulationBake bake;

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstdio>
 
 #include "editor/model/document.h"
 #include "editor/model/keying.h"
+#include "editor/model/unique_name.h"
 #include "io/text_file.h"
 
 namespace kinema {
@@ -25,17 +25,7 @@ bool isClip(const Document& doc, int clip) {
 }  // namespace
 
 std::string uniqueClipName(const std::vector<Clip>& clips, const std::string& base) {
-  std::string stem = base;
-  const size_t n = stem.size();
-  if (n > 4 && stem[n - 4] == '.' && std::isdigit(static_cast<unsigned char>(stem[n - 3])) &&
-      std::isdigit(static_cast<unsigned char>(stem[n - 2])) && std::isdigit(static_cast<unsigned char>(stem[n - 1])))
-    stem.resize(n - 4);
-  if (!nameTaken(clips, stem)) return stem;
-  for (int i = 1;; ++i) {
-    char suffix[16];
-    std::snprintf(suffix, sizeof suffix, ".%03d", i);
-    if (!nameTaken(clips, stem + suffix)) return stem + suffix;
-  }
+  return uniqueName(base, [&](const std::string& name) { return nameTaken(clips, name); });
 }
 
 std::string chooseClip(Document& doc, int clip) {

@@ -3,17 +3,27 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
+#include "bake/crowd_scene.h"
 #include "core/forward_kinematics.h"
 #include "editor/model/document.h"
-#include "bake/crowd_scene.h"
+#include "evaluation/scene_poses.h"
 
 namespace kinema {
 
 namespace {
 
+// The crowd's character as it plays (the one pipeline), as bake/crowd_scene.cpp bakes it:
+// each member at its own clip time, so the live chains are left out.
+std::unique_ptr<ScenePoses> crowdPoses(const CrowdPreview& p, const CrowdSettings& crowd) {
+  EvaluationStages stages;
+  stages.dynamics = false;
+  return std::make_unique<ScenePoses>(*p.character, crowd.clip, stages);
+}
+
 // How big a crowd of the character should be: its rest height (file units), 1 when flat.
-float restHeight(const Skeleton& s) {
+float restHeightOrOne(const Skeleton& s) {
   const float h = restJointHeight(s);
   return h > 0.0f ? h : 1.0f;
 }
@@ -33,7 +43,7 @@ CrowdSettings defaultCrowd(const Document& doc) {
   c.clip = doc.activeClip();
   c.members = 50;
   // A character over 20 units tall is in centimetres: the crowd's metres become its units.
-  const float k = restHeight(doc.skeleton()) > 20.0f ? 100.0f : 1.0f;
+  const float k = restHeightOrOne(doc.skeleton()) > 20.0f ? 100.0f : 1.0f;
   BoidsSettings& b = c.boids;
   b.separationDistance *= k;
   b.neighbourRadius *= k;
@@ -141,7 +151,7 @@ bool updateCrowdPreview(CrowdPreview& p, const Document& doc, int index, double 
       return false;
     }
     p.character = std::make_shared<const Scene>(std::move(character.value()));
-    p.motion = analyseCrowdClip(p.character->skeleton, p.character->clips[crowd.clip], crowd);
+    p.motion = analyseCrowdClip(p.character->skeleton, p.character->clips[crowd.clip], crowd, &*crowdPoses(p, crowd));
   }
   if (!p.character) return false;
   const Clip& clip = p.character->clips[crowd.clip];
@@ -163,8 +173,9 @@ bool updateCrowdPreview(CrowdPreview& p, const Document& doc, int index, double 
   const Skeleton& s = p.character->skeleton;
   p.world.resize(static_cast<size_t>(crowd.members));
   Pose pose;
+  std::unique_ptr<ScenePoses> poses = crowdPoses(p, crowd);
   for (int m = 0; m < crowd.members; ++m) {
-    crowdMemberPose(s, clip, p.motion, p.run.at(frame, m), pose);
+    crowdMemberPose(s, clip, p.motion, p.run.at(frame, m), pose, poses.get());
     computeWorld(s, pose, p.world[static_cast<size_t>(m)]);
   }
   p.vectors.clear();

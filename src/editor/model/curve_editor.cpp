@@ -6,12 +6,12 @@
 #include "anim/bezier_handles.h"
 #include "anim/channel_modifiers.h"
 #include "anim/sampling.h"
+#include "core/math.h"
 
 namespace kinema {
 
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
 
 bool isRotationEuler(const Channel& ch, RotationView view) {
   return ch.target == ChannelTarget::Rotation && view == RotationView::Euler;

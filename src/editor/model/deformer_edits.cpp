@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "anim/scalar_property.h"
 #include "core/forward_kinematics.h"
 #include "editor/model/keying.h"
+#include "editor/model/unique_name.h"
 #include "evaluation/scene_deformation.h"
 
 namespace kinema {
@@ -18,15 +18,6 @@ std::string stackError(const Document& doc, int instance, int deformer) {
   if (!stack || deformer < 0 || deformer >= static_cast<int>(stack->deformers.size()))
     return "mesh instance " + std::to_string(instance) + " has no deformer " + std::to_string(deformer);
   return "";
-}
-
-std::string uniqueName(const DeformerStack& stack, const std::string& base) {
-  if (!stack.find(base)) return base;
-  for (int k = 1;; ++k) {
-    char suffix[16];
-    std::snprintf(suffix, sizeof suffix, ".%03d", k);
-    if (!stack.find(base + suffix)) return base + suffix;
-  }
 }
 
 // The instance's vertices at the rest pose (world space), primitive after primitive, and
@@ -191,7 +182,7 @@ std::string addDeformer(Document& doc, int instance, DeformerType type) {
     }
   }
   const DeformerStack* current = scene.deformerStack(static_cast<size_t>(instance));
-  d.name = uniqueName(current ? *current : DeformerStack(), toString(type));
+  d.name = uniqueName(toString(type), [&](const std::string& name) { return current && current->find(name); });
   return doc.editMeshes("Add " + d.name, [&](Scene& s) {
     s.editDeformerStack(instance).deformers.push_back(d);
     return std::string();

@@ -6,9 +6,10 @@
 
 #include "editor/model/clip_list.h"
 #include "editor/model/document.h"
+#include "evaluation/scene_poses.h"
+#include "io/scene_files.h"
 #include "retarget/motion_cleanup.h"
 #include "retarget/retarget_motion.h"
-#include "io/scene_files.h"
 
 namespace kinema {
 
@@ -109,6 +110,8 @@ std::string applyMotionImport(Document& doc, const MotionImport& m) {
   RetargetMotionInput in;
   in.source = &m.source.skeleton;
   in.clip = &m.source.clips[m.clip];
+  ScenePoses sourcePoses(m.source, m.clip);  // the take as it plays (the one pipeline)
+  in.sourcePoses = &sourcePoses;
   in.sourceHuman = &m.sourceHuman;
   in.target = &doc.skeleton();
   in.targetHuman = &m.targetHuman;

@@ -5,6 +5,7 @@
 
 #include "core/forward_kinematics.h"
 #include "editor/model/document.h"
+#include "editor/model/unique_name.h"
 #include "evaluation/scene_evaluation_job.h"
 
 namespace kinema {
@@ -12,18 +13,9 @@ namespace kinema {
 namespace {
 
 // What the default system scales to: the character's rest height, 1.8 (a person) when flat.
-float restHeight(const Skeleton& s) {
+float restHeightOrHumanHeight(const Skeleton& s) {
   const float h = restJointHeight(s);
   return h > 0.0f ? h : 1.8f;
-}
-
-std::string uniqueName(const std::vector<ParticleSystemSettings>& systems, const std::string& base) {
-  auto taken = [&](const std::string& name) {
-    return std::any_of(systems.begin(), systems.end(), [&](const ParticleSystemSettings& s) { return s.name == name; });
-  };
-  if (!taken(base)) return base;
-  for (int k = 2;; ++k)
-    if (!taken(base + "." + std::to_string(k))) return base + "." + std::to_string(k);
 }
 
 }  // namespace
@@ -31,8 +23,11 @@ std::string uniqueName(const std::vector<ParticleSystemSettings>& systems, const
 std::string addParticleEmitterEdit(Document& doc, int joint, int* index) {
   const Skeleton& s = doc.skeleton();
   if (joint >= s.size()) joint = -1;
-  ParticleSystemSettings settings = defaultParticleSystem(joint, restHeight(s));
-  settings.name = uniqueName(doc.scene().simulation.particles, joint >= 0 ? s.names[joint] + " sparks" : "fountain");
+  ParticleSystemSettings settings = defaultParticleSystem(joint, restHeightOrHumanHeight(s));
+  const std::vector<ParticleSystemSettings>& systems = doc.scene().simulation.particles;
+  settings.name = uniqueName(joint >= 0 ? s.names[joint] + " sparks" : "fountain", [&](const std::string& name) {
+    return std::any_of(systems.begin(), systems.end(), [&](const ParticleSystemSettings& p) { return p.name == name; });
+  });
   const std::string error = doc.edit("Add particle emitter", [&](DocumentEdit& e) {
     e.simulation.particles.push_back(settings);
     return std::string();

@@ -8,6 +8,7 @@
 #include "core/forward_kinematics.h"
 #include "editor/model/document.h"
 #include "editor/model/keying.h"
+#include "evaluation/scene_poses.h"
 #include "retarget/bone_map.h"
 #include "sim/baked_keys.h"
 
@@ -188,12 +189,21 @@ std::string removeRagdollEdit(Document& doc, int index) {
 
 namespace {
 
-Result<SimulationBake> bake(const Document& doc, const Clip& clip, const SimulationSettings& settings, long long first,
-                            long long last) {
+// `clip` is scene.clips[clipIndex], or a clip not in the document yet (clipIndex -1), whose
+// keys alone then drive the simulation.
+Result<SimulationBake> bake(const Document& doc, int clipIndex, const Clip& clip, const SimulationSettings& settings,
+                            long long first, long long last) {
   const Scene& scene = doc.scene();
+  // The parts move on the clip as the editor plays it (the one pipeline), their own dynamics
+  // left out: they are what is simulated.
+  const IkRig rig = doc.savedRig();
+  EvaluationStages stages;
+  stages.dynamics = false;
+  ScenePoses poses(scene, clipIndex, stages, &rig);
   SimulationBakeInput in;
   in.skeleton = &scene.skeleton;
   in.clip = &clip;
+  if (clipIndex >= 0) in.poses = &poses;
   in.documentFrameRate = scene.frameRate;
   in.settings = &settings;
   in.rig = &doc.rig();
@@ -215,7 +225,7 @@ std::string bakeSimulationEdit(Document& doc, int clip, long long first, long lo
   if (clip < 0 || clip >= static_cast<int>(scene.clips.size())) return "Bake simulation: the document has no clip (key a pose first)";
   if (!scene.simulation.hasBakedParts())
     return "Bake simulation: nothing to bake into keys (make a chain dynamic or add a ragdoll first)";
-  Result<SimulationBake> baked = bake(doc, scene.clips[clip], scene.simulation, first, last);
+  Result<SimulationBake> baked = bake(doc, clip, scene.clips[clip], scene.simulation, first, last);
   if (!baked) return "Bake simulation: " + baked.error();
   const std::string error = doc.edit("Bake simulation", [&](DocumentEdit& e) {
     e.clips[clip] = baked->clip;
@@ -251,7 +261,7 @@ std::string ragdollFromFrameEdit(Document& doc, int clip, int root, long long fr
   settings.ragdolls.push_back(defaultRagdoll(s, root, frame));
   SimulationSettings only;
   only.ragdolls = {settings.ragdolls.back()};
-  Result<SimulationBake> baked = bake(doc, source, only, frame, last);
+  Result<SimulationBake> baked = bake(doc, newClip ? -1 : clip, source, only, frame, last);
   if (!baked) return "Ragdoll: " + baked.error();
   const std::string error = doc.edit("Ragdoll from frame " + std::to_string(frame), [&](DocumentEdit& e) {
     if (newClip) {

@@ -19,7 +19,7 @@ namespace kinema {
 
 namespace {
 
-constexpr const char* kWindow = "Clean Up Motion";
+constexpr const char* kCleanUpWindow = "Clean Up Motion";
 const ImVec4 kBefore(0.80f, 0.45f, 0.30f, 1.0f), kAfter(0.35f, 0.70f, 0.40f, 1.0f);
 
 std::string format(const char* fmt, double v) {
@@ -47,7 +47,7 @@ void figureRow(EditorState& state, const char* label, double before, double afte
   draw->AddRectFilled(ImVec2(p.x, p.y + h + 1), ImVec2(p.x + std::max(1.0f, static_cast<float>(w * after / top)), p.y + 2 * h + 1),
                       ImGui::GetColorU32(kAfter));
   ImGui::Dummy(ImVec2(w, 2 * h + 1));
-  recordItem(std::string(kWindow) + "/Figure/" + label);
+  recordItem(std::string(kCleanUpWindow) + "/Figure/" + label);
   (void)state;
 }
 
@@ -71,7 +71,7 @@ void contactList(CommandContext& ctx, const Clip& clip) {
       const bool selected = state.contactSelection.foot == ft && state.contactSelection.index == i;
       if (ImGui::Selectable(text.c_str(), selected, 0, ImVec2(w - ImGui::GetStyle().FramePadding.x, 0)))
         state.contactSelection = FootContactSelection{ft, i};
-      recordItem(std::string(kWindow) + "/" + toString(ft) + "/" + std::to_string(i));
+      recordItem(std::string(kCleanUpWindow) + "/" + toString(ft) + "/" + std::to_string(i));
       ImGui::PopID();
     }
     ImGui::Unindent();
@@ -88,11 +88,11 @@ void drawCleanUpWindow(CommandContext& ctx) {
                     std::min(scaled(state, 560.0f), v.h - scaled(state, 16.0f)));
   ImGui::SetNextWindowPos(ImVec2(v.right() - size.x - scaled(state, 8.0f), v.y + scaled(state, 8.0f)), ImGuiCond_Appearing);
   ImGui::SetNextWindowSize(ImVec2(std::max(size.x, 240.0f), std::max(size.y, 200.0f)), ImGuiCond_Appearing);
-  if (!ImGui::Begin(kWindow, &state.cleanUpWindowOpen, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
+  if (!ImGui::Begin(kCleanUpWindow, &state.cleanUpWindowOpen, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
     return;
   }
-  recordWindow(kWindow);
+  recordWindow(kCleanUpWindow);
   if (!state.hasMotion()) {
     ImGui::TextWrapped("No clip: import a motion (File > Import Motion onto Character...) or key a pose first.");
     ImGui::End();
@@ -106,9 +106,9 @@ void drawCleanUpWindow(CommandContext& ctx) {
   ImGui::Separator();
   ImGui::TextDisabled("Foot contacts");
   contactList(ctx, clip);
-  commandButton(ctx, "contacts.detect", kWindow, "Detect");
+  commandButton(ctx, "contacts.detect", kCleanUpWindow, "Detect");
   ImGui::SameLine();
-  commandButton(ctx, "contacts.delete", kWindow, "Delete selected");
+  commandButton(ctx, "contacts.delete", kCleanUpWindow, "Delete selected");
   if (state.contactSelection.valid(clip)) {
     // The selected contact's frames, typed (one undo step on Enter).
     const ContactInterval c = clip.contacts.of(state.contactSelection.foot)[state.contactSelection.index];
@@ -119,12 +119,12 @@ void drawCleanUpWindow(CommandContext& ctx) {
                           setFootContactEdit(state.doc, state.clip, state.contactSelection.foot,
                                              state.contactSelection.index, frames[0], frames[1]),
                           "Set the contact's frames");
-    recordItem(std::string(kWindow) + "/Selected frames");
+    recordItem(std::string(kCleanUpWindow) + "/Selected frames");
   }
   int foot = static_cast<int>(state.newContactFoot);
   ImGui::SetNextItemWidth(scaled(state, 70.0f));
   if (ImGui::Combo("##new foot", &foot, "Left\0Right\0")) state.newContactFoot = static_cast<Foot>(foot);
-  recordItem(std::string(kWindow) + "/New foot");
+  recordItem(std::string(kCleanUpWindow) + "/New foot");
   ImGui::SameLine();
   int range[2] = {state.newContactFirst, state.newContactLast};
   ImGui::SetNextItemWidth(scaled(state, 110.0f));
@@ -132,31 +132,31 @@ void drawCleanUpWindow(CommandContext& ctx) {
     state.newContactFirst = std::max(range[0], 0);
     state.newContactLast = std::max(range[1], 0);
   }
-  recordItem(std::string(kWindow) + "/New range");
+  recordItem(std::string(kCleanUpWindow) + "/New range");
   ImGui::SameLine();
-  commandButton(ctx, "contacts.add", kWindow, "Add");
+  commandButton(ctx, "contacts.add", kCleanUpWindow, "Add");
   ImGui::TextDisabled("On the timeline: drag a bar's end, drag on an empty lane to add.");
 
   ImGui::Separator();
   ImGui::TextDisabled("Clean up");
   CleanUpOptions& o = state.cleanUp;
   ImGui::Checkbox("Lock feet during contacts", &o.lockFeet);
-  recordItem(std::string(kWindow) + "/Lock feet");
+  recordItem(std::string(kCleanUpWindow) + "/Lock feet");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(scaled(state, 60.0f));
   if (ImGui::InputInt("blend frames", &o.blendFrames, 0)) o.blendFrames = std::clamp(o.blendFrames, 0, 60);
-  recordItem(std::string(kWindow) + "/Blend frames");
+  recordItem(std::string(kCleanUpWindow) + "/Blend frames");
   ImGui::Checkbox("Reduce keys", &o.reduce);
-  recordItem(std::string(kWindow) + "/Reduce keys");
+  recordItem(std::string(kCleanUpWindow) + "/Reduce keys");
   ImGui::SetNextItemWidth(scaled(state, 90.0f));
   if (ImGui::InputFloat("position tolerance (file units)", &o.positionTolerance, 0.0f, 0.0f, "%.4g"))
     o.positionTolerance = std::max(o.positionTolerance, 1e-6f);
-  recordItem(std::string(kWindow) + "/Position tolerance");
+  recordItem(std::string(kCleanUpWindow) + "/Position tolerance");
   ImGui::SetNextItemWidth(scaled(state, 90.0f));
   if (ImGui::InputFloat("rotation tolerance (degrees)", &o.rotationDegrees, 0.0f, 0.0f, "%.4g"))
     o.rotationDegrees = std::max(o.rotationDegrees, 1e-4f);
-  recordItem(std::string(kWindow) + "/Rotation tolerance");
-  commandButton(ctx, "anim.apply_clean_up", kWindow, "Apply", ImVec2(scaled(state, 120.0f), 0));
+  recordItem(std::string(kCleanUpWindow) + "/Rotation tolerance");
+  commandButton(ctx, "anim.apply_clean_up", kCleanUpWindow, "Apply", ImVec2(scaled(state, 120.0f), 0));
 
   ImGui::Separator();
   ImGui::TextDisabled("Before / after");
@@ -188,7 +188,7 @@ void drawCleanUpWindow(CommandContext& ctx) {
                   rep.keys.maxAngleError / 0.01745329251994329577);
     else
       ImGui::TextDisabled("Keys not reduced.");
-    recordItem(std::string(kWindow) + "/Reduction error");
+    recordItem(std::string(kCleanUpWindow) + "/Reduction error");
   }
   ImGui::End();
 }

@@ -23,7 +23,6 @@ const ImU32 kLaneText = IM_COL32(150, 150, 150, 255);
 const ImU32 kBarColor[2] = {IM_COL32(66, 135, 200, 255), IM_COL32(86, 170, 95, 255)};  // left blue, right green
 const ImU32 kBarSelected = IM_COL32(255, 255, 255, 255);
 const ImU32 kHandleColor = IM_COL32(20, 20, 20, 200);
-const ImU32 kPlayheadColor = IM_COL32(71, 114, 179, 255);
 
 void endGesture(EditorState& state, bool commit) {
   if (commit) state.contactDrag.commit(state.doc);

@@ -18,12 +18,12 @@ namespace kinema {
 
 namespace {
 
-constexpr const char* kWindow = "Crowd";
+constexpr const char* kCrowdWindow = "Crowd";
 
 bool floatField(EditorState& state, const char* label, float& value, float lo, float hi = 1e30f) {
   ImGui::SetNextItemWidth(scaled(state, 90.0f));
   ImGui::InputFloat(label, &value, 0.0f, 0.0f, "%.4g");
-  recordItem(std::string(kWindow) + "/" + label);
+  recordItem(std::string(kCrowdWindow) + "/" + label);
   if (!ImGui::IsItemDeactivatedAfterEdit()) return false;
   if (!std::isfinite(value) || value < lo) value = lo;
   value = std::min(value, hi);
@@ -33,7 +33,7 @@ bool floatField(EditorState& state, const char* label, float& value, float lo, f
 bool intField(EditorState& state, const char* label, int& value, int lo, int hi) {
   ImGui::SetNextItemWidth(scaled(state, 90.0f));
   ImGui::InputInt(label, &value, 0, 0);
-  recordItem(std::string(kWindow) + "/" + label);
+  recordItem(std::string(kCrowdWindow) + "/" + label);
   if (!ImGui::IsItemDeactivatedAfterEdit()) return false;
   value = std::clamp(value, lo, hi);
   return true;
@@ -42,7 +42,7 @@ bool intField(EditorState& state, const char* label, int& value, int lo, int hi)
 bool vec3Field(EditorState& state, const std::string& label, glm::vec3& value) {
   ImGui::SetNextItemWidth(scaled(state, 160.0f));
   ImGui::InputFloat3(label.c_str(), &value.x, "%.3g");
-  recordItem(std::string(kWindow) + "/" + label);
+  recordItem(std::string(kCrowdWindow) + "/" + label);
   if (!ImGui::IsItemDeactivatedAfterEdit()) return false;
   for (int i = 0; i < 3; ++i)
     if (!std::isfinite(value[i])) value[i] = 0.0f;
@@ -59,19 +59,19 @@ void drawCrowdWindow(CommandContext& ctx) {
   ImGui::SetNextWindowPos(ImVec2(v.x + v.w - scaled(state, 318.0f), v.y + scaled(state, 8.0f)), ImGuiCond_Appearing);
   ImGui::SetNextWindowSize(ImVec2(scaled(state, 310.0f), std::min(scaled(state, 640.0f), v.h - scaled(state, 16.0f))),
                            ImGuiCond_Appearing);
-  if (!ImGui::Begin(kWindow, &state.crowds.windowOpen, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
+  if (!ImGui::Begin(kCrowdWindow, &state.crowds.windowOpen, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
     return;
   }
-  recordWindow(kWindow);
-  commandButton(ctx, "sim.add_crowd", kWindow, "Add crowd");
+  recordWindow(kCrowdWindow);
+  commandButton(ctx, "sim.add_crowd", kCrowdWindow, "Add crowd");
   ImGui::SameLine();
-  commandButton(ctx, "sim.bake_crowd", kWindow, "Bake");
+  commandButton(ctx, "sim.bake_crowd", kCrowdWindow, "Bake");
   ImGui::SameLine();
-  commandButton(ctx, "sim.remove_crowd", kWindow, "Remove");
-  commandSelectable(ctx, "sim.crowd_naive_average", kWindow, "Naive average allocation (instead of priority)");
+  commandButton(ctx, "sim.remove_crowd", kCrowdWindow, "Remove");
+  commandSelectable(ctx, "sim.crowd_naive_average", kCrowdWindow, "Naive average allocation (instead of priority)");
   ImGui::Checkbox("Draw the flock", &state.crowds.live);
-  recordItem(std::string(kWindow) + "/Draw the flock");
+  recordItem(std::string(kCrowdWindow) + "/Draw the flock");
   ImGui::Separator();
   const auto& crowds = state.doc.scene().simulation.crowds;
   if (crowds.empty()) {
@@ -83,7 +83,7 @@ void drawCrowdWindow(CommandContext& ctx) {
   if (crowds.size() > 1) {
     ImGui::SetNextItemWidth(scaled(state, 90.0f));
     ImGui::InputInt("crowd", &state.crowds.active);
-    recordItem(std::string(kWindow) + "/crowd");
+    recordItem(std::string(kCrowdWindow) + "/crowd");
     state.crowds.active = std::clamp(state.crowds.active, 0, static_cast<int>(crowds.size()) - 1);
   }
   CrowdSettings c = crowds[state.crowds.active];
@@ -114,7 +114,7 @@ void drawCrowdWindow(CommandContext& ctx) {
   changed |= floatField(state, "stride speed (0 = clip's)", c.strideSpeed, 0.0f);
   ImGui::TextDisabled("Goal and obstacles");
   if (ImGui::Checkbox("seek the goal", &b.hasGoal)) changed = true;
-  recordItem(std::string(kWindow) + "/seek the goal");
+  recordItem(std::string(kCrowdWindow) + "/seek the goal");
   if (b.hasGoal) changed |= vec3Field(state, "goal", b.goal);
   for (size_t i = 0; i < b.spheres.size(); ++i) {
     ImGui::PushID(static_cast<int>(i));
@@ -128,10 +128,10 @@ void drawCrowdWindow(CommandContext& ctx) {
     b.boxes[i].max = glm::max(b.boxes[i].max, b.boxes[i].min);
   }
   if (ImGui::Button("Add sphere")) b.spheres.push_back({b.goal * 0.5f, 2.0f}), changed = true;
-  recordItem(std::string(kWindow) + "/Add sphere");
+  recordItem(std::string(kCrowdWindow) + "/Add sphere");
   ImGui::SameLine();
   if (ImGui::Button("Add box")) b.boxes.push_back({glm::vec3(-1.0f), glm::vec3(1.0f)}), changed = true;
-  recordItem(std::string(kWindow) + "/Add box");
+  recordItem(std::string(kCrowdWindow) + "/Add box");
   if (changed) reportDopeSheetEdit(state, setCrowdEdit(state.doc, state.crowds.active, c), "Crowd settings changed");
   ImGui::Separator();
   ImGui::TextDisabled("Member %d's impulses (desired accelerations x 0.15 s)", c.debugMember);

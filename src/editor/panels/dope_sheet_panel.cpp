@@ -19,7 +19,7 @@ namespace kinema {
 
 namespace {
 
-constexpr float kDiamondRadius = 5.0f;   // half the diagonal, pixels
+constexpr float kDopeSheetDiamondRadius = 5.0f;   // half the diagonal, pixels
 constexpr float kHitRadius = 7.0f;       // a click this near a diamond takes it
 constexpr float kDragThreshold = 3.0f;   // pixels before a press becomes a drag
 
@@ -272,7 +272,7 @@ void drawDopeSheetPanel(EditorState& state) {
     for (; it != times.end() && grid.timeToFrame(*it) <= lastVisible; ++it) {
       const bool selected = ds.selection.containsAll(columnsOfCell(shownRows, i, *it));
       const float x = static_cast<float>(view.frameToX(grid.timeToFrame(*it)));
-      drawDiamond(dl, ImVec2(x, cy), i == 0 ? kDiamondRadius + 1 : kDiamondRadius,
+      drawDiamond(dl, ImVec2(x, cy), i == 0 ? kDopeSheetDiamondRadius + 1 : kDopeSheetDiamondRadius,
                   selected ? rgba(255, 160, 40) : rgba(205, 205, 205), rgba(0, 0, 0, 200));
     }
   }

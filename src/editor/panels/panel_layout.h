@@ -10,6 +10,8 @@ namespace kinema {
 // window each frame from the window size, the splitters (Edit > Preferences keeps them) and
 // the font. Scripts and the e2e tests find widgets by name (item_names.h), not by pixels.
 constexpr float kOutlinerIndent = 12.0f;  // at UI scale 1
+// The playhead line in the timeline and its contact lanes: Blender's playhead blue.
+constexpr ImU32 kPlayheadColor = IM_COL32(71, 114, 179, 255);
 // The docked panels never come to the front: floating windows stay over them, and the
 // splitters (panel_splitters.cpp) over their edges.
 constexpr ImGuiWindowFlags kPanelFlags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |

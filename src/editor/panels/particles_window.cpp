@@ -19,14 +19,14 @@ namespace kinema {
 
 namespace {
 
-constexpr const char* kWindow = "Particles";
+constexpr const char* kParticlesWindow = "Particles";
 
 // Field edits of one frame, committed together as one undo step.
 struct Fields {
   EditorState& state;
   bool changed = false;
 
-  void record(const char* id) { recordItem(std::string(kWindow) + "/" + id); }
+  void record(const char* id) { recordItem(std::string(kParticlesWindow) + "/" + id); }
   void number(const char* id, const char* label, float& value, float lo, float hi) {
     ImGui::SetNextItemWidth(scaled(state, 90.0f));
     float v = value;
@@ -150,16 +150,16 @@ void drawParticlesWindow(CommandContext& ctx) {
   ImGui::SetNextWindowSize(ImVec2(std::max(std::min(scaled(state, 430.0f), v.w - 16.0f), 240.0f),
                                   std::max(std::min(scaled(state, 560.0f), v.h - 16.0f), 200.0f)),
                            ImGuiCond_Appearing);
-  if (!ImGui::Begin(kWindow, &state.particlesWindowOpen, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
+  if (!ImGui::Begin(kParticlesWindow, &state.particlesWindowOpen, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
     return;
   }
-  recordWindow(kWindow);
-  commandButton(ctx, "sim.add_particle_emitter", kWindow, "Add emitter");
+  recordWindow(kParticlesWindow);
+  commandButton(ctx, "sim.add_particle_emitter", kParticlesWindow, "Add emitter");
   ImGui::SameLine();
-  commandButton(ctx, "sim.live_particles", kWindow, "Live");
+  commandButton(ctx, "sim.live_particles", kParticlesWindow, "Live");
   ImGui::SameLine();
-  commandButton(ctx, "sim.remove_particle_system", kWindow, "Remove");
+  commandButton(ctx, "sim.remove_particle_system", kParticlesWindow, "Remove");
   const std::vector<ParticleSystemSettings>& systems = state.doc.scene().simulation.particles;
   if (systems.empty()) {
     ImGui::TextDisabled("No particle systems: Simulate > Add Particle Emitter makes one.");
@@ -173,7 +173,7 @@ void drawParticlesWindow(CommandContext& ctx) {
       if (ImGui::Selectable((systems[i].name + "##" + std::to_string(i)).c_str(), i == state.particleSystem)) state.particleSystem = i;
     ImGui::EndCombo();
   }
-  recordItem(std::string(kWindow) + "/System");
+  recordItem(std::string(kParticlesWindow) + "/System");
   const LiveParticles& live = state.liveParticles;
   if (live.frame >= 0 && state.particleSystem < static_cast<int>(live.alive.size()))
     ImGui::TextDisabled("frame %lld: %d alive, %llu emitted", live.frame, live.alive[state.particleSystem],

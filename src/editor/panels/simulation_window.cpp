@@ -23,7 +23,7 @@ namespace kinema {
 
 namespace {
 
-constexpr const char* kWindow = "Simulation";
+constexpr const char* kSimulationWindow = "Simulation";
 constexpr const char* kTeachWindow = "Stiff Springs";
 
 void placeWindow(EditorState& state, float w, float h) {
@@ -37,7 +37,7 @@ void placeWindow(EditorState& state, float w, float h) {
 bool floatField(EditorState& state, const std::string& id, const char* label, float& value, float lo) {
   ImGui::SetNextItemWidth(scaled(state, 90.0f));
   ImGui::InputFloat(label, &value, 0.0f, 0.0f, "%.4g");
-  recordItem(std::string(kWindow) + "/" + id);
+  recordItem(std::string(kSimulationWindow) + "/" + id);
   if (!ImGui::IsItemDeactivatedAfterEdit()) return false;
   if (!std::isfinite(value) || value < lo) value = lo;
   return true;
@@ -57,7 +57,7 @@ void chainSection(EditorState& state, int index) {
   changed |= floatField(state, id + "/Radius", "radius (units)", chain.radius, 0.0f);
   ImGui::SetNextItemWidth(scaled(state, 200.0f));
   ImGui::InputFloat3("gravity (units/s^2)", &chain.gravity.x, "%.4g");
-  recordItem(std::string(kWindow) + "/" + id + "/Gravity");
+  recordItem(std::string(kSimulationWindow) + "/" + id + "/Gravity");
   changed |= ImGui::IsItemDeactivatedAfterEdit() && isFinite(chain.gravity);
   ImGui::TextDisabled("%d collision capsule%s (Simulate > Add Collision Capsule on the active joint)",
                       static_cast<int>(chain.colliders.size()), chain.colliders.size() == 1 ? "" : "s");
@@ -69,23 +69,23 @@ void chainSection(EditorState& state, int index) {
     ImGui::Text("Capsule %d on %s (ends in its space)", k, c.joint >= 0 ? s.names[c.joint].c_str() : "the world");
     ImGui::SetNextItemWidth(scaled(state, 200.0f));
     ImGui::InputFloat3("end a", &c.a.x, "%.4g");
-    recordItem(std::string(kWindow) + "/" + cid + "/A");
+    recordItem(std::string(kSimulationWindow) + "/" + cid + "/A");
     changed |= ImGui::IsItemDeactivatedAfterEdit() && isFinite(c.a);
     ImGui::SetNextItemWidth(scaled(state, 200.0f));
     ImGui::InputFloat3("end b", &c.b.x, "%.4g");
-    recordItem(std::string(kWindow) + "/" + cid + "/B");
+    recordItem(std::string(kSimulationWindow) + "/" + cid + "/B");
     changed |= ImGui::IsItemDeactivatedAfterEdit() && isFinite(c.b);
     changed |= floatField(state, cid + "/Radius", "capsule radius", c.radius, 1e-6f);
     ImGui::SameLine();
     if (ImGui::Button("Remove")) removeCollider = k;
-    recordItem(std::string(kWindow) + "/" + cid + "/Remove");
+    recordItem(std::string(kSimulationWindow) + "/" + cid + "/Remove");
     ImGui::PopID();
   }
   if (changed) reportDopeSheetEdit(state, setSpringChainEdit(state.doc, index, chain), "Set dynamic chain " + chain.name);
   else if (removeCollider >= 0)
     reportDopeSheetEdit(state, removeColliderEdit(state.doc, index, removeCollider), "Removed the collision capsule");
   if (ImGui::Button("Remove chain")) reportDopeSheetEdit(state, removeSpringChainEdit(state.doc, index), "Removed the dynamic chain");
-  recordItem(std::string(kWindow) + "/" + id + "/Remove");
+  recordItem(std::string(kSimulationWindow) + "/" + id + "/Remove");
   ImGui::PopID();
   ImGui::Separator();
 }
@@ -99,7 +99,7 @@ void ragdollSection(EditorState& state, int index) {
   int start = static_cast<int>(r.startFrame);
   ImGui::SetNextItemWidth(scaled(state, 90.0f));
   ImGui::InputInt("start frame", &start, 0);
-  recordItem(std::string(kWindow) + "/" + id + "/Start frame");
+  recordItem(std::string(kSimulationWindow) + "/" + id + "/Start frame");
   if (ImGui::IsItemDeactivatedAfterEdit()) r.startFrame = std::max(start, 0), changed = true;
   changed |= floatField(state, id + "/Mass", "mass (kg)", r.mass, 1e-3f);
   changed |= floatField(state, id + "/Ground", "ground height", r.groundHeight, -1e9f);
@@ -110,7 +110,7 @@ void ragdollSection(EditorState& state, int index) {
   r.damping = std::min(r.damping, 1.0f);
   if (changed) reportDopeSheetEdit(state, setRagdollEdit(state.doc, index, r), "Set ragdoll " + r.name);
   if (ImGui::Button("Remove ragdoll")) reportDopeSheetEdit(state, removeRagdollEdit(state.doc, index), "Removed the ragdoll");
-  recordItem(std::string(kWindow) + "/" + id + "/Remove");
+  recordItem(std::string(kSimulationWindow) + "/" + id + "/Remove");
   ImGui::PopID();
   ImGui::Separator();
 }
@@ -121,18 +121,18 @@ void drawSimulationWindow(CommandContext& ctx) {
   EditorState& state = ctx.state;
   if (!state.simulationWindowOpen) return;
   placeWindow(state, 420.0f, 520.0f);
-  if (!ImGui::Begin(kWindow, &state.simulationWindowOpen, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
+  if (!ImGui::Begin(kSimulationWindow, &state.simulationWindowOpen, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
     return;
   }
-  recordWindow(kWindow);
-  commandButton(ctx, "sim.make_chain_dynamic", kWindow, "Make selected chain dynamic");
+  recordWindow(kSimulationWindow);
+  commandButton(ctx, "sim.make_chain_dynamic", kSimulationWindow, "Make selected chain dynamic");
   ImGui::SameLine();
-  commandButton(ctx, "sim.live_springs", kWindow, "Live");
-  commandButton(ctx, "sim.ragdoll_from_frame", kWindow, "Ragdoll from current frame");
+  commandButton(ctx, "sim.live_springs", kSimulationWindow, "Live");
+  commandButton(ctx, "sim.ragdoll_from_frame", kSimulationWindow, "Ragdoll from current frame");
   ImGui::SameLine();
-  commandButton(ctx, "sim.bake", kWindow, "Bake");
-  commandButton(ctx, "sim.add_collider", kWindow, "Add collision capsule on the active joint");
+  commandButton(ctx, "sim.bake", kSimulationWindow, "Bake");
+  commandButton(ctx, "sim.add_collider", kSimulationWindow, "Add collision capsule on the active joint");
   ImGui::Separator();
   const SimulationSettings& sim = state.doc.scene().simulation;
   if (sim.empty()) ImGui::TextWrapped("Nothing is dynamic yet: select a chain's first joint (a tail) and make it dynamic.");
@@ -145,7 +145,7 @@ void drawSimulationWindow(CommandContext& ctx) {
       ImGui::Text("%s '%s': frames %lld-%lld, %lld steps, limit excess %.2f deg", p.kind.c_str(), p.name.c_str(), p.firstFrame,
                   p.lastFrame, p.steps, p.largestLimitExcess / 0.01745329252);
     ImGui::Text("keys %d -> %d", state.lastBake->keysBefore, state.lastBake->keysAfter);
-    recordItem(std::string(kWindow) + "/Last bake");
+    recordItem(std::string(kSimulationWindow) + "/Last bake");
   }
   ImGui::End();
 }

@@ -21,10 +21,9 @@ namespace {
 const ImU32 kRulerBackground = IM_COL32(40, 40, 40, 255);
 const ImU32 kRulerRange = IM_COL32(58, 58, 58, 255);
 const ImU32 kTickColor = IM_COL32(95, 95, 95, 255);
-const ImU32 kPlayheadColor = IM_COL32(71, 114, 179, 255);  // Blender's playhead blue
 const ImU32 kDiamondFill = IM_COL32(240, 180, 50, 255);    // keys of the selected joints
 const ImU32 kDiamondOutline = IM_COL32(0, 0, 0, 255);
-constexpr float kDiamondRadius = 4.5f;
+constexpr float kTimelineDiamondRadius = 4.5f;
 
 void keyPreferencesPopup(EditorState& state) {
   if (!ImGui::BeginPopup("Key preferences")) return;
@@ -65,7 +64,7 @@ void drawRuler(EditorState& state, const TimelineRuler& r) {
   const float cy = r.y + r.h * 0.5f + 2.0f;  // below the tick labels' middle
   for (long long f : selectedKeyFrames(state)) {
     if (f < r.first || f > r.last) continue;
-    const float x = r.xOfFrame(f), d = scaled(state, kDiamondRadius);
+    const float x = r.xOfFrame(f), d = scaled(state, kTimelineDiamondRadius);
     draw->AddQuadFilled(ImVec2(x, cy - d - 1), ImVec2(x + d + 1, cy), ImVec2(x, cy + d + 1), ImVec2(x - d - 1, cy),
                         kDiamondOutline);
     draw->AddQuadFilled(ImVec2(x, cy - d), ImVec2(x + d, cy), ImVec2(x, cy + d), ImVec2(x - d, cy), kDiamondFill);

@@ -1,4 +1,5 @@
 #include "editor/viewport/capsule_shape.h"
+#include "core/math.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +7,6 @@
 namespace kinema {
 
 namespace {
-constexpr float kPi = 3.14159265358979f;
 
 // Points centre + r (cos t u + sin t v) for t from t0 to t1 inclusive.
 std::vector<glm::vec3> arc(const glm::vec3& centre, const glm::vec3& u, const glm::vec3& v, float r, float t0, float t1,

@@ -1,11 +1,11 @@
 #include "editor/viewport/limit_shapes.h"
+#include "core/math.h"
 
 #include <algorithm>
 
 namespace kinema {
 
 namespace {
-constexpr float kTwoPi = 6.28318530717959f;
 
 // A unit vector perpendicular to `axis`: `hint` with its component along the axis removed,
 // or any perpendicular when the hint is (nearly) parallel or zero.

@@ -1,4 +1,5 @@
 #include "editor/viewport/rotate_gizmo.h"
+#include "core/math.h"
 
 #include <algorithm>
 #include <limits>
@@ -6,7 +7,6 @@
 namespace kinema {
 
 namespace {
-constexpr float kPi = 3.14159265358979f;
 
 glm::vec3 unitAxis(int i) {
   glm::vec3 a(0.0f);
