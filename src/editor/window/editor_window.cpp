@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <deque>
 #include <iostream>
+#include <memory>
 #include <numeric>
 #include <optional>
 #include <thread>
@@ -189,20 +190,150 @@ bool displayAvailable() {
 std::string editorWindowTitle(const EditorState& state) {
   return "Kinema - " + documentTitle(state) + (state.doc.dirty() ? "*" : "");
 }
+namespace {
 
-EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions& o) {
+// Destroys ImGui, the window and GLFW, in that order, when the session ends: the session's
+// first member, so the GL objects declared after it go first, while the context lives.
+struct WindowOwner {
+  GLFWwindow* window = nullptr;
+  bool glfw = false, imgui = false;
+  ~WindowOwner() {
+    if (imgui) {
+      imguiBackendsShutdown();
+      ImGui::DestroyContext();
+    }
+    if (window) glfwDestroyWindow(window);
+    if (glfw) glfwTerminate();
+  }
+};
+
+}  // namespace
+
+// Everything the window keeps from one frame to the next.
+struct EditorWindow::Session {
+  Session(EditorState& state, const EditorWindowOptions& options) : state(state), o(options) {}
+  bool setup();
+  bool runFrame();
+  EditorWindowResult shutdown();
+
+  // Fonts, style and the panels' rectangles for a window of w x h (framebuffer width fw).
+  void updateLayout(int w, int h, int fw);
+  // The document's meshes to the GPU (again when a file is opened or a bind replaced them).
+  std::string uploadMeshes();
+  // The joints' bounds, grown by how far the body reaches past them.
+  Bounds viewBounds() const;
+  void mark(const char* pass) {
+    if (timer) timer->mark(pass);
+  }
+
+  WindowOwner owner;  // first: destroyed last
+  EditorState& state;
+  const EditorWindowOptions& o;
   EditorWindowResult result;
+  GLFWwindow* window = nullptr;
+  LiveInput live;
+  std::string title;
+  std::vector<std::string> preferenceProblems;
+  UiStyle uiStyle;  // fonts and style at the UI scale, rebuilt when it or the theme changes
+  std::vector<double> frameMs;
+  FramePassTimer passTimer;
+  FramePassTimer* timer = nullptr;
+  long long frame = 1;
+  bool shutDown = false;
+
+  // The objects that hold GL names, made once the context is current (their destructors
+  // call GL): the renderers, the 3D view's kept picture and the canvas.
+  struct GlObjects {
+    SkeletonRenderer renderer;
+    // The document's meshes, skinned on the GPU each frame; uploaded again when a file is
+    // opened (edits never change meshes).
+    MeshRenderer meshes;
+    RectClear rectClear;            // the changed-only frames' clears
+    ViewportTarget viewportTarget;  // the still 3D view, multisampled, kept while nothing changes
+    ViewportTarget canvas;  // the whole window, one sample, where the back buffer does not survive swaps
+  };
+  std::unique_ptr<GlObjects> gl;
+  std::string error;
+  std::vector<char> skinJoints;  // bones only between skin joints (skinJointMask)
+  glm::vec3 meshReach{0.0f};     // how far the body reaches past the joints (a head above the neck)
+  ViewportTools tools;
+  Keymap keymap;
+  EditorInput input;
+  SkeletonDrawList list;            // last frame's drawing: picking casts rays against it
+  SkeletonDrawList selectionAlone;  // with the bones hidden: the selected bones (hiddenBonesSelection)
+  OverlayDrawList overlay;
+  std::optional<uint64_t> drawnSignature;  // frameSignature of the 3D view drawn last frame
+  bool viewportTargetFailed = false;
+  AnimationDisplay animationDisplay;  // onion-skin ghosts, motion path (kept: the path is cached)
+  CrowdDisplay crowdDisplay;          // the crowd's members at the playhead (issue 24)
+  // Changed-only redraws (window_redraw.h): the kept window, what its 3D view area and
+  // panels show, and the framebuffer this frame draws into (0: the window's own).
+  bool changedRedraws = false;
+  bool backBufferKept = false;
+  // Frames drawn only where they changed, into the kept back buffer, show those parts alone.
+  std::optional<WindowPresenter> presenter;
+  std::vector<PixelRect> shownRects;  // what this frame drew again, for the presenter
+  glm::ivec2 keptSize{-1};  // the back buffer's size when it was last drawn (backBufferKept)
+  ImGuiDrawSnapshot imguiSnapshot;
+  SceneSnapshot sceneSnapshot;
+  ViewContent canvasView;
+  GLuint drawFramebuffer = 0;
+  int fbw = 0, fbh = 0, ww = 0, wh = 0;
+  long long uploadedMeshRevision = 0;  // a bind replaces the meshes
+  size_t nextScripted = 0;
+  long long lastScriptFrame = 0;
+  double previous = 0.0;
+};
+
+void EditorWindow::Session::updateLayout(int w, int h, int fw) {
+  const float ratio = w > 0 ? float(fw) / float(w) : 1.0f;
+  const float scale = effectiveUiScale(window, state, ratio);
+  uiStyle.update(scale, ratio, state.preferences.theme);
+  LayoutMetrics metrics;
+  metrics.fontSize = uiStyle.fontSize();
+  metrics.scale = scale;
+  metrics.framePaddingY = uiStyle.framePaddingY();
+  state.layout = computeEditorLayout(float(w), float(h), state.preferences.panels, state.bottomPanels(), metrics);
+}
+
+std::string EditorWindow::Session::uploadMeshes() {
+  MeshRenderer& meshes = gl->meshes;
+  const Scene& scene = state.doc.scene();
+  skinJoints = skinJointMask(scene);
+  meshReach = glm::vec3(0.0f);
+  const std::string failed = meshes.upload(scene);
+  if (!failed.empty() || meshes.empty()) return failed;
+  // Measured once per upload at the current pose, so framing and the grid take in the
+  // body without reading vertices back every frame.
+  MeshFrame now;
+  now.world = &state.world();
+  const Bounds body = meshes.deformedBounds(now), joints = jointBounds(state.world());
+  if (!body.empty && !joints.empty)
+    meshReach = glm::max(glm::max(joints.min - body.min, body.max - joints.max), glm::vec3(0.0f));
+  return {};
+}
+
+Bounds EditorWindow::Session::viewBounds() const {
+  Bounds b = jointBounds(state.world());
+  if (!b.empty) {
+    b.add(b.min - meshReach);
+    b.add(b.max + meshReach);
+  }
+  return b;
+}
+
+bool EditorWindow::Session::setup() {
   if (!displayAvailable()) {
     result.error = "no display (DISPLAY and WAYLAND_DISPLAY are unset)";
-    return result;
+    return false;
   }
   glfwSetErrorCallback(onGlfwError);
   if (!glfwInit()) {
     result.error = "cannot start GLFW: " + lastGlfwError();
-    return result;
+    return false;
   }
+  owner.glfw = true;
   // Edit > Preferences as saved last; a bad file is reported (below) and the defaults used.
-  std::vector<std::string> preferenceProblems;
   applyPreferences(state, loadUserPreferences(preferenceProblems));
   if (o.uiScale > 0.0f) state.preferences.uiScale = o.uiScale;
   WindowPlacement place;
@@ -212,14 +343,13 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
   } else {
     place = initialWindowPlacement(state.preferences.window, primaryWorkArea());
   }
-  std::string title = editorWindowTitle(state);
+  title = editorWindowTitle(state);
   // One sample per pixel: ImGui antialiases its own shapes, and the 3D view draws its still
   // picture multisampled into a framebuffer of its own (render/viewport_target.h).
-  GLFWwindow* window = createWindow(place, title, 0);
+  window = owner.window = createWindow(place, title, 0);
   if (!window) {
     result.error = "cannot open an OpenGL 3.3 core window: " + lastGlfwError();
-    glfwTerminate();
-    return result;
+    return false;
   }
   if (place.positioned) glfwSetWindowPos(window, place.x, place.y);
   glfwShowWindow(window);
@@ -227,14 +357,11 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
   const int version = gladLoadGL(glfwGetProcAddress);
   if (GLAD_VERSION_MAJOR(version) * 10 + GLAD_VERSION_MINOR(version) < 33) {
     result.error = "the window's OpenGL is older than 3.3";
-    glfwDestroyWindow(window);
-    glfwTerminate();
-    return result;
+    return false;
   }
   result.opened = true;
   glfwSwapInterval(o.replay || o.reportFrameTimes ? 0 : 1);
 
-  LiveInput live;
   live.ignore = o.replay;
   glfwSetWindowUserPointer(window, &live);
   glfwSetCursorPosCallback(window, onCursor);
@@ -254,485 +381,435 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
   io.GetClipboardTextFn = getClipboard;
   io.ClipboardUserData = window;
   mapImGuiKeys(io);
-  UiStyle uiStyle;  // fonts and style at the UI scale, rebuilt when it or the theme changes
-  auto updateLayout = [&](int w, int h, int fw) {
-    const float ratio = w > 0 ? float(fw) / float(w) : 1.0f;
-    const float scale = effectiveUiScale(window, state, ratio);
-    uiStyle.update(scale, ratio, state.preferences.theme);
-    LayoutMetrics metrics;
-    metrics.fontSize = uiStyle.fontSize();
-    metrics.scale = scale;
-    metrics.framePaddingY = uiStyle.framePaddingY();
-    state.layout = computeEditorLayout(float(w), float(h), state.preferences.panels, state.bottomPanels(), metrics);
-  };
   imguiBackendsInit(window);
+  owner.imgui = true;
 
-  std::vector<double> frameMs;
-  FramePassTimer passTimer;
-  FramePassTimer* timer = o.reportFramePasses ? &passTimer : nullptr;
-  auto mark = [timer](const char* pass) {
-    if (timer) timer->mark(pass);
+  timer = o.reportFramePasses ? &passTimer : nullptr;
+  gl = std::make_unique<GlObjects>();
+  error = gl->renderer.init();
+  if (error.empty()) error = gl->meshes.init();
+  if (error.empty()) error = gl->rectClear.init();
+  if (!error.empty()) result.error = error;
+  // Every key-down ImGui does not want runs the command its keymap binds (editor_input.h);
+  // the user's keymap file is read once, its bad lines reported and skipped.
+  std::vector<std::string> keymapProblems;
+  keymap = loadUserKeymap(editorCommands(), keymapProblems);
+  for (const std::string& problem : keymapProblems) {
+    std::cerr << "kinema edit: keymap: " << problem << "\n";
+    showEditorError(state, "keymap: " + problem);
+  }
+  for (const std::string& problem : preferenceProblems) {
+    std::cerr << "kinema edit: preferences: " << problem << "\n";
+    showEditorError(state, "preferences: " + problem);
+  }
+  changedRedraws = o.redraw == WindowRedraw::Changed || (o.redraw == WindowRedraw::Auto && softwareRasterizer());
+  backBufferKept = changedRedraws && backBufferSurvivesSwaps(window);
+  presenter.emplace(window, backBufferKept);
+  evaluateEditorPose(state);
+  glfwGetFramebufferSize(window, &fbw, &fbh);
+  if (error.empty()) error = uploadMeshes();
+  uploadedMeshRevision = state.doc.meshRevision();
+  glfwGetWindowSize(window, &ww, &wh);
+  updateLayout(ww, wh, fbw);
+  const PanelRect startRect = state.layout.viewport;
+  state.camera = defaultCamera(viewBounds(), startRect.w / startRect.h);
+  lastScriptFrame = o.script.empty() ? 0 : o.script.back().frame;
+  previous = glfwGetTime();
+  return true;
+}
+
+// One frame: input, playback and the pose, the panels, the 3D view, the picture shown. False
+// when no frame follows (this was the last, or the window cannot go on).
+bool EditorWindow::Session::runFrame() {
+  if (!error.empty() || !result.error.empty() || state.panels.quitApproved) return false;
+  ImGuiIO& io = ImGui::GetIO();
+  SkeletonRenderer& renderer = gl->renderer;
+  MeshRenderer& meshes = gl->meshes;
+  RectClear& rectClear = gl->rectClear;
+  ViewportTarget& viewportTarget = gl->viewportTarget;
+  ViewportTarget& canvas = gl->canvas;
+  const auto frameStart = std::chrono::steady_clock::now();
+  if (timer) timer->beginFrame();
+  glfwPollEvents();
+  if (glfwWindowShouldClose(window)) {
+    glfwSetWindowShouldClose(window, GLFW_FALSE);
+    requestQuit(state);  // asks first when there are unsaved changes
+  }
+  while (nextScripted < o.script.size() && o.script[nextScripted].frame <= frame)
+    live.queue.push_back(o.script[nextScripted++]);
+  const double now = glfwGetTime();
+  const double dt = o.replay ? 1.0 / 60.0 : now - previous;
+  previous = now;
+  glfwGetWindowSize(window, &ww, &wh);
+  glfwGetFramebufferSize(window, &fbw, &fbh);
+  updateLayout(ww, wh, fbw);  // between frames: the font atlas may be rebuilt
+  // The 3D view is the free area between the panels (the empty-frame measurement has none).
+  const PanelRect vp = o.emptyFrame ? PanelRect{0.0f, 0.0f, float(std::max(ww, 1)), float(std::max(wh, 1))}
+                                    : state.layout.viewport;
+  state.viewportRect = glm::vec4(vp.x, vp.y, vp.w, vp.h);
+  const ViewportView view = ViewportView::of(state.camera, glm::vec2(vp.w, vp.h), glm::vec2(vp.x, vp.y));
+
+  // What commands run on this frame: from the keys below, the menus and the panels.
+  CommandContext commands(state);
+  commands.tools = &tools;
+  commands.view = view;
+  commands.keymap = &keymap;
+  commands.mouse = input.held().mouse;
+  // Input: ImGui gets every event; the tools, the compare mode and the keymap's commands
+  // get those ImGui does not want (as of the previous frame, which is what the user saw).
+  const bool mouseCaptured = io.WantCaptureMouse, keyboardCaptured = io.WantCaptureKeyboard;
+  // ImGui needs each tap of a key it reads in a frame of its own while it has the keyboard
+  // or a popup open, and while a panel's own gesture polls Esc / Enter through it (the dope
+  // sheet's and curve editor's drags, G and B: imgui_input_feed.h); else every event goes at once.
+  const bool panelGesture = state.doc.dragging() || state.curveEditor.boxArmed ||
+                            state.curveEditor.drag != CurveEditorState::Drag::None ||
+                            state.dopeSheet.gesture != DopeSheetState::Gesture::None;
+  const bool imguiReadsKeys = keyboardCaptured || panelGesture ||
+                              ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
+  auto widgetByName = [&](std::deque<InputEvent>& queue) {
+    if (queue.front().item.empty()) return true;
+    // A scripted event naming a widget: at the widget as it was last drawn.
+    InputEvent& e = queue.front();
+    const ItemRect* r = state.items.find(e.item);
+    if (!r) {
+      result.error = "script: frame " + std::to_string(e.frame) + ": no widget named '" + e.item +
+                     "' has been drawn (the state dump's \"items\" lists the names)";
+      queue.clear();
+      return false;
+    }
+    const glm::vec2 p = r->min + (r->max - r->min) * e.at;
+    e.x = p.x;
+    e.y = p.y;
+    e.item.clear();
+    if (e.type != InputEventType::MouseMove) {  // presses happen where the pointer is
+      InputEvent move = e;
+      move.type = InputEventType::MouseMove;
+      queue.push_front(move);
+    }
+    return true;
   };
-  long long frame = 1;
-  {
-    SkeletonRenderer renderer;
-    std::string error = renderer.init();
-    // The document's meshes, skinned on the GPU each frame; uploaded again when a file is
-    // opened (edits never change meshes).
-    MeshRenderer meshes;
-    if (error.empty()) error = meshes.init();
-    RectClear rectClear;  // the changed-only frames' clears
-    if (error.empty()) error = rectClear.init();
-    std::vector<char> skinJoints;  // bones only between skin joints (skinJointMask)
-    glm::vec3 meshReach(0.0f);     // how far the body reaches past the joints (a head above the neck)
-    auto uploadMeshes = [&]() -> std::string {
-      const Scene& scene = state.doc.scene();
-      skinJoints = skinJointMask(scene);
-      meshReach = glm::vec3(0.0f);
-      const std::string failed = meshes.upload(scene);
-      if (!failed.empty() || meshes.empty()) return failed;
-      // Measured once per upload at the current pose, so framing and the grid take in the
-      // body without reading vertices back every frame.
-      MeshFrame now;
-      now.world = &state.world();
-      const Bounds body = meshes.deformedBounds(now), joints = jointBounds(state.world());
-      if (!body.empty && !joints.empty)
-        meshReach = glm::max(glm::max(joints.min - body.min, body.max - joints.max), glm::vec3(0.0f));
-      return {};
-    };
-    auto viewBounds = [&state, &meshReach]() {
-      Bounds b = jointBounds(state.world());
-      if (!b.empty) {
-        b.add(b.min - meshReach);
-        b.add(b.max + meshReach);
-      }
-      return b;
-    };
-    if (!error.empty()) result.error = error;
-    ViewportTools tools;
-    // Every key-down ImGui does not want runs the command its keymap binds (editor_input.h);
-    // the user's keymap file is read once, its bad lines reported and skipped.
-    std::vector<std::string> keymapProblems;
-    const Keymap keymap = loadUserKeymap(editorCommands(), keymapProblems);
-    for (const std::string& problem : keymapProblems) {
-      std::cerr << "kinema edit: keymap: " << problem << "\n";
-      showEditorError(state, "keymap: " + problem);
+  feedFrameInput(
+      live.queue, io, imguiReadsKeys,
+      [&](const InputEvent& e) { input.handle(commands, e, list, mouseCaptured, keyboardCaptured); }, widgetByName);
+  advancePlayback(state, dt);
+  evaluateEditorPose(state);
+  const Bounds bounds = viewBounds();
+  mark("input, tools (IK), pose");
+
+  state.items.frame = frame;
+  imguiBackendsNewFrame();
+  io.DisplaySize = ImVec2(float(ww), float(wh));
+  io.DisplayFramebufferScale = ImVec2(ww > 0 ? float(fbw) / ww : 1.0f, wh > 0 ? float(fbh) / wh : 1.0f);
+  io.DeltaTime = static_cast<float>(std::max(dt, 1e-4));
+  ImGui::NewFrame();
+  if (!o.emptyFrame) drawEditorPanels(commands, io.Framerate);
+  ImGui::Render();
+  evaluateEditorPose(state);  // the panels may have edited the document
+  keepLatticeEditValid(state);  // an undo or a panel may have removed the edited lattice
+  mark("ImGui: build the panels");
+
+  const bool scriptDone = o.replay && o.frameCount <= 0 && nextScripted >= o.script.size() && live.queue.empty() &&
+                          frame >= lastScriptFrame + 2;
+  const bool last = (o.frameCount > 0 && frame >= o.frameCount) || scriptDone || state.panels.quitApproved;
+  // What the frame's 3D view area shows, drawn below into the window or the canvas.
+  ViewContent view3d;
+  bool changedOnly = false;  // drawn into the canvas, only where it changed (window_redraw.h)
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (o.emptyFrame) {
+    glViewport(0, 0, fbw, fbh);
+    glClearColor(kWindowGrey.r, kWindowGrey.g, kWindowGrey.b, kWindowGrey.a);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    imguiBackendsRenderDrawData(ImGui::GetDrawData());
+    state.windowRedraw = {false, false, 1, static_cast<long long>(fbw) * fbh};
+  } else {
+    if (meshes.needsUpload(state.doc.scene()) || state.doc.meshRevision() != uploadedMeshRevision) {
+      uploadedMeshRevision = state.doc.meshRevision();
+      const std::string failed = uploadMeshes();
+      if (!failed.empty()) state.statusMessage = failed;
     }
-    for (const std::string& problem : preferenceProblems) {
-      std::cerr << "kinema edit: preferences: " << problem << "\n";
-      showEditorError(state, "preferences: " + problem);
-    }
-    EditorInput input;
-    SkeletonDrawList list;  // last frame's drawing: picking casts rays against it
-    SkeletonDrawList selectionAlone;  // with the bones hidden: the selected bones (hiddenBonesSelection)
-    OverlayDrawList overlay;
-    ViewportTarget viewportTarget;  // the still 3D view, multisampled, kept while nothing changes
-    std::optional<uint64_t> drawnSignature;  // frameSignature of the 3D view drawn last frame
-    bool viewportTargetFailed = false;
-    AnimationDisplay animationDisplay;  // onion-skin ghosts, motion path (kept: the path is cached)
-    CrowdDisplay crowdDisplay;          // the crowd's members at the playhead (issue 24)
-    // Changed-only redraws (window_redraw.h): the kept window, what its 3D view area and
-    // panels show, and the framebuffer this frame draws into (0: the window's own).
-    bool changedRedraws = o.redraw == WindowRedraw::Changed || (o.redraw == WindowRedraw::Auto && softwareRasterizer());
-    const bool backBufferKept = changedRedraws && backBufferSurvivesSwaps(window);
-    // Frames drawn only where they changed, into the kept back buffer, show those parts alone.
-    WindowPresenter presenter(window, backBufferKept);
-    std::vector<PixelRect> shownRects;  // what this frame drew again, for the presenter
-    glm::ivec2 keptSize(-1);  // the back buffer's size when it was last drawn (backBufferKept)
-    ViewportTarget canvas;    // the whole window, one sample, where the back buffer does not survive swaps
-    ImGuiDrawSnapshot imguiSnapshot;
-    SceneSnapshot sceneSnapshot;
-    ViewContent canvasView;
-    GLuint drawFramebuffer = 0;
-    evaluateEditorPose(state);
-    int fbw = 0, fbh = 0, ww = 0, wh = 0;
-    glfwGetFramebufferSize(window, &fbw, &fbh);
-    if (error.empty()) error = uploadMeshes();
-    long long uploadedMeshRevision = state.doc.meshRevision();  // a bind replaces the meshes
-    glfwGetWindowSize(window, &ww, &wh);
-    updateLayout(ww, wh, fbw);
-    const PanelRect startRect = state.layout.viewport;
-    state.camera = defaultCamera(viewBounds(), startRect.w / startRect.h);
-    size_t nextScripted = 0;
-    const long long lastScriptFrame = o.script.empty() ? 0 : o.script.back().frame;
-    double previous = glfwGetTime();
-    for (; error.empty() && result.error.empty() && !state.panels.quitApproved; ++frame) {
-      const auto frameStart = std::chrono::steady_clock::now();
-      if (timer) timer->beginFrame();
-      glfwPollEvents();
-      if (glfwWindowShouldClose(window)) {
-        glfwSetWindowShouldClose(window, GLFW_FALSE);
-        requestQuit(state);  // asks first when there are unsaved changes
+    SkeletonDrawJob job;
+    job.parents = &state.doc.skeleton().parents;
+    job.world = &state.world();
+    job.shownJoints = &skinJoints;
+    // Dashed relationship lines to joints that move on their own (Blender's unconnected bones).
+    const std::vector<char> loose = looseJoints(state.doc.skeleton(),
+                                                state.hasMotion() ? &state.doc.scene().clips[state.clip] : nullptr,
+                                                state.doc.pose());
+    job.looseJoints = &loose;
+    job.run(list);
+    MeshDraw meshDraw;
+    meshDraw.renderer = &meshes;
+    meshDraw.frame.world = &state.world();
+    std::vector<std::vector<float>> morphWeights;  // animated blend shapes at the playhead
+    if (!meshes.empty()) morphWeights = sampleMorphWeights(state.doc.scene(), state.hasMotion() ? state.clip : -1, state.time);
+    meshDraw.frame.morphWeights = &morphWeights;
+    // Meshes with an active deformer stack: morphs, skin and deformers on the CPU (the
+    // reference path), drawn as they come out.
+    std::vector<DeformedPrimitive> cpuDeformed;
+    std::vector<DeformerStack> gpuStacks;  // per instance: what the vertex shader deforms
+    // On a software rasteriser every mesh is morphed, skinned and deformed here, once
+    // (`posed`): drawn from these vertices, and compared with the last frame's to find
+    // what changed on screen. Elsewhere the deformer stacks alone (`cpuDeformed`).
+    const bool cpuPosed = !meshes.empty() && meshes.drawsPosed() && !state.view.showWeights;
+    std::vector<DeformerStack> stacks;
+    if (!meshes.empty() && !state.doc.scene().deformers.empty()) {
+      stacks = sampleDeformerStacks(state.doc.scene(), state.hasMotion() ? state.clip : -1, state.time);
+      previewLatticeMove(state, state.world(), stacks);  // a running G on lattice points
+      // With the shader deforming (a hardware GPU), bend / twist / taper stacks run in
+      // the vertex shader; the rest, and everything on llvmpipe, on the CPU.
+      if (!meshes.cpuDeformation() && !state.view.showWeights) {
+        gpuStacks.assign(stacks.size(), DeformerStack());
+        for (size_t i = 0; i < stacks.size(); ++i)
+          if (axisStackOnGpu(stacks[i])) std::swap(gpuStacks[i], stacks[i]);
       }
-      while (nextScripted < o.script.size() && o.script[nextScripted].frame <= frame)
-        live.queue.push_back(o.script[nextScripted++]);
-      const double now = glfwGetTime();
-      const double dt = o.replay ? 1.0 / 60.0 : now - previous;
-      previous = now;
-      glfwGetWindowSize(window, &ww, &wh);
-      glfwGetFramebufferSize(window, &fbw, &fbh);
-      updateLayout(ww, wh, fbw);  // between frames: the font atlas may be rebuilt
-      // The 3D view is the free area between the panels (the empty-frame measurement has none).
-      const PanelRect vp = o.emptyFrame ? PanelRect{0.0f, 0.0f, float(std::max(ww, 1)), float(std::max(wh, 1))}
-                                        : state.layout.viewport;
-      state.viewportRect = glm::vec4(vp.x, vp.y, vp.w, vp.h);
-      const ViewportView view = ViewportView::of(state.camera, glm::vec2(vp.w, vp.h), glm::vec2(vp.x, vp.y));
-
-      // What commands run on this frame: from the keys below, the menus and the panels.
-      CommandContext commands(state);
-      commands.tools = &tools;
-      commands.view = view;
-      commands.keymap = &keymap;
-      commands.mouse = input.held().mouse;
-      // Input: ImGui gets every event; the tools, the compare mode and the keymap's commands
-      // get those ImGui does not want (as of the previous frame, which is what the user saw).
-      const bool mouseCaptured = io.WantCaptureMouse, keyboardCaptured = io.WantCaptureKeyboard;
-      // ImGui needs each tap of a key it reads in a frame of its own while it has the keyboard
-      // or a popup open, and while a panel's own gesture polls Esc / Enter through it (the dope
-      // sheet's and curve editor's drags, G and B: imgui_input_feed.h); else every event goes at once.
-      const bool panelGesture = state.doc.dragging() || state.curveEditor.boxArmed ||
-                                state.curveEditor.drag != CurveEditorState::Drag::None ||
-                                state.dopeSheet.gesture != DopeSheetState::Gesture::None;
-      const bool imguiReadsKeys = keyboardCaptured || panelGesture ||
-                                  ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
-      auto widgetByName = [&](std::deque<InputEvent>& queue) {
-        if (queue.front().item.empty()) return true;
-        // A scripted event naming a widget: at the widget as it was last drawn.
-        InputEvent& e = queue.front();
-        const ItemRect* r = state.items.find(e.item);
-        if (!r) {
-          result.error = "script: frame " + std::to_string(e.frame) + ": no widget named '" + e.item +
-                         "' has been drawn (the state dump's \"items\" lists the names)";
-          queue.clear();
-          return false;
+      if (anyDeformerActive(stacks) && !cpuPosed) {
+        SceneDeformationJob deformJob;
+        deformJob.scene = &state.doc.scene();
+        deformJob.world = &state.world();
+        deformJob.morphWeights = &morphWeights;
+        deformJob.deformers = &stacks;
+        deformJob.withDeformersOnly = true;
+        deformJob.out = &cpuDeformed;
+        if (!deformJob.run()) cpuDeformed.clear();
+      }
+    }
+    meshDraw.frame.deformed = &cpuDeformed;
+    std::vector<DeformedPrimitive> posed;
+    if (cpuPosed) {
+      SceneDeformationJob poseJob;
+      poseJob.scene = &state.doc.scene();
+      poseJob.world = &state.world();
+      poseJob.morphWeights = &morphWeights;
+      if (anyDeformerActive(stacks)) poseJob.deformers = &stacks;  // sampled, with a running G's preview
+      poseJob.out = &posed;
+      if (poseJob.run()) meshDraw.frame.posed = &posed;
+    }
+    meshDraw.frame.gpuDeformers = gpuStacks.empty() ? nullptr : &gpuStacks;
+    meshDraw.frame.weightJoint = state.view.showWeights ? state.doc.selection.active() : -1;
+    colorSelection(state, list);
+    buildCrowdDisplay(state, skinJoints, !meshes.empty(), crowdDisplay);
+    // The crowd too; in steps, so a small move keeps the grid and clip planes (camera.h).
+    const float sceneRadius = steadySceneRadius(std::max(bounds.radius(), crowdDisplay.radius));
+    state.camera.fitClipPlanes(sceneRadius);
+    // The viewport in framebuffer pixels (GL counts rows from the bottom); the panels
+    // cover the rest, which is cleared to the background behind them.
+    const float sx = ww > 0 ? float(fbw) / ww : 1.0f, sy = wh > 0 ? float(fbh) / wh : 1.0f;
+    const int vx = int(std::lround(vp.x * sx)), vw = std::max(int(std::lround(vp.w * sx)), 1);
+    const int vh = std::max(int(std::lround(vp.h * sy)), 1), vy = std::max(fbh - int(std::lround(vp.y * sy)) - vh, 0);
+    mark("scene draw lists");
+    buildViewportOverlay(state, ViewportView::of(state.camera, glm::vec2(vw, vh), glm::vec2(vp.x * sx, vp.y * sy)),
+                         tools, overlay);
+    buildAnimationDisplay(state, skinJoints, animationDisplay, overlay);  // onion skin, motion path
+    buildParticleDisplay(state, static_cast<float>(vh), overlay);         // live particles (issue 24)
+    // Body ghosts go to the mesh renderer; bones stand in where the meshes failed to upload.
+    std::vector<MeshGhost> meshGhosts;
+    if (animationDisplay.ghostBodies && meshes.empty())
+      animationDisplay.ghostLists = buildGhostDrawLists(state.doc.skeleton().parents, skinJoints, animationDisplay.ghosts,
+                                                        animationDisplay.ghostPoses);
+    else if (animationDisplay.ghostBodies)
+      for (size_t g = 0; g < animationDisplay.ghosts.size(); ++g)
+        meshGhosts.push_back({&animationDisplay.ghostPoses[g], &animationDisplay.ghostMorphWeights[g],
+                              animationDisplay.ghosts[g].color});
+    addCrowdOverlay(state, overlay);
+    for (const std::vector<glm::mat4>* member : crowdDisplay.bodies)
+      meshGhosts.push_back({member, &crowdDisplay.noMorphs, crowdDisplay.tint});
+    std::vector<SkeletonDrawList> ghostLists = animationDisplay.ghostLists;
+    ghostLists.insert(ghostLists.end(), crowdDisplay.bones.begin(), crowdDisplay.bones.end());
+    FrameDescription description;
+    description.skeleton = &list;
+    description.overlay = &overlay;
+    description.camera = state.camera;
+    description.x = vx;
+    description.y = vy;
+    description.width = vw;
+    description.height = vh;
+    description.sceneRadius = sceneRadius;
+    description.showGrid = state.view.showGrid;
+    description.lineScale = state.preferences.lineScale;  // thicker for a projector (Edit > Preferences)
+    description.meshes = meshes.empty() ? nullptr : &meshDraw;
+    description.ghosts = &ghostLists;
+    description.meshGhosts = &meshGhosts;
+    description.timer = timer;
+    description.bones = !state.view.showBones ? BoneDisplay::None
+                        : state.view.xrayBones ? BoneDisplay::XRay
+                                               : BoneDisplay::On;
+    // Bones hidden: the selected ones alone, x-ray over the body, so the selection shows.
+    if (hiddenBonesSelection(state, list, selectionAlone)) {
+      description.skeleton = &selectionAlone;
+      description.bones = BoneDisplay::XRay;
+    }
+    // The compare mode draws with ImGui; else the 3D view, antialiased when it holds still
+    // (viewport_quality.h) and then kept, to be shown again while nothing in it changes.
+    view3d.rect = PixelRect{vx, vy, vx + vw, vy + vh};
+    if (state.compare.active) {
+      state.viewportRender = {};
+    } else {
+      const uint64_t signature = frameSignature(description) ^ (uint64_t(uploadedMeshRevision) * 0x9E3779B97F4A7C15ull);
+      const bool changed = !drawnSignature || *drawnSignature != signature;
+      drawnSignature = signature;
+      const ViewportQuality quality = viewportQuality(state, changed, last && !o.screenshotPath.empty());
+      std::string failed;
+      if (quality == ViewportQuality::Still && !changed && viewportTarget.holds(vw, vh)) {
+        view3d.shows = ViewContent::Shows::KeptPicture;
+        state.viewportRender = {viewportTarget.samples(), true};
+      } else if (quality == ViewportQuality::Still && !viewportTargetFailed &&
+                 (failed = viewportTarget.begin(vw, vh, viewportSamples(quality))).empty()) {
+        description.x = description.y = 0;  // the target is the view's own size
+        renderer.draw(description);
+        description.x = vx, description.y = vy;
+        viewportTarget.resolve();
+        view3d.shows = ViewContent::Shows::KeptPicture;
+        state.viewportRender = {viewportTarget.samples(), false};
+      } else {  // moving (or no framebuffer of its own): one sample, straight into the window
+        if (!failed.empty() && !viewportTargetFailed) {
+          viewportTargetFailed = true;
+          std::cerr << "kinema edit: " << failed << "; the 3D view is drawn without antialiasing\n";
         }
-        const glm::vec2 p = r->min + (r->max - r->min) * e.at;
-        e.x = p.x;
-        e.y = p.y;
-        e.item.clear();
-        if (e.type != InputEventType::MouseMove) {  // presses happen where the pointer is
-          InputEvent move = e;
-          move.type = InputEventType::MouseMove;
-          queue.push_front(move);
-        }
-        return true;
-      };
-      feedFrameInput(
-          live.queue, io, imguiReadsKeys,
-          [&](const InputEvent& e) { input.handle(commands, e, list, mouseCaptured, keyboardCaptured); }, widgetByName);
-      advancePlayback(state, dt);
-      evaluateEditorPose(state);
-      const Bounds bounds = viewBounds();
-      mark("input, tools (IK), pose");
-
-      state.items.frame = frame;
-      imguiBackendsNewFrame();
-      io.DisplaySize = ImVec2(float(ww), float(wh));
-      io.DisplayFramebufferScale = ImVec2(ww > 0 ? float(fbw) / ww : 1.0f, wh > 0 ? float(fbh) / wh : 1.0f);
-      io.DeltaTime = static_cast<float>(std::max(dt, 1e-4));
-      ImGui::NewFrame();
-      if (!o.emptyFrame) drawEditorPanels(commands, io.Framerate);
-      ImGui::Render();
-      evaluateEditorPose(state);  // the panels may have edited the document
-      keepLatticeEditValid(state);  // an undo or a panel may have removed the edited lattice
-      mark("ImGui: build the panels");
-
-      const bool scriptDone = o.replay && o.frameCount <= 0 && nextScripted >= o.script.size() && live.queue.empty() &&
-                              frame >= lastScriptFrame + 2;
-      const bool last = (o.frameCount > 0 && frame >= o.frameCount) || scriptDone || state.panels.quitApproved;
-      // What the frame's 3D view area shows, drawn below into the window or the canvas.
-      ViewContent view3d;
-      bool changedOnly = false;  // drawn into the canvas, only where it changed (window_redraw.h)
+        viewportTarget.forget();
+        view3d.shows = ViewContent::Shows::Scene;
+        state.viewportRender = {kMovingViewportSamples, false};
+        description.frontFacesOnly = true;  // closed shapes: front faces alone while moving
+      }
+      view3d.signature = signature;
+      view3d.samples = state.viewportRender.samples;
+    }
+    mark("overlay, onion skin lists");
+    // The 3D view (as decided above) and the panels: drawn whole into the window, or only
+    // where they changed into the canvas, which is then copied into the window.
+    auto drawView = [&](const PixelRect& limit) {  // into the bound framebuffer, within `limit` (empty: all)
+      if (view3d.shows == ViewContent::Shows::KeptPicture) {
+        viewportTarget.present(view3d.rect.x0, view3d.rect.y0, drawFramebuffer);
+      } else if (view3d.shows == ViewContent::Shows::Scene) {
+        glBindFramebuffer(GL_FRAMEBUFFER, drawFramebuffer);
+        description.clear = false;  // cleared to the same grey just before
+        description.limit = limit;
+        renderer.draw(description);
+      }
+      glViewport(0, 0, fbw, fbh);
+    };
+    // Changed-only: into the window's back buffer where it survives swaps, else into
+    // the canvas; `kept`: it holds the previous frame's pixels.
+    changedOnly = changedRedraws;
+    bool kept = false;
+    if (changedOnly && backBufferKept) {
+      kept = keptSize == glm::ivec2(fbw, fbh);
+      keptSize = glm::ivec2(fbw, fbh);
+    } else if (changedOnly) {
+      kept = canvas.holds(fbw, fbh);
+      if (const std::string failed = canvas.begin(fbw, fbh, 1); !failed.empty()) {
+        std::cerr << "kinema edit: " << failed << "; every frame is drawn whole\n";
+        changedRedraws = changedOnly = false;
+      }
+    }
+    drawFramebuffer = changedOnly && !backBufferKept ? canvas.boundFramebuffer() : 0;
+    if (!changedOnly) {
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
-      if (o.emptyFrame) {
-        glViewport(0, 0, fbw, fbh);
-        glClearColor(kWindowGrey.r, kWindowGrey.g, kWindowGrey.b, kWindowGrey.a);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        imguiBackendsRenderDrawData(ImGui::GetDrawData());
-        state.windowRedraw = {false, false, 1, static_cast<long long>(fbw) * fbh};
-      } else {
-        if (meshes.needsUpload(state.doc.scene()) || state.doc.meshRevision() != uploadedMeshRevision) {
-          uploadedMeshRevision = state.doc.meshRevision();
-          const std::string failed = uploadMeshes();
-          if (!failed.empty()) state.statusMessage = failed;
-        }
-        SkeletonDrawJob job;
-        job.parents = &state.doc.skeleton().parents;
-        job.world = &state.world();
-        job.shownJoints = &skinJoints;
-        // Dashed relationship lines to joints that move on their own (Blender's unconnected bones).
-        const std::vector<char> loose = looseJoints(state.doc.skeleton(),
-                                                    state.hasMotion() ? &state.doc.scene().clips[state.clip] : nullptr,
-                                                    state.doc.pose());
-        job.looseJoints = &loose;
-        job.run(list);
-        MeshDraw meshDraw;
-        meshDraw.renderer = &meshes;
-        meshDraw.frame.world = &state.world();
-        std::vector<std::vector<float>> morphWeights;  // animated blend shapes at the playhead
-        if (!meshes.empty()) morphWeights = sampleMorphWeights(state.doc.scene(), state.hasMotion() ? state.clip : -1, state.time);
-        meshDraw.frame.morphWeights = &morphWeights;
-        // Meshes with an active deformer stack: morphs, skin and deformers on the CPU (the
-        // reference path), drawn as they come out.
-        std::vector<DeformedPrimitive> cpuDeformed;
-        std::vector<DeformerStack> gpuStacks;  // per instance: what the vertex shader deforms
-        // On a software rasteriser every mesh is morphed, skinned and deformed here, once
-        // (`posed`): drawn from these vertices, and compared with the last frame's to find
-        // what changed on screen. Elsewhere the deformer stacks alone (`cpuDeformed`).
-        const bool cpuPosed = !meshes.empty() && meshes.drawsPosed() && !state.view.showWeights;
-        std::vector<DeformerStack> stacks;
-        if (!meshes.empty() && !state.doc.scene().deformers.empty()) {
-          stacks = sampleDeformerStacks(state.doc.scene(), state.hasMotion() ? state.clip : -1, state.time);
-          previewLatticeMove(state, state.world(), stacks);  // a running G on lattice points
-          // With the shader deforming (a hardware GPU), bend / twist / taper stacks run in
-          // the vertex shader; the rest, and everything on llvmpipe, on the CPU.
-          if (!meshes.cpuDeformation() && !state.view.showWeights) {
-            gpuStacks.assign(stacks.size(), DeformerStack());
-            for (size_t i = 0; i < stacks.size(); ++i)
-              if (axisStackOnGpu(stacks[i])) std::swap(gpuStacks[i], stacks[i]);
-          }
-          if (anyDeformerActive(stacks) && !cpuPosed) {
-            SceneDeformationJob deformJob;
-            deformJob.scene = &state.doc.scene();
-            deformJob.world = &state.world();
-            deformJob.morphWeights = &morphWeights;
-            deformJob.deformers = &stacks;
-            deformJob.withDeformersOnly = true;
-            deformJob.out = &cpuDeformed;
-            if (!deformJob.run()) cpuDeformed.clear();
-          }
-        }
-        meshDraw.frame.deformed = &cpuDeformed;
-        std::vector<DeformedPrimitive> posed;
-        if (cpuPosed) {
-          SceneDeformationJob poseJob;
-          poseJob.scene = &state.doc.scene();
-          poseJob.world = &state.world();
-          poseJob.morphWeights = &morphWeights;
-          if (anyDeformerActive(stacks)) poseJob.deformers = &stacks;  // sampled, with a running G's preview
-          poseJob.out = &posed;
-          if (poseJob.run()) meshDraw.frame.posed = &posed;
-        }
-        meshDraw.frame.gpuDeformers = gpuStacks.empty() ? nullptr : &gpuStacks;
-        meshDraw.frame.weightJoint = state.view.showWeights ? state.doc.selection.active() : -1;
-        colorSelection(state, list);
-        buildCrowdDisplay(state, skinJoints, !meshes.empty(), crowdDisplay);
-        // The crowd too; in steps, so a small move keeps the grid and clip planes (camera.h).
-        const float sceneRadius = steadySceneRadius(std::max(bounds.radius(), crowdDisplay.radius));
-        state.camera.fitClipPlanes(sceneRadius);
-        // The viewport in framebuffer pixels (GL counts rows from the bottom); the panels
-        // cover the rest, which is cleared to the background behind them.
-        const float sx = ww > 0 ? float(fbw) / ww : 1.0f, sy = wh > 0 ? float(fbh) / wh : 1.0f;
-        const int vx = int(std::lround(vp.x * sx)), vw = std::max(int(std::lround(vp.w * sx)), 1);
-        const int vh = std::max(int(std::lround(vp.h * sy)), 1), vy = std::max(fbh - int(std::lround(vp.y * sy)) - vh, 0);
-        mark("scene draw lists");
-        buildViewportOverlay(state, ViewportView::of(state.camera, glm::vec2(vw, vh), glm::vec2(vp.x * sx, vp.y * sy)),
-                             tools, overlay);
-        buildAnimationDisplay(state, skinJoints, animationDisplay, overlay);  // onion skin, motion path
-        buildParticleDisplay(state, static_cast<float>(vh), overlay);         // live particles (issue 24)
-        // Body ghosts go to the mesh renderer; bones stand in where the meshes failed to upload.
-        std::vector<MeshGhost> meshGhosts;
-        if (animationDisplay.ghostBodies && meshes.empty())
-          animationDisplay.ghostLists = buildGhostDrawLists(state.doc.skeleton().parents, skinJoints, animationDisplay.ghosts,
-                                                            animationDisplay.ghostPoses);
-        else if (animationDisplay.ghostBodies)
-          for (size_t g = 0; g < animationDisplay.ghosts.size(); ++g)
-            meshGhosts.push_back({&animationDisplay.ghostPoses[g], &animationDisplay.ghostMorphWeights[g],
-                                  animationDisplay.ghosts[g].color});
-        addCrowdOverlay(state, overlay);
-        for (const std::vector<glm::mat4>* member : crowdDisplay.bodies)
-          meshGhosts.push_back({member, &crowdDisplay.noMorphs, crowdDisplay.tint});
-        std::vector<SkeletonDrawList> ghostLists = animationDisplay.ghostLists;
-        ghostLists.insert(ghostLists.end(), crowdDisplay.bones.begin(), crowdDisplay.bones.end());
-        FrameDescription description;
-        description.skeleton = &list;
-        description.overlay = &overlay;
-        description.camera = state.camera;
-        description.x = vx;
-        description.y = vy;
-        description.width = vw;
-        description.height = vh;
-        description.sceneRadius = sceneRadius;
-        description.showGrid = state.view.showGrid;
-        description.lineScale = state.preferences.lineScale;  // thicker for a projector (Edit > Preferences)
-        description.meshes = meshes.empty() ? nullptr : &meshDraw;
-        description.ghosts = &ghostLists;
-        description.meshGhosts = &meshGhosts;
-        description.timer = timer;
-        description.bones = !state.view.showBones ? BoneDisplay::None
-                            : state.view.xrayBones ? BoneDisplay::XRay
-                                                   : BoneDisplay::On;
-        // Bones hidden: the selected ones alone, x-ray over the body, so the selection shows.
-        if (hiddenBonesSelection(state, list, selectionAlone)) {
-          description.skeleton = &selectionAlone;
-          description.bones = BoneDisplay::XRay;
-        }
-        // The compare mode draws with ImGui; else the 3D view, antialiased when it holds still
-        // (viewport_quality.h) and then kept, to be shown again while nothing in it changes.
-        view3d.rect = PixelRect{vx, vy, vx + vw, vy + vh};
-        if (state.compare.active) {
-          state.viewportRender = {};
-        } else {
-          const uint64_t signature = frameSignature(description) ^ (uint64_t(uploadedMeshRevision) * 0x9E3779B97F4A7C15ull);
-          const bool changed = !drawnSignature || *drawnSignature != signature;
-          drawnSignature = signature;
-          const ViewportQuality quality = viewportQuality(state, changed, last && !o.screenshotPath.empty());
-          std::string failed;
-          if (quality == ViewportQuality::Still && !changed && viewportTarget.holds(vw, vh)) {
-            view3d.shows = ViewContent::Shows::KeptPicture;
-            state.viewportRender = {viewportTarget.samples(), true};
-          } else if (quality == ViewportQuality::Still && !viewportTargetFailed &&
-                     (failed = viewportTarget.begin(vw, vh, viewportSamples(quality))).empty()) {
-            description.x = description.y = 0;  // the target is the view's own size
-            renderer.draw(description);
-            description.x = vx, description.y = vy;
-            viewportTarget.resolve();
-            view3d.shows = ViewContent::Shows::KeptPicture;
-            state.viewportRender = {viewportTarget.samples(), false};
-          } else {  // moving (or no framebuffer of its own): one sample, straight into the window
-            if (!failed.empty() && !viewportTargetFailed) {
-              viewportTargetFailed = true;
-              std::cerr << "kinema edit: " << failed << "; the 3D view is drawn without antialiasing\n";
-            }
-            viewportTarget.forget();
-            view3d.shows = ViewContent::Shows::Scene;
-            state.viewportRender = {kMovingViewportSamples, false};
-            description.frontFacesOnly = true;  // closed shapes: front faces alone while moving
-          }
-          view3d.signature = signature;
-          view3d.samples = state.viewportRender.samples;
-        }
-        mark("overlay, onion skin lists");
-        // The 3D view (as decided above) and the panels: drawn whole into the window, or only
-        // where they changed into the canvas, which is then copied into the window.
-        auto drawView = [&](const PixelRect& limit) {  // into the bound framebuffer, within `limit` (empty: all)
-          if (view3d.shows == ViewContent::Shows::KeptPicture) {
-            viewportTarget.present(view3d.rect.x0, view3d.rect.y0, drawFramebuffer);
-          } else if (view3d.shows == ViewContent::Shows::Scene) {
-            glBindFramebuffer(GL_FRAMEBUFFER, drawFramebuffer);
-            description.clear = false;  // cleared to the same grey just before
-            description.limit = limit;
-            renderer.draw(description);
-          }
-          glViewport(0, 0, fbw, fbh);
-        };
-        // Changed-only: into the window's back buffer where it survives swaps, else into
-        // the canvas; `kept`: it holds the previous frame's pixels.
-        changedOnly = changedRedraws;
-        bool kept = false;
-        if (changedOnly && backBufferKept) {
-          kept = keptSize == glm::ivec2(fbw, fbh);
-          keptSize = glm::ivec2(fbw, fbh);
-        } else if (changedOnly) {
-          kept = canvas.holds(fbw, fbh);
-          if (const std::string failed = canvas.begin(fbw, fbh, 1); !failed.empty()) {
-            std::cerr << "kinema edit: " << failed << "; every frame is drawn whole\n";
-            changedRedraws = changedOnly = false;
-          }
-        }
-        drawFramebuffer = changedOnly && !backBufferKept ? canvas.boundFramebuffer() : 0;
-        if (!changedOnly) {
-          glBindFramebuffer(GL_FRAMEBUFFER, 0);
-          glViewport(0, 0, fbw, fbh);
-          glClearColor(kWindowGrey.r, kWindowGrey.g, kWindowGrey.b, kWindowGrey.a);
-          glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-          mark("clear the window");
-          drawView(PixelRect{});
-          mark("3D view: resolve, copy to the window");
-          imguiBackendsRenderDrawData(ImGui::GetDrawData());
-          state.windowRedraw = {false, false, 1, static_cast<long long>(fbw) * fbh};
-        } else {
-          // Where this frame differs from the canvas: the panels' changed triangles, and in
-          // the 3D view what SceneDamageJob finds (all of it when it shows something else now).
-          const PixelRect window{0, 0, fbw, fbh};
-          const float sx = ww > 0 ? float(fbw) / ww : 1.0f, sy = wh > 0 ? float(fbh) / wh : 1.0f;
-          std::vector<PixelRect> damage;
-          for (const PixelRect& r : imguiDamage(*ImGui::GetDrawData(), io.Fonts->TexID, imguiSnapshot))
-            damage.push_back(PixelRect{int(std::floor(r.x0 * sx)), fbh - int(std::ceil(r.y1 * sy)), int(std::ceil(r.x1 * sx)),
-                                       fbh - int(std::floor(r.y0 * sy))});
-          if (!kept) damage.assign(1, window);
-          if (view3d != canvasView) {
-            damage.push_back(canvasView.rect);
-            damage.push_back(view3d.rect);
-            if (view3d.shows == ViewContent::Shows::Scene) sceneSnapshot.valid = false;
-          }
-          if (view3d.shows == ViewContent::Shows::Scene) {
-            SceneDamageJob damageJob;
-            damageJob.frame = &description;
-            damageJob.scene = &state.doc.scene();
-            damageJob.last = &sceneSnapshot;
-            damageJob.run();
-            damage.push_back(damageJob.out);
-          }
-          canvasView = view3d;
-          for (PixelRect& r : damage) r = r.intersected(window);
-          const std::vector<PixelRect> rects = mergeDamage(std::move(damage), 4);
-          shownRects = rects;
-          long long pixels = 0;
-          std::vector<ImVec4> clips;  // the same rectangles in ImGui's display coordinates
-          glBindFramebuffer(GL_FRAMEBUFFER, drawFramebuffer);
-          glViewport(0, 0, fbw, fbh);
-          rectClear.clear(rects, fbw, fbh, kWindowGrey);
-          for (const PixelRect& r : rects) {
-            pixels += r.area();
-            clips.push_back(ImVec4(r.x0 / sx, (fbh - r.y1) / sy, r.x1 / sx, (fbh - r.y0) / sy));
-          }
-          mark("clear the window");
-          for (const PixelRect& r : rects) {
-            const PixelRect inView = r.intersected(view3d.rect);
-            if (inView.empty()) continue;
-            glEnable(GL_SCISSOR_TEST);
-            glScissor(inView.x0, inView.y0, inView.width(), inView.height());
-            drawView(inView);
-          }
-          glDisable(GL_SCISSOR_TEST);
-          mark("3D view: resolve, copy to the window");
-          if (!rects.empty()) imguiBackendsRenderDrawData(ImGui::GetDrawData(), &clips);
-          mark("ImGui: draw the panels");
-          state.windowRedraw = {true, backBufferKept, static_cast<int>(rects.size()), pixels};
-          if (!backBufferKept) {
-            canvas.resolve();  // one sample: nothing to resolve, kept for the next frame
-            canvas.present(0, 0, 0);
-            mark("copy the canvas to the window");
-          }
-        }
+      glViewport(0, 0, fbw, fbh);
+      glClearColor(kWindowGrey.r, kWindowGrey.g, kWindowGrey.b, kWindowGrey.a);
+      glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+      mark("clear the window");
+      drawView(PixelRect{});
+      mark("3D view: resolve, copy to the window");
+      imguiBackendsRenderDrawData(ImGui::GetDrawData());
+      state.windowRedraw = {false, false, 1, static_cast<long long>(fbw) * fbh};
+    } else {
+      // Where this frame differs from the canvas: the panels' changed triangles, and in
+      // the 3D view what SceneDamageJob finds (all of it when it shows something else now).
+      const PixelRect window{0, 0, fbw, fbh};
+      const float sx = ww > 0 ? float(fbw) / ww : 1.0f, sy = wh > 0 ? float(fbh) / wh : 1.0f;
+      std::vector<PixelRect> damage;
+      for (const PixelRect& r : imguiDamage(*ImGui::GetDrawData(), io.Fonts->TexID, imguiSnapshot))
+        damage.push_back(PixelRect{int(std::floor(r.x0 * sx)), fbh - int(std::ceil(r.y1 * sy)), int(std::ceil(r.x1 * sx)),
+                                   fbh - int(std::floor(r.y0 * sy))});
+      if (!kept) damage.assign(1, window);
+      if (view3d != canvasView) {
+        damage.push_back(canvasView.rect);
+        damage.push_back(view3d.rect);
+        if (view3d.shows == ViewContent::Shows::Scene) sceneSnapshot.valid = false;
       }
-      if (!changedOnly) mark("ImGui: draw the panels");
-
-      if (last && !o.screenshotPath.empty()) {
-        // Read the back buffer before swapping: its contents are undefined afterwards.
-        Image shot(fbw, fbh);
-        glReadBuffer(GL_BACK);
-        glPixelStorei(GL_PACK_ALIGNMENT, 1);
-        glReadPixels(0, 0, fbw, fbh, GL_RGBA, GL_UNSIGNED_BYTE, shot.rgba.data());
-        shot.flipVertically();
-        for (size_t i = 3; i < shot.rgba.size(); i += 4) shot.rgba[i] = 255;  // the window is opaque
-        result.error = savePng(o.screenshotPath, shot);
+      if (view3d.shows == ViewContent::Shows::Scene) {
+        SceneDamageJob damageJob;
+        damageJob.frame = &description;
+        damageJob.scene = &state.doc.scene();
+        damageJob.last = &sceneSnapshot;
+        damageJob.run();
+        damage.push_back(damageJob.out);
       }
-      if (live.exposed) {
-        presenter.markExposed();
-        live.exposed = false;
+      canvasView = view3d;
+      for (PixelRect& r : damage) r = r.intersected(window);
+      const std::vector<PixelRect> rects = mergeDamage(std::move(damage), 4);
+      shownRects = rects;
+      long long pixels = 0;
+      std::vector<ImVec4> clips;  // the same rectangles in ImGui's display coordinates
+      glBindFramebuffer(GL_FRAMEBUFFER, drawFramebuffer);
+      glViewport(0, 0, fbw, fbh);
+      rectClear.clear(rects, fbw, fbh, kWindowGrey);
+      for (const PixelRect& r : rects) {
+        pixels += r.area();
+        clips.push_back(ImVec4(r.x0 / sx, (fbh - r.y1) / sy, r.x1 / sx, (fbh - r.y0) / sy));
       }
-      // Drawn into the kept back buffer only where it changed: those rectangles shown alone.
-      state.windowRedraw.presentedRectangles =
-          presenter.present(changedOnly && backBufferKept ? &shownRects : nullptr, fbw, fbh);
-      // --max-fps: the rest of the frame's time is slept (events keep queueing meanwhile).
-      if (o.maxFps > 0) std::this_thread::sleep_until(frameStart + std::chrono::microseconds(1000000 / o.maxFps));
-      if (timer) {
-        timer->mark("swap");
-        timer->endFrame();
+      mark("clear the window");
+      for (const PixelRect& r : rects) {
+        const PixelRect inView = r.intersected(view3d.rect);
+        if (inView.empty()) continue;
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(inView.x0, inView.y0, inView.width(), inView.height());
+        drawView(inView);
       }
-      if (o.reportFrameTimes) {
-        glFinish();
-        frameMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count());
+      glDisable(GL_SCISSOR_TEST);
+      mark("3D view: resolve, copy to the window");
+      if (!rects.empty()) imguiBackendsRenderDrawData(ImGui::GetDrawData(), &clips);
+      mark("ImGui: draw the panels");
+      state.windowRedraw = {true, backBufferKept, static_cast<int>(rects.size()), pixels};
+      if (!backBufferKept) {
+        canvas.resolve();  // one sample: nothing to resolve, kept for the next frame
+        canvas.present(0, 0, 0);
+        mark("copy the canvas to the window");
       }
-      const std::string newTitle = editorWindowTitle(state);
-      if (newTitle != title) {
-        title = newTitle;
-        glfwSetWindowTitle(window, title.c_str());
-      }
-      if (last) break;
     }
+  }
+  if (!changedOnly) mark("ImGui: draw the panels");
+
+  if (last && !o.screenshotPath.empty()) {
+    // Read the back buffer before swapping: its contents are undefined afterwards.
+    Image shot(fbw, fbh);
+    glReadBuffer(GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, fbw, fbh, GL_RGBA, GL_UNSIGNED_BYTE, shot.rgba.data());
+    shot.flipVertically();
+    for (size_t i = 3; i < shot.rgba.size(); i += 4) shot.rgba[i] = 255;  // the window is opaque
+    result.error = savePng(o.screenshotPath, shot);
+  }
+  if (live.exposed) {
+    presenter->markExposed();
+    live.exposed = false;
+  }
+  // Drawn into the kept back buffer only where it changed: those rectangles shown alone.
+  state.windowRedraw.presentedRectangles =
+      presenter->present(changedOnly && backBufferKept ? &shownRects : nullptr, fbw, fbh);
+  // --max-fps: the rest of the frame's time is slept (events keep queueing meanwhile).
+  if (o.maxFps > 0) std::this_thread::sleep_until(frameStart + std::chrono::microseconds(1000000 / o.maxFps));
+  if (timer) {
+    timer->mark("swap");
+    timer->endFrame();
+  }
+  if (o.reportFrameTimes) {
+    glFinish();
+    frameMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count());
+  }
+  const std::string newTitle = editorWindowTitle(state);
+  if (newTitle != title) {
+    title = newTitle;
+    glfwSetWindowTitle(window, title.c_str());
+  }
+  if (last) return false;
+  ++frame;
+  return true;
+}
+
+EditorWindowResult EditorWindow::Session::shutdown() {
+  if (result.opened && !shutDown) {
+    shutDown = true;
     result.frames = frame;
     // The window's size and place and the splitters, for the next start (the rest of the
     // preferences is saved when changed); a file that could not be read is left alone.
@@ -750,20 +827,35 @@ EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions
       const std::string dumpError = writeFileAtomically(o.dumpStatePath, editorStateJson(state, ww, wh, frame));
       if (result.error.empty()) result.error = dumpError;
     }
+    if (timer) result.framePasses = timer->report(static_cast<size_t>(frame / 10));
+    if (!frameMs.empty()) {
+      // The first frames compile shaders and upload meshes: leave out the first tenth.
+      std::vector<double> t(frameMs.begin() + frameMs.size() / 10, frameMs.end());
+      result.meanFrameMs = std::accumulate(t.begin(), t.end(), 0.0) / t.size();
+      std::nth_element(t.begin(), t.begin() + t.size() / 2, t.end());
+      result.medianFrameMs = t[t.size() / 2];
+    }
   }
-  if (timer) result.framePasses = timer->report(static_cast<size_t>(frame / 10));
-  if (!frameMs.empty()) {
-    // The first frames compile shaders and upload meshes: leave out the first tenth.
-    std::vector<double> t(frameMs.begin() + frameMs.size() / 10, frameMs.end());
-    result.meanFrameMs = std::accumulate(t.begin(), t.end(), 0.0) / t.size();
-    std::nth_element(t.begin(), t.begin() + t.size() / 2, t.end());
-    result.medianFrameMs = t[t.size() / 2];
-  }
-  imguiBackendsShutdown();
-  ImGui::DestroyContext();
-  glfwDestroyWindow(window);
-  glfwTerminate();
   return result;
+}
+
+EditorWindow::EditorWindow(EditorState& state, const EditorWindowOptions& options)
+    : s_(std::make_unique<Session>(state, options)) {}
+EditorWindow::~EditorWindow() = default;
+bool EditorWindow::setup() { return s_->setup(); }
+bool EditorWindow::frame() { return s_->runFrame(); }
+EditorWindowResult EditorWindow::shutdown() {
+  EditorWindowResult result = s_->shutdown();
+  s_.reset();  // the GL objects, ImGui, the window and GLFW, in that order
+  return result;
+}
+
+EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions& options) {
+  EditorWindow window(state, options);
+  if (window.setup())
+    while (window.frame()) {
+    }
+  return window.shutdown();
 }
 
 }  // namespace kinema

@@ -1,4 +1,5 @@
 #pragma once
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -37,8 +38,27 @@ struct EditorWindowResult {
   std::string framePasses;  // reportFramePasses: the per-pass report, one line per pass
 };
 
-// Opens the GLFW window and runs the editor on `state` until the user closes it (or the
-// frame count is reached). Blocks. The state stays the caller's.
+// The editor's window on `state` (which stays the caller's): setup opens the GLFW window
+// and the GL and ImGui state, frame runs one frame (input, playback, panels, the 3D view,
+// the picture shown), shutdown saves the window's place and closes everything.
+class EditorWindow {
+ public:
+  EditorWindow(EditorState& state, const EditorWindowOptions& options);
+  ~EditorWindow();  // closes what setup opened, if shutdown has not
+  EditorWindow(const EditorWindow&) = delete;
+  EditorWindow& operator=(const EditorWindow&) = delete;
+
+  bool setup();  // false: no window (shutdown's result says why)
+  bool frame();  // false: no frame follows (closed, the frame count reached, an error)
+  EditorWindowResult shutdown();
+
+ private:
+  struct Session;
+  std::unique_ptr<Session> s_;
+};
+
+// setup, frame until the last, shutdown: runs the editor until the user closes it (or the
+// frame count is reached). Blocks.
 EditorWindowResult runEditorWindow(EditorState& state, const EditorWindowOptions& options);
 
 // True when a window system looks reachable (DISPLAY or WAYLAND_DISPLAY is set).
