@@ -124,6 +124,9 @@ struct Clip {
   FootContacts contacts = {};
   // The bone map a retargeted clip came through; empty for other clips. Sampling ignores it.
   ClipSourceMap sourceMap = {};
+  // The scene's spring chains are baked into this clip's keys (sim/spring_bones.h): the
+  // evaluation pipeline does not simulate them again when it plays.
+  bool dynamicsBaked = false;
 
   float playStart() const { return hasRange ? rangeStart : 0.0f; }
   float playEnd() const { return hasRange ? rangeEnd : duration(); }

@@ -167,15 +167,6 @@ glm::quat slerpShortest(const glm::quat& a, const glm::quat& bIn, float t) {
   return (std::sin((1.0f - t) * theta) / s) * a + (std::sin(t * theta) / s) * b;
 }
 
-glm::quat rotationOf(const glm::mat4& m) {
-  glm::mat3 r(m);
-  for (int c = 0; c < 3; ++c) {
-    const float length = glm::length(r[c]);
-    if (length > 0.0f) r[c] /= length;
-  }
-  return safeNormalize(glm::quat_cast(r));
-}
-
 glm::quat safeNormalize(const glm::quat& q) {
   // Divide by the largest component first, so tiny (denormal) and huge quaternions
   // normalise as accurately as ordinary ones instead of underflowing or overflowing.

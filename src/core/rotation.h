@@ -51,7 +51,15 @@ glm::quat slerpShortest(const glm::quat& a, const glm::quat& b, float t);
 glm::quat safeNormalize(const glm::quat& q);
 // The rotation of an affine matrix (a world or local transform): its 3x3 part with each
 // column's scale divided out (a zero column is left as it is), as a unit quaternion
-// (safeNormalize: identity for a degenerate matrix).
-glm::quat rotationOf(const glm::mat4& m);
+// (safeNormalize: identity for a degenerate matrix). Inline: the IK solvers read it per joint
+// on every solve.
+inline glm::quat rotationOf(const glm::mat4& m) {
+  glm::mat3 r(m);
+  for (int c = 0; c < 3; ++c) {
+    const float length = glm::length(r[c]);
+    if (length > 0.0f) r[c] /= length;
+  }
+  return safeNormalize(glm::quat_cast(r));
+}
 
 }  // namespace kinema

@@ -48,7 +48,8 @@ bool SceneEvaluationJob::run() const {
   const IkRig& ik = rig ? *rig : s.ik;
   animatedPose(s, ik, clip, time, stages, *pose, &ctx.sampling, playback, playbackContext);
   // 6: dynamic chains, stepped on stages 1-5 of each frame from the start frame.
-  if (stages.dynamics && hasClip(s, clip) && !s.simulation.springChains.empty()) {
+  // A clip the chains are baked into plays its keys (Clip::dynamicsBaked).
+  if (stages.dynamics && hasClip(s, clip) && !s.clips[clip].dynamicsBaked && !s.simulation.springChains.empty()) {
     const FrameGrid grid = s.frameGrid(clip);
     const long long start =
         dynamicsStartFrame != LLONG_MIN ? dynamicsStartFrame : grid.nearestFrame(s.clips[clip].playStart());

@@ -404,6 +404,11 @@ bool readClips(Reader& r, const Json& root, Scene& scene) {
       if (!r.number(*v, p + ".frame_time", clip.frameTime)) return false;
       if (clip.frameTime < 0) return r.fail(p + ".frame_time", "must not be negative");
     }
+    if ((v = r.member(j, p, "dynamics_baked", false))) {
+      if (!v->is_boolean())
+        return r.fail(p + ".dynamics_baked", "expected true or false, found " + std::string(v->type_name()));
+      clip.dynamicsBaked = v->get<bool>();
+    }
     if ((v = r.member(j, p, "loop", false))) {
       if (!v->is_boolean()) return r.fail(p + ".loop", "expected true or false, found " + std::string(v->type_name()));
       clip.loop = v->get<bool>();
@@ -449,6 +454,7 @@ Json clipsToJson(const Scene& scene) {
     c["name"] = clip.name;
     if (clip.frameTime > 0) c["frame_time"] = clip.frameTime;
     if (clip.loop) c["loop"] = true;
+    if (clip.dynamicsBaked) c["dynamics_baked"] = true;
     if (clip.hasRange) {
       const float range[2] = {clip.rangeStart, clip.rangeEnd};
       c["range"] = vec(range, 2);

@@ -199,6 +199,7 @@ Result<Clip> bakeSpringBones(const Skeleton& skeleton, const Clip& clip, const s
   }
   Clip out = clip;
   if (out.frameTime <= 0.0) out.frameTime = ownFrameGrid(clip).secondsPerFrame;
+  out.dynamicsBaked = true;  // played from its keys from now on, not simulated on top of them
   out.channels.erase(std::remove_if(out.channels.begin(), out.channels.end(),
                                     [&](const Channel& c) {
                                       return (c.target == ChannelTarget::Rotation || c.target == ChannelTarget::Euler) &&
