@@ -7,9 +7,6 @@
 
 namespace kinema::ik_detail {
 
-namespace {
-}  // namespace
-
 std::string IkChain::begin(const IkProblem& problem, const IkSettings& settings) {
   std::string error = problem.validate();
   if (error.empty()) error = build(problem);
