@@ -5,6 +5,7 @@
 
 #include "anim/sampling.h"
 #include "core/forward_kinematics.h"
+#include "core/math.h"
 #include "core/pose.h"
 #include "core/skeleton.h"
 #include "core/random.h"
@@ -105,10 +106,9 @@ std::string ChannelModifier::validate() const {
       if (cycles.beforeCount < 0 || cycles.afterCount < 0) return "cycle counts must be >= 0 (0: forever)";
       return "";
     case ChannelModifierKind::Wave:
-      if (!std::isfinite(wave.amplitude) || !std::isfinite(wave.omega) || !std::isfinite(wave.phi) || !std::isfinite(wave.k.x) ||
-          !std::isfinite(wave.k.y) || !std::isfinite(wave.k.z))
+      if (!std::isfinite(wave.amplitude) || !std::isfinite(wave.omega) || !std::isfinite(wave.phi) || !isFinite(wave.k))
         return "wave amplitude, omega, k and phi must be finite";
-      if (!std::isfinite(wave.position.x) || !std::isfinite(wave.position.y) || !std::isfinite(wave.position.z))
+      if (!isFinite(wave.position))
         return "wave position (the joint's rest position) must be finite";
       return "";
   }

@@ -246,8 +246,8 @@ bool PlaybackSamplingJob::run() const {
   for (size_t g = 0; g < clip->grids.size(); ++g) sampleGridAt(clip->grids[g], time, c.gridCursors[g], output);
   for (size_t i = 0; i < clip->channels.size(); ++i) {
     const Channel& ch = clip->channels[i];
-    applyChannelValue(ch, ch.modifiers.empty() ? sampleChannel(ch, time, &c.channelCursors[i]) : sampleModifiedChannel(ch, time),
-          output[ch.joint]);
+    const glm::vec4 v = ch.modifiers.empty() ? sampleChannel(ch, time, &c.channelCursors[i]) : sampleModifiedChannel(ch, time);
+    applyChannelValue(ch, v, output[ch.joint]);
   }
   return true;
 }
