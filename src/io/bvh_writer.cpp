@@ -4,10 +4,11 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 
-#include "anim/sampling.h"
-#include "io/atomic_write.h"
+#include "anim/pose_source.h"
 #include "evaluation/scene_evaluation_job.h"
+#include "io/atomic_write.h"
 
 namespace kinema {
 
@@ -224,11 +225,12 @@ Result<std::string> bvhText(const Skeleton& sk, const Clip* clip, const BvhWrite
     return it != keyAtFrame.end() ? it->second : timing.frameToTime(f);
   };
   Pose pose = Pose::rest(sk);
-  SamplingCache cache;
   EvaluationContext context;  // the scene's dynamics step forward through the frames once
   const bool evaluated = options.scene && &options.scene->skeleton == &sk && clip &&
                          options.clipIndex >= 0 && options.clipIndex < static_cast<int>(options.scene->clips.size()) &&
                          &options.scene->clips[options.clipIndex] == clip;
+  std::optional<ClipPoses> keysAlone;  // a clip given without its scene
+  if (clip && !evaluated) keysAlone.emplace(sk, *clip);
   std::vector<glm::vec3> previous(n, glm::vec3(0.0f));
   for (long long f = 0; f < frames; ++f) {
     pose.local = sk.rest;
@@ -243,8 +245,8 @@ Result<std::string> bvhText(const Skeleton& sk, const Clip* clip, const BvhWrite
       job.context = &context;
       job.pose = &pose;
       job.run();
-    } else if (clip) {
-      sampleClip(*clip, timeOfFrame(f), pose, cache);
+    } else if (keysAlone) {
+      keysAlone->poseAt(timeOfFrame(f), pose);
     }
     bool first = true;
     for (int j : columnsOf) {

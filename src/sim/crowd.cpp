@@ -140,8 +140,7 @@ void crowdMemberPose(const Skeleton& skeleton, const Clip& clip, const CrowdClip
   if (poses) {
     poses->poseAt(state.clipTime, pose);
   } else {
-    pose.local.assign(skeleton.rest.begin(), skeleton.rest.end());
-    sampleClip(clip, static_cast<float>(state.clipTime), pose);
+    ClipPoses(skeleton, clip).poseAt(state.clipTime, pose);
   }
   const glm::quat turn = yawRotation(state.yaw - motion.forwardYaw);
   const glm::vec3 drift = motion.drift * static_cast<float>(state.clipTime - motion.start);
