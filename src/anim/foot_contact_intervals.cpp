@@ -1,5 +1,9 @@
 #include "anim/foot_contact_intervals.h"
 
+#include <algorithm>
+
+#include "anim/frame_grid.h"
+
 namespace kinema {
 
 const char* toString(Foot foot) { return foot == Foot::Left ? "left" : "right"; }
@@ -19,6 +23,21 @@ std::string FootContacts::validate() const {
     }
   }
   return {};
+}
+
+FootContacts contactsOnGrid(const FootContacts& contacts, const FrameGrid& from, const FrameGrid& to) {
+  FootContacts out;
+  for (int f = 0; f < 2; ++f)
+    for (const ContactInterval& c : contacts.feet[f]) {
+      const ContactInterval moved{static_cast<int>(to.nearestFrame(from.frameToTime(c.first))),
+                                  static_cast<int>(to.nearestFrame(from.frameToTime(c.last)))};
+      std::vector<ContactInterval>& foot = out.feet[f];
+      if (!foot.empty() && moved.first <= foot.back().last)
+        foot.back().last = std::max(foot.back().last, moved.last);
+      else
+        foot.push_back(moved);
+    }
+  return out;
 }
 
 }  // namespace kinema

@@ -7,6 +7,8 @@
 
 namespace kinema {
 
+struct FrameGrid;  // anim/frame_grid.h (which includes this through anim/clip.h)
+
 // Frames first..last (inclusive) of the clip's frame grid; 0 <= first <= last.
 struct ContactInterval {
   int first = 0, last = 0;
@@ -31,5 +33,10 @@ struct FootContacts {
   // "" or what is wrong: "left contact 2 starts before contact 1 ends" and the like.
   std::string validate() const;
 };
+
+// `contacts`, counted on grid `from`, counted again on grid `to` (the clip's rate changed):
+// each interval keeps its moments (the planted feet are in the keys, which keep their times),
+// its first and last frame the nearest of `to`; intervals that then overlap are merged.
+FootContacts contactsOnGrid(const FootContacts& contacts, const FrameGrid& from, const FrameGrid& to);
 
 }  // namespace kinema

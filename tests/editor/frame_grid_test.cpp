@@ -231,5 +231,33 @@ TEST(FrameGrid, TheFpsFieldSetsAClipsOwnRateWhenItHasOne) {
   EXPECT_EQ(s.doc.historyLabels().back(), "Set frame rate to 60 fps");
 }
 
+// Foot contacts are frames of the clip's grid, but the planted feet are in the keys, which keep
+// their times: a new rate counts the contacts again so each keeps its moments.
+TEST(FrameGrid, FootContactsKeepTheirMomentsWhenTheRateChanges) {
+  const FrameGrid at24 = documentFrameGrid(24.0), at48 = documentFrameGrid(48.0), at10 = documentFrameGrid(10.0);
+  FootContacts c;
+  c.of(Foot::Left) = {{6, 12}, {13, 20}};  // 0.25..0.5 s and 0.54..0.83 s, touching: two steps
+  c.of(Foot::Right) = {{0, 0}, {1, 1}};
+  const FootContacts doubled = contactsOnGrid(c, at24, at48);
+  EXPECT_EQ(doubled.of(Foot::Left), (std::vector<ContactInterval>{{12, 24}, {26, 40}}));
+  EXPECT_EQ(doubled.of(Foot::Right), (std::vector<ContactInterval>{{0, 0}, {2, 2}}));
+  EXPECT_EQ(contactsOnGrid(doubled, at48, at24), c);  // and back
+  // At 10 fps frames 0 and 1 (0 s and 1/24 s) both fall on frame 0: one contact, still valid.
+  const FootContacts coarse = contactsOnGrid(c, at24, at10);
+  EXPECT_EQ(coarse.of(Foot::Right), (std::vector<ContactInterval>{{0, 0}}));
+  EXPECT_EQ(coarse.validate(), "");
+  // Through the timeline's fps field, for a clip without a rate (the document's) and with one.
+  for (const bool own : {false, true}) {
+    EditorState s;
+    Scene scene = gltfLikeScene();
+    if (own) scene.clips[0].frameTime = 1.0 / 24.0;
+    scene.clips[0].contacts = c;
+    s.doc = Document(scene);
+    resetTimeline(s);
+    ASSERT_EQ(setFrameRate(s, 48.0), "");
+    EXPECT_EQ(s.doc.scene().clips[0].contacts, doubled) << (own ? "the clip's own rate" : "the document's rate");
+  }
+}
+
 }  // namespace
 }  // namespace kinema

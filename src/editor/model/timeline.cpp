@@ -174,7 +174,9 @@ std::string setFrameRate(EditorState& s, double fps) {
     const std::string error = s.doc.edit(std::string("Set document frame rate to ") + rate + " fps", [&](DocumentEdit& e) {
       e.frameRate = fps;
       for (Clip& c : e.clips) {
-        if (hasOwnFrameRate(c) || !c.hasRange) continue;
+        if (hasOwnFrameRate(c)) continue;
+        c.contacts = contactsOnGrid(c.contacts, before, after);  // the planted feet keep their moments
+        if (!c.hasRange) continue;
         c.rangeStart = after.frameToTime(before.nearestFrame(c.rangeStart));
         c.rangeEnd = after.frameToTime(before.nearestFrame(c.rangeEnd));
       }
@@ -190,7 +192,9 @@ std::string setFrameRate(EditorState& s, double fps) {
   const int clip = s.clip;
   const std::string error = s.doc.edit(std::string("Set frame rate to ") + rate + " fps", [&](DocumentEdit& e) {
     Clip& c = e.clips[clip];
+    const FrameGrid before = ownFrameGrid(c);
     c.frameTime = 1.0 / fps;
+    c.contacts = contactsOnGrid(c.contacts, before, ownFrameGrid(c));  // the planted feet keep their moments
     c.hasRange = true;
     c.rangeStart = ownFrameGrid(c).frameToTime(start);
     c.rangeEnd = ownFrameGrid(c).frameToTime(end);
