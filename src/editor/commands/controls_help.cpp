@@ -20,6 +20,7 @@ const Gesture kGestures[] = {
      "select it / move it; drag its start or end to change its frames (Esc or right click cancels)"},
     {CommandScope::Global, "Drag on an empty foot contact lane", "add a contact over the frames dragged"},
     {CommandScope::Global, "Esc with a menu, combo or popup open", "closes it (and does nothing else)"},
+    {CommandScope::Global, "Esc with Help > Controls open", "closes it (a running tool's Esc cancels the tool first)"},
     {CommandScope::Viewport, "Left click", "select a joint (Shift: add / toggle)"},
     {CommandScope::Viewport, "Left drag on empty space", "box select (Shift adds, Ctrl removes)"},
     {CommandScope::Viewport, "Middle drag / Alt+left drag", "orbit"},

@@ -53,6 +53,11 @@ void EditorInput::handle(CommandContext& ctx, const InputEvent& e, const Skeleto
   // The Esc that closes an open menu or combo (closePopupsOnEscape) is that popup's alone.
   if (e.type == InputEventType::KeyDown && e.key == keys::ESCAPE && state.panels.popupOpen) return;
   const bool toolRunning = state.tool.mode != ModalTool::None;  // before the event: Esc may end it
+  // Esc closes Help > Controls, as a Blender pop-up closes (a running tool's Esc stays the tool's).
+  if (e.type == InputEventType::KeyDown && e.key == keys::ESCAPE && state.panels.showHelp && !toolRunning) {
+    state.panels.showHelp = false;
+    return;
+  }
   if (state.compare.active) handleCompareEvent(state.compare, e, mouseCaptured);
   else if (ctx.tools) ctx.tools->handle(state, e, ctx.view, list, mouseCaptured);
   if (e.type != InputEventType::KeyDown || isModifierKey(e.key) || keyboardCaptured || (toolRunning && !state.compare.active))

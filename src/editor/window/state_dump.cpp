@@ -370,6 +370,7 @@ std::string editorStateJson(const EditorState& s, int windowWidth, int windowHei
   out["ik_targets"] = targets;
   out["curve_editor"] = curveEditorJson(s);
   out["popup_open"] = s.panels.popupOpen;  // a menu, combo or popup (not a modal) is open
+  out["help_window"] = s.panels.showHelp;  // Help > Controls
   addAnimationDisplayState(s, out);  // onion skin, motion path, motion control
   return out.dump(1) + "\n";
 }
