@@ -60,6 +60,9 @@ void UiStyle::update(float scale, float ratio, UiTheme theme, const std::string&
     case UiTheme::Light: ImGui::StyleColorsLight(&style); break;
     case UiTheme::Classic: ImGui::StyleColorsClassic(&style); break;
   }
+  // Menus, popups and floating windows opaque, as Blender's are: panel text behind them must
+  // not read through (on a projector least of all). The themes leave them at 0.94.
+  for (ImGuiCol c : {ImGuiCol_WindowBg, ImGuiCol_PopupBg, ImGuiCol_MenuBarBg}) style.Colors[c].w = 1.0f;
   style.ScaleAllSizes(scale);
   ImGui::GetStyle() = style;
   framePaddingY_ = style.FramePadding.y;
