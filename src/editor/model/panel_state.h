@@ -17,6 +17,9 @@ namespace kinema {
 enum class PendingFileAction { None, New, Open, OpenPath, Quit };
 
 struct PanelState {
+  // The history step the History panel last showed as the current one: when an undo, a redo
+  // or a new step moves it, the panel scrolls that row into view.
+  int historyShownPosition = -1;
   // Properties > Deformers: the lattice control point whose x, y, z the fields edit and key
   // (the flat index FfdLattice::index; clamped to the lattice shown).
   int latticePoint = 0;

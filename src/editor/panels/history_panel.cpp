@@ -23,6 +23,8 @@ void drawHistoryPanel(EditorState& state) {
   recordWindow("History");
   const std::vector<std::string> labels = doc.historyLabels();
   const int position = doc.historyPosition();
+  const bool moved = position != state.panels.historyShownPosition;
+  state.panels.historyShownPosition = position;
   int jump = -1;
   // Row k (0 = the original document) is the state with k steps applied.
   for (int k = 0; k <= static_cast<int>(labels.size()); ++k) {
@@ -31,6 +33,7 @@ void drawHistoryPanel(EditorState& state) {
     if (!applied) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
     const std::string label = k == 0 ? "(original)" : std::to_string(k) + ". " + labels[k - 1];
     if (ImGui::Selectable(label.c_str(), k == position)) jump = k;
+    if (k == position && moved) ImGui::SetScrollHereY(0.5f);  // the current step in view, as Blender keeps it
     recordItem("History/" + std::to_string(k));  // by step: "History/0" is (original)
     if (!applied) ImGui::PopStyleColor();
     ImGui::PopID();
