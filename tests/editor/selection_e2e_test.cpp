@@ -69,6 +69,19 @@ TEST_F(SelectionE2e, BoxSelectMakesAnActiveJointThePropertiesPanelShows) {
   EXPECT_EQ(d["properties_joint"], "LowerArm.L");
 }
 
+// B (issue 39, item 10; Blender's box select): the next drag is a box even when it starts
+// over a bone. Before, B did nothing and the press picked the bone under it.
+TEST_F(SelectionE2e, BStartsABoxFromOverABone) {
+  const glm::dvec2 a = onBone("UpperArm.L", "LowerArm.L"), b = pixelOf("Fingertip.L") + glm::dvec2(15, 25);
+  const json d = run(Script().move(a).wait(1).key("B").wait(2).down().path(a, b).up().wait(2), "b_box_select");
+  ASSERT_TRUE(d.is_object());
+  EXPECT_EQ(selection(d), (std::vector<std::string>{"LowerArm.L", "Hand.L", "Fingertip.L"}));
+  // Esc disarms it: the same press then picks the bone under it.
+  const json esc = run(Script().move(a).wait(1).key("B").wait(1).key("ESCAPE").wait(2).down().up().wait(2), "b_escape");
+  ASSERT_TRUE(esc.is_object());
+  EXPECT_EQ(selection(esc), (std::vector<std::string>{"UpperArm.L"}));
+}
+
 // Regression: A (select all) with nothing active left none active; now the root is.
 TEST_F(SelectionE2e, SelectAllMakesTheRootActive) {
   const json d = run(Script().move(viewportCentre()).key("A").wait(2), "select_all");

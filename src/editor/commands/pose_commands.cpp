@@ -110,6 +110,10 @@ void addPoseCommands(std::vector<Command>& out) {
   out.push_back(CommandDef("select.none", "Select None").key(keys::A, kModAlt).scope(CommandScope::Viewport)
                     .enabled(documentShown)
                     .run([](CommandContext& c) { c.state.doc.selection.clear(); }));
+  out.push_back(CommandDef("select.box", "Box Select").key(keys::B).scope(CommandScope::Viewport)
+                    .hint("the next drag selects the joints in a box, even from over a bone")
+                    .enabled([](const CommandContext& c) { return idleTool(c); })
+                    .run([](CommandContext& c) { c.tools->armBoxSelect(c.state); }));
   out.push_back(CommandDef("tool.rotate", "Rotate").key(keys::R).scope(CommandScope::Viewport)
                     .hint("rotate the selection with the mouse (then X/Y/Z, typed degrees)")
                     .enabled([](const CommandContext& c) {

@@ -267,7 +267,19 @@ bool ViewportTools::startLatticeGrab(EditorState& state) {
   return true;
 }
 
+void ViewportTools::armBoxSelect(EditorState& state) {
+  boxArmed_ = true;
+  state.statusMessage = "Box select: drag a box (Esc or right click cancels)";
+}
+
 void ViewportTools::leftPress(EditorState& state, const ViewportView& view, const SkeletonDrawList& list) {
+  if (boxArmed_) {  // B: a box from here, whatever is under the mouse
+    boxArmed_ = false;
+    pressedOnEmpty_ = true;
+    state.tool.startMouse = mouse_;
+    state.statusMessage.clear();
+    return;
+  }
   if (state.panels.softPullPickInstance >= 0) return softPullPickPress(state, view);
   if (state.lattice.active) return latticePress(state, view);
   Document& doc = state.doc;
@@ -466,6 +478,11 @@ void ViewportTools::handle(EditorState& state, const InputEvent& e, const Viewpo
         if (e.button == 1) cancel(state);  // right click cancels a drag too
         break;
       }
+      if (boxArmed_ && e.button == 1) {  // a right click disarms B
+        boxArmed_ = false;
+        state.statusMessage.clear();
+        break;
+      }
       if (mouseCaptured) break;
       if (e.button == 2 || (e.button == 0 && (mods_ & kModAlt))) {
         navigating_ = true;
@@ -510,6 +527,10 @@ void ViewportTools::handle(EditorState& state, const InputEvent& e, const Viewpo
     case InputEventType::KeyDown:
       // Only a running tool takes keys here; the rest are commands (commands/editor_input.h).
       if (toolRunning && !isModifierKey(e.key)) modalKey(state, view, e.key);
+      if (boxArmed_ && e.key == keys::ESCAPE) {  // Esc disarms B
+        boxArmed_ = false;
+        state.statusMessage.clear();
+      }
       break;
     case InputEventType::KeyUp:
     case InputEventType::Text:

@@ -31,6 +31,10 @@ class ViewportTools {
   bool startRotate(EditorState& state, const ViewportView& view);
   // G: moves the root joint with the mouse. False as startRotate.
   bool startGrab(EditorState& state);
+  // B: the next left press starts a box select wherever it is (over a bone too), as Blender's
+  // B does; Esc or a right click disarms it.
+  void armBoxSelect(EditorState& state);
+  bool boxSelectArmed() const { return boxArmed_; }
   // G in lattice edit mode: moves the selected lattice points with the mouse
   // (model/lattice_editing.h; confirmed as one undo step). False as startRotate.
   bool startLatticeGrab(EditorState& state);
@@ -63,6 +67,7 @@ class ViewportTools {
   HeldInput held_;   // the modifier keys held
   bool navigating_ = false, panning_ = false;
   bool pressedOnEmpty_ = false;  // a left press on nothing: a click clears, a drag box-selects
+  bool boxArmed_ = false;        // B pressed: the next left press is taken as on nothing
   GizmoPart hoveredPart_ = GizmoPart::None;
   // The running rotation: the joints it turns (no selected ancestor), their start local
   // rotations and parents' world rotations, the sweep around the active joint's pixel.
