@@ -34,7 +34,6 @@ class ViewportTools {
   // B: the next left press starts a box select wherever it is (over a bone too), as Blender's
   // B does; Esc or a right click disarms it.
   void armBoxSelect(EditorState& state);
-  bool boxSelectArmed() const { return boxArmed_; }
   // G in lattice edit mode: moves the selected lattice points with the mouse
   // (model/lattice_editing.h; confirmed as one undo step). False as startRotate.
   bool startLatticeGrab(EditorState& state);
